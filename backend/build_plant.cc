@@ -1,0 +1,236 @@
+// build_plant.cc - module -> plant: copy, check, normalize, order.
+#include "backend/build_plant.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
+#include "backend/ref_check.h"
+#include "backend/topology.h"
+
+namespace mdlc::backend {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// Builds the plant entity by entity; `ok` turns false on the first error,
+/// and everything after keeps going so one run reports every problem.
+class PlantBuilder {
+ public:
+  PlantBuilder(const ir::Module& module, DiagnosticEngine& diags)
+      : m_(module), diags_(diags) {}
+
+  std::optional<Plant> Build() {
+    if (m_.bodies.empty()) {
+      diags_.Report(DiagKind::KinematicLoop, {}, "internal: the module has no world body");
+      return std::nullopt;
+    }
+    for (const ir::ModelInstance& model : m_.models) {
+      plant_.model_instances.emplace_back(m_.Text(model.name));
+    }
+    AddBodies();
+    for (const ir::Frame& frame : m_.frames) AddFrame(frame);
+    for (const ir::Joint& joint : m_.joints) AddJoint(joint);
+    if (ok_) ok_ = AssignTreeOrder(m_, plant_, diags_);
+    for (const ir::Actuator& actuator : m_.actuators) AddActuator(actuator);
+    for (const ir::Constraint& constraint : m_.constraints) AddConstraint(constraint);
+    if (!ok_) return std::nullopt;
+    return std::move(plant_);
+  }
+
+ private:
+  void Fail() { ok_ = false; }
+
+  std::string Scoped(ModelId model, Symbol name) const {
+    return model.index() < m_.models.size() ? m_.ScopedName(model, name)
+                                            : std::string(m_.Text(name));
+  }
+
+  template <typename IdT>
+  IdT Resolve(const ir::Ref<IdT>& ref, size_t size, std::string_view what, Loc loc) {
+    if (!CheckRef(m_, ref, size, what, loc, diags_)) Fail();
+    return ref.id;
+  }
+  BodyId ResolveBody(const ir::Ref<BodyId>& ref, Loc loc) {
+    return Resolve(ref, m_.bodies.size(), "body", loc);
+  }
+  JointId ResolveJoint(const ir::Ref<JointId>& ref, Loc loc) {
+    return Resolve(ref, m_.joints.size(), "joint", loc);
+  }
+  void CheckEntityModel(ModelId model, Loc loc) {
+    if (!CheckModel(m_, model, loc, diags_)) Fail();
+  }
+
+  void AddBodies() {
+    for (size_t b = 0; b < m_.bodies.size(); ++b) {
+      const ir::Body& src = m_.bodies[b];
+      if (src.is_world != (b == 0)) {
+        diags_.Report(DiagKind::KinematicLoop, src.loc,
+                      fmt::format("internal: body '{}' {} the world body but is body {}",
+                                  m_.Text(src.name), src.is_world ? "is" : "is not", b));
+        Fail();
+      }
+      CheckEntityModel(src.model, src.loc);
+      PlantBody& body = plant_.bodies.emplace_back();
+      body.name = m_.Text(src.name);
+      body.scoped_name = src.is_world ? "world" : Scoped(src.model, src.name);
+      body.model = src.model;
+      body.is_world = src.is_world;
+      if (src.inertial) SetMassProperties(*src.inertial, body);
+    }
+  }
+
+  static void SetMassProperties(const ir::Inertial& in, PlantBody& body) {
+    Eigen::Matrix3d I_I;
+    I_I << in.ixx, in.ixy, in.ixz,
+           in.ixy, in.iyy, in.iyz,
+           in.ixz, in.iyz, in.izz;
+    const Eigen::Matrix3d& R_BI = in.X_BI.R;
+    body.mass = in.mass;
+    body.p_BoBcm_B = in.X_BI.p;
+    body.I_BBcm_B = R_BI * I_I * R_BI.transpose();
+  }
+
+  void AddFrame(const ir::Frame& src) {
+    CheckEntityModel(src.model, src.loc);
+    plant_.frames.push_back(
+        {std::string(m_.Text(src.name)), src.model, ResolveBody(src.body, src.loc), src.X_BF});
+  }
+
+  void AddJoint(const ir::Joint& src) {
+    CheckEntityModel(src.model, src.loc);
+    PlantJoint& joint = plant_.joints.emplace_back();
+    joint.name = m_.Text(src.name);
+    joint.scoped_name = Scoped(src.model, src.name);
+    joint.model = src.model;
+    joint.type = src.type;
+    joint.parent = ResolveBody(src.parent, src.loc);
+    joint.child = ResolveBody(src.child, src.loc);
+    joint.X_PF = src.X_PF;
+    joint.X_CM = src.X_CM;
+    joint.screw_thread_pitch = src.screw_thread_pitch;
+    joint.unnamed = src.unnamed;
+    joint.nq = ir::JointPositionCount(src.type);
+    joint.nv = ir::JointVelocityCount(src.type);
+
+    // the axis matters for revolute, prismatic and screw joints only
+    const bool uses_axis = src.type == ir::JointType::Revolute ||
+                           src.type == ir::JointType::Prismatic ||
+                           src.type == ir::JointType::Screw;
+    const double norm = src.axis.norm();
+    if (uses_axis && !(norm > 0 && std::isfinite(norm))) {
+      diags_.Report(DiagKind::ZeroAxis, src.loc,
+                    fmt::format("joint '{}' has a zero or non-finite axis", joint.scoped_name));
+      Fail();
+    } else if (uses_axis) {
+      joint.axis = src.axis / norm;
+    } else {
+      joint.axis = src.axis;
+    }
+
+    const ir::JointLimits& lim = src.limits;
+    const Loc loc = src.loc;
+    joint.lower = PerDof(lim.lower, joint, -kInf, "lower limits", loc);
+    joint.upper = PerDof(lim.upper, joint, kInf, "upper limits", loc);
+    joint.velocity_lower = PerDof(lim.velocity_lower, joint, -kInf, "velocity lower limits", loc);
+    joint.velocity_upper = PerDof(lim.velocity_upper, joint, kInf, "velocity upper limits", loc);
+    joint.acceleration_lower =
+        PerDof(lim.acceleration_lower, joint, -kInf, "acceleration lower limits", loc);
+    joint.acceleration_upper =
+        PerDof(lim.acceleration_upper, joint, kInf, "acceleration upper limits", loc);
+    joint.effort = PerDof(lim.effort, joint, kInf, "effort limits", loc);
+    joint.damping = PerDof(src.damping, joint, 0.0, "damping coefficients", loc);
+    joint.default_positions = DefaultPositions(src, joint);
+  }
+
+  /// `values` padded to the joint's nv with `fill` when empty; an error when
+  /// it has some other size.
+  std::vector<double> PerDof(const std::vector<double>& values, const PlantJoint& joint,
+                             double fill, std::string_view what, Loc loc) {
+    if (values.empty()) return std::vector<double>(joint.nv, fill);
+    if (values.size() != static_cast<size_t>(joint.nv)) {
+      diags_.Report(DiagKind::BadLimits, loc,
+                    fmt::format("joint '{}' has {} {} but {} degrees of freedom",
+                                joint.scoped_name, values.size(), what, joint.nv));
+      Fail();
+    }
+    return values;
+  }
+
+  std::vector<double> DefaultPositions(const ir::Joint& src, const PlantJoint& joint) {
+    if (src.default_positions.size() == static_cast<size_t>(joint.nq)) {
+      return src.default_positions;
+    }
+    if (!src.default_positions.empty()) {
+      diags_.Report(DiagKind::BadValue, src.loc,
+                    fmt::format("joint '{}' has {} default positions but {} positions",
+                                joint.scoped_name, src.default_positions.size(), joint.nq));
+      Fail();
+    }
+    std::vector<double> q(joint.nq, 0.0);
+    if (src.type == ir::JointType::QuaternionFloating) q[0] = 1;  // identity [w x y z]
+    return q;
+  }
+
+  void AddActuator(const ir::Actuator& src) {
+    CheckEntityModel(src.model, src.loc);
+    plant_.actuators.push_back({std::string(m_.Text(src.name)), src.model,
+                                ResolveJoint(src.joint, src.loc), src.effort_limit,
+                                src.gear_ratio, src.rotor_inertia, src.kp, src.kd});
+  }
+
+  void AddConstraint(const ir::Constraint& src) {
+    CheckEntityModel(src.model, src.loc);
+    PlantConstraint& c = plant_.constraints.emplace_back();
+    c.model = src.model;
+    c.type = src.type;
+    switch (src.type) {
+      case ir::ConstraintType::Coupler:
+        c.joint0 = ResolveJoint(src.joint0, src.loc);
+        c.joint1 = ResolveJoint(src.joint1, src.loc);
+        break;
+      case ir::ConstraintType::Ball:
+      case ir::ConstraintType::Distance:
+      case ir::ConstraintType::Weld:
+        c.body_A = ResolveBody(src.body_A, src.loc);
+        c.body_B = ResolveBody(src.body_B, src.loc);
+        break;
+      case ir::ConstraintType::Tendon:
+        for (const ir::Ref<JointId>& ref : src.joints) {
+          c.joints.push_back(ResolveJoint(ref, src.loc));
+        }
+        if (src.a.size() != src.joints.size()) {
+          diags_.Report(DiagKind::BadValue, src.loc,
+                        fmt::format("tendon constraint has {} joints but {} coefficients",
+                                    src.joints.size(), src.a.size()));
+          Fail();
+        }
+        break;
+    }
+    c.gear_ratio = src.gear_ratio;
+    c.offset = src.offset;
+    c.X_AP = src.X_AP;
+    c.X_BQ = src.X_BQ;
+    c.distance = src.distance;
+    c.stiffness = src.stiffness;
+    c.damping = src.damping;
+    c.a = src.a;
+    c.lower = src.lower;
+    c.upper = src.upper;
+  }
+
+  const ir::Module& m_;
+  DiagnosticEngine& diags_;
+  Plant plant_;
+  bool ok_ = true;
+};
+
+}  // namespace
+
+std::optional<Plant> BuildPlant(const ir::Module& module, DiagnosticEngine& diags) {
+  return PlantBuilder(module, diags).Build();
+}
+
+}  // namespace mdlc::backend

@@ -1,0 +1,64 @@
+// compiler.h - the whole pipeline behind one call, for embedders and the CLI:
+// frontends -> passes -> backend.
+//
+//   mdlc::Compilation c;
+//   c.options.files = {"robot.urdf"};
+//   if (!c.Run()) { for (auto& d : c.diags.diagnostics()) ...; }
+//   const mdlc::backend::Plant& plant = c.model->plant;
+//
+// A Compilation owns everything a compile reads and makes: the source
+// buffers (diagnostics point into them), the IR and the instantiated model.
+// It is neither copyable nor movable, because those parts refer to each other.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "backend/backend.h"
+#include "frontend/frontend.h"
+#include "ir/diagnostics.h"
+#include "ir/module.h"
+#include "ir/source_manager.h"
+#include "passes/pass_manager.h"
+
+namespace mdlc {
+
+struct CompileOptions {
+  std::vector<std::string> files;
+  frontend::FrontendOptions frontend;
+  passes::PassInstrumentation instrumentation;
+  /// Pass names to run instead of the default pipeline (empty: default).
+  std::vector<std::string> pipeline;
+  /// Stop after the passes (no plant, no scene graph).
+  bool skip_backend = false;
+};
+
+class Compilation {
+ public:
+  Compilation() = default;
+  explicit Compilation(DiagnosticPolicy policy) : diags(std::move(policy)) {}
+  Compilation(const Compilation&) = delete;
+  Compilation& operator=(const Compilation&) = delete;
+
+  CompileOptions options;
+  SourceManager sources;
+  DiagnosticEngine diags;
+  ir::Module module;
+  std::optional<backend::CompiledModel> model;
+
+  /// Each stage returns false once an error has been reported.
+  bool RunFrontends();
+  bool RunPasses();
+  bool RunBackend();
+  /// All three; false when any error was reported.
+  bool Run();
+
+  /// The pass manager's --time-passes report, after RunPasses.
+  const std::string& timing_report() const { return timing_report_; }
+
+ private:
+  std::string timing_report_;
+};
+
+}  // namespace mdlc

@@ -1,0 +1,1 @@
+void mdlc_backend_placeholder(){}

@@ -1,0 +1,145 @@
+// plant.h - the instantiated multibody plant: plain data, no behaviour.
+//
+// A Plant is what BuildPlant (build_plant.h) makes of a resolved ir::Module.
+// It owns copies of everything it needs (names included), so it outlives the
+// Module it was built from. Tables keep the IR's indices: plant body i is IR
+// body i, plant joint j is IR joint j, and so on; `BodyId`, `JointId` and
+// `ModelId` therefore index both. Body 0 is the world body; model instance 0
+// is WorldModelInstance and 1 is DefaultModelInstance.
+//
+// Conventions (Drake's): X_AB is the pose of frame B in frame A. A joint
+// connects frame F, fixed on its parent body P (X_PF), with frame M, fixed on
+// its child body C (X_CM); its motion is X_FM(q) (kinematics.h). Mass
+// properties are about the body's center of mass and expressed in the body
+// frame. Generalized positions q and velocities v are laid out joint by joint
+// in `joint_order` (tree order: by tree level, and in IR order within a level).
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "ir/entities.h"
+#include "ir/ids.h"
+#include "ir/transform.h"
+
+namespace mdlc::backend {
+
+struct PlantBody {
+  std::string name;         // local name
+  std::string scoped_name;  // "instance::name"; just "world" for the world body
+  ModelId model;
+  double mass = 0;
+  Eigen::Vector3d p_BoBcm_B = Eigen::Vector3d::Zero();  // center of mass in B
+  Eigen::Matrix3d I_BBcm_B = Eigen::Matrix3d::Zero();   // inertia about Bcm, in B
+  bool is_world = false;
+  // topology: the joint whose child this body is, its parent body and its
+  // depth in the tree (world: invalid ids, level 0)
+  JointId inbound_joint;
+  BodyId parent;
+  int level = 0;
+};
+
+struct PlantFrame {
+  std::string name;
+  ModelId model;
+  BodyId body;
+  Transform X_BF;
+};
+
+/// A joint, with every per-coordinate vector normalized to its full length:
+/// limits, effort and damping have `nv` entries (+-infinity / 0 when the IR
+/// gave none) and `default_positions` has `nq` (zero, or the identity
+/// quaternion [1, 0, 0, 0] for quaternion_floating, where the IR gave none).
+struct PlantJoint {
+  std::string name;
+  std::string scoped_name;
+  ModelId model;
+  ir::JointType type = ir::JointType::Weld;
+  BodyId parent, child;
+  Transform X_PF, X_CM;
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitX();  // unit, in F
+  std::vector<double> lower, upper;
+  std::vector<double> velocity_lower, velocity_upper;
+  std::vector<double> acceleration_lower, acceleration_upper;
+  std::vector<double> effort;
+  std::vector<double> damping;
+  std::vector<double> default_positions;
+  double screw_thread_pitch = 0;  // meters per revolution
+  bool unnamed = false;           // synthesized by the compiler
+  int q_start = 0, nq = 0;        // this joint's slice of q
+  int v_start = 0, nv = 0;        // this joint's slice of v
+};
+
+struct PlantActuator {
+  std::string name;
+  ModelId model;
+  JointId joint;
+  double effort_limit = 0;  // +infinity when unbounded
+  double gear_ratio = 1;
+  double rotor_inertia = 0;
+  std::optional<double> kp, kd;
+};
+
+/// The IR constraint with its references resolved to ids. Which fields are
+/// meaningful depends on `type` (see ir::Constraint).
+struct PlantConstraint {
+  ModelId model;
+  ir::ConstraintType type = ir::ConstraintType::Coupler;
+  JointId joint0, joint1;  // coupler: q1 = gear_ratio * q0 + offset
+  double gear_ratio = 1, offset = 0;
+  BodyId body_A, body_B;  // ball, distance, weld
+  Transform X_AP, X_BQ;
+  double distance = 0, stiffness = 0, damping = 0;
+  std::vector<JointId> joints;  // tendon: lower <= sum a_i q_i + offset <= upper
+  std::vector<double> a;
+  double lower = 0, upper = 0;
+};
+
+// Force elements. The IR has none yet; the structures fix what the plant and
+// plant-json will carry once frontends produce them.
+struct LinearBushingRpy {
+  std::string frameA, frameC;  // scoped frame names
+  Eigen::Vector3d torque_stiffness = Eigen::Vector3d::Zero();
+  Eigen::Vector3d torque_damping = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force_stiffness = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force_damping = Eigen::Vector3d::Zero();
+};
+struct LinearSpringDamper {
+  BodyId body_A, body_B;
+  Eigen::Vector3d p_AP = Eigen::Vector3d::Zero(), p_BQ = Eigen::Vector3d::Zero();
+  double free_length = 0, stiffness = 0, damping = 0;
+};
+struct JointSpring {  // revolute_spring or prismatic_spring, by the joint's type
+  JointId joint;
+  double nominal = 0, stiffness = 0;
+};
+using ForceElement = std::variant<LinearBushingRpy, LinearSpringDamper, JointSpring>;
+
+struct Plant {
+  std::vector<std::string> model_instances;  // names, by ModelId
+  std::vector<PlantBody> bodies;             // by BodyId; 0 is world
+  std::vector<PlantFrame> frames;            // by FrameId
+  std::vector<PlantJoint> joints;            // by JointId
+  std::vector<PlantActuator> actuators;      // by ActuatorId
+  std::vector<PlantConstraint> constraints;  // by ConstraintId
+  std::vector<ForceElement> force_elements;
+
+  /// Every body, parents before children; world first.
+  std::vector<BodyId> body_order;
+  /// Every joint in tree order (the inbound joints of body_order[1..]); this
+  /// is the order of the joints' slices in q and v.
+  std::vector<JointId> joint_order;
+  int num_positions = 0;
+  int num_velocities = 0;
+
+  Eigen::Vector3d gravity{0, 0, -9.81};  // m/s^2, in world
+  double time_step = 0;                  // s; 0 = continuous
+
+  const PlantBody& body(BodyId id) const { return bodies[id.index()]; }
+  const PlantJoint& joint(JointId id) const { return joints[id.index()]; }
+};
+
+}  // namespace mdlc::backend

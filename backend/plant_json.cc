@@ -1,0 +1,392 @@
+// plant_json.cc - walks the compiled model in spec order into a JsonWriter.
+#include "backend/plant_json.h"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <variant>
+
+#include "backend/json_writer.h"
+#include "backend/kinematics.h"
+#include "backend/mass_matrix.h"
+
+namespace mdlc::backend {
+
+namespace {
+
+// Top-level members and the entries of top-level lists get a line each.
+constexpr int kPrettyDepth = 2;
+
+class PlantJsonEmitter {
+ public:
+  PlantJsonEmitter(const CompiledModel& model, const Eigen::VectorXd& q,
+                   const PlantJsonOptions& options)
+      : plant_(model.plant),
+        scene_(model.scene),
+        q_(q),
+        options_(options),
+        X_WB_(BodyPosesInWorld(model.plant, q)),
+        w_(kPrettyDepth) {}
+
+  std::string Emit() {
+    w_.BeginObject();
+    w_.Key("schema").String("mdlc-plant/1");
+    w_.Key("model_instances").BeginArray();
+    for (const std::string& name : plant_.model_instances) w_.String(name);
+    w_.EndArray();
+    List("bodies", plant_.bodies, [&](const PlantBody& b) { if (!b.is_world) Body(b); });
+    List("joints", plant_.joints, [&](const PlantJoint& j) { Joint(j); });
+    List("frames", plant_.frames, [&](const PlantFrame& f) { Frame(f); });
+    List("geometries", scene_.geometries, [&](const SceneGeometry& g) { Geometry(g); });
+    List("actuators", plant_.actuators, [&](const PlantActuator& a) { Actuator(a); });
+    List("collision_filters", scene_.collision_filters, [&](const auto& pair) {
+      w_.BeginArray().String(BodyName(pair.first)).String(BodyName(pair.second)).EndArray();
+    });
+    List("constraints", plant_.constraints, [&](const PlantConstraint& c) { Constraint(c); });
+    List("cameras", scene_.cameras, [&](const SceneCamera& c) { Camera(c); });
+    Dofs();
+    List("force_elements", plant_.force_elements, [&](const ForceElement& f) {
+      std::visit([&](const auto& element) { ForceElementEntry(element); }, f);
+    });
+    w_.Key("gravity");
+    Vector(plant_.gravity);
+    w_.Key("time_step").Number(plant_.time_step);
+    w_.EndObject();
+    return w_.Take();
+  }
+
+ private:
+  template <typename Range, typename Fn>
+  void List(std::string_view key, const Range& items, Fn&& entry) {
+    w_.Key(key).BeginArray();
+    for (const auto& item : items) entry(item);
+    w_.EndArray();
+  }
+
+  // -- values
+
+  void Vector(const Eigen::Ref<const Eigen::VectorXd>& v) {
+    w_.BeginArray();
+    for (Eigen::Index i = 0; i < v.size(); ++i) w_.Number(v[i]);
+    w_.EndArray();
+  }
+  void Numbers(std::span<const double> values) {
+    w_.BeginArray();
+    for (double x : values) w_.Number(x);  // non-finite -> null
+    w_.EndArray();
+  }
+  void Pose(const Transform& X) {
+    const Eigen::Quaterniond quat = CanonicalQuaternion(X.R);
+    w_.BeginObject();
+    w_.Key("p");
+    Vector(X.p);
+    w_.Key("q").BeginArray().Number(quat.w()).Number(quat.x()).Number(quat.y()).Number(quat.z());
+    w_.EndArray().EndObject();
+  }
+  void OptionalNumber(const std::optional<double>& x) {
+    if (x) w_.Number(*x);
+    else w_.Null();
+  }
+
+  // -- names
+
+  const std::string& Instance(ModelId model) const {
+    return plant_.model_instances[model.index()];
+  }
+  const std::string& BodyName(BodyId body) const { return plant_.body(body).scoped_name; }
+  const std::string& JointName(JointId joint) const { return plant_.joint(joint).scoped_name; }
+  void NameAndInstance(const std::string& name, ModelId model) {
+    w_.Key("name").String(name);
+    w_.Key("model_instance").String(Instance(model));
+  }
+
+  // -- entities
+
+  void Body(const PlantBody& body) {
+    const Eigen::Matrix3d& I = body.I_BBcm_B;
+    w_.BeginObject();
+    NameAndInstance(body.name, body.model);
+    w_.Key("mass").Number(body.mass);
+    w_.Key("com");
+    Vector(body.p_BoBcm_B);
+    w_.Key("inertia").BeginArray();
+    for (double x : {I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2)}) w_.Number(x);
+    w_.EndArray();
+    w_.Key("X_WB");
+    Pose(X_WB_[&body - plant_.bodies.data()]);
+    w_.EndObject();
+  }
+
+  void Joint(const PlantJoint& joint) {
+    const JointId id(static_cast<size_t>(&joint - plant_.joints.data()));
+    w_.BeginObject();
+    NameAndInstance(joint.name, joint.model);
+    w_.Key("type").String(ir::JointTypeName(joint.type));
+    w_.Key("parent").String(BodyName(joint.parent));
+    w_.Key("child").String(BodyName(joint.child));
+    if (joint.nv == 1) {
+      // TODO(issue 3): a curvilinear joint moves along its path's tangent;
+      // until the IR has paths it moves along F's x axis (kinematics.h).
+      const Eigen::Vector3d axis_F =
+          joint.type == ir::JointType::Curvilinear ? Eigen::Vector3d::UnitX() : joint.axis;
+      w_.Key("axis_W");
+      Vector(JointFrameInWorld(plant_, X_WB_, id).R * axis_F);
+    }
+    w_.Key("lower");
+    Numbers(joint.lower);
+    w_.Key("upper");
+    Numbers(joint.upper);
+    w_.Key("velocity_limit");
+    Numbers(joint.velocity_upper);
+    w_.Key("effort_limit");
+    Numbers(joint.effort);
+    w_.Key("damping");
+    Numbers(joint.damping);
+    w_.Key("default_positions");
+    Numbers(joint.default_positions);
+    if (std::any_of(joint.acceleration_upper.begin(), joint.acceleration_upper.end(),
+                    [](double x) { return std::isfinite(x); })) {
+      w_.Key("acceleration_limit");
+      Numbers(joint.acceleration_upper);
+    }
+    if (joint.type == ir::JointType::Screw) {
+      w_.Key("screw_thread_pitch").Number(joint.screw_thread_pitch);
+    }
+    if (joint.unnamed) w_.Key("unnamed").Bool(true);
+    w_.EndObject();
+  }
+
+  void Frame(const PlantFrame& frame) {
+    w_.BeginObject();
+    NameAndInstance(frame.name, frame.model);
+    w_.Key("body").String(BodyName(frame.body));
+    w_.Key("X_BF");
+    Pose(frame.X_BF);
+    w_.EndObject();
+  }
+
+  void Geometry(const SceneGeometry& g) {
+    w_.BeginObject();
+    NameAndInstance(g.name, g.model);
+    w_.Key("body").String(BodyName(g.body));
+    w_.Key("roles").BeginArray();
+    if (g.roles & ir::kProximityRole) w_.String("proximity");
+    if (g.roles & ir::kIllustrationRole) w_.String("illustration");
+    if (g.roles & ir::kPerceptionRole) w_.String("perception");
+    w_.EndArray();
+    w_.Key("shape");
+    Shape(g.shape);
+    w_.Key("X_WG");
+    Pose(X_WB_[g.body.index()] * g.X_BG);
+    w_.Key("properties").BeginObject();
+    for (const ir::Property& p : g.properties) {
+      w_.Key(p.key);
+      PropertyValue(p.value);
+    }
+    w_.EndObject();
+    w_.EndObject();
+  }
+
+  void Shape(const ir::Shape& shape) {
+    w_.BeginObject();
+    w_.Key("type").String(ir::ShapeTypeName(shape));
+    std::visit(
+        [&](const auto& s) {
+          using S = std::decay_t<decltype(s)>;
+          if constexpr (std::is_same_v<S, ir::Box>) {
+            w_.Key("size");
+            Vector(s.size);
+          } else if constexpr (std::is_same_v<S, ir::Sphere>) {
+            w_.Key("radius").Number(s.radius);
+          } else if constexpr (std::is_same_v<S, ir::Cylinder> || std::is_same_v<S, ir::Capsule>) {
+            w_.Key("radius").Number(s.radius);
+            w_.Key("length").Number(s.length);
+          } else if constexpr (std::is_same_v<S, ir::Ellipsoid>) {
+            w_.Key("a").Number(s.a);
+            w_.Key("b").Number(s.b);
+            w_.Key("c").Number(s.c);
+          } else if constexpr (std::is_same_v<S, ir::Mesh>) {
+            w_.Key("uri").String(s.uri);
+            w_.Key("scale");
+            Vector(s.scale);
+          }  // HalfSpace: the type alone
+        },
+        shape);
+    w_.EndObject();
+  }
+
+  void PropertyValue(const ir::PropertyValue& value) {
+    std::visit(
+        [&](const auto& v) {
+          using V = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<V, bool>) {
+            w_.Bool(v);
+          } else if constexpr (std::is_same_v<V, double>) {
+            w_.Number(v);
+          } else if constexpr (std::is_same_v<V, std::string>) {
+            w_.String(v);
+          } else if constexpr (std::is_same_v<V, std::vector<double>>) {
+            Numbers(v);
+          } else {
+            w_.BeginArray();
+            for (const std::string& s : v) w_.String(s);
+            w_.EndArray();
+          }
+        },
+        value);
+  }
+
+  void Actuator(const PlantActuator& a) {
+    w_.BeginObject();
+    NameAndInstance(a.name, a.model);
+    w_.Key("joint").String(JointName(a.joint));
+    w_.Key("effort_limit").Number(a.effort_limit);
+    w_.Key("gear_ratio").Number(a.gear_ratio);
+    w_.Key("rotor_inertia").Number(a.rotor_inertia);
+    w_.Key("kp");
+    OptionalNumber(a.kp);
+    w_.Key("kd");
+    OptionalNumber(a.kd);
+    w_.EndObject();
+  }
+
+  void Constraint(const PlantConstraint& c) {
+    using ir::ConstraintType;
+    w_.BeginObject();
+    w_.Key("type").String(ir::ConstraintTypeName(c.type));
+    w_.Key("model_instance").String(Instance(c.model));
+    switch (c.type) {
+      case ConstraintType::Coupler:
+        w_.Key("joint0").String(JointName(c.joint0));
+        w_.Key("joint1").String(JointName(c.joint1));
+        w_.Key("gear_ratio").Number(c.gear_ratio);
+        w_.Key("offset").Number(c.offset);
+        break;
+      case ConstraintType::Ball:
+      case ConstraintType::Distance:
+        w_.Key("body_A").String(BodyName(c.body_A));
+        w_.Key("body_B").String(BodyName(c.body_B));
+        w_.Key("p_AP");
+        Vector(c.X_AP.p);
+        w_.Key("p_BQ");
+        Vector(c.X_BQ.p);
+        if (c.type == ConstraintType::Distance) {
+          w_.Key("distance").Number(c.distance);
+          w_.Key("stiffness").Number(c.stiffness);
+          w_.Key("damping").Number(c.damping);
+        }
+        break;
+      case ConstraintType::Weld:
+        w_.Key("body_A").String(BodyName(c.body_A));
+        w_.Key("body_B").String(BodyName(c.body_B));
+        w_.Key("X_AP");
+        Pose(c.X_AP);
+        w_.Key("X_BQ");
+        Pose(c.X_BQ);
+        break;
+      case ConstraintType::Tendon:
+        w_.Key("joints").BeginArray();
+        for (JointId j : c.joints) w_.String(JointName(j));
+        w_.EndArray();
+        w_.Key("a");
+        Numbers(c.a);
+        w_.Key("offset").Number(c.offset);
+        w_.Key("lower").Number(c.lower);
+        w_.Key("upper").Number(c.upper);
+        w_.Key("stiffness").Number(c.stiffness);
+        w_.Key("damping").Number(c.damping);
+        break;
+    }
+    w_.EndObject();
+  }
+
+  void Camera(const SceneCamera& c) {
+    w_.BeginObject();
+    NameAndInstance(c.name, c.model);
+    w_.Key("body").String(BodyName(c.body));
+    w_.Key("X_BC");
+    Pose(c.X_BC);
+    w_.Key("width").Int(c.width);
+    w_.Key("height").Int(c.height);
+    w_.Key("fov_y").Number(c.fov_y);
+    w_.EndObject();
+  }
+
+  void ForceElementEntry(const LinearBushingRpy& e) {
+    w_.BeginObject();
+    w_.Key("type").String("linear_bushing_rpy");
+    w_.Key("frameA").String(e.frameA);
+    w_.Key("frameC").String(e.frameC);
+    w_.Key("torque_stiffness");
+    Vector(e.torque_stiffness);
+    w_.Key("torque_damping");
+    Vector(e.torque_damping);
+    w_.Key("force_stiffness");
+    Vector(e.force_stiffness);
+    w_.Key("force_damping");
+    Vector(e.force_damping);
+    w_.EndObject();
+  }
+  void ForceElementEntry(const LinearSpringDamper& e) {
+    w_.BeginObject();
+    w_.Key("type").String("linear_spring_damper");
+    w_.Key("body_A").String(BodyName(e.body_A));
+    w_.Key("p_AP");
+    Vector(e.p_AP);
+    w_.Key("body_B").String(BodyName(e.body_B));
+    w_.Key("p_BQ");
+    Vector(e.p_BQ);
+    w_.Key("free_length").Number(e.free_length);
+    w_.Key("stiffness").Number(e.stiffness);
+    w_.Key("damping").Number(e.damping);
+    w_.EndObject();
+  }
+  void ForceElementEntry(const JointSpring& e) {
+    const bool prismatic = plant_.joint(e.joint).type == ir::JointType::Prismatic;
+    w_.BeginObject();
+    w_.Key("type").String(prismatic ? "prismatic_spring" : "revolute_spring");
+    w_.Key("joint").String(JointName(e.joint));
+    w_.Key("nominal").Number(e.nominal);
+    w_.Key("stiffness").Number(e.stiffness);
+    w_.EndObject();
+  }
+
+  /// dofs, and (for at most mass_matrix_max_dofs of them, unless forced)
+  /// mass_matrix and reflected_inertia.
+  void Dofs() {
+    std::vector<JointId> dofs;
+    for (JointId j : plant_.joint_order) {
+      if (plant_.joint(j).nv == 1) dofs.push_back(j);
+    }
+    List("dofs", dofs, [&](JointId j) { w_.String(JointName(j)); });
+    if (dofs.size() > options_.mass_matrix_max_dofs && !options_.force_mass_matrix) return;
+
+    const Eigen::MatrixXd M = CalcMassMatrix(plant_, q_, dofs);
+    w_.Key("mass_matrix").BeginArray();
+    for (Eigen::Index r = 0; r < M.rows(); ++r) Vector(M.row(r).transpose());
+    w_.EndArray();
+
+    // gear_ratio^2 * rotor_inertia of the actuators on each dof
+    std::vector<double> reflected(plant_.joints.size(), 0.0);
+    for (const PlantActuator& a : plant_.actuators) {
+      reflected[a.joint.index()] += a.gear_ratio * a.gear_ratio * a.rotor_inertia;
+    }
+    List("reflected_inertia", dofs, [&](JointId j) { w_.Number(reflected[j.index()]); });
+  }
+
+  const Plant& plant_;
+  const SceneGraph& scene_;
+  const Eigen::VectorXd& q_;
+  const PlantJsonOptions& options_;
+  const std::vector<Transform> X_WB_;
+  JsonWriter w_;
+};
+
+}  // namespace
+
+std::string EmitPlantJson(const CompiledModel& model, const Eigen::VectorXd& q,
+                          const PlantJsonOptions& options) {
+  return PlantJsonEmitter(model, q, options).Emit();
+}
+
+}  // namespace mdlc::backend

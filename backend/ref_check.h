@@ -1,0 +1,41 @@
+// ref_check.h - the backend's defensive check of IR references (header-only).
+//
+// The passes resolve every Ref before the backend runs; the backend still
+// refuses a Ref whose id is invalid or out of its table's range, reporting
+// an unknown-reference error instead of indexing out of bounds.
+#pragma once
+
+#include <fmt/format.h>
+
+#include <string_view>
+
+#include "ir/diagnostics.h"
+#include "ir/module.h"
+
+namespace mdlc::backend {
+
+/// True when `id` indexes a table of `size` entries; else reports an error
+/// about `what` (e.g. "body") named `name`, at `loc`.
+template <typename IdT>
+bool CheckId(IdT id, size_t size, std::string_view what, std::string_view name, Loc loc,
+             DiagnosticEngine& diags) {
+  if (id.valid() && id.index() < size) return true;
+  diags.Report(DiagKind::UnknownReference, loc,
+               fmt::format("internal: unresolved reference to {} '{}'", what, name));
+  return false;
+}
+
+/// CheckId for a Ref: reports at the Ref's own location when it has one.
+template <typename IdT>
+bool CheckRef(const ir::Module& module, const ir::Ref<IdT>& ref, size_t size,
+              std::string_view what, Loc entity_loc, DiagnosticEngine& diags) {
+  return CheckId(ref.id, size, what, module.Text(ref.name),
+                 ref.loc.valid() ? ref.loc : entity_loc, diags);
+}
+
+inline bool CheckModel(const ir::Module& module, ModelId model, Loc loc,
+                       DiagnosticEngine& diags) {
+  return CheckId(model, module.models.size(), "model instance", "", loc, diags);
+}
+
+}  // namespace mdlc::backend

@@ -1,0 +1,62 @@
+// spatial.h - the little spatial algebra the backend needs (header-only).
+//
+// Spatial vectors are Eigen 6-vectors with the angular part first, as in
+// Drake: a spatial velocity is [w; v] and a motion subspace has one such
+// column per velocity coordinate. "Plücker coordinates about the world
+// origin" means: expressed in W, with the linear part being the velocity of
+// the body-fixed point that coincides with the world origin. In those
+// coordinates the spatial velocities of a tree simply add along a path, and
+// every body's spatial inertia can be summed without shifting.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace mdlc::backend {
+
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+/// A motion subspace: one spatial-velocity column per joint velocity (<= 6).
+using MotionSubspace = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6>;
+
+/// [a]x, the matrix with [a]x b = a x b.
+inline Eigen::Matrix3d Skew(const Eigen::Vector3d& a) {
+  Eigen::Matrix3d S;
+  S << 0, -a.z(), a.y(),
+       a.z(), 0, -a.x(),
+       -a.y(), a.x(), 0;
+  return S;
+}
+
+/// Spatial inertia about the world origin, in W, of a body of mass m whose
+/// center of mass is at c (= p_WBcm) with inertia I_c about it, expressed in W:
+///   [ I_c - m [c]x [c]x   m [c]x ]
+///   [ -m [c]x             m 1    ]
+/// so that the kinetic energy is 1/2 V^T I V for V in Plücker coordinates.
+inline Matrix6d SpatialInertiaAboutOrigin(double m, const Eigen::Vector3d& c,
+                                          const Eigen::Matrix3d& I_c) {
+  const Eigen::Matrix3d cx = Skew(c);
+  Matrix6d I;
+  I.topLeftCorner<3, 3>() = I_c - m * cx * cx;
+  I.topRightCorner<3, 3>() = m * cx;
+  I.bottomLeftCorner<3, 3>() = -m * cx;
+  I.bottomRightCorner<3, 3>() = m * Eigen::Matrix3d::Identity();
+  return I;
+}
+
+/// Re-expresses a joint's motion-subspace columns, given in its frame F
+/// (angular velocity of M in F, and velocity of M's origin in F, both
+/// expressed in F), as Plücker columns about the world origin: R_WF is F's
+/// orientation in W and p_WMo where M's origin is.
+inline MotionSubspace ToWorldPlucker(const MotionSubspace& H, const Eigen::Matrix3d& R_WF,
+                                     const Eigen::Vector3d& p_WMo) {
+  MotionSubspace S(6, H.cols());
+  for (Eigen::Index k = 0; k < H.cols(); ++k) {
+    const Eigen::Vector3d w = R_WF * H.col(k).head<3>();
+    const Eigen::Vector3d v_Mo = R_WF * H.col(k).tail<3>();
+    S.col(k).head<3>() = w;
+    S.col(k).tail<3>() = v_Mo + p_WMo.cross(w);  // v_O = v_Mo + w x (O - Mo)
+  }
+  return S;
+}
+
+}  // namespace mdlc::backend

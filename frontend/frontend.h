@@ -1,0 +1,49 @@
+// frontend.h - the entry point of every format frontend.
+//
+// A frontend lowers one file's syntax into the IR Module: it records what the
+// file says (names, numbers, references by name, locations) and reports what
+// it cannot read. It resolves nothing across entities; passes do that.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "ir/diagnostics.h"
+#include "ir/module.h"
+#include "ir/source_manager.h"
+
+namespace mdlc::frontend {
+
+enum class Format { Urdf, Sdf, Mjcf, Directives };
+std::string_view FormatName(Format format);
+
+/// The format a path names by its extension (case-insensitive): .urdf, .sdf,
+/// .xml (MJCF), .dmd.yaml. nullopt for anything else.
+std::optional<Format> FormatFromPath(std::string_view path);
+
+struct FrontendOptions {
+  /// Name the model instance this, instead of the name in the file.
+  std::optional<std::string> model_name;
+  /// On an instance-name collision, pick NAME_1, NAME_2, ... instead of failing.
+  bool auto_rename = false;
+};
+
+/// Everything a frontend works with. Owns nothing.
+struct FrontendContext {
+  SourceManager& sources;
+  DiagnosticEngine& diags;
+  ir::Module& module;
+  FrontendOptions options;
+};
+
+/// Loads `path` and lowers it with the frontend its extension selects.
+/// Returns the new model instance, or nullopt after reporting errors.
+std::optional<ModelId> ReadModelFile(const std::string& path, FrontendContext& ctx);
+
+/// Lowers a buffer already in the SourceManager as the given format.
+std::optional<ModelId> ReadModel(FileId file, Format format, FrontendContext& ctx);
+
+/// URDF frontend (frontend/urdf/).
+std::optional<ModelId> ReadUrdf(FileId file, FrontendContext& ctx);
+
+}  // namespace mdlc::frontend

@@ -1,0 +1,42 @@
+#include "frontend/model_naming.h"
+
+#include <fmt/format.h>
+
+namespace mdlc::frontend {
+namespace {
+std::optional<ModelId> FindModel(const ir::Module& module, std::string_view name) {
+  Symbol s = module.symbols.Find(name);
+  if (s.empty()) return std::nullopt;
+  for (size_t i = 0; i < module.models.size(); ++i) {
+    if (module.models[i].name == s) return ModelId(i);
+  }
+  return std::nullopt;
+}
+}  // namespace
+
+std::optional<ModelId> AddModelInstance(std::string_view requested, Loc loc,
+                                        ir::SourceFormat format, FrontendContext& ctx) {
+  std::string name(ctx.options.model_name ? std::string_view(*ctx.options.model_name) : requested);
+  if (auto existing = FindModel(ctx.module, name)) {
+    if (!ctx.options.auto_rename) {
+      auto diag = ctx.diags.Report(
+          DiagKind::DuplicateName, loc,
+          fmt::format("a model instance named '{}' already exists; rename the model or "
+                      "use --auto-rename",
+                      name));
+      const Loc first = ctx.module[*existing].loc;
+      if (first.valid()) diag.Note(first, "the first model instance of that name is defined here");
+      return std::nullopt;
+    }
+    for (int n = 1;; ++n) {
+      std::string candidate = fmt::format("{}_{}", name, n);
+      if (!FindModel(ctx.module, candidate)) {
+        name = std::move(candidate);
+        break;
+      }
+    }
+  }
+  return ctx.module.Add(ir::ModelInstance{ctx.module.Intern(name), loc, format});
+}
+
+}  // namespace mdlc::frontend

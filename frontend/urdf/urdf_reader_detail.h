@@ -1,0 +1,71 @@
+// urdf_reader_detail.h - state shared by the pieces of the URDF frontend.
+//
+// The URDF frontend is split by element group: urdf_reader.cc (the <robot>
+// element, dispatch, materials), urdf_link.cc (links, inertials, visuals,
+// collisions, shapes), urdf_joint.cc (joints, limits, mimic, frames).
+// Each piece lowers syntax into the Module and reports what it cannot read;
+// references stay names until the resolve-names pass.
+#pragma once
+
+#include <string>
+#include <unordered_map>
+
+#include "frontend/frontend.h"
+#include "frontend/xml/attribute_reader.h"
+#include "frontend/xml/xml_document.h"
+
+namespace mdlc::frontend::urdf {
+
+struct UrdfMaterial {
+  MaterialId id;
+  Loc loc;
+};
+
+class UrdfReader {
+ public:
+  UrdfReader(FrontendContext& ctx, const xml::XmlDocument& doc)
+      : ctx_(ctx), doc_(doc), attrs_(ctx.diags) {}
+
+  std::optional<ModelId> Read();
+
+ private:
+  // urdf_reader.cc
+  void ReadRobotMaterial(const xml::XmlElement& e);
+  /// Reads <material> inside a visual; returns the color it gives, if any.
+  std::optional<Eigen::Vector4d> ReadVisualMaterial(const xml::XmlElement& e, ir::Geometry& g);
+  std::optional<Eigen::Vector4d> ReadColor(const xml::XmlElement& material);
+  /// X_PC from an <origin xyz rpy> child (identity when absent).
+  Transform ReadOrigin(const xml::XmlElement& parent);
+  bool Ignored(const xml::XmlElement& e);
+
+  // urdf_link.cc
+  void ReadLink(const xml::XmlElement& e);
+  void ReadInertial(const xml::XmlElement& e, ir::Body& body);
+  void ReadGeometryElement(const xml::XmlElement& e, BodyId body, Symbol link_name,
+                           bool is_visual);
+  std::optional<ir::Shape> ReadShape(const xml::XmlElement& geometry);
+  Symbol UniqueGeometryName(BodyId body, uint8_t role, std::string_view wanted, bool explicit_name,
+                            Loc loc);
+
+  // urdf_joint.cc
+  void ReadJoint(const xml::XmlElement& e);
+  void ReadLimits(const xml::XmlElement& e, ir::Joint& joint, bool continuous);
+  void ReadMimic(const xml::XmlElement& e, const ir::Joint& joint);
+  void ReadFrame(const xml::XmlElement& e);
+  void ReadTransmission(const xml::XmlElement& e);
+  void CheckUniqueName(std::unordered_map<uint32_t, Loc>& seen, Symbol name, Loc loc,
+                       std::string_view kind);
+
+  FrontendContext& ctx_;
+  const xml::XmlDocument& doc_;
+  xml::AttributeReader attrs_;
+  ModelId model_;
+  std::unordered_map<uint32_t, UrdfMaterial> materials_;  // by Symbol value
+  std::unordered_map<uint32_t, Loc> link_names_, joint_names_, frame_names_;
+  // geometry names already used, per (body, role)
+  std::unordered_map<uint64_t, std::unordered_map<uint32_t, int>> geometry_names_;
+  ir::Module& module() { return ctx_.module; }
+  DiagnosticEngine& diags() { return ctx_.diags; }
+};
+
+}  // namespace mdlc::frontend::urdf

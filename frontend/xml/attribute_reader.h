@@ -1,0 +1,55 @@
+// attribute_reader.h - typed reading of XML attributes, with diagnostics.
+//
+// Every read reports its own problem at the attribute's location (or at the
+// element's, for a missing attribute) and returns nullopt, so callers simply
+// skip what they could not read and go on reporting other problems.
+#pragma once
+
+#include <Eigen/Core>
+#include <initializer_list>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "frontend/xml/xml_document.h"
+#include "ir/diagnostics.h"
+
+namespace mdlc::xml {
+
+/// Number syntax shared by all XML formats: C doubles, with "nan", "inf" and
+/// "-inf" accepted lexically (callers decide whether they are allowed).
+std::optional<double> ParseDouble(std::string_view text);
+/// Whitespace-separated doubles; nullopt if any token is not a number.
+std::optional<std::vector<double>> ParseDoubleList(std::string_view text);
+
+enum class Need { Optional, Required };
+enum class Finite { Required, NotRequired };
+
+class AttributeReader {
+ public:
+  explicit AttributeReader(DiagnosticEngine& diags) : diags_(diags) {}
+
+  std::optional<std::string_view> String(const XmlElement& e, std::string_view attr,
+                                         Need need = Need::Optional);
+  std::optional<double> Double(const XmlElement& e, std::string_view attr,
+                               Need need = Need::Optional, Finite finite = Finite::Required);
+  /// Exactly `count` doubles.
+  std::optional<std::vector<double>> Doubles(const XmlElement& e, std::string_view attr,
+                                             size_t count, Need need = Need::Optional,
+                                             Finite finite = Finite::Required);
+  std::optional<Eigen::Vector3d> Vector3(const XmlElement& e, std::string_view attr,
+                                         Need need = Need::Optional,
+                                         Finite finite = Finite::Required);
+  std::optional<bool> Bool(const XmlElement& e, std::string_view attr, Need need = Need::Optional);
+
+  /// Warns about attributes not in `known` (a misspelling, most likely).
+  void WarnUnknownAttributes(const XmlElement& e, std::initializer_list<std::string_view> known);
+
+  void ReportMissing(const XmlElement& e, std::string_view attr);
+  DiagnosticEngine& diags() { return diags_; }
+
+ private:
+  DiagnosticEngine& diags_;
+};
+
+}  // namespace mdlc::xml

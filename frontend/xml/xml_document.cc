@@ -1,0 +1,296 @@
+#include "frontend/xml/xml_document.h"
+
+#include <libxml/parser.h>
+#include <libxml/tree.h>
+#include <libxml/xmlerror.h>
+
+#include <cstring>
+#include <mutex>
+#include <vector>
+
+namespace mdlc::xml {
+namespace {
+
+// Offsets are stored as offset+1 in `_private` so that 0 means "unknown".
+void SetOffset(void*& slot, size_t offset) {
+  slot = reinterpret_cast<void*>(static_cast<uintptr_t>(offset + 1));
+}
+std::optional<size_t> GetOffset(void* slot) {
+  auto v = reinterpret_cast<uintptr_t>(slot);
+  if (v == 0) return std::nullopt;
+  return static_cast<size_t>(v - 1);
+}
+
+std::string_view QualifiedName(const xmlChar* prefix_src, const xmlChar* name, std::string& storage) {
+  if (!prefix_src) return reinterpret_cast<const char*>(name);
+  storage = reinterpret_cast<const char*>(prefix_src);
+  storage += ':';
+  storage += reinterpret_cast<const char*>(name);
+  return storage;
+}
+
+// No document may pull in anything from outside: refuse every external load.
+xmlParserInputPtr RefuseExternalEntity(const char*, const char*, xmlParserCtxtPtr) { return nullptr; }
+
+void InstallSecurityHooks() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    xmlInitParser();
+    xmlSetExternalEntityLoader(RefuseExternalEntity);
+  });
+}
+
+struct ErrorSink {
+  DiagnosticEngine* diags;
+  FileId file;
+  const SourceManager* sources;
+  int reported = 0;
+};
+
+void OnXmlError(void* user, xmlErrorPtr error) {
+  auto* sink = static_cast<ErrorSink*>(user);
+  // namespace complaints (an undeclared "drake:" prefix) are not errors for
+  // robot formats: names keep their prefix as written
+  if (error->domain == XML_FROM_NAMESPACE) return;
+  if (error->level == XML_ERR_WARNING) return;
+  if (++sink->reported > 20) return;
+  std::string message = error->message ? error->message : "unknown XML error";
+  while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
+  Loc loc{sink->file, static_cast<uint32_t>(error->line > 0 ? error->line : 0),
+          static_cast<uint32_t>(error->int2 > 0 ? error->int2 : 0)};
+  sink->diags->Report(DiagKind::XmlSyntax, loc, "Failed to parse XML: " + message);
+}
+
+bool IsNameChar(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == ':' || c == '-' ||
+         c == '.' || static_cast<unsigned char>(c) >= 0x80;
+}
+
+// Scans markup from `pos`, skipping comments, PIs, CDATA, DOCTYPE and end
+// tags, and returns the offset of the next start tag's '<' (npos at the end).
+// Reports entity declarations found in a DOCTYPE.
+size_t NextStartTag(std::string_view text, size_t pos, std::optional<size_t>* entity_decl) {
+  while (true) {
+    pos = text.find('<', pos);
+    if (pos == std::string_view::npos || pos + 1 >= text.size()) return std::string_view::npos;
+    std::string_view rest = text.substr(pos);
+    auto skip_past = [&](std::string_view terminator) {
+      size_t end = text.find(terminator, pos);
+      return end == std::string_view::npos ? text.size() : end + terminator.size();
+    };
+    if (rest.starts_with("<!--")) {
+      pos = skip_past("-->");
+    } else if (rest.starts_with("<![CDATA[")) {
+      pos = skip_past("]]>");
+    } else if (rest.starts_with("<?")) {
+      pos = skip_past("?>");
+    } else if (rest.starts_with("<!")) {
+      // DOCTYPE (with an optional [internal subset]) or another declaration
+      size_t i = pos + 2;
+      int depth = 0;
+      for (; i < text.size(); ++i) {
+        char c = text[i];
+        if (c == '[') ++depth;
+        else if (c == ']') --depth;
+        else if (c == '>' && depth <= 0) break;
+        else if (c == '<' && text.substr(i).starts_with("<!ENTITY") && entity_decl && !*entity_decl)
+          *entity_decl = i;
+      }
+      pos = i + 1;
+    } else if (rest[1] == '/') {
+      pos = skip_past(">");
+    } else {
+      return pos;
+    }
+  }
+}
+
+}  // namespace
+
+XmlDocument::~XmlDocument() {
+  if (doc_) xmlFreeDoc(doc_);
+}
+
+std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager& sources,
+                                                DiagnosticEngine& diags) {
+  InstallSecurityHooks();
+  std::string_view text = sources.Contents(file);
+  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
+    diags.Report(DiagKind::EmptyFile, Loc{file, 1, 1}, "Failed to parse XML: the file is empty");
+    return nullptr;
+  }
+  // refuse entity declarations before libxml2 ever sees them
+  std::optional<size_t> entity_decl;
+  const size_t first_tag = NextStartTag(text, 0, &entity_decl);
+  if (entity_decl) {
+    diags.Report(DiagKind::EntityDeclaration, sources.LocForOffset(file, *entity_decl),
+                 "entity declarations are not allowed in robot model files; "
+                 "mdlc never expands or fetches entities");
+    return nullptr;
+  }
+  if (first_tag == std::string_view::npos) {
+    diags.Report(DiagKind::XmlSyntax, Loc{file, 1, 1}, "Failed to parse XML: no root element");
+    return nullptr;
+  }
+
+  ErrorSink sink{&diags, file, &sources};
+  xmlSetStructuredErrorFunc(&sink, OnXmlError);
+  const int options = XML_PARSE_NONET | XML_PARSE_HUGE | XML_PARSE_BIG_LINES |
+                      XML_PARSE_NOWARNING | XML_PARSE_NOERROR;
+  xmlDocPtr doc = xmlReadMemory(text.data(), static_cast<int>(text.size()),
+                                sources.Path(file).c_str(), nullptr, options);
+  xmlSetStructuredErrorFunc(nullptr, nullptr);
+  if (!doc || sink.reported > 0) {
+    if (doc) xmlFreeDoc(doc);
+    if (sink.reported == 0) {
+      diags.Report(DiagKind::XmlSyntax, Loc{file, 1, 1}, "Failed to parse XML");
+    }
+    return nullptr;
+  }
+  std::unique_ptr<XmlDocument> result(new XmlDocument());
+  result->doc_ = doc;
+  result->file_ = file;
+  result->sources_ = &sources;
+  if (!result->AssignOffsets(diags)) return nullptr;
+  return result;
+}
+
+bool XmlDocument::AssignOffsets(DiagnosticEngine& diags) {
+  std::string_view text = sources_->Contents(file_);
+  size_t pos = 0;
+  std::string scratch;
+  // iterative pre-order walk over element nodes: document order
+  xmlNode* node = xmlDocGetRootElement(doc_);
+  while (node) {
+    if (node->type == XML_ELEMENT_NODE) {
+      pos = NextStartTag(text, pos, nullptr);
+      if (pos == std::string_view::npos) break;  // defensive: keep unknown offsets
+      SetOffset(node->_private, pos);
+      // the start tag: "<name attr='v' ...>"
+      size_t i = pos + 1;
+      while (i < text.size() && IsNameChar(text[i])) ++i;
+      while (i < text.size()) {
+        while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+        if (i >= text.size() || text[i] == '>' || text[i] == '/') break;
+        const size_t name_start = i;
+        while (i < text.size() && IsNameChar(text[i])) ++i;
+        std::string_view attr_name = text.substr(name_start, i - name_start);
+        while (i < text.size() && text[i] != '"' && text[i] != '\'') ++i;
+        if (i >= text.size()) break;
+        const char quote = text[i];
+        const size_t close = text.find(quote, i + 1);
+        i = close == std::string_view::npos ? text.size() : close + 1;
+        for (xmlAttr* a = node->properties; a; a = a->next) {
+          if (GetOffset(a->_private)) continue;
+          std::string_view qn = QualifiedName(a->ns ? a->ns->prefix : nullptr, a->name, scratch);
+          if (qn == attr_name) {
+            SetOffset(a->_private, name_start);
+            break;
+          }
+        }
+      }
+      pos = i;
+      if (node->children) {
+        node = node->children;
+        continue;
+      }
+    } else if (node->type != XML_ENTITY_REF_NODE && node->children &&
+               node->type != XML_ATTRIBUTE_NODE) {
+      node = node->children;
+      continue;
+    }
+    // climb until a sibling exists
+    while (node && !node->next) {
+      node = node->parent;
+      if (node && node->type == XML_DOCUMENT_NODE) node = nullptr;
+    }
+    if (node) node = node->next;
+  }
+  return true;
+}
+
+XmlElement XmlDocument::Root() const { return XmlElement(this, xmlDocGetRootElement(doc_)); }
+
+// ---- XmlElement ---------------------------------------------------------------
+
+namespace {
+xmlNode* SkipToElement(xmlNode* n) {
+  while (n && n->type != XML_ELEMENT_NODE) n = n->next;
+  return n;
+}
+thread_local std::string name_storage;
+}  // namespace
+
+std::string_view XmlElement::Name() const {
+  return QualifiedName(node_->ns ? node_->ns->prefix : nullptr, node_->name, name_storage);
+}
+
+Loc XmlElement::GetLoc() const {
+  if (auto offset = GetOffset(node_->_private)) return doc_->LocForOffset(*offset);
+  return Loc{doc_->file(), static_cast<uint32_t>(xmlGetLineNo(node_)), 0};
+}
+
+XmlElement XmlElement::FirstChild() const { return XmlElement(doc_, SkipToElement(node_->children)); }
+XmlElement XmlElement::NextSibling() const { return XmlElement(doc_, SkipToElement(node_->next)); }
+
+XmlElement XmlElement::Child(std::string_view name) const {
+  for (XmlElement c = FirstChild(); c; c = c.NextSibling()) {
+    if (c.Name() == name) return c;
+  }
+  return {};
+}
+
+XmlElement XmlElement::Parent() const {
+  xmlNode* p = node_->parent;
+  return XmlElement(doc_, p && p->type == XML_ELEMENT_NODE ? p : nullptr);
+}
+
+_xmlAttr* XmlElement::FirstAttribute() const { return node_->properties; }
+_xmlAttr* XmlElement::NextAttribute(_xmlAttr* attr) { return attr->next; }
+
+XmlAttribute XmlElement::MakeAttribute(_xmlAttr* a) const {
+  XmlAttribute out;
+  // attribute names are stable in the dictionary; qualified names need storage
+  if (a->ns && a->ns->prefix) {
+    thread_local std::string attr_name_storage;
+    std::string_view qn = QualifiedName(a->ns->prefix, a->name, attr_name_storage);
+    out.name = qn;
+  } else {
+    out.name = reinterpret_cast<const char*>(a->name);
+  }
+  if (a->children && a->children->content && !a->children->next) {
+    out.value = reinterpret_cast<const char*>(a->children->content);
+  } else if (a->children) {
+    // values with entity references: only the literal text segments
+    out.value = reinterpret_cast<const char*>(a->children->content ? a->children->content
+                                                                   : BAD_CAST "");
+  }
+  if (auto offset = GetOffset(a->_private)) {
+    out.loc = doc_->LocForOffset(*offset);
+  } else {
+    out.loc = GetLoc();
+  }
+  return out;
+}
+
+XmlAttribute XmlElement::Attribute(std::string_view name) const {
+  std::string scratch;
+  for (xmlAttr* a = node_->properties; a; a = a->next) {
+    if (QualifiedName(a->ns ? a->ns->prefix : nullptr, a->name, scratch) == name) {
+      return MakeAttribute(a);
+    }
+  }
+  return {};
+}
+
+std::string XmlElement::Text() const {
+  std::string out;
+  for (xmlNode* c = node_->children; c; c = c->next) {
+    if ((c->type == XML_TEXT_NODE || c->type == XML_CDATA_SECTION_NODE) && c->content) {
+      out += reinterpret_cast<const char*>(c->content);
+    }
+  }
+  return out;
+}
+
+}  // namespace mdlc::xml

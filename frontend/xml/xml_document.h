@@ -1,0 +1,109 @@
+// xml_document.h - a libxml2 DOM with exact source locations.
+//
+// libxml2 records only a line per node (and that line is where the start tag
+// ends). XmlDocument recovers exact positions itself: after parsing, one
+// linear scan of the buffer pairs each start tag, in document order, with its
+// element node, and each attribute with its name's offset. Offsets live in the
+// nodes' `_private` slots, so lookups are O(1) with no side tables.
+//
+// Security: documents are parsed with no network access, no DTD loading and
+// no entity substitution, and any document that declares entities is
+// rejected before libxml2 sees it (no billion-laughs, no external entities).
+// Deep documents are allowed (XML_PARSE_HUGE); nothing here recurses per
+// nesting level.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "ir/diagnostics.h"
+#include "ir/location.h"
+#include "ir/source_manager.h"
+
+struct _xmlDoc;
+struct _xmlNode;
+struct _xmlAttr;
+
+namespace mdlc::xml {
+
+class XmlDocument;
+
+/// A view of one attribute: its value and location.
+struct XmlAttribute {
+  std::string_view name;   // qualified ("drake:acceleration")
+  std::string_view value;  // as written (entities never expanded)
+  Loc loc;                 // at the attribute's name
+  bool present() const { return loc.valid(); }
+};
+
+/// A non-owning view of one element node.
+class XmlElement {
+ public:
+  XmlElement() = default;
+  XmlElement(const XmlDocument* doc, _xmlNode* node) : doc_(doc), node_(node) {}
+
+  explicit operator bool() const { return node_ != nullptr; }
+  /// Qualified name as written: "link", "drake:joint".
+  std::string_view Name() const;
+  Loc GetLoc() const;
+
+  /// First child element, next sibling element (null element at the end).
+  XmlElement FirstChild() const;
+  XmlElement NextSibling() const;
+  /// First child element named `name`.
+  XmlElement Child(std::string_view name) const;
+  XmlElement Parent() const;
+
+  /// The attribute `name`; `present()` is false when absent.
+  XmlAttribute Attribute(std::string_view name) const;
+  /// Every attribute in document order, calling f(XmlAttribute).
+  template <typename F>
+  void ForEachAttribute(F&& f) const;
+  /// Concatenated text content of the element (entity references skipped).
+  std::string Text() const;
+
+  _xmlNode* raw() const { return node_; }
+
+ private:
+  friend class XmlDocument;
+  XmlAttribute MakeAttribute(_xmlAttr* attr) const;
+  _xmlAttr* FirstAttribute() const;
+  static _xmlAttr* NextAttribute(_xmlAttr* attr);
+
+  const XmlDocument* doc_ = nullptr;
+  _xmlNode* node_ = nullptr;
+};
+
+class XmlDocument {
+ public:
+  ~XmlDocument();
+  XmlDocument(const XmlDocument&) = delete;
+  XmlDocument& operator=(const XmlDocument&) = delete;
+
+  /// Parses a buffer already in the SourceManager. Reports problems to
+  /// `diags` and returns null when the document is unusable.
+  static std::unique_ptr<XmlDocument> Parse(FileId file, const SourceManager& sources,
+                                            DiagnosticEngine& diags);
+
+  XmlElement Root() const;
+  FileId file() const { return file_; }
+  const SourceManager& sources() const { return *sources_; }
+  Loc LocForOffset(size_t offset) const { return sources_->LocForOffset(file_, offset); }
+
+ private:
+  XmlDocument() = default;
+  bool AssignOffsets(DiagnosticEngine& diags);
+
+  _xmlDoc* doc_ = nullptr;
+  FileId file_;
+  const SourceManager* sources_ = nullptr;
+};
+
+template <typename F>
+void XmlElement::ForEachAttribute(F&& f) const {
+  for (_xmlAttr* a = FirstAttribute(); a; a = NextAttribute(a)) f(MakeAttribute(a));
+}
+
+}  // namespace mdlc::xml

@@ -1,0 +1,219 @@
+// entities.h - the typed IR: plain structs, one per entity kind.
+//
+// Entities refer to each other by typed ids (ids.h), never by pointer, so a
+// Module can be copied, printed and compared. A reference that a frontend
+// reads from the file starts as a name (`Ref::name`, with its location) and a
+// pass (resolve-names) fills in `Ref::id`. Every entity carries the location
+// of the element that declared it.
+//
+// Units are SI and angles radians everywhere: frontends normalise on the way in.
+#pragma once
+
+#include <Eigen/Core>
+#include <limits>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "ir/ids.h"
+#include "ir/location.h"
+#include "ir/symbol.h"
+#include "ir/transform.h"
+
+namespace mdlc::ir {
+
+/// A reference to another entity: the (possibly scoped) name the source
+/// wrote, and the id a pass resolved it to.
+template <typename IdT>
+struct Ref {
+  Symbol name;
+  Loc loc;
+  IdT id;
+  bool resolved() const { return id.valid(); }
+};
+
+enum class SourceFormat { Urdf, Sdf, Mjcf, Directives, Internal };
+
+struct ModelInstance {
+  Symbol name;
+  Loc loc;
+  SourceFormat format = SourceFormat::Internal;
+};
+
+/// Mass properties exactly as the file gave them: mass, the pose of the
+/// inertia frame I in the body frame B, and the moments and products of
+/// inertia about the center of mass expressed in I. The check-inertia pass
+/// validates them; the backend re-expresses them in B.
+struct Inertial {
+  Loc loc;
+  double mass = 0;
+  Transform X_BI;
+  double ixx = 0, iyy = 0, izz = 0, ixy = 0, ixz = 0, iyz = 0;
+};
+
+struct Body {
+  Symbol name;
+  ModelId model;
+  Loc loc;
+  std::optional<Inertial> inertial;  // absent: massless body
+  bool is_world = false;             // the one world body (body 0)
+};
+
+/// A frame fixed to a body: X_BF.
+struct Frame {
+  Symbol name;
+  ModelId model;
+  Loc loc;
+  Ref<BodyId> body;
+  Transform X_BF;
+};
+
+enum class JointType {
+  Revolute,
+  Prismatic,
+  Ball,
+  Universal,
+  Planar,
+  Screw,
+  Curvilinear,
+  Weld,
+  QuaternionFloating,
+  RpyFloating,
+};
+/// Drake's name for the type ("revolute", "quaternion_floating", ...).
+std::string_view JointTypeName(JointType type);
+/// Number of position coordinates (quaternion floating: 7) and of velocities.
+int JointPositionCount(JointType type);
+int JointVelocityCount(JointType type);
+
+/// Limits per velocity coordinate; +-infinity when unbounded.
+struct JointLimits {
+  std::vector<double> lower, upper;              // position
+  std::vector<double> velocity_lower, velocity_upper;
+  std::vector<double> acceleration_lower, acceleration_upper;
+  std::vector<double> effort;                    // symmetric, per dof
+};
+
+/// A joint connects frame F, fixed on the parent body (X_PF), with frame M,
+/// fixed on the child body (X_CM); the joint's motion is X_FM(q).
+struct Joint {
+  Symbol name;
+  ModelId model;
+  Loc loc;
+  JointType type = JointType::Weld;
+  Ref<BodyId> parent;
+  Ref<BodyId> child;
+  Transform X_PF;
+  Transform X_CM;
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitX();  // unit, in F (== in M)
+  JointLimits limits;
+  std::vector<double> damping;            // per velocity coordinate
+  std::vector<double> default_positions;  // per position coordinate; empty = zero/identity
+  double screw_thread_pitch = 0;          // screw joints: meters per revolution
+  bool unnamed = false;                   // synthesized by the compiler
+};
+
+struct Box { Eigen::Vector3d size; };
+struct Sphere { double radius = 0; };
+struct Cylinder { double radius = 0, length = 0; };
+struct Capsule { double radius = 0, length = 0; };
+struct Ellipsoid { double a = 0, b = 0, c = 0; };
+struct HalfSpace {};
+struct Mesh {
+  std::string uri;       // as written
+  std::string resolved;  // filesystem path once resolved
+  Eigen::Vector3d scale = Eigen::Vector3d::Ones();
+  bool convex = false;   // drake:declare_convex / convex hull requested
+};
+using Shape = std::variant<Box, Sphere, Cylinder, Capsule, Ellipsoid, HalfSpace, Mesh>;
+/// Drake's shape type name ("box", ..., "mesh" or "convex" for meshes).
+std::string_view ShapeTypeName(const Shape& shape);
+
+enum GeometryRole : uint8_t {
+  kProximityRole = 1,
+  kIllustrationRole = 2,
+  kPerceptionRole = 4,
+};
+
+/// A value in a geometry's property map.
+using PropertyValue = std::variant<bool, double, std::string, std::vector<double>,
+                                   std::vector<std::string>>;
+struct Property {
+  std::string key;  // "group/name"
+  PropertyValue value;
+};
+
+struct Material {
+  Symbol name;
+  ModelId model;
+  Loc loc;
+  std::optional<Eigen::Vector4d> rgba;
+  std::string texture;
+};
+
+struct Geometry {
+  Symbol name;
+  ModelId model;
+  Loc loc;
+  Ref<BodyId> body;
+  Transform X_BG;
+  Shape shape;
+  uint8_t roles = 0;  // GeometryRole bits
+  Ref<MaterialId> material;  // optional; empty name when none
+  std::optional<Eigen::Vector4d> rgba;  // inline color, wins over material
+  std::vector<Property> properties;
+};
+
+struct Actuator {
+  Symbol name;
+  ModelId model;
+  Loc loc;
+  Ref<JointId> joint;
+  double effort_limit = std::numeric_limits<double>::infinity();
+  double gear_ratio = 1;
+  double rotor_inertia = 0;
+  std::optional<double> kp, kd;
+};
+
+enum class ConstraintType { Coupler, Ball, Distance, Weld, Tendon };
+std::string_view ConstraintTypeName(ConstraintType type);
+
+struct Constraint {
+  ModelId model;
+  Loc loc;
+  ConstraintType type = ConstraintType::Coupler;
+  // coupler: q1 = gear_ratio * q0 + offset, joint1 being the mimicking joint
+  Ref<JointId> joint0, joint1;
+  double gear_ratio = 1, offset = 0;
+  // ball / distance / weld
+  Ref<BodyId> body_A, body_B;
+  Transform X_AP, X_BQ;
+  double distance = 0, stiffness = 0, damping = 0;
+  // tendon
+  std::vector<Ref<JointId>> joints;
+  std::vector<double> a;
+  double lower = -std::numeric_limits<double>::infinity();
+  double upper = std::numeric_limits<double>::infinity();
+};
+
+struct CollisionFilterGroup {
+  Symbol name;
+  ModelId model;
+  Loc loc;
+  std::vector<Ref<BodyId>> members;
+  std::vector<Ref<FilterGroupId>> member_groups;
+  std::vector<Ref<FilterGroupId>> ignored_groups;
+};
+
+struct Camera {
+  Symbol name;
+  ModelId model;
+  Loc loc;
+  Ref<BodyId> body;
+  Transform X_BC;  // Drake camera frame: +z forward, +x right, +y down
+  int width = 640, height = 480;
+  double fov_y = 0.785398163397448;
+};
+
+}  // namespace mdlc::ir

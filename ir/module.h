@@ -1,0 +1,74 @@
+// module.h - the IR container: one table per entity kind, plus the symbols.
+//
+// Tables are in insertion order, which is document order, so everything that
+// iterates a Module is deterministic. Entity 0 of `bodies` is the world body
+// and models 0 and 1 are WorldModelInstance and DefaultModelInstance, as in
+// Drake; a fresh Module already holds them.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ir/entities.h"
+#include "ir/symbol.h"
+
+namespace mdlc::ir {
+
+inline constexpr ModelId kWorldModel{uint32_t{0}};
+inline constexpr ModelId kDefaultModel{uint32_t{1}};
+inline constexpr BodyId kWorldBody{uint32_t{0}};
+
+struct Module {
+  Module();
+
+  SymbolTable symbols;
+  std::vector<ModelInstance> models;
+  std::vector<Body> bodies;
+  std::vector<Frame> frames;
+  std::vector<Joint> joints;
+  std::vector<Geometry> geometries;
+  std::vector<Material> materials;
+  std::vector<Actuator> actuators;
+  std::vector<Constraint> constraints;
+  std::vector<CollisionFilterGroup> filter_groups;
+  std::vector<Camera> cameras;
+
+  // typed access
+  ModelInstance& operator[](ModelId id) { return models[id.index()]; }
+  Body& operator[](BodyId id) { return bodies[id.index()]; }
+  Frame& operator[](FrameId id) { return frames[id.index()]; }
+  Joint& operator[](JointId id) { return joints[id.index()]; }
+  Geometry& operator[](GeometryId id) { return geometries[id.index()]; }
+  Material& operator[](MaterialId id) { return materials[id.index()]; }
+  Actuator& operator[](ActuatorId id) { return actuators[id.index()]; }
+  const ModelInstance& operator[](ModelId id) const { return models[id.index()]; }
+  const Body& operator[](BodyId id) const { return bodies[id.index()]; }
+  const Frame& operator[](FrameId id) const { return frames[id.index()]; }
+  const Joint& operator[](JointId id) const { return joints[id.index()]; }
+  const Geometry& operator[](GeometryId id) const { return geometries[id.index()]; }
+  const Material& operator[](MaterialId id) const { return materials[id.index()]; }
+  const Actuator& operator[](ActuatorId id) const { return actuators[id.index()]; }
+
+  // adding entities returns their id
+  ModelId Add(ModelInstance m) { models.push_back(std::move(m)); return ModelId(models.size() - 1); }
+  BodyId Add(Body b) { bodies.push_back(std::move(b)); return BodyId(bodies.size() - 1); }
+  FrameId Add(Frame f) { frames.push_back(std::move(f)); return FrameId(frames.size() - 1); }
+  JointId Add(Joint j) { joints.push_back(std::move(j)); return JointId(joints.size() - 1); }
+  GeometryId Add(Geometry g) { geometries.push_back(std::move(g)); return GeometryId(geometries.size() - 1); }
+  MaterialId Add(Material m) { materials.push_back(std::move(m)); return MaterialId(materials.size() - 1); }
+  ActuatorId Add(Actuator a) { actuators.push_back(std::move(a)); return ActuatorId(actuators.size() - 1); }
+  ConstraintId Add(Constraint c) { constraints.push_back(std::move(c)); return ConstraintId(constraints.size() - 1); }
+  FilterGroupId Add(CollisionFilterGroup g) { filter_groups.push_back(std::move(g)); return FilterGroupId(filter_groups.size() - 1); }
+  CameraId Add(Camera c) { cameras.push_back(std::move(c)); return CameraId(cameras.size() - 1); }
+
+  std::string_view Text(Symbol s) const { return symbols.Text(s); }
+  Symbol Intern(std::string_view s) { return symbols.Intern(s); }
+
+  /// "model::local" for an entity of `model` (just "world" for the world body).
+  std::string ScopedName(ModelId model, Symbol local) const;
+  std::string ScopedName(BodyId body) const;
+  std::string ScopedName(JointId joint) const;
+};
+
+}  // namespace mdlc::ir

@@ -1,0 +1,183 @@
+#include "ir/printer.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+
+namespace mdlc::ir {
+namespace {
+
+class Printer {
+ public:
+  Printer(const Module& m, const SourceManager& s, const PrintOptions& o)
+      : m_(m), sources_(s), options_(o) {}
+
+  std::string Run();
+
+ private:
+  std::string Num(double v) const {
+    if (std::isnan(v)) return "nan";
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    if (v == 0) return "0";  // folds -0
+    return fmt::format("{}", v);
+  }
+  std::string Vec(const Eigen::Ref<const Eigen::VectorXd>& v) const {
+    std::string out = "[";
+    for (Eigen::Index i = 0; i < v.size(); ++i) out += (i ? " " : "") + Num(v[i]);
+    return out + "]";
+  }
+  std::string List(const std::vector<double>& v) const {
+    return Vec(Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size())));
+  }
+  std::string Pose(const Transform& X) const {
+    if (X.IsIdentity()) return "identity";
+    return fmt::format("{{p={} rpy={}}}", Vec(X.p), Vec(RpyFromRotation(X.R)));
+  }
+  std::string Where(Loc loc) const {
+    if (!options_.locations || !loc.valid()) return "";
+    return fmt::format("  loc({}:{}:{})",
+                       std::filesystem::path(sources_.Path(loc.file)).filename().string(),
+                       loc.line, loc.column);
+  }
+  std::string Name(Symbol s) const { return fmt::format("\"{}\"", m_.Text(s)); }
+  std::string Model(ModelId id) const {
+    return id.valid() && id.index() < m_.models.size() ? std::string(m_.Text(m_[id].name))
+                                                       : "<invalid>";
+  }
+  template <typename IdT>
+  std::string RefText(const Ref<IdT>& ref, auto&& scoped) const {
+    if (ref.resolved()) return scoped(ref.id);
+    return fmt::format("?{}", Name(ref.name));
+  }
+  std::string BodyRef(const Ref<BodyId>& r) const {
+    return RefText(r, [&](BodyId id) { return m_.ScopedName(id); });
+  }
+  std::string JointRef(const Ref<JointId>& r) const {
+    return RefText(r, [&](JointId id) { return m_.ScopedName(id); });
+  }
+  std::string Shape(const ir::Shape& shape) const;
+
+  const Module& m_;
+  const SourceManager& sources_;
+  const PrintOptions& options_;
+  std::string out_;
+};
+
+std::string Printer::Shape(const ir::Shape& shape) const {
+  struct V {
+    const Printer& p;
+    std::string operator()(const Box& b) const { return "box size=" + p.Vec(b.size); }
+    std::string operator()(const Sphere& s) const { return "sphere radius=" + p.Num(s.radius); }
+    std::string operator()(const Cylinder& c) const {
+      return fmt::format("cylinder radius={} length={}", p.Num(c.radius), p.Num(c.length));
+    }
+    std::string operator()(const Capsule& c) const {
+      return fmt::format("capsule radius={} length={}", p.Num(c.radius), p.Num(c.length));
+    }
+    std::string operator()(const Ellipsoid& e) const {
+      return fmt::format("ellipsoid abc=[{} {} {}]", p.Num(e.a), p.Num(e.b), p.Num(e.c));
+    }
+    std::string operator()(const HalfSpace&) const { return "half_space"; }
+    std::string operator()(const Mesh& m) const {
+      return fmt::format("{} uri=\"{}\" scale={}", m.convex ? "convex" : "mesh", m.uri,
+                         p.Vec(m.scale));
+    }
+  };
+  return std::visit(V{*this}, shape);
+}
+
+std::string Printer::Run() {
+  out_ += "module {\n";
+  for (size_t i = 0; i < m_.models.size(); ++i) {
+    out_ += fmt::format("  model #{} {}{}\n", i, Name(m_.models[i].name), Where(m_.models[i].loc));
+  }
+  for (size_t i = 0; i < m_.bodies.size(); ++i) {
+    const Body& b = m_.bodies[i];
+    out_ += fmt::format("  body #{} {} model={}", i, Name(b.name), Model(b.model));
+    if (b.is_world) out_ += " world";
+    if (b.inertial) {
+      const Inertial& in = *b.inertial;
+      out_ += fmt::format(" mass={} X_BI={} inertia=[{} {} {} {} {} {}]", Num(in.mass),
+                          Pose(in.X_BI), Num(in.ixx), Num(in.iyy), Num(in.izz), Num(in.ixy),
+                          Num(in.ixz), Num(in.iyz));
+    }
+    out_ += Where(b.loc) + "\n";
+  }
+  for (size_t i = 0; i < m_.frames.size(); ++i) {
+    const Frame& f = m_.frames[i];
+    out_ += fmt::format("  frame #{} {} model={} body={} X_BF={}{}\n", i, Name(f.name),
+                        Model(f.model), BodyRef(f.body), Pose(f.X_BF), Where(f.loc));
+  }
+  for (size_t i = 0; i < m_.joints.size(); ++i) {
+    const Joint& j = m_.joints[i];
+    out_ += fmt::format("  joint #{} {} model={} {} parent={} child={} X_PF={} X_CM={}", i,
+                        Name(j.name), Model(j.model), JointTypeName(j.type), BodyRef(j.parent),
+                        BodyRef(j.child), Pose(j.X_PF), Pose(j.X_CM));
+    if (JointVelocityCount(j.type) > 0) {
+      out_ += fmt::format(" axis={} lower={} upper={} velocity={} effort={} damping={}",
+                          Vec(j.axis), List(j.limits.lower), List(j.limits.upper),
+                          List(j.limits.velocity_upper), List(j.limits.effort), List(j.damping));
+    }
+    if (!j.default_positions.empty()) out_ += " default=" + List(j.default_positions);
+    if (j.unnamed) out_ += " unnamed";
+    out_ += Where(j.loc) + "\n";
+  }
+  for (size_t i = 0; i < m_.materials.size(); ++i) {
+    const Material& mat = m_.materials[i];
+    out_ += fmt::format("  material #{} {} model={}", i, Name(mat.name), Model(mat.model));
+    if (mat.rgba) out_ += " rgba=" + Vec(*mat.rgba);
+    if (!mat.texture.empty()) out_ += fmt::format(" texture=\"{}\"", mat.texture);
+    out_ += Where(mat.loc) + "\n";
+  }
+  for (size_t i = 0; i < m_.geometries.size(); ++i) {
+    const Geometry& g = m_.geometries[i];
+    std::string roles;
+    if (g.roles & kProximityRole) roles += "proximity,";
+    if (g.roles & kIllustrationRole) roles += "illustration,";
+    if (g.roles & kPerceptionRole) roles += "perception,";
+    if (!roles.empty()) roles.pop_back();
+    out_ += fmt::format("  geometry #{} {} model={} body={} roles={} {} X_BG={}", i, Name(g.name),
+                        Model(g.model), BodyRef(g.body), roles, Shape(g.shape), Pose(g.X_BG));
+    if (g.rgba) out_ += " rgba=" + Vec(*g.rgba);
+    for (const Property& p : g.properties) {
+      out_ += " " + p.key + "=" + std::visit([&](const auto& v) -> std::string {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, bool>) return v ? "true" : "false";
+        else if constexpr (std::is_same_v<T, double>) return Num(v);
+        else if constexpr (std::is_same_v<T, std::string>) return "\"" + v + "\"";
+        else if constexpr (std::is_same_v<T, std::vector<double>>) return List(v);
+        else return fmt::format("[{}]", fmt::join(v, " "));
+      }, p.value);
+    }
+    out_ += Where(g.loc) + "\n";
+  }
+  for (size_t i = 0; i < m_.actuators.size(); ++i) {
+    const Actuator& a = m_.actuators[i];
+    out_ += fmt::format("  actuator #{} {} model={} joint={} effort={} gear={} rotor_inertia={}{}\n",
+                        i, Name(a.name), Model(a.model), JointRef(a.joint), Num(a.effort_limit),
+                        Num(a.gear_ratio), Num(a.rotor_inertia), Where(a.loc));
+  }
+  for (size_t i = 0; i < m_.constraints.size(); ++i) {
+    const Constraint& c = m_.constraints[i];
+    out_ += fmt::format("  constraint #{} {} model={}", i, ConstraintTypeName(c.type), Model(c.model));
+    if (c.type == ConstraintType::Coupler) {
+      out_ += fmt::format(" joint0={} joint1={} gear_ratio={} offset={}", JointRef(c.joint0),
+                          JointRef(c.joint1), Num(c.gear_ratio), Num(c.offset));
+    } else {
+      out_ += fmt::format(" body_A={} body_B={}", BodyRef(c.body_A), BodyRef(c.body_B));
+    }
+    out_ += Where(c.loc) + "\n";
+  }
+  out_ += "}\n";
+  return std::move(out_);
+}
+
+}  // namespace
+
+std::string PrintModule(const Module& module, const SourceManager& sources,
+                        const PrintOptions& options) {
+  return Printer(module, sources, options).Run();
+}
+
+}  // namespace mdlc::ir

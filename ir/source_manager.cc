@@ -1,0 +1,90 @@
+#include "ir/source_manager.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace mdlc {
+
+struct SourceManager::Buffer {
+  std::string path;
+  std::string contents;
+  Loc included_from;
+  // offsets of the first byte of each line; built on first use
+  mutable std::vector<size_t> line_starts;
+
+  const std::vector<size_t>& LineStarts() const {
+    if (line_starts.empty()) {
+      line_starts.push_back(0);
+      const char* data = contents.data();
+      for (size_t i = 0, n = contents.size(); i < n; ++i) {
+        if (data[i] == '\n') line_starts.push_back(i + 1);
+      }
+    }
+    return line_starts;
+  }
+};
+
+SourceManager::SourceManager() = default;
+SourceManager::~SourceManager() = default;
+
+std::optional<FileId> SourceManager::LoadFile(const std::string& path, Loc included_from,
+                                              std::string* error) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    if (error) *error = std::strerror(errno);
+    return std::nullopt;
+  }
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) {
+    if (error) *error = "read error";
+    return std::nullopt;
+  }
+  return AddBuffer(path, std::move(ss).str(), included_from);
+}
+
+FileId SourceManager::AddBuffer(std::string name, std::string contents, Loc included_from) {
+  auto buffer = std::make_unique<Buffer>();
+  buffer->path = std::move(name);
+  buffer->contents = std::move(contents);
+  buffer->included_from = included_from;
+  buffers_.push_back(std::move(buffer));
+  return FileId{static_cast<uint32_t>(buffers_.size() - 1)};
+}
+
+const SourceManager::Buffer& SourceManager::Get(FileId id) const { return *buffers_.at(id.value); }
+
+std::string_view SourceManager::Contents(FileId id) const { return Get(id).contents; }
+const std::string& SourceManager::Path(FileId id) const { return Get(id).path; }
+Loc SourceManager::IncludedFrom(FileId id) const { return Get(id).included_from; }
+size_t SourceManager::FileCount() const { return buffers_.size(); }
+
+Loc SourceManager::LocForOffset(FileId id, size_t offset) const {
+  const auto& starts = Get(id).LineStarts();
+  auto it = std::upper_bound(starts.begin(), starts.end(), offset);
+  const size_t line_index = static_cast<size_t>(it - starts.begin()) - 1;
+  return Loc{id, static_cast<uint32_t>(line_index + 1),
+             static_cast<uint32_t>(offset - starts[line_index] + 1)};
+}
+
+size_t SourceManager::LineStartOffset(FileId id, uint32_t line) const {
+  const auto& starts = Get(id).LineStarts();
+  if (line == 0 || line > starts.size()) return std::string::npos;
+  return starts[line - 1];
+}
+
+std::string_view SourceManager::LineText(FileId id, uint32_t line) const {
+  const Buffer& buffer = Get(id);
+  const size_t start = LineStartOffset(id, line);
+  if (start == std::string::npos) return {};
+  std::string_view rest = std::string_view(buffer.contents).substr(start);
+  const size_t end = rest.find('\n');
+  std::string_view text = rest.substr(0, end);
+  if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+  return text;
+}
+
+}  // namespace mdlc

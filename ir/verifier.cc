@@ -1,0 +1,90 @@
+#include "ir/verifier.h"
+
+#include <fmt/format.h>
+
+namespace mdlc::ir {
+namespace {
+
+class Verifier {
+ public:
+  Verifier(const Module& m, VerifyLevel level, DiagnosticEngine& d) : m_(m), level_(level), d_(d) {}
+
+  bool Run() {
+    if (m_.bodies.empty() || !m_.bodies[0].is_world) Fail({}, "body 0 must be the world body");
+    for (const Body& b : m_.bodies) CheckModel(b.model, b.loc, "body");
+    for (const Frame& f : m_.frames) {
+      CheckModel(f.model, f.loc, "frame");
+      CheckRef(f.body, m_.bodies.size(), "frame body");
+    }
+    for (const Joint& j : m_.joints) {
+      CheckModel(j.model, j.loc, "joint");
+      CheckRef(j.parent, m_.bodies.size(), "joint parent");
+      CheckRef(j.child, m_.bodies.size(), "joint child");
+      const size_t nv = static_cast<size_t>(JointVelocityCount(j.type));
+      if (j.limits.lower.size() != nv || j.limits.upper.size() != nv || j.damping.size() != nv) {
+        Fail(j.loc, fmt::format("joint '{}' has limit or damping vectors of the wrong size",
+                                m_.Text(j.name)));
+      }
+      if (j.name.empty()) Fail(j.loc, "joint without a name");
+    }
+    for (const Geometry& g : m_.geometries) {
+      CheckModel(g.model, g.loc, "geometry");
+      CheckRef(g.body, m_.bodies.size(), "geometry body");
+    }
+    for (const Actuator& a : m_.actuators) CheckRef(a.joint, m_.joints.size(), "actuator joint");
+    for (const Constraint& c : m_.constraints) {
+      if (c.type == ConstraintType::Coupler) {
+        CheckRef(c.joint0, m_.joints.size(), "coupler joint");
+        CheckRef(c.joint1, m_.joints.size(), "coupler joint");
+      }
+    }
+    if (level_ >= VerifyLevel::Tree) CheckTree();
+    return ok_;
+  }
+
+ private:
+  void Fail(Loc loc, std::string message) {
+    ok_ = false;
+    d_.Report(DiagKind::VerifierFailure, loc, "IR verifier: " + message);
+  }
+  void CheckModel(ModelId id, Loc loc, const char* what) {
+    if (!id.valid() || id.index() >= m_.models.size()) {
+      Fail(loc, fmt::format("{} has an invalid model instance id", what));
+    }
+  }
+  template <typename IdT>
+  void CheckRef(const Ref<IdT>& ref, size_t table_size, const char* what) {
+    if (ref.id.valid() && ref.id.index() >= table_size) {
+      Fail(ref.loc, fmt::format("{} reference is out of range", what));
+    }
+    if (level_ >= VerifyLevel::Resolved && !ref.id.valid()) {
+      Fail(ref.loc, fmt::format("{} reference '{}' is unresolved", what, m_.Text(ref.name)));
+    }
+  }
+  void CheckTree() {
+    std::vector<int> inboard(m_.bodies.size(), 0);
+    for (const Joint& j : m_.joints) {
+      if (j.child.id.valid() && j.child.id.index() < inboard.size()) ++inboard[j.child.id.index()];
+    }
+    for (size_t i = 1; i < m_.bodies.size(); ++i) {
+      if (inboard[i] != 1) {
+        Fail(m_.bodies[i].loc, fmt::format("body '{}' has {} inboard joints, expected 1",
+                                           m_.ScopedName(BodyId(i)), inboard[i]));
+      }
+    }
+    if (inboard[0] != 0) Fail({}, "the world body is the child of a joint");
+  }
+
+  const Module& m_;
+  VerifyLevel level_;
+  DiagnosticEngine& d_;
+  bool ok_ = true;
+};
+
+}  // namespace
+
+bool VerifyModule(const Module& module, VerifyLevel level, DiagnosticEngine& diags) {
+  return Verifier(module, level, diags).Run();
+}
+
+}  // namespace mdlc::ir

@@ -1,0 +1,160 @@
+// build_kinematic_tree.cc - the build-kinematic-tree pass: checks that the
+// joints form a tree rooted at the world body, and gives every body without
+// an inboard joint a floating joint to the world (URDF-017, as Drake's plant
+// does at Finalize).
+//
+// Reads: resolved joint parent/child ids. Writes: new quaternion_floating
+// joints (unnamed, named after their body). Afterwards the verifier's Tree
+// level holds. Iterative throughout: chains of any depth are fine.
+#include <fmt/format.h>
+
+#include <unordered_set>
+
+#include "passes/pass_registry.h"
+
+namespace mdlc::passes {
+namespace {
+
+class BuildKinematicTreePass : public Pass {
+ public:
+  std::string_view name() const override { return "build-kinematic-tree"; }
+  std::string_view description() const override {
+    return "Check the joints form a tree and add floating joints for free bodies";
+  }
+  ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Tree; }
+  bool Run(PassContext& ctx) override;
+
+ private:
+  void ReportLoop(PassContext& ctx, const std::vector<JointId>& inboard, size_t start);
+  void AddFloatingJoint(PassContext& ctx, BodyId body);
+};
+
+bool BuildKinematicTreePass::Run(PassContext& ctx) {
+  ir::Module& m = ctx.module;
+  const size_t errors_before = ctx.diags.error_count();
+  std::vector<JointId> inboard(m.bodies.size());
+  for (size_t i = 0; i < m.joints.size(); ++i) {
+    const ir::Joint& j = m.joints[i];
+    if (!j.parent.resolved() || !j.child.resolved()) continue;
+    if (j.parent.id == j.child.id) {
+      ctx.diags.Report(DiagKind::SelfJoint, j.loc,
+                       fmt::format("joint '{}' connects link '{}' to itself", m.Text(j.name),
+                                   m.Text(m[j.child.id].name)));
+      continue;
+    }
+    if (j.child.id == ir::kWorldBody) {
+      ctx.diags.Report(DiagKind::KinematicLoop, j.child.loc,
+                       fmt::format("joint '{}' makes the world its child; the world is the root "
+                                   "of the kinematic tree and has no parent",
+                                   m.Text(j.name)));
+      continue;
+    }
+    JointId& slot = inboard[j.child.id.index()];
+    if (slot.valid()) {
+      ctx.diags
+          .Report(DiagKind::MultipleParents, j.child.loc,
+                  fmt::format("link '{}' has a second parent joint '{}'; a kinematic tree gives "
+                              "each link one parent (loops are not supported)",
+                              m.ScopedName(j.child.id), m.Text(j.name)))
+          .Note(m[slot].loc, fmt::format("its first parent joint '{}' is here", m.Text(m[slot].name)));
+      continue;
+    }
+    slot = JointId(i);
+  }
+  if (ctx.diags.error_count() != errors_before) return false;
+
+  // walk up from every body; a walk that meets itself is a loop
+  enum : uint8_t { kUnvisited, kOnPath, kDone };
+  std::vector<uint8_t> state(m.bodies.size(), kUnvisited);
+  state[0] = kDone;
+  std::vector<size_t> path;
+  for (size_t start = 1; start < m.bodies.size(); ++start) {
+    path.clear();
+    size_t b = start;
+    bool cycle = false;
+    while (state[b] != kDone) {
+      if (state[b] == kOnPath) {
+        cycle = true;
+        break;
+      }
+      state[b] = kOnPath;
+      path.push_back(b);
+      if (!inboard[b].valid()) break;  // a root: will get a floating joint
+      b = m[inboard[b]].parent.id.index();
+    }
+    if (cycle) ReportLoop(ctx, inboard, b);
+    for (size_t p : path) state[p] = kDone;
+  }
+  if (ctx.diags.error_count() != errors_before) return false;
+
+  for (size_t b = 1; b < inboard.size(); ++b) {
+    if (!inboard[b].valid()) AddFloatingJoint(ctx, BodyId(b));
+  }
+  return true;
+}
+
+void BuildKinematicTreePass::ReportLoop(PassContext& ctx, const std::vector<JointId>& inboard,
+                                        size_t start) {
+  ir::Module& m = ctx.module;
+  // collect the cycle's joints, from `start` around to itself
+  std::vector<JointId> cycle;
+  size_t b = start;
+  do {
+    cycle.push_back(inboard[b]);
+    b = m[inboard[b]].parent.id.index();
+  } while (b != start && cycle.size() <= m.bodies.size());
+  std::string names;
+  for (auto it = cycle.rbegin(); it != cycle.rend(); ++it) {
+    names += fmt::format("{}'{}'", names.empty() ? "" : " -> ", m.Text(m[*it].name));
+  }
+  auto diag = ctx.diags.Report(
+      DiagKind::KinematicLoop, m[cycle.front()].loc,
+      fmt::format("kinematic loop through joints {}: the plant must be a tree", names));
+  for (JointId j : cycle) {
+    diag.Note(m[j].loc, fmt::format("joint '{}' connects '{}' to '{}'", m.Text(m[j].name),
+                                     m.Text(m[m[j].parent.id].name),
+                                     m.Text(m[m[j].child.id].name)));
+  }
+}
+
+void BuildKinematicTreePass::AddFloatingJoint(PassContext& ctx, BodyId body) {
+  ir::Module& m = ctx.module;
+  const ir::Body& b = m[body];
+  // Drake names a free body's joint after the body, prefixing '_' on a clash
+  std::string name(m.Text(b.name));
+  auto taken = [&](const std::string& n) {
+    Symbol s = m.symbols.Find(n);
+    if (s.empty()) return false;
+    for (const ir::Joint& j : m.joints) {
+      if (j.model == b.model && j.name == s) return true;
+    }
+    return false;
+  };
+  while (taken(name)) name = "_" + name;
+  ir::Joint j;
+  j.name = m.Intern(name);
+  j.model = b.model;
+  j.loc = b.loc;
+  j.type = ir::JointType::QuaternionFloating;
+  j.parent = {m.bodies[0].name, {}, ir::kWorldBody};
+  j.child = {b.name, b.loc, body};
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  j.limits.lower.assign(6, -kInf);
+  j.limits.upper.assign(6, kInf);
+  j.limits.velocity_lower.assign(6, -kInf);
+  j.limits.velocity_upper.assign(6, kInf);
+  j.limits.acceleration_lower.assign(6, -kInf);
+  j.limits.acceleration_upper.assign(6, kInf);
+  j.limits.effort.assign(6, kInf);
+  j.damping.assign(6, 0.0);
+  j.unnamed = true;
+  m.Add(std::move(j));
+}
+
+}  // namespace
+
+std::unique_ptr<Pass> CreateBuildKinematicTreePass() {
+  return std::make_unique<BuildKinematicTreePass>();
+}
+
+}  // namespace mdlc::passes

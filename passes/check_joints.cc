@@ -1,0 +1,61 @@
+// check_joints.cc - the check-joints pass: joint-level rules that need
+// resolved references, chiefly coupler constraints from URDF <mimic>
+// (URDF-018).
+//
+// Reads: resolved joints and constraints. Writes: drops couplers that Drake
+// would ignore (with a warning).
+#include <fmt/format.h>
+
+#include "passes/pass_registry.h"
+
+namespace mdlc::passes {
+namespace {
+
+class CheckJointsPass : public Pass {
+ public:
+  std::string_view name() const override { return "check-joints"; }
+  std::string_view description() const override {
+    return "Check coupler (mimic) constraints against the joints they couple";
+  }
+  ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Resolved; }
+  bool Run(PassContext& ctx) override;
+};
+
+bool CheckJointsPass::Run(PassContext& ctx) {
+  ir::Module& m = ctx.module;
+  const size_t errors_before = ctx.diags.error_count();
+  std::vector<ir::Constraint> kept;
+  kept.reserve(m.constraints.size());
+  for (ir::Constraint& c : m.constraints) {
+    if (c.type != ir::ConstraintType::Coupler) {
+      kept.push_back(std::move(c));
+      continue;
+    }
+    const ir::Joint& leader = m[c.joint0.id];
+    const ir::Joint& follower = m[c.joint1.id];
+    const int n0 = ir::JointVelocityCount(leader.type), n1 = ir::JointVelocityCount(follower.type);
+    if (n0 != n1) {
+      ctx.diags.Report(DiagKind::BadValue, c.loc,
+                       fmt::format("joint '{}' cannot mimic joint '{}': they have different "
+                                   "numbers of degrees of freedom ({} and {})",
+                                   m.Text(follower.name), m.Text(leader.name), n1, n0));
+      continue;
+    }
+    if (n0 != 1) {
+      ctx.diags.Report(DiagKind::JointWarning, c.loc,
+                       fmt::format("mimic on joint '{}' is ignored: only single-dof joints can "
+                                   "be coupled",
+                                   m.Text(follower.name)));
+      continue;
+    }
+    kept.push_back(std::move(c));
+  }
+  m.constraints = std::move(kept);
+  return ctx.diags.error_count() == errors_before;
+}
+
+}  // namespace
+
+std::unique_ptr<Pass> CreateCheckJointsPass() { return std::make_unique<CheckJointsPass>(); }
+
+}  // namespace mdlc::passes

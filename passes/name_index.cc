@@ -1,0 +1,66 @@
+#include "passes/name_index.h"
+
+#include <algorithm>
+
+namespace mdlc::passes {
+
+std::optional<SplitName> SplitScopedName(std::string_view name) {
+  if (name.empty()) return std::nullopt;
+  if (name.starts_with("::") || name.ends_with("::")) return std::nullopt;
+  if (name.find("::::") != std::string_view::npos) return std::nullopt;
+  const size_t pos = name.rfind("::");
+  if (pos == std::string_view::npos) return SplitName{{}, name};
+  return SplitName{name.substr(0, pos), name.substr(pos + 2)};
+}
+
+ModelIndex::ModelIndex(const ir::Module& module) {
+  for (size_t i = 0; i < module.models.size(); ++i) {
+    map_.emplace(std::string(module.Text(module.models[i].name)), ModelId(i));
+  }
+}
+
+std::optional<ModelId> ModelIndex::Find(std::string_view name) const {
+  auto it = map_.find(std::string(name));
+  if (it == map_.end()) return std::nullopt;
+  return it->second;
+}
+
+namespace {
+size_t EditDistance(std::string_view a, std::string_view b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+}  // namespace
+
+std::optional<std::string> ClosestName(std::string_view wanted,
+                                       const std::vector<std::string_view>& candidates) {
+  // only a typo's worth of edits, and never scan absurdly many candidates
+  const size_t limit = std::max<size_t>(1, wanted.size() / 3);
+  std::optional<std::string> best;
+  size_t best_distance = limit + 1;
+  size_t scanned = 0;
+  for (std::string_view c : candidates) {
+    if (++scanned > 10000) break;
+    const size_t length_gap = c.size() > wanted.size() ? c.size() - wanted.size()
+                                                       : wanted.size() - c.size();
+    if (length_gap >= best_distance) continue;
+    const size_t d = EditDistance(wanted, c);
+    if (d < best_distance) {
+      best_distance = d;
+      best = std::string(c);
+    }
+  }
+  return best;
+}
+
+}  // namespace mdlc::passes

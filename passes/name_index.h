@@ -1,0 +1,56 @@
+// name_index.h - lookup of entities by (model instance, local name), and the
+// scoped-name rules shared by every pass that resolves references
+// (COMMON-030..033).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "ir/module.h"
+
+namespace mdlc::passes {
+
+/// Splits "a::b::c" into scope "a::b" and element "c" (scope empty when
+/// unscoped). Returns nullopt for malformed names ("::x", "x::", "a::::b").
+struct SplitName {
+  std::string_view scope;
+  std::string_view element;
+};
+std::optional<SplitName> SplitScopedName(std::string_view name);
+
+template <typename IdT>
+class NameIndex {
+ public:
+  void Add(ModelId model, Symbol name, IdT id) { map_.emplace(Key(model, name), id); }
+  std::optional<IdT> Find(ModelId model, Symbol name) const {
+    auto it = map_.find(Key(model, name));
+    if (it == map_.end()) return std::nullopt;
+    return it->second;
+  }
+
+ private:
+  static uint64_t Key(ModelId model, Symbol name) {
+    return (uint64_t{model.value} << 32) | name.value;
+  }
+  std::unordered_map<uint64_t, IdT> map_;
+};
+
+/// Model instances by full name.
+class ModelIndex {
+ public:
+  explicit ModelIndex(const ir::Module& module);
+  std::optional<ModelId> Find(std::string_view name) const;
+
+ private:
+  std::unordered_map<std::string, ModelId> map_;
+};
+
+/// The closest of `candidates` to `wanted` by edit distance, when close
+/// enough to be a plausible typo ("did you mean ...").
+std::optional<std::string> ClosestName(std::string_view wanted,
+                                       const std::vector<std::string_view>& candidates);
+
+}  // namespace mdlc::passes

@@ -1,0 +1,36 @@
+// pass.h - a named transformation or check over the IR Module.
+//
+// Passes read and write the Module and report problems to the diagnostic
+// engine; they keep going after an error where they can, and return false
+// when they reported one. Each pass states the verifier level that holds
+// once it has run (see ir/verifier.h).
+#pragma once
+
+#include <memory>
+#include <string_view>
+
+#include "ir/diagnostics.h"
+#include "ir/module.h"
+#include "ir/source_manager.h"
+#include "ir/verifier.h"
+
+namespace mdlc::passes {
+
+struct PassContext {
+  ir::Module& module;
+  DiagnosticEngine& diags;
+  const SourceManager& sources;
+};
+
+class Pass {
+ public:
+  virtual ~Pass() = default;
+  virtual std::string_view name() const = 0;
+  virtual std::string_view description() const = 0;
+  /// The invariants that hold after this pass succeeded.
+  virtual ir::VerifyLevel level_after() const { return ir::VerifyLevel::Raw; }
+  /// Returns false when the pass reported an error.
+  virtual bool Run(PassContext& ctx) = 0;
+};
+
+}  // namespace mdlc::passes

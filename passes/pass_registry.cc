@@ -1,0 +1,29 @@
+#include "passes/pass_registry.h"
+
+namespace mdlc::passes {
+namespace {
+template <auto Factory>
+PassInfo Info() {
+  auto pass = Factory();
+  return PassInfo{pass->name(), pass->description(), Factory};
+}
+}  // namespace
+
+const std::vector<PassInfo>& RegisteredPasses() {
+  static const std::vector<PassInfo> passes = {
+      Info<CreateResolveNamesPass>(),
+      Info<CreateCheckJointsPass>(),
+      Info<CreateBuildKinematicTreePass>(),
+      Info<CreateCheckInertiaPass>(),
+  };
+  return passes;
+}
+
+std::unique_ptr<Pass> CreatePass(std::string_view name) {
+  for (const auto& info : RegisteredPasses()) {
+    if (info.name == name) return info.create();
+  }
+  return nullptr;
+}
+
+}  // namespace mdlc::passes

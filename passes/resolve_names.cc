@@ -1,0 +1,128 @@
+// resolve_names.cc - the resolve-names pass: turns every by-name reference
+// (joint parent/child, frame body, geometry body, actuator joint, constraint
+// joints and bodies) into an id.
+//
+// Reads: Ref::name and the referring entity's model instance.
+// Writes: Ref::id. Afterwards the verifier's Resolved level holds.
+// Lookup (COMMON-030..033): "world" is the world body everywhere; an
+// unscoped name is looked up in the referring entity's own instance; a
+// scoped name "a::x" in the nested instance "<own>::a", then in "a".
+#include <fmt/format.h>
+
+#include "passes/name_index.h"
+#include "passes/pass_registry.h"
+
+namespace mdlc::passes {
+namespace {
+
+class ResolveNamesPass : public Pass {
+ public:
+  std::string_view name() const override { return "resolve-names"; }
+  std::string_view description() const override {
+    return "Resolve by-name references between entities to ids";
+  }
+  ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Resolved; }
+  bool Run(PassContext& ctx) override;
+
+ private:
+  template <typename IdT, typename Table>
+  void Resolve(PassContext& ctx, ir::Ref<IdT>& ref, ModelId scope, const NameIndex<IdT>& index,
+               const Table& table, std::string_view kind, std::string_view user);
+  std::optional<ModelId> ScopeFor(PassContext& ctx, ModelId own, std::string_view scope) const;
+
+  std::optional<ModelIndex> models_;
+};
+
+std::optional<ModelId> ResolveNamesPass::ScopeFor(PassContext& ctx, ModelId own,
+                                                  std::string_view scope) const {
+  if (scope.empty()) return own;
+  std::string nested = fmt::format("{}::{}", ctx.module.Text(ctx.module[own].name), scope);
+  if (auto m = models_->Find(nested)) return m;
+  return models_->Find(scope);
+}
+
+template <typename IdT, typename Table>
+void ResolveNamesPass::Resolve(PassContext& ctx, ir::Ref<IdT>& ref, ModelId scope,
+                               const NameIndex<IdT>& index, const Table& table,
+                               std::string_view kind, std::string_view user) {
+  if (ref.resolved() || ref.name.empty()) return;
+  ir::Module& m = ctx.module;
+  std::string_view text = m.Text(ref.name);
+  if constexpr (std::is_same_v<IdT, BodyId>) {
+    if (text == "world") {
+      ref.id = ir::kWorldBody;
+      return;
+    }
+  }
+  auto split = SplitScopedName(text);
+  if (!split) {
+    ctx.diags.Report(DiagKind::InvalidName, ref.loc,
+                     fmt::format("'{}' is not a valid scoped name", text));
+    return;
+  }
+  std::optional<ModelId> model = ScopeFor(ctx, scope, split->scope);
+  if (!model) {
+    ctx.diags.Report(DiagKind::UnknownReference, ref.loc,
+                     fmt::format("{} names {} '{}' in unknown model instance '{}'", user, kind,
+                                 text, split->scope));
+    return;
+  }
+  Symbol element = m.symbols.Find(split->element);
+  if (auto id = element.empty() ? std::nullopt : index.Find(*model, element)) {
+    ref.id = *id;
+    return;
+  }
+  auto diag = ctx.diags.Report(
+      DiagKind::UnknownReference, ref.loc,
+      fmt::format("{} names unknown {} '{}': Could not find {} '{}' in model '{}'", user, kind,
+                  text, kind, split->element, m.Text(m[*model].name)));
+  std::vector<std::string_view> candidates;
+  for (const auto& entity : table) {
+    if (entity.model == *model) candidates.push_back(m.Text(entity.name));
+  }
+  if (auto best = ClosestName(split->element, candidates)) {
+    diag.Note(ref.loc, fmt::format("did you mean '{}'?", *best));
+  }
+}
+
+bool ResolveNamesPass::Run(PassContext& ctx) {
+  ir::Module& m = ctx.module;
+  models_.emplace(m);
+  NameIndex<BodyId> bodies;
+  NameIndex<JointId> joints;
+  for (size_t i = 1; i < m.bodies.size(); ++i) bodies.Add(m.bodies[i].model, m.bodies[i].name, BodyId(i));
+  for (size_t i = 0; i < m.joints.size(); ++i) joints.Add(m.joints[i].model, m.joints[i].name, JointId(i));
+
+  const size_t errors_before = ctx.diags.error_count();
+  for (ir::Joint& j : m.joints) {
+    const std::string user = fmt::format("joint '{}'", m.Text(j.name));
+    Resolve(ctx, j.parent, j.model, bodies, m.bodies, "link", user);
+    Resolve(ctx, j.child, j.model, bodies, m.bodies, "link", user);
+  }
+  for (ir::Frame& f : m.frames) {
+    Resolve(ctx, f.body, f.model, bodies, m.bodies, "link", fmt::format("frame '{}'", m.Text(f.name)));
+  }
+  for (ir::Geometry& g : m.geometries) {
+    Resolve(ctx, g.body, g.model, bodies, m.bodies, "link",
+            fmt::format("geometry '{}'", m.Text(g.name)));
+  }
+  for (ir::Actuator& a : m.actuators) {
+    Resolve(ctx, a.joint, a.model, joints, m.joints, "joint",
+            fmt::format("actuator '{}'", m.Text(a.name)));
+  }
+  for (ir::Constraint& c : m.constraints) {
+    const std::string user = fmt::format("{} constraint", ir::ConstraintTypeName(c.type));
+    Resolve(ctx, c.joint0, c.model, joints, m.joints, "joint", user);
+    Resolve(ctx, c.joint1, c.model, joints, m.joints, "joint", user);
+    Resolve(ctx, c.body_A, c.model, bodies, m.bodies, "link", user);
+    Resolve(ctx, c.body_B, c.model, bodies, m.bodies, "link", user);
+    for (auto& jr : c.joints) Resolve(ctx, jr, c.model, joints, m.joints, "joint", user);
+  }
+  return ctx.diags.error_count() == errors_before;
+}
+
+}  // namespace
+
+std::unique_ptr<Pass> CreateResolveNamesPass() { return std::make_unique<ResolveNamesPass>(); }
+
+}  // namespace mdlc::passes

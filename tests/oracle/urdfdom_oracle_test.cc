@@ -1,0 +1,1206 @@
+// Differential test: mdlc's plant-json dump against an independent oracle
+// built from urdfdom (the ROS reference URDF parser) plus Eigen.
+//
+// Nothing here uses mdlc library code. For every model the oracle
+//   1. parses the URDF with urdf::parseURDFFile (and, only to recover what
+//      urdfdom loses, looks at which <limit> attributes were written),
+//   2. applies the mdlc/Drake conventions from /work/shared/spec/features.md
+//      (cited by feature ID next to each rule),
+//   3. computes link poses, joint axes and the joint-space mass matrix
+//      geometrically, and
+//   4. runs `mdlc compile FILE --emit=plant-json --q ...` as a subprocess at
+//      the zero configuration and at 5 seeded random ones, and compares every
+//      quantity by name (never by position) to
+//      |a - b| <= 1e-9 * max(1, |a|, |b|).
+//
+// Configuration (all optional):
+//   --mdlc=PATH            or env MDLC_BINARY   (default: compiled-in path)
+//   env MDLC_ORACLE_CONFIGS=N   number of random configurations (default 5)
+//   env MDLC_ORACLE_MAX_MESSAGES=N  discrepancies printed per test (default 60)
+//
+// Test layout (value-parameterized, one case per model):
+//   Corpus/UrdfdomOracle.*/<path>    every corpus URDF that urdfdom loads
+//   HandMade/UrdfdomOracle.*/<stem>  tests/models/urdf/*.urdf
+//   with two tests per model:
+//     MassPropertiesAndJoints  URDF-003/004/005/012/013/014/017, COMMON-040/041/042
+//     KinematicsAndMassMatrix  URDF-005/011/012/017 (X_WB, axis_W, M(q))
+//   plus OracleSelfCheck.* (the oracle against closed forms; no mdlc needed).
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <memory>
+#include <optional>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <console_bridge/console.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <tinyxml.h>
+#include <urdf_model/model.h>
+#include <urdf_parser/urdf_parser.h>
+
+extern char** environ;
+
+namespace {
+
+namespace fs = std::filesystem;
+using Eigen::Isometry3d;
+using Eigen::Matrix3d;
+using Eigen::MatrixXd;
+using Eigen::Quaterniond;
+using Eigen::Vector3d;
+using json = nlohmann::json;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kRelTol = 1e-9;
+
+#ifndef MDLC_BINARY
+#define MDLC_BINARY ""
+#endif
+#ifndef MDLC_SHARED_DIR
+#define MDLC_SHARED_DIR ""
+#endif
+#ifndef MDLC_TEST_MODELS
+#define MDLC_TEST_MODELS ""
+#endif
+
+std::string g_mdlc_binary;  // set in main()
+
+std::string MdlcBinary() {
+  if (!g_mdlc_binary.empty()) return g_mdlc_binary;
+  if (const char* env = std::getenv("MDLC_BINARY"); env && *env) return env;
+  return MDLC_BINARY;
+}
+
+int EnvInt(const char* name, int fallback) {
+  const char* v = std::getenv(name);
+  if (!v || !*v) return fallback;
+  return std::atoi(v);
+}
+
+std::string Fmt(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+// |a - b| <= tol * max(1, |a|, |b|); equal infinities agree.
+bool Near(double a, double b, double tol = kRelTol) {
+  if (std::isinf(a) || std::isinf(b)) return a == b;
+  if (std::isnan(a) || std::isnan(b)) return false;
+  return std::abs(a - b) <= tol * std::max({1.0, std::abs(a), std::abs(b)});
+}
+
+// ---------------------------------------------------------------------------
+// Subprocess
+// ---------------------------------------------------------------------------
+
+struct RunResult {
+  int exit_code = -1;  // -1: did not exit normally
+  bool timed_out = false;
+  std::string out, err;
+  std::string spawn_error;
+};
+
+RunResult RunProcess(const std::vector<std::string>& argv, double timeout_s) {
+  RunResult r;
+  int out_pipe[2], err_pipe[2];
+  if (pipe2(out_pipe, O_CLOEXEC) != 0 || pipe2(err_pipe, O_CLOEXEC) != 0) {
+    r.spawn_error = std::string("pipe: ") + std::strerror(errno);
+    return r;
+  }
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_adddup2(&fa, out_pipe[1], 1);
+  posix_spawn_file_actions_adddup2(&fa, err_pipe[1], 2);
+  std::vector<char*> cargv;
+  for (const auto& a : argv) cargv.push_back(const_cast<char*>(a.c_str()));
+  cargv.push_back(nullptr);
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, cargv[0], &fa, nullptr, cargv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  close(out_pipe[1]);
+  close(err_pipe[1]);
+  if (rc != 0) {
+    close(out_pipe[0]);
+    close(err_pipe[0]);
+    r.spawn_error = "posix_spawn(" + argv[0] + "): " + std::strerror(rc);
+    return r;
+  }
+  const auto deadline = std::chrono::steady_clock::now() +
+                        std::chrono::milliseconds(static_cast<int64_t>(timeout_s * 1000));
+  pollfd fds[2] = {{out_pipe[0], POLLIN, 0}, {err_pipe[0], POLLIN, 0}};
+  std::string* sinks[2] = {&r.out, &r.err};
+  int open_fds = 2;
+  char buf[65536];
+  while (open_fds > 0) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now >= deadline) {
+      r.timed_out = true;
+      kill(pid, SIGKILL);  // our own child only
+      break;
+    }
+    const int ms = static_cast<int>(
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count()) + 1;
+    const int n = poll(fds, 2, ms);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      break;
+    }
+    for (int i = 0; i < 2; ++i) {
+      if (fds[i].fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      const ssize_t got = read(fds[i].fd, buf, sizeof buf);
+      if (got > 0) {
+        sinks[i]->append(buf, static_cast<size_t>(got));
+      } else if (got == 0 || (got < 0 && errno != EINTR && errno != EAGAIN)) {
+        close(fds[i].fd);
+        fds[i].fd = -1;
+        --open_fds;
+      }
+    }
+  }
+  for (auto& f : fds) {
+    if (f.fd >= 0) close(f.fd);
+  }
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
+  return r;
+}
+
+// ---------------------------------------------------------------------------
+// The oracle model, built from urdfdom
+// ---------------------------------------------------------------------------
+
+enum class JType { kRevolute, kContinuous, kPrismatic, kFixed, kFloating, kPlanar, kUnknown };
+
+const char* UrdfTypeName(JType t) {
+  switch (t) {
+    case JType::kRevolute: return "revolute";
+    case JType::kContinuous: return "continuous";
+    case JType::kPrismatic: return "prismatic";
+    case JType::kFixed: return "fixed";
+    case JType::kFloating: return "floating";
+    case JType::kPlanar: return "planar";
+    default: return "unknown";
+  }
+}
+
+// URDF-012: URDF joint type -> plant joint type. Floating makes no joint.
+std::string PlantTypeName(JType t) {
+  switch (t) {
+    case JType::kRevolute:
+    case JType::kContinuous: return "revolute";
+    case JType::kPrismatic: return "prismatic";
+    case JType::kFixed: return "weld";
+    case JType::kPlanar: return "planar";
+    default: return "";
+  }
+}
+
+bool IsOneDof(JType t) {
+  return t == JType::kRevolute || t == JType::kContinuous || t == JType::kPrismatic;
+}
+
+struct OLink {
+  std::string name;
+  bool is_world = false;
+  // Mass properties as the plant should report them (after COMMON-040/041).
+  double mass = 0;
+  Vector3d com = Vector3d::Zero();       // p_BoBcm in B
+  Matrix3d I_B = Matrix3d::Zero();       // about Bcm, expressed in B
+  std::string inertia_note;              // non-empty when a rule rewrote them
+  std::string parent_joint;              // empty for the root
+  std::vector<std::string> child_joints;
+};
+
+struct OJoint {
+  std::string name;
+  JType type = JType::kUnknown;
+  std::string parent, child;
+  Isometry3d X_PJ = Isometry3d::Identity();
+  Vector3d axis = Vector3d::UnitX();  // normalized (URDF-011)
+  bool has_limit = false;
+  double lower = -kInf, upper = kInf, velocity = kInf, effort = kInf;
+  double damping = 0;
+};
+
+struct Oracle {
+  std::string robot;  // model instance name
+  std::string root;
+  std::map<std::string, OLink> links;
+  std::map<std::string, OJoint> joints;
+  std::vector<std::string> dofs;  // local names of 1-dof joints, sorted
+  // Free bodies: root (unless it is `world`, URDF-003/017) and every child of
+  // a floating joint (URDF-012), keyed by link name.
+  std::vector<std::string> free_bodies;
+
+  std::string Scoped(const std::string& link) const {
+    return link == "world" && links.at(link).is_world ? "world" : robot + "::" + link;
+  }
+};
+
+Isometry3d PoseToIso(const urdf::Pose& p) {
+  Isometry3d X = Isometry3d::Identity();
+  // urdfdom stores origin@rpy as a quaternion built from the fixed-axis
+  // convention R = Rz(yaw) Ry(pitch) Rx(roll) (URDF-005).
+  Quaterniond q(p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z);
+  X.linear() = q.normalized().toRotationMatrix();
+  X.translation() = Vector3d(p.position.x, p.position.y, p.position.z);
+  return X;
+}
+
+// COMMON-040: physical validity of a rotational inertia about the COM.
+// Principal moments must be non-negative and satisfy the triangle inequality,
+// with a round-off allowance scaled by the largest moment.
+bool RotationalInertiaValid(const Matrix3d& I) {
+  if (!I.allFinite()) return false;
+  Eigen::SelfAdjointEigenSolver<Matrix3d> es(I, Eigen::EigenvaluesOnly);
+  Vector3d p = es.eigenvalues();  // ascending
+  const double scale = std::max({std::abs(p(0)), std::abs(p(1)), std::abs(p(2))});
+  const double eps = 16 * std::numeric_limits<double>::epsilon() * scale;
+  if (p(0) < -eps) return false;
+  return p(0) + p(1) + eps >= p(2);
+}
+
+// Mass properties per URDF-004 plus COMMON-040/041 replacement.
+void FillMassProperties(const urdf::Inertial* in, OLink* L) {
+  if (in == nullptr) return;  // URDF-004: no <inertial> => massless
+  const Isometry3d X_BBi = PoseToIso(in->origin);
+  Matrix3d I_Bi;
+  I_Bi << in->ixx, in->ixy, in->ixz,
+          in->ixy, in->iyy, in->iyz,
+          in->ixz, in->iyz, in->izz;
+  const double m = in->mass;
+  L->com = X_BBi.translation();
+  const bool zero_inertia = I_Bi.isZero(0.0);
+  if (m == 0 && zero_inertia) {  // COMMON-041: massless body
+    L->mass = 0;
+    L->I_B.setZero();
+    return;
+  }
+  const Matrix3d R = X_BBi.linear();
+  const Matrix3d I_B = R * I_Bi * R.transpose();  // COMMON-042: re-express in B
+  std::string why;
+  if (!std::isfinite(m) || m < 0) why = "COMMON-041 negative mass";
+  else if (m == 0) why = "COMMON-041 zero mass with non-zero inertia";
+  else if (!RotationalInertiaValid(I_Bi)) why = "COMMON-040 non-physical inertia";
+  if (why.empty()) {
+    L->mass = m;
+    L->I_B = I_B;
+    return;
+  }
+  // Replacement: solid sphere of water density with the given mass (1 kg when
+  // not positive), centred at the given COM.
+  const double mm = (std::isfinite(m) && m > 0) ? m : 1.0;
+  const double r = std::cbrt((3.0 / (4.0 * M_PI)) * (mm / 1000.0));
+  L->mass = mm;
+  L->I_B = Matrix3d::Identity() * (0.4 * mm * r * r);
+  L->inertia_note = why + ": expected replacement by a 1000 kg/m^3 sphere";
+}
+
+struct LimitAttrs {
+  bool lower = false, upper = false, velocity = false, effort = false;
+};
+
+// urdfdom silently turns a missing limit@lower/@upper into 0, while URDF-013
+// says the default is unbounded. Recover which attributes were written.
+std::map<std::string, LimitAttrs> ReadLimitAttributes(const std::string& path) {
+  std::map<std::string, LimitAttrs> out;
+  TiXmlDocument doc;
+  if (!doc.LoadFile(path)) return out;
+  const TiXmlElement* robot = doc.FirstChildElement("robot");
+  if (!robot) return out;
+  for (const TiXmlElement* j = robot->FirstChildElement("joint"); j;
+       j = j->NextSiblingElement("joint")) {
+    const char* name = j->Attribute("name");
+    const TiXmlElement* lim = j->FirstChildElement("limit");
+    if (!name || !lim) continue;
+    LimitAttrs a;
+    a.lower = lim->Attribute("lower") != nullptr;
+    a.upper = lim->Attribute("upper") != nullptr;
+    a.velocity = lim->Attribute("velocity") != nullptr;
+    a.effort = lim->Attribute("effort") != nullptr;
+    out[name] = a;
+  }
+  return out;
+}
+
+// Builds the oracle. Returns an error string on failure.
+std::string BuildOracle(const std::string& path, Oracle* o) {
+  urdf::ModelInterfaceSharedPtr model = urdf::parseURDFFile(path);
+  if (!model) return "urdfdom could not parse " + path;
+  const auto limit_attrs = ReadLimitAttributes(path);
+  o->robot = model->getName();
+  o->root = model->getRoot()->name;
+  for (const auto& [name, link] : model->links_) {
+    OLink L;
+    L.name = name;
+    // URDF-003: a link named `world` is the world body; <inertial> ignored.
+    L.is_world = (name == "world");
+    if (!L.is_world) FillMassProperties(link->inertial.get(), &L);
+    if (link->parent_joint) L.parent_joint = link->parent_joint->name;
+    for (const auto& cj : link->child_joints) L.child_joints.push_back(cj->name);
+    o->links[name] = L;
+  }
+  for (const auto& [name, j] : model->joints_) {
+    OJoint J;
+    J.name = name;
+    switch (j->type) {
+      case urdf::Joint::REVOLUTE: J.type = JType::kRevolute; break;
+      case urdf::Joint::CONTINUOUS: J.type = JType::kContinuous; break;
+      case urdf::Joint::PRISMATIC: J.type = JType::kPrismatic; break;
+      case urdf::Joint::FIXED: J.type = JType::kFixed; break;
+      case urdf::Joint::FLOATING: J.type = JType::kFloating; break;
+      case urdf::Joint::PLANAR: J.type = JType::kPlanar; break;
+      default: return "joint '" + name + "' has unknown type";
+    }
+    J.parent = j->parent_link_name;
+    J.child = j->child_link_name;
+    J.X_PJ = PoseToIso(j->parent_to_joint_origin_transform);  // URDF-011
+    if (J.type != JType::kFixed && J.type != JType::kFloating) {
+      // URDF-011: axis default (1,0,0) (urdfdom applies it), normalized.
+      Vector3d a(j->axis.x, j->axis.y, j->axis.z);
+      if (a.norm() < 1e-8) return "joint '" + name + "' has a zero axis";
+      J.axis = a.normalized();
+    }
+    // URDF-013: limits. Missing attributes default to unbounded.
+    if (j->limits) {
+      J.has_limit = true;
+      const auto it = limit_attrs.find(name);
+      const LimitAttrs a = it != limit_attrs.end() ? it->second : LimitAttrs{true, true, true, true};
+      if (J.type == JType::kRevolute || J.type == JType::kPrismatic) {
+        if (a.lower) J.lower = j->limits->lower;
+        if (a.upper) J.upper = j->limits->upper;
+      }
+      // (continuous: position limits ignored, URDF-012.)
+      if (a.velocity) J.velocity = j->limits->velocity;
+      if (a.effort) J.effort = j->limits->effort;
+    }
+    // URDF-014: dynamics@damping, default 0.
+    if (j->dynamics) J.damping = j->dynamics->damping;
+    if (IsOneDof(J.type)) o->dofs.push_back(name);
+    o->joints[name] = J;
+  }
+  std::sort(o->dofs.begin(), o->dofs.end());
+  if (!o->links.at(o->root).is_world) o->free_bodies.push_back(o->root);  // URDF-017
+  for (const auto& [name, J] : o->joints) {
+    if (J.type == JType::kFloating) o->free_bodies.push_back(J.child);  // URDF-012
+  }
+  return "";
+}
+
+// Kinematics at configuration q (local joint name -> position).
+struct Kinematics {
+  std::map<std::string, Isometry3d> X_WB;
+  std::map<std::string, Vector3d> axis_W;    // 1-dof joints
+  std::map<std::string, Vector3d> origin_W;  // joint frame origin, 1-dof joints
+};
+
+Kinematics ComputeKinematics(const Oracle& o, const std::map<std::string, double>& q) {
+  Kinematics k;
+  // Free bodies and the world root sit at the identity (default free-body pose).
+  std::vector<std::pair<std::string, Isometry3d>> stack;
+  stack.emplace_back(o.root, Isometry3d::Identity());
+  while (!stack.empty()) {
+    auto [link, X_WP] = stack.back();
+    stack.pop_back();
+    k.X_WB[link] = X_WP;
+    for (const auto& jn : o.links.at(link).child_joints) {
+      const OJoint& J = o.joints.at(jn);
+      if (J.type == JType::kFloating) {
+        // URDF-012: no joint; the child is a free body at its default pose.
+        stack.emplace_back(J.child, Isometry3d::Identity());
+        continue;
+      }
+      const Isometry3d X_WJ = X_WP * J.X_PJ;
+      Isometry3d X_JC = Isometry3d::Identity();
+      const auto qi = q.find(jn);
+      const double qv = qi == q.end() ? 0.0 : qi->second;
+      if (J.type == JType::kRevolute || J.type == JType::kContinuous) {
+        X_JC.linear() = Eigen::AngleAxisd(qv, J.axis).toRotationMatrix();
+      } else if (J.type == JType::kPrismatic) {
+        X_JC.translation() = qv * J.axis;
+      }  // fixed, planar (default configuration): identity
+      if (IsOneDof(J.type)) {
+        k.axis_W[jn] = X_WJ.linear() * J.axis;
+        k.origin_W[jn] = X_WJ.translation();
+      }
+      stack.emplace_back(J.child, X_WJ * X_JC);
+    }
+  }
+  return k;
+}
+
+// 1-dof joints whose motion moves `link` (stopping at free bodies).
+std::vector<std::string> MovingDofs(const Oracle& o, const std::string& link) {
+  std::vector<std::string> out;
+  std::string cur = link;
+  while (true) {
+    const OLink& L = o.links.at(cur);
+    if (L.parent_joint.empty()) break;
+    const OJoint& J = o.joints.at(L.parent_joint);
+    if (J.type == JType::kFloating) break;
+    if (IsOneDof(J.type)) out.push_back(J.name);
+    cur = J.parent;
+  }
+  return out;
+}
+
+// M(q) = sum_b (Jv^T m Jv + Jw^T I_W Jw), restricted to the 1-dof joints, in
+// the order of o.dofs.
+MatrixXd ComputeMassMatrix(const Oracle& o, const Kinematics& k) {
+  const int n = static_cast<int>(o.dofs.size());
+  std::map<std::string, int> index;
+  for (int i = 0; i < n; ++i) index[o.dofs[i]] = i;
+  MatrixXd M = MatrixXd::Zero(n, n);
+  for (const auto& [name, L] : o.links) {
+    if (L.is_world) continue;
+    if (L.mass == 0 && L.I_B.isZero(0.0)) continue;
+    const Isometry3d& X_WB = k.X_WB.at(name);
+    const Vector3d c = X_WB * L.com;
+    const Matrix3d R = X_WB.linear();
+    const Matrix3d I_W = R * L.I_B * R.transpose();
+    Eigen::Matrix<double, 3, Eigen::Dynamic> Jv = Eigen::MatrixXd::Zero(3, n);
+    Eigen::Matrix<double, 3, Eigen::Dynamic> Jw = Eigen::MatrixXd::Zero(3, n);
+    for (const auto& jn : MovingDofs(o, name)) {
+      const OJoint& J = o.joints.at(jn);
+      const int col = index.at(jn);
+      const Vector3d a = k.axis_W.at(jn);
+      if (J.type == JType::kPrismatic) {
+        Jv.col(col) = a;
+      } else {
+        Jw.col(col) = a;
+        Jv.col(col) = a.cross(c - k.origin_W.at(jn));
+      }
+    }
+    M += L.mass * Jv.transpose() * Jv + Jw.transpose() * I_W * Jw;
+  }
+  return M;
+}
+
+// ---------------------------------------------------------------------------
+// Model list
+// ---------------------------------------------------------------------------
+
+struct ModelCase {
+  std::string id;        // readable test-name suffix
+  std::string path;      // absolute path of the URDF ("" => skip)
+  std::string display;   // how messages name the model
+  std::string package_path;  // passed as --package-path when non-empty
+  std::string skip_reason;
+};
+
+// Keeps gtest from dumping the struct's bytes in test listings.
+void PrintTo(const ModelCase& c, std::ostream* os) { *os << c.display; }
+
+std::string Sanitize(const std::string& s) {
+  std::string out;
+  for (char c : s) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return out;
+}
+
+void Uniquify(std::vector<ModelCase>* cases) {
+  std::map<std::string, int> seen;
+  for (auto& c : *cases) {
+    const int n = seen[c.id]++;
+    if (n > 0) c.id += "_" + std::to_string(n + 1);
+  }
+}
+
+std::vector<ModelCase> CorpusCases() {
+  std::vector<ModelCase> cases;
+  const fs::path corpus = fs::path(MDLC_SHARED_DIR) / "corpus";
+  const fs::path manifest = corpus / "manifest.tsv";
+  std::ifstream in(manifest);
+  if (std::string(MDLC_SHARED_DIR).empty() || !in) {
+    ModelCase c;
+    c.id = "shared_corpus_unavailable";
+    c.skip_reason = "shared corpus not found (" + manifest.string() +
+                    "); the corpus differential test needs ../shared";
+    cases.push_back(c);
+    return cases;
+  }
+  std::string line;
+  bool header = true;
+  while (std::getline(in, line)) {
+    if (header) {
+      header = false;
+      continue;
+    }
+    std::vector<std::string> cols;
+    std::stringstream ss(line);
+    std::string col;
+    while (std::getline(ss, col, '\t')) cols.push_back(col);
+    if (cols.size() < 7 || cols[0] != "urdf" || cols[6].rfind("yes", 0) != 0) continue;
+    ModelCase c;
+    std::string stem = cols[1];
+    if (stem.size() > 5 && stem.substr(stem.size() - 5) == ".urdf") stem.resize(stem.size() - 5);
+    c.id = Sanitize(stem);
+    c.path = (corpus / cols[1]).string();
+    c.display = "corpus/" + cols[1];
+    c.package_path = corpus.string();
+    cases.push_back(c);
+  }
+  Uniquify(&cases);
+  return cases;
+}
+
+std::vector<ModelCase> HandMadeCases() {
+  std::vector<ModelCase> cases;
+  const fs::path dir = fs::path(MDLC_TEST_MODELS) / "urdf";
+  std::error_code ec;
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    if (e.path().extension() == ".urdf") files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files) {
+    ModelCase c;
+    c.id = Sanitize(f.stem().string());
+    c.path = f.string();
+    c.display = "tests/models/urdf/" + f.filename().string();
+    cases.push_back(c);
+  }
+  if (cases.empty()) {
+    ModelCase c;
+    c.id = "no_models";
+    c.skip_reason = "no URDF models in " + dir.string();
+    cases.push_back(c);
+  }
+  Uniquify(&cases);
+  return cases;
+}
+
+// ---------------------------------------------------------------------------
+// Comparison
+// ---------------------------------------------------------------------------
+
+// Collects discrepancies for one model and reports them as one failure.
+class Report {
+ public:
+  explicit Report(std::string model) : model_(std::move(model)) {}
+  void SetContext(std::string ctx) { ctx_ = std::move(ctx); }
+  void Add(const std::string& what) {
+    msgs_.push_back("[" + model_ + (ctx_.empty() ? "" : " | " + ctx_) + "] " + what);
+  }
+  // feature: spec ID; entity: e.g. "body 'r::l'"; quantity: e.g. "X_WB.p[0]".
+  void Num(const std::string& feature, const std::string& entity, const std::string& quantity,
+           double mdlc, double oracle, const std::string& note = "") {
+    if (Near(mdlc, oracle)) return;
+    Add(feature + " " + entity + " " + quantity + ": mdlc=" + Fmt(mdlc) +
+        " urdfdom=" + Fmt(oracle) + " (|diff|=" + Fmt(std::abs(mdlc - oracle)) + ")" +
+        (note.empty() ? "" : " [" + note + "]"));
+  }
+  bool empty() const { return msgs_.empty(); }
+  size_t size() const { return msgs_.size(); }
+  void Flush() {
+    if (msgs_.empty()) return;
+    const size_t limit = static_cast<size_t>(EnvInt("MDLC_ORACLE_MAX_MESSAGES", 60));
+    std::string text = std::to_string(msgs_.size()) + " discrepancies for " + model_ + ":\n";
+    for (size_t i = 0; i < msgs_.size() && i < limit; ++i) text += "  " + msgs_[i] + "\n";
+    if (msgs_.size() > limit) {
+      text += "  ... and " + std::to_string(msgs_.size() - limit) + " more\n";
+    }
+    ADD_FAILURE() << text;
+    msgs_.clear();
+  }
+
+ private:
+  std::string model_, ctx_;
+  std::vector<std::string> msgs_;
+};
+
+// Reads a number-or-null; null means +inf (or -inf when negative_null).
+std::optional<double> NumOrNull(const json& v, bool negative_null) {
+  if (v.is_null()) return negative_null ? -kInf : kInf;
+  if (v.is_number()) return v.get<double>();
+  return std::nullopt;
+}
+
+std::string Key(const std::string& inst, const std::string& name) { return inst + "::" + name; }
+
+struct Dump {
+  json root;
+  std::map<std::string, const json*> bodies;  // "inst::name"
+  std::map<std::string, const json*> joints;
+  std::string cmdline;
+};
+
+std::string Quote(const std::vector<std::string>& argv) {
+  std::string s;
+  for (const auto& a : argv) s += (s.empty() ? "" : " ") + a;
+  return s;
+}
+
+// Runs mdlc; returns false (after reporting) when there is no usable dump.
+bool RunMdlc(const ModelCase& mc, const std::vector<std::pair<std::string, double>>& q,
+             Report* rep, Dump* d) {
+  std::vector<std::string> argv = {MdlcBinary(), "compile", mc.path, "--emit=plant-json"};
+  if (!mc.package_path.empty()) {
+    argv.push_back("--package-path");
+    argv.push_back(mc.package_path);
+  }
+  for (const auto& [name, v] : q) {
+    argv.push_back("--q");
+    argv.push_back(name + "=" + Fmt(v));
+  }
+  d->cmdline = Quote(argv);
+  const RunResult r = RunProcess(argv, 60.0);
+  if (!r.spawn_error.empty()) {
+    rep->Add("could not run mdlc: " + r.spawn_error);
+    return false;
+  }
+  if (r.timed_out || r.exit_code != 0) {
+    rep->Add(std::string("mdlc ") +
+             (r.timed_out ? "timed out" : "exited with status " + std::to_string(r.exit_code)) +
+             "\n    command: " + d->cmdline + "\n    stderr: " + r.err.substr(0, 2000));
+    return false;
+  }
+  try {
+    d->root = json::parse(r.out);
+  } catch (const std::exception& e) {
+    rep->Add(std::string("mdlc output is not JSON (") + e.what() + ")\n    command: " +
+             d->cmdline + "\n    stdout starts: " + r.out.substr(0, 300) +
+             "\n    stderr: " + r.err.substr(0, 1000));
+    return false;
+  }
+  if (d->root.value("schema", "") != "mdlc-plant/1") {
+    rep->Add("plant-json schema is not mdlc-plant/1: " + d->root.value("schema", std::string("<missing>")));
+  }
+  for (const char* section : {"bodies", "joints"}) {
+    if (!d->root.contains(section) || !d->root[section].is_array()) {
+      rep->Add(std::string("plant-json has no '") + section + "' array");
+      return false;
+    }
+  }
+  for (const auto& b : d->root["bodies"]) {
+    d->bodies[Key(b.value("model_instance", ""), b.value("name", ""))] = &b;
+  }
+  for (const auto& j : d->root["joints"]) {
+    d->joints[Key(j.value("model_instance", ""), j.value("name", ""))] = &j;
+  }
+  return true;
+}
+
+// Name of the free joint Drake synthesizes for a body: the body name,
+// prefixed with '_' until it does not clash with an existing joint.
+std::string FreeJointName(const Oracle& o, const std::string& body) {
+  std::string name = body;
+  while (o.joints.count(name)) name = "_" + name;
+  return name;
+}
+
+bool ReadVec3(const json& v, Vector3d* out) {
+  if (!v.is_array() || v.size() != 3) return false;
+  for (int i = 0; i < 3; ++i) {
+    if (!v[i].is_number()) return false;
+    (*out)(i) = v[i].get<double>();
+  }
+  return true;
+}
+
+// Checks one limit array (1-dof: one entry).
+void CheckLimitArray(Report* rep, const std::string& feature, const std::string& entity,
+                     const json& jj, const char* key, double expected, bool negative_null) {
+  if (!jj.contains(key) || !jj[key].is_array() || jj[key].size() != 1) {
+    rep->Add(feature + " " + entity + " " + key + ": expected a 1-element array, mdlc gave " +
+             (jj.contains(key) ? jj[key].dump() : std::string("<missing>")) +
+             " (urdfdom=" + Fmt(expected) + ")");
+    return;
+  }
+  const auto v = NumOrNull(jj[key][0], negative_null);
+  if (!v) {
+    rep->Add(feature + " " + entity + " " + key + ": not a number or null: " + jj[key][0].dump());
+    return;
+  }
+  if (!Near(*v, expected)) {
+    const auto show = [](double x) { return std::isinf(x) ? std::string("null(unbounded)") : Fmt(x); };
+    rep->Add(feature + " " + entity + " " + key + "[0]: mdlc=" + show(*v) + " urdfdom=" + show(expected));
+  }
+}
+
+// Static checks at the default configuration: entity sets, mass properties,
+// joint types, topology, limits, damping.
+void CheckStatic(const Oracle& o, const Dump& d, Report* rep) {
+  // --- Bodies (URDF-003, URDF-004, URDF-005, COMMON-040/041/042).
+  for (const auto& [name, L] : o.links) {
+    if (L.is_world) {
+      // URDF-003: no body is made for a link named world.
+      if (d.bodies.count(Key(o.robot, name))) {
+        rep->Add("URDF-003 body '" + o.robot + "::world' exists; a link named world must be the world body");
+      }
+      continue;
+    }
+    const auto it = d.bodies.find(Key(o.robot, name));
+    const std::string ent = "body '" + o.Scoped(name) + "'";
+    if (it == d.bodies.end()) {
+      rep->Add("URDF-002 " + ent + " missing from mdlc bodies");
+      continue;
+    }
+    const json& b = *it->second;
+    if (!b.contains("mass") || !b["mass"].is_number()) {
+      rep->Add("URDF-004 " + ent + " mass missing/not a number");
+    } else {
+      rep->Num("URDF-004", ent, "mass", b["mass"].get<double>(), L.mass, L.inertia_note);
+    }
+    Vector3d com;
+    if (!ReadVec3(b.value("com", json()), &com)) {
+      rep->Add("URDF-004 " + ent + " com missing or malformed");
+    } else {
+      for (int i = 0; i < 3; ++i) {
+        rep->Num("URDF-004", ent, "com[" + std::to_string(i) + "]", com(i), L.com(i), L.inertia_note);
+      }
+    }
+    const json in = b.value("inertia", json());
+    if (!in.is_array() || in.size() != 6) {
+      rep->Add("COMMON-042 " + ent + " inertia missing or not 6 numbers");
+    } else {
+      static const char* kNames[6] = {"Ixx", "Iyy", "Izz", "Ixy", "Ixz", "Iyz"};
+      const double expect[6] = {L.I_B(0, 0), L.I_B(1, 1), L.I_B(2, 2),
+                                L.I_B(0, 1), L.I_B(0, 2), L.I_B(1, 2)};
+      for (int i = 0; i < 6; ++i) {
+        if (!in[i].is_number()) {
+          rep->Add("COMMON-042 " + ent + " inertia." + kNames[i] + " not a number");
+          continue;
+        }
+        rep->Num("URDF-004/COMMON-042", ent, std::string("inertia.") + kNames[i],
+                 in[i].get<double>(), expect[i], L.inertia_note);
+      }
+    }
+  }
+  for (const auto& [key, b] : d.bodies) {
+    if (b->value("model_instance", "") != o.robot) continue;
+    const std::string name = b->value("name", "");
+    if (!o.links.count(name) || o.links.at(name).is_world) {
+      rep->Add("URDF-002 extra body '" + key + "' in mdlc output (not a URDF link)");
+    }
+  }
+
+  // --- Joints (URDF-011..014, URDF-017).
+  std::set<std::string> expected_joint_keys;
+  for (const auto& [name, J] : o.joints) {
+    const std::string ent = "joint '" + o.robot + "::" + name + "' (" + UrdfTypeName(J.type) + ")";
+    if (J.type == JType::kFloating) {
+      // URDF-012: floating makes no joint.
+      if (d.joints.count(Key(o.robot, name))) {
+        rep->Add("URDF-012 " + ent + " present in mdlc output; floating joints must not create a joint");
+      }
+      continue;
+    }
+    expected_joint_keys.insert(Key(o.robot, name));
+    const auto it = d.joints.find(Key(o.robot, name));
+    if (it == d.joints.end()) {
+      rep->Add("URDF-012 " + ent + " missing from mdlc joints");
+      continue;
+    }
+    const json& jj = *it->second;
+    const std::string type = jj.value("type", "");
+    if (type != PlantTypeName(J.type)) {
+      rep->Add("URDF-012 " + ent + " type: mdlc='" + type + "' urdfdom-mapped='" +
+               PlantTypeName(J.type) + "'");
+    }
+    if (jj.value("parent", "") != o.Scoped(J.parent)) {
+      rep->Add("URDF-010 " + ent + " parent: mdlc='" + jj.value("parent", "") + "' urdfdom='" +
+               o.Scoped(J.parent) + "'");
+    }
+    if (jj.value("child", "") != o.Scoped(J.child)) {
+      rep->Add("URDF-010 " + ent + " child: mdlc='" + jj.value("child", "") + "' urdfdom='" +
+               o.Scoped(J.child) + "'");
+    }
+    if (!IsOneDof(J.type)) continue;
+    // URDF-013: position limits (continuous => unbounded => null).
+    CheckLimitArray(rep, "URDF-013", ent, jj, "lower", J.lower, true);
+    CheckLimitArray(rep, "URDF-013", ent, jj, "upper", J.upper, false);
+    CheckLimitArray(rep, "URDF-013", ent, jj, "velocity_limit", J.velocity, false);
+    CheckLimitArray(rep, "URDF-013", ent, jj, "effort_limit", J.effort, false);
+    // URDF-014: damping.
+    if (!jj.contains("damping") || !jj["damping"].is_array() || jj["damping"].size() != 1 ||
+        !jj["damping"][0].is_number()) {
+      rep->Add("URDF-014 " + ent + " damping: expected [" + Fmt(J.damping) + "], mdlc gave " +
+               (jj.contains("damping") ? jj["damping"].dump() : std::string("<missing>")));
+    } else {
+      rep->Num("URDF-014", ent, "damping[0]", jj["damping"][0].get<double>(), J.damping);
+    }
+  }
+  // Free bodies (URDF-017 root, URDF-012 floating children).
+  for (const auto& body : o.free_bodies) {
+    const std::string jname = FreeJointName(o, body);
+    expected_joint_keys.insert(Key(o.robot, jname));
+    const std::string ent = "free joint '" + o.robot + "::" + jname + "' of body '" + o.Scoped(body) + "'";
+    const auto it = d.joints.find(Key(o.robot, jname));
+    if (it == d.joints.end()) {
+      rep->Add("URDF-017 " + ent + " missing (expected a quaternion_floating joint to world)");
+      continue;
+    }
+    const json& jj = *it->second;
+    if (jj.value("type", "") != "quaternion_floating") {
+      rep->Add("URDF-017 " + ent + " type: mdlc='" + jj.value("type", "") + "' expected 'quaternion_floating'");
+    }
+    if (jj.value("parent", "") != "world") {
+      rep->Add("URDF-017 " + ent + " parent: mdlc='" + jj.value("parent", "") + "' expected 'world'");
+    }
+    if (jj.value("child", "") != o.Scoped(body)) {
+      rep->Add("URDF-017 " + ent + " child: mdlc='" + jj.value("child", "") + "' expected '" +
+               o.Scoped(body) + "'");
+    }
+    if (!jj.value("unnamed", false)) {
+      rep->Add("URDF-017 " + ent + " is not marked \"unnamed\": true");
+    }
+  }
+  for (const auto& [key, j] : d.joints) {
+    if (j->value("model_instance", "") != o.robot) continue;
+    if (!expected_joint_keys.count(key)) {
+      rep->Add("URDF-012 extra joint '" + key + "' (type " + j->value("type", "") + ", child " +
+               j->value("child", "") + ") in mdlc output");
+    }
+  }
+}
+
+// Configuration-dependent checks: X_WB, axis_W, dofs, mass matrix.
+void CheckKinematics(const Oracle& o, const Kinematics& k, const MatrixXd& M, const Dump& d,
+                     Report* rep) {
+  // --- X_WB of every link (URDF-005, URDF-011, URDF-012, URDF-017).
+  for (const auto& [name, L] : o.links) {
+    if (L.is_world) continue;
+    const auto it = d.bodies.find(Key(o.robot, name));
+    if (it == d.bodies.end()) {
+      rep->Add("URDF-002 body '" + o.Scoped(name) + "' missing from mdlc bodies");
+      continue;
+    }
+    const std::string ent = "body '" + o.Scoped(name) + "'";
+    const json& X = (*it->second).value("X_WB", json());
+    Vector3d p;
+    if (!X.is_object() || !ReadVec3(X.value("p", json()), &p) || !X.contains("q") ||
+        !X["q"].is_array() || X["q"].size() != 4) {
+      rep->Add("URDF-011 " + ent + " X_WB missing or malformed: " + X.dump());
+      continue;
+    }
+    const Isometry3d& E = k.X_WB.at(name);
+    for (int i = 0; i < 3; ++i) {
+      rep->Num("URDF-011", ent, "X_WB.p[" + std::to_string(i) + "]", p(i), E.translation()(i));
+    }
+    const double w = X["q"][0].get<double>(), x = X["q"][1].get<double>(),
+                 y = X["q"][2].get<double>(), z = X["q"][3].get<double>();
+    const double norm = std::sqrt(w * w + x * x + y * y + z * z);
+    if (std::abs(norm - 1) > 1e-9) rep->Add("plant-json " + ent + " X_WB.q is not unit: |q|=" + Fmt(norm));
+    if (w < 0) rep->Add("plant-json " + ent + " X_WB.q has w < 0 (spec: w >= 0): w=" + Fmt(w));
+    const Matrix3d R = Quaterniond(w, x, y, z).normalized().toRotationMatrix();
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) {
+        rep->Num("URDF-005/011", ent,
+                 "R_WB(" + std::to_string(r) + "," + std::to_string(c) + ") from X_WB.q",
+                 R(r, c), E.linear()(r, c));
+      }
+    }
+  }
+  // --- axis_W of 1-dof joints (URDF-011).
+  for (const auto& jn : o.dofs) {
+    const auto it = d.joints.find(Key(o.robot, jn));
+    if (it == d.joints.end()) continue;  // reported by the static check
+    const std::string ent = "joint '" + o.robot + "::" + jn + "'";
+    Vector3d a;
+    if (!ReadVec3((*it->second).value("axis_W", json()), &a)) {
+      rep->Add("URDF-011 " + ent + " axis_W missing or malformed");
+      continue;
+    }
+    const Vector3d& e = k.axis_W.at(jn);
+    for (int i = 0; i < 3; ++i) rep->Num("URDF-011", ent, "axis_W[" + std::to_string(i) + "]", a(i), e(i));
+  }
+  // --- dofs and mass matrix (URDF-012, URDF-017).
+  const json& dofs = d.root.value("dofs", json());
+  const json& mm = d.root.value("mass_matrix", json());
+  if (!dofs.is_array() || !mm.is_array()) {
+    rep->Add("plant-json has no dofs/mass_matrix arrays");
+    return;
+  }
+  std::map<std::string, int> mdlc_index;
+  for (size_t i = 0; i < dofs.size(); ++i) mdlc_index[dofs[i].get<std::string>()] = static_cast<int>(i);
+  std::set<std::string> expected;
+  for (const auto& jn : o.dofs) expected.insert(o.robot + "::" + jn);
+  for (const auto& e : expected) {
+    if (!mdlc_index.count(e)) rep->Add("URDF-012 dof '" + e + "' missing from mdlc dofs");
+  }
+  for (const auto& [name, i] : mdlc_index) {
+    if (!expected.count(name)) rep->Add("URDF-012 extra dof '" + name + "' in mdlc dofs");
+  }
+  if (mm.size() != dofs.size()) {
+    rep->Add("plant-json mass_matrix has " + std::to_string(mm.size()) + " rows for " +
+             std::to_string(dofs.size()) + " dofs");
+    return;
+  }
+  for (size_t i = 0; i < o.dofs.size(); ++i) {
+    const auto ri = mdlc_index.find(o.robot + "::" + o.dofs[i]);
+    if (ri == mdlc_index.end()) continue;
+    const json& row = mm[ri->second];
+    if (!row.is_array() || row.size() != dofs.size()) {
+      rep->Add("plant-json mass_matrix row for '" + ri->first + "' malformed");
+      continue;
+    }
+    for (size_t j = 0; j < o.dofs.size(); ++j) {
+      const auto cj = mdlc_index.find(o.robot + "::" + o.dofs[j]);
+      if (cj == mdlc_index.end()) continue;
+      rep->Num("URDF-017", "mass_matrix", "M(" + o.dofs[i] + ", " + o.dofs[j] + ")",
+               row[cj->second].get<double>(), M(static_cast<int>(i), static_cast<int>(j)));
+    }
+  }
+}
+
+// Deterministic configurations: index 0 = default (no --q), then random ones
+// with each 1-dof joint uniform in [-1.5, 1.5] clamped into its limits.
+std::vector<std::pair<std::string, double>> Configuration(const Oracle& o, int index) {
+  std::vector<std::pair<std::string, double>> q;
+  if (index == 0) return q;
+  std::mt19937_64 gen(0x6d646c63ULL * 1000003ULL + static_cast<uint64_t>(index));
+  for (const auto& jn : o.dofs) {
+    const double u = static_cast<double>(gen() >> 11) * 0x1.0p-53;
+    double v = -1.5 + 3.0 * u;
+    const OJoint& J = o.joints.at(jn);
+    if (J.type == JType::kRevolute || J.type == JType::kPrismatic) {
+      v = std::min(std::max(v, J.lower), J.upper);
+    }
+    q.emplace_back(jn, v);
+  }
+  return q;
+}
+
+std::string DescribeQ(const std::vector<std::pair<std::string, double>>& q) {
+  if (q.empty()) return "default configuration";
+  std::string s = "q:";
+  for (size_t i = 0; i < q.size(); ++i) {
+    if (i == 6) {
+      s += " ...(" + std::to_string(q.size()) + " dofs)";
+      break;
+    }
+    s += " " + q[i].first + "=" + Fmt(q[i].second);
+  }
+  return s;
+}
+
+class UrdfdomOracle : public ::testing::TestWithParam<ModelCase> {
+ protected:
+  void SetUp() override {
+    const ModelCase& mc = GetParam();
+    if (!mc.skip_reason.empty()) GTEST_SKIP() << mc.skip_reason;
+    const std::string err = BuildOracle(mc.path, &oracle_);
+    ASSERT_TRUE(err.empty()) << "[" << mc.display << "] oracle failed: " << err;
+  }
+  Oracle oracle_;
+};
+
+// URDF-003/004/005/012/013/014/017, COMMON-040/041/042 at the default configuration.
+TEST_P(UrdfdomOracle, MassPropertiesAndJoints) {
+  const ModelCase& mc = GetParam();
+  Report rep(mc.display);
+  Dump d;
+  rep.SetContext("default configuration");
+  try {
+    if (RunMdlc(mc, {}, &rep, &d)) CheckStatic(oracle_, d, &rep);
+  } catch (const json::exception& e) {
+    rep.Add(std::string("malformed plant-json (") + e.what() + ")\n    command: " + d.cmdline);
+  }
+  rep.Flush();
+}
+
+// URDF-005/011/012/017: X_WB, axis_W and M(q) at the zero configuration and at
+// seeded random ones.
+TEST_P(UrdfdomOracle, KinematicsAndMassMatrix) {
+  const ModelCase& mc = GetParam();
+  Report rep(mc.display);
+  const int n_random = EnvInt("MDLC_ORACLE_CONFIGS", 5);
+  for (int c = 0; c <= n_random; ++c) {
+    const auto q = Configuration(oracle_, c);
+    if (c > 0 && q.empty()) break;  // no dofs: one configuration is enough
+    std::map<std::string, double> qmap(q.begin(), q.end());
+    const Kinematics k = ComputeKinematics(oracle_, qmap);
+    const MatrixXd M = ComputeMassMatrix(oracle_, k);
+    rep.SetContext("config " + std::to_string(c) + ", " + DescribeQ(q));
+    Dump d;
+    const size_t before = rep.size();
+    if (!RunMdlc(mc, q, &rep, &d)) break;  // a failing run usually fails for all
+    try {
+      CheckKinematics(oracle_, k, M, d, &rep);
+    } catch (const json::exception& e) {
+      rep.Add(std::string("malformed plant-json (") + e.what() + ")");
+    }
+    if (rep.size() > before) {
+      rep.Add("reproduce with: " + d.cmdline);
+    }
+  }
+  rep.Flush();
+}
+
+struct CaseName {
+  std::string operator()(const ::testing::TestParamInfo<ModelCase>& info) const {
+    return info.param.id;
+  }
+};
+
+INSTANTIATE_TEST_SUITE_P(Corpus, UrdfdomOracle, ::testing::ValuesIn(CorpusCases()), CaseName());
+INSTANTIATE_TEST_SUITE_P(HandMade, UrdfdomOracle, ::testing::ValuesIn(HandMadeCases()), CaseName());
+
+// ---------------------------------------------------------------------------
+// Self-checks of the oracle itself against closed forms (no mdlc involved).
+// ---------------------------------------------------------------------------
+
+std::string HandModel(const std::string& file) {
+  return (fs::path(MDLC_TEST_MODELS) / "urdf" / file).string();
+}
+
+TEST(OracleSelfCheck, DoublePendulumMassMatrixMatchesClosedForm) {
+  Oracle o;
+  ASSERT_EQ(BuildOracle(HandModel("double_pendulum_closed_form.urdf"), &o), "");
+  ASSERT_EQ(o.dofs, (std::vector<std::string>{"elbow", "shoulder"}));
+  const double m1 = 1.0, lc1 = 0.5, I1 = 0.083, l1 = 1.0, m2 = 0.8, lc2 = 0.6, I2 = 0.05;
+  for (const auto& [q1, q2] : std::vector<std::pair<double, double>>{
+           {0, 0}, {0.3, -0.7}, {1.2, 2.1}, {-1.5, 0.4}, {2.9, -2.9}}) {
+    const Kinematics k = ComputeKinematics(o, {{"shoulder", q1}, {"elbow", q2}});
+    const MatrixXd M = ComputeMassMatrix(o, k);
+    const double c2 = std::cos(q2);
+    const double M11 = I1 + I2 + m1 * lc1 * lc1 + m2 * (l1 * l1 + lc2 * lc2 + 2 * l1 * lc2 * c2);
+    const double M12 = I2 + m2 * (lc2 * lc2 + l1 * lc2 * c2);
+    const double M22 = I2 + m2 * lc2 * lc2;
+    // dofs sorted: 0 = elbow, 1 = shoulder.
+    EXPECT_NEAR(M(1, 1), M11, 1e-12) << "q=" << q1 << "," << q2;
+    EXPECT_NEAR(M(1, 0), M12, 1e-12);
+    EXPECT_NEAR(M(0, 1), M12, 1e-12);
+    EXPECT_NEAR(M(0, 0), M22, 1e-12);
+    // Forward kinematics: lower link origin = (−l1 sin q1, 0, 2 − l1 cos q1).
+    const Vector3d p = k.X_WB.at("lower").translation();
+    EXPECT_NEAR(p.x(), -l1 * std::sin(q1), 1e-12);
+    EXPECT_NEAR(p.y(), 0, 1e-12);
+    EXPECT_NEAR(p.z(), 2 - l1 * std::cos(q1), 1e-12);
+  }
+}
+
+TEST(OracleSelfCheck, CartPoleMassMatrixMatchesClosedForm) {
+  Oracle o;
+  ASSERT_EQ(BuildOracle(HandModel("cart_pole_closed_form.urdf"), &o), "");
+  ASSERT_EQ(o.dofs, (std::vector<std::string>{"hinge", "slider"}));
+  const double mc = 2, mp = 0.3, l = 0.5, Ip = 0.01;
+  for (const auto& [x, th] : std::vector<std::pair<double, double>>{{0, 0}, {0.4, 0.9}, {-1, -2.5}}) {
+    const MatrixXd M = ComputeMassMatrix(o, ComputeKinematics(o, {{"slider", x}, {"hinge", th}}));
+    EXPECT_NEAR(M(1, 1), mc + mp, 1e-12);
+    EXPECT_NEAR(M(0, 1), mp * l * std::cos(th), 1e-12);
+    EXPECT_NEAR(M(1, 0), mp * l * std::cos(th), 1e-12);
+    EXPECT_NEAR(M(0, 0), Ip + mp * l * l, 1e-12);
+  }
+}
+
+// URDF-004/005 + COMMON-042: a quarter turn about x swaps Iyy/Izz and flips Iyz.
+TEST(OracleSelfCheck, InertiaReexpressedInLinkFrame) {
+  Oracle o;
+  ASSERT_EQ(BuildOracle(HandModel("inertial_frames.urdf"), &o), "");
+  const OLink& L = o.links.at("quarter_turn");
+  EXPECT_NEAR(L.I_B(0, 0), 0.05, 1e-15);
+  EXPECT_NEAR(L.I_B(1, 1), 0.04, 1e-15);
+  EXPECT_NEAR(L.I_B(2, 2), 0.02, 1e-15);
+  EXPECT_NEAR(L.I_B(1, 2), -0.004, 1e-15);
+  EXPECT_NEAR(L.com.y(), 0.05, 1e-15);
+  // Re-expression preserves the trace and the eigenvalues.
+  const OLink& S = o.links.at("skewed");
+  EXPECT_NEAR(S.I_B.trace(), 0.21 + 0.17 + 0.12, 1e-14);
+  EXPECT_TRUE(o.links.at("no_inertial").I_B.isZero(0.0));
+  EXPECT_EQ(o.links.at("no_inertial").mass, 0.0);
+}
+
+// URDF-012/013: continuous is unbounded; missing lower/upper are unbounded.
+TEST(OracleSelfCheck, LimitDefaults) {
+  Oracle o;
+  ASSERT_EQ(BuildOracle(HandModel("joint_mix.urdf"), &o), "");
+  const OJoint& c = o.joints.at("cart_to_spinner");
+  EXPECT_EQ(c.lower, -kInf);
+  EXPECT_EQ(c.upper, kInf);
+  EXPECT_EQ(c.velocity, 7);
+  EXPECT_EQ(c.effort, 12);
+  const OJoint& w = o.joints.at("arm_to_wrist");
+  EXPECT_EQ(w.lower, -kInf);
+  EXPECT_EQ(w.upper, kInf);
+  const OJoint& f = o.joints.at("wrist_to_free_spin");
+  EXPECT_EQ(f.velocity, kInf);
+  EXPECT_EQ(f.effort, kInf);
+  EXPECT_TRUE(f.axis.isApprox(Vector3d::UnitX()));
+  const OJoint& s = o.joints.at("spin_to_slide_tip");
+  EXPECT_EQ(s.lower, -kInf);
+  EXPECT_EQ(s.upper, 0.02);
+  EXPECT_EQ(o.joints.at("rail_to_cart").damping, 3.5);
+}
+
+// URDF-011: axes are normalized.
+TEST(OracleSelfCheck, AxesNormalized) {
+  Oracle o;
+  ASSERT_EQ(BuildOracle(HandModel("rotated_axes.urdf"), &o), "");
+  EXPECT_TRUE(o.joints.at("j2").axis.isApprox(Vector3d(0, 0.6, 0.8), 1e-15));
+  EXPECT_NEAR(o.joints.at("j1").axis.norm(), 1.0, 1e-15);
+}
+
+// URDF-012/017: floating children and the root are free bodies at identity,
+// and the floating joint separates the kinematic trees.
+TEST(OracleSelfCheck, FloatingJointMakesFreeBody) {
+  Oracle o;
+  ASSERT_EQ(BuildOracle(HandModel("floating_joint.urdf"), &o), "");
+  EXPECT_EQ(o.free_bodies, (std::vector<std::string>{"base", "payload"}));
+  const Kinematics k = ComputeKinematics(o, {{"base_to_arm", 0.7}});
+  EXPECT_TRUE(k.X_WB.at("payload").isApprox(Isometry3d::Identity()));
+  EXPECT_EQ(MovingDofs(o, "fingertip"), (std::vector<std::string>{"payload_to_finger"}));
+  const MatrixXd M = ComputeMassMatrix(o, k);
+  // dofs: base_to_arm, payload_to_finger -- independent trees.
+  EXPECT_EQ(M(0, 1), 0.0);
+}
+
+// COMMON-040/041 replacement rules.
+TEST(OracleSelfCheck, NonPhysicalInertiaReplacement) {
+  Oracle o;
+  ASSERT_EQ(BuildOracle(HandModel("nonphysical_inertia.urdf"), &o), "");
+  const auto sphere = [](double m) {
+    const double r = std::cbrt(3.0 / (4.0 * M_PI) * m / 1000.0);
+    return 0.4 * m * r * r;
+  };
+  EXPECT_FALSE(o.links.at("triangle_violation").inertia_note.empty());
+  EXPECT_NEAR(o.links.at("triangle_violation").I_B(0, 0), sphere(1.5), 1e-15);
+  EXPECT_EQ(o.links.at("zero_mass_with_inertia").mass, 1.0);
+  EXPECT_EQ(o.links.at("negative_mass").mass, 1.0);
+  EXPECT_TRUE(o.links.at("massless").inertia_note.empty());
+  EXPECT_EQ(o.links.at("massless").mass, 0.0);
+  EXPECT_TRUE(o.links.at("point_mass").inertia_note.empty());
+  EXPECT_FALSE(o.links.at("negative_moment").inertia_note.empty());
+  EXPECT_TRUE(o.links.at("base").inertia_note.empty());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.rfind("--mdlc=", 0) == 0) g_mdlc_binary = a.substr(7);
+  }
+  console_bridge::setLogLevel(console_bridge::CONSOLE_BRIDGE_LOG_NONE);
+  return RUN_ALL_TESTS();
+}

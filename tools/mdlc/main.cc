@@ -1,0 +1,223 @@
+// main.cc - the mdlc command line.
+//
+//   mdlc compile FILE... [--emit=summary|ir|plant-json|none] [-o FILE]
+//                        [--q JOINT=VALUE ...] [--diagnostics-format=text|json]
+//                        [-Werror|--strict] [-Wno-GROUP] [-Werror=GROUP]
+//                        [--print-after=PASS] [--print-after-all] [--time-passes]
+//   mdlc --list-passes
+//
+// Exit status: 0 on success, 1 when any error was reported, 2 on bad usage.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+#include "backend/compiler.h"
+#include "ir/printer.h"
+#include "passes/pass_registry.h"
+#include "summary.h"
+#include "verify_diagnostics.h"
+
+namespace {
+
+struct CliOptions {
+  std::vector<std::string> files;
+  std::string emit = "summary";
+  std::string output;
+  std::vector<std::string> q;
+  std::string diagnostics_format = "text";
+  std::vector<std::string> warning_flags;  // -W<...>
+  bool strict = false;
+  size_t max_errors = 0;
+  std::vector<std::string> print_after;
+  bool print_after_all = false;
+  bool time_passes = false;
+  bool verify_each = false;
+  std::vector<std::string> passes;
+  std::optional<std::string> model_name;
+  bool auto_rename = false;
+  bool mass_matrix = false;
+  bool verify_diagnostics = false;
+  bool no_locations = false;
+  std::vector<std::string> package_paths;
+  std::vector<std::string> packages;
+  std::string color = "auto";
+};
+
+// -Werror, -Werror=GROUP, -Wno-GROUP, -WGROUP (enable: the default)
+bool ApplyWarningFlags(const CliOptions& cli, mdlc::DiagnosticPolicy& policy, std::string* bad) {
+  policy.warnings_as_errors = cli.strict;
+  policy.max_errors = cli.max_errors;
+  for (const std::string& flag : cli.warning_flags) {
+    if (flag == "error") {
+      policy.warnings_as_errors = true;
+    } else if (flag.starts_with("error=")) {
+      policy.error_groups.insert(flag.substr(6));
+    } else if (flag.starts_with("no-")) {
+      policy.disabled_groups.insert(flag.substr(3));
+    } else if (flag.empty()) {
+      *bad = "-W needs a value";
+      return false;
+    }
+  }
+  return true;
+}
+
+int WriteOutput(const CliOptions& cli, const std::string& text) {
+  if (cli.output.empty() || cli.output == "-") {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    return 0;
+  }
+  std::ofstream out(cli.output, std::ios::binary);
+  out << text;
+  if (!out) {
+    fmt::print(stderr, "mdlc: error: cannot write '{}'\n", cli.output);
+    return 1;
+  }
+  return 0;
+}
+
+int RunCompile(const CliOptions& cli) {
+  mdlc::DiagnosticPolicy policy;
+  std::string bad;
+  if (!ApplyWarningFlags(cli, policy, &bad)) {
+    fmt::print(stderr, "mdlc: error: {}\n", bad);
+    return 2;
+  }
+  mdlc::Compilation c(policy);
+  c.options.files = cli.files;
+  c.options.frontend.model_name = cli.model_name;
+  c.options.frontend.auto_rename = cli.auto_rename;
+  c.options.pipeline = cli.passes;
+  c.options.instrumentation.print_after_all = cli.print_after_all;
+  c.options.instrumentation.print_after.insert(cli.print_after.begin(), cli.print_after.end());
+  c.options.instrumentation.time_passes = cli.time_passes;
+  c.options.instrumentation.verify_each = cli.verify_each;
+  c.options.skip_backend = cli.emit == "ir";
+
+  // diagnostics stream out as they happen, unless they are being verified
+  const bool json = cli.diagnostics_format == "json";
+  const bool color = cli.color == "always" || (cli.color == "auto" && isatty(STDERR_FILENO) && !json);
+  std::vector<mdlc::Diagnostic> collected;
+  c.diags.SetConsumer([&](const mdlc::Diagnostic& d) {
+    if (cli.verify_diagnostics) {
+      collected.push_back(d);
+    } else if (json) {
+      fmt::print(stderr, "{}\n", mdlc::FormatDiagnosticJson(d, c.sources));
+    } else {
+      fmt::print(stderr, "{}", mdlc::FormatDiagnosticText(d, c.sources, color));
+    }
+  });
+  if (!cli.package_paths.empty() || !cli.packages.empty()) {
+    c.diags.Report(mdlc::DiagKind::UnsupportedValue, {},
+                   "package resolution (--package-path, --package) is not implemented yet; "
+                   "mesh URIs are kept as written");
+  }
+
+  const bool ok = c.Run();
+  if (cli.time_passes) fmt::print(stderr, "{}", c.timing_report());
+  if (cli.verify_diagnostics) {
+    auto problems = mdlc::tools::VerifyDiagnostics(collected, c.sources);
+    for (const auto& p : problems) fmt::print(stderr, "{}\n", p);
+    return problems.empty() ? 0 : 1;
+  }
+  if (!ok || c.diags.has_errors()) {
+    if (!json) {
+      fmt::print(stderr, "{} error{} generated.\n", c.diags.error_count(),
+                 c.diags.error_count() == 1 ? "" : "s");
+    }
+    return 1;
+  }
+
+  if (cli.emit == "ir") {
+    mdlc::ir::PrintOptions print;
+    print.locations = !cli.no_locations;
+    return WriteOutput(cli, mdlc::ir::PrintModule(c.module, c.sources, print));
+  }
+  const mdlc::backend::CompiledModel& model = *c.model;
+  if (cli.emit == "none") return 0;
+  if (cli.emit == "summary") return WriteOutput(cli, mdlc::tools::FormatSummary(model));
+
+  // plant-json
+  Eigen::VectorXd q = mdlc::backend::DefaultPositions(model.plant);
+  for (const std::string& assignment : cli.q) {
+    const size_t eq = assignment.find('=');
+    char* end = nullptr;
+    const double value =
+        eq == std::string::npos ? 0 : std::strtod(assignment.c_str() + eq + 1, &end);
+    if (eq == std::string::npos || end == assignment.c_str() + eq + 1 || *end != '\0') {
+      fmt::print(stderr, "mdlc: error: --q expects JOINT=VALUE, got '{}'\n", assignment);
+      return 2;
+    }
+    if (!mdlc::backend::SetJointPositionByName(model.plant, q, assignment.substr(0, eq), value)) {
+      fmt::print(stderr,
+                 "mdlc: error: --q: no single-dof joint named '{}' (use the scoped name "
+                 "'instance::joint' when a name is ambiguous)\n",
+                 assignment.substr(0, eq));
+      return 1;
+    }
+  }
+  mdlc::backend::PlantJsonOptions json_options;
+  json_options.force_mass_matrix = cli.mass_matrix;
+  return WriteOutput(cli, mdlc::backend::EmitPlantJson(model, q, json_options));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"mdlc - a model compiler for robotics (URDF, SDFormat, MJCF, Model Directives)"};
+  app.set_version_flag("--version", "mdlc 0.1.0");
+  app.require_subcommand(0, 1);
+  bool list_passes = false;
+  app.add_flag("--list-passes", list_passes, "List the registered passes and exit");
+
+  CliOptions cli;
+  CLI::App* compile = app.add_subcommand("compile", "Compile robot model files into a plant");
+  compile->add_option("files", cli.files, "Model files (.urdf, .sdf, .xml, .dmd.yaml)")->required();
+  compile->add_option("--emit", cli.emit, "What to print: summary, ir, plant-json or none")
+      ->check(CLI::IsMember({"summary", "ir", "plant-json", "none"}));
+  compile->add_option("-o,--output", cli.output, "Write the output here instead of stdout");
+  compile->add_option("--q", cli.q, "Set a 1-dof joint's position: JOINT=VALUE (repeatable)");
+  compile->add_option("--diagnostics-format", cli.diagnostics_format, "text or json")
+      ->check(CLI::IsMember({"text", "json"}));
+  compile->add_option("-W", cli.warning_flags,
+                      "-Werror: warnings are errors; -Werror=GROUP; -Wno-GROUP silences a group");
+  compile->add_flag("--strict", cli.strict, "Warnings are errors (Drake's strict parsing)");
+  compile->add_option("--max-errors", cli.max_errors, "Stop reporting after N errors (0: no limit)");
+  compile->add_option("--print-after", cli.print_after, "Print the IR after this pass (repeatable)");
+  compile->add_flag("--print-after-all", cli.print_after_all, "Print the IR after every pass");
+  compile->add_flag("--time-passes", cli.time_passes, "Report the time each pass takes");
+  compile->add_flag("--verify-each", cli.verify_each, "Run the IR verifier after every pass");
+  compile->add_option("--passes", cli.passes, "Run these passes instead of the default pipeline")
+      ->delimiter(',');
+  compile->add_option("--model-name", cli.model_name, "Name the model instance this");
+  compile->add_flag("--auto-rename", cli.auto_rename,
+                    "Rename a model whose name is taken to NAME_1, NAME_2, ...");
+  compile->add_flag("--mass-matrix", cli.mass_matrix,
+                    "Include the mass matrix in plant-json even above 1000 dofs");
+  compile->add_flag("--verify-diagnostics", cli.verify_diagnostics,
+                    "Check diagnostics against expected-error comments in the input");
+  compile->add_flag("--no-locations", cli.no_locations, "Leave source locations out of --emit=ir");
+  compile->add_option("--package-path", cli.package_paths, "Search DIR for package.xml files");
+  compile->add_option("--package", cli.packages, "Define package NAME=DIR");
+  compile->add_option("--color", cli.color, "Color diagnostics: auto, always or never")
+      ->check(CLI::IsMember({"auto", "always", "never"}));
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  if (list_passes) {
+    for (const auto& info : mdlc::passes::RegisteredPasses()) {
+      fmt::print("  {:<24} {}\n", info.name, info.description);
+    }
+    return 0;
+  }
+  if (compile->parsed()) return RunCompile(cli);
+  fmt::print("{}", app.help());
+  return 2;
+}
