@@ -34,18 +34,20 @@ bool CheckJointsPass::Run(PassContext& ctx) {
     const ir::Joint& leader = m[c.joint0.id];
     const ir::Joint& follower = m[c.joint1.id];
     const int n0 = ir::JointVelocityCount(leader.type), n1 = ir::JointVelocityCount(follower.type);
+    // Drake ignores mimic on a joint that is not single-dof, then requires
+    // both joints to have the same number of dofs
+    if (n1 != 1) {
+      ctx.diags.Report(DiagKind::JointWarning, c.loc,
+                       fmt::format("mimic on joint '{}' is ignored: only single-dof joints can "
+                                   "mimic another joint ('{}' has {} dofs)",
+                                   m.Text(follower.name), m.Text(follower.name), n1));
+      continue;
+    }
     if (n0 != n1) {
       ctx.diags.Report(DiagKind::BadValue, c.loc,
                        fmt::format("joint '{}' cannot mimic joint '{}': they have different "
                                    "numbers of degrees of freedom ({} and {})",
                                    m.Text(follower.name), m.Text(leader.name), n1, n0));
-      continue;
-    }
-    if (n0 != 1) {
-      ctx.diags.Report(DiagKind::JointWarning, c.loc,
-                       fmt::format("mimic on joint '{}' is ignored: only single-dof joints can "
-                                   "be coupled",
-                                   m.Text(follower.name)));
       continue;
     }
     kept.push_back(std::move(c));

@@ -145,7 +145,7 @@ void UrdfReader::ReadJoint(const xml::XmlElement& e) {
                      fmt::format("unknown element <{}> in <joint> is ignored", tag));
     }
   }
-  module().Add(std::move(joint));
+  joint_ids_[joint.name.value] = module().Add(std::move(joint));
 }
 
 void UrdfReader::ReadLimits(const xml::XmlElement& e, ir::Joint& joint, bool continuous) {
@@ -234,11 +234,6 @@ void UrdfReader::ReadFrame(const xml::XmlElement& e) {
   if (auto xyz = attrs_.Vector3(e, "xyz")) frame.X_BF.p = *xyz;
   if (auto rpy = attrs_.Vector3(e, "rpy")) frame.X_BF.R = RotationFromRpy(*rpy);
   module().Add(std::move(frame));
-}
-
-void UrdfReader::ReadTransmission(const xml::XmlElement& e) {
-  diags().Report(DiagKind::UnsupportedElement, e.GetLoc(),
-                 "<transmission> is not implemented yet: no actuator is created");
 }
 
 }  // namespace mdlc::frontend::urdf

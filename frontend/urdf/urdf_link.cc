@@ -155,7 +155,7 @@ void UrdfReader::ReadGeometryElement(const xml::XmlElement& e, BodyId body, Symb
                      "tag 'verbose' found as a child of 'collision' is currently unsupported and "
                      "will be ignored");
     } else if (ctag.starts_with("drake:")) {
-      diags().Report(DiagKind::NotImplemented, child.GetLoc(),
+      diags().Report(DiagKind::NotImplementedYet, child.GetLoc(),
                      fmt::format("<{}> is not implemented yet; the element is ignored", ctag));
     } else {
       diags().Report(DiagKind::UnknownElement, child.GetLoc(),
@@ -166,15 +166,26 @@ void UrdfReader::ReadGeometryElement(const xml::XmlElement& e, BodyId body, Symb
 }
 
 std::optional<ir::Shape> UrdfReader::ReadShape(const xml::XmlElement& geometry) {
-  auto e = geometry.FirstChild();
+  // one shape, plus Drake's <drake:declare_convex/> marker beside a mesh
+  xml::XmlElement e, declare_convex;
+  for (auto c = geometry.FirstChild(); c; c = c.NextSibling()) {
+    if (c.Name() == "drake:declare_convex") {
+      declare_convex = c;
+    } else if (!e) {
+      e = c;
+    } else {
+      diags().Report(DiagKind::BadGeometry, c.GetLoc(),
+                     fmt::format("<geometry> must hold exactly one shape; <{}> is ignored",
+                                 c.Name()));
+    }
+  }
   if (!e) {
     diags().Report(DiagKind::MissingElement, geometry.GetLoc(), "<geometry> has no shape element");
     return std::nullopt;
   }
-  if (auto extra = e.NextSibling()) {
-    diags().Report(DiagKind::BadGeometry, extra.GetLoc(),
-                   fmt::format("<geometry> must hold exactly one shape; <{}> is ignored",
-                               extra.Name()));
+  if (declare_convex && e.Name() != "mesh") {
+    diags().Report(DiagKind::UnsupportedElement, declare_convex.GetLoc(),
+                   "<drake:declare_convex> applies only to a <mesh> and is ignored here");
   }
   auto positive = [&](const char* attr, double v) {
     if (v >= 0) return true;
@@ -234,7 +245,7 @@ std::optional<ir::Shape> UrdfReader::ReadShape(const xml::XmlElement& geometry) 
         return std::nullopt;
       }
     }
-    if (e.Child("drake:declare_convex")) mesh.convex = true;
+    if (declare_convex || e.Child("drake:declare_convex")) mesh.convex = true;
     return mesh;
   }
   diags().Report(DiagKind::BadGeometry, e.GetLoc(),

@@ -61,20 +61,21 @@ std::optional<ModelId> UrdfReader::Read() {
     } else if (tag == "frame") {
       ReadFrame(e);
     } else if (tag == "transmission") {
-      ReadTransmission(e);
+      transmissions_.push_back(e);  // needs the joints, which may come later
     } else if (tag == "material" || tag == "gazebo") {
       // materials were read above; <gazebo> is Gazebo's, silently ignored (URDF-023)
     } else if (tag == "loop_joint") {
       diags().Report(DiagKind::NotImplemented, e.GetLoc(),
                      "loop joints are not supported: the plant must be a tree");
     } else if (tag.starts_with("drake:")) {
-      diags().Report(DiagKind::NotImplemented, e.GetLoc(),
+      diags().Report(DiagKind::NotImplementedYet, e.GetLoc(),
                      fmt::format("<{}> is not implemented yet; the element is ignored", tag));
     } else {
       diags().Report(DiagKind::UnknownElement, e.GetLoc(),
                      fmt::format("unknown element <{}> in <robot> is ignored", tag));
     }
   }
+  for (const auto& e : transmissions_) ReadTransmission(e);
   return model_;
 }
 
@@ -126,20 +127,33 @@ std::optional<Eigen::Vector4d> UrdfReader::ReadVisualMaterial(const xml::XmlElem
                                                              ir::Geometry& g) {
   auto name = e.Attribute("name");
   auto color = ReadColor(e);
-  Symbol symbol = name.present() ? module().Intern(name.value) : Symbol{};
-  if (name.present()) {
-    g.material = {symbol, name.loc, {}};
-    auto it = materials_.find(symbol.value);
-    if (it != materials_.end()) {
-      g.material.id = it->second.id;
-      if (!color) return module()[it->second.id].rgba;
-    } else if (!color && !e.Child("texture")) {
-      diags().Report(DiagKind::UnknownMaterial, name.loc,
-                     fmt::format("material '{}' is not defined at robot level and gives no "
-                                 "color or texture of its own",
-                                 name.value));
-    }
+  std::string texture;
+  if (auto t = e.Child("texture")) {
+    if (auto file = attrs_.String(t, "filename")) texture = std::string(*file);
   }
+  if (!name.present()) return color;
+  const Symbol symbol = module().Intern(name.value);
+  g.material = {symbol, name.loc, {}};
+  if (auto it = materials_.find(symbol.value); it != materials_.end()) {
+    g.material.id = it->second.id;
+    return color ? color : module()[it->second.id].rgba;
+  }
+  if (!color && texture.empty()) {
+    diags().Report(DiagKind::UnknownMaterial, name.loc,
+                   fmt::format("material '{}' is not defined at robot level and gives no "
+                               "color or texture of its own",
+                               name.value));
+    return std::nullopt;
+  }
+  // an inline definition names a new material, usable by later visuals
+  ir::Material material;
+  material.name = symbol;
+  material.model = model_;
+  material.loc = e.GetLoc();
+  material.rgba = color;
+  material.texture = std::move(texture);
+  g.material.id = module().Add(std::move(material));
+  materials_[symbol.value] = {g.material.id, e.GetLoc()};
   return color;
 }
 

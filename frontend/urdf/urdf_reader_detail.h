@@ -52,7 +52,9 @@ class UrdfReader {
   void ReadLimits(const xml::XmlElement& e, ir::Joint& joint, bool continuous);
   void ReadMimic(const xml::XmlElement& e, const ir::Joint& joint);
   void ReadFrame(const xml::XmlElement& e);
+  // urdf_transmission.cc
   void ReadTransmission(const xml::XmlElement& e);
+
   void CheckUniqueName(std::unordered_map<uint32_t, Loc>& seen, Symbol name, Loc loc,
                        std::string_view kind);
 
@@ -62,6 +64,8 @@ class UrdfReader {
   ModelId model_;
   std::unordered_map<uint32_t, UrdfMaterial> materials_;  // by Symbol value
   std::unordered_map<uint32_t, Loc> link_names_, joint_names_, frame_names_;
+  std::unordered_map<uint32_t, JointId> joint_ids_;  // by Symbol value
+  std::vector<xml::XmlElement> transmissions_;  // read after every joint
   // geometry names already used, per (body, role)
   std::unordered_map<uint64_t, std::unordered_map<uint32_t, int>> geometry_names_;
   ir::Module& module() { return ctx_.module; }

@@ -1193,6 +1193,47 @@ TEST(OracleSelfCheck, NonPhysicalInertiaReplacement) {
   EXPECT_TRUE(o.links.at("base").inertia_note.empty());
 }
 
+// Every listed model builds in the oracle, and its mass matrix is symmetric
+// positive semi-definite at a random configuration. Set MDLC_ORACLE_VERBOSE=1
+// to print what the oracle derived for each model (no mdlc involved).
+TEST(OracleSelfCheck, AllModelsBuildWithSaneMassMatrix) {
+  std::vector<ModelCase> cases = CorpusCases();
+  const auto hand = HandMadeCases();
+  cases.insert(cases.end(), hand.begin(), hand.end());
+  const bool verbose = EnvInt("MDLC_ORACLE_VERBOSE", 0) != 0;
+  for (const auto& mc : cases) {
+    if (!mc.skip_reason.empty()) continue;
+    Oracle o;
+    const std::string err = BuildOracle(mc.path, &o);
+    EXPECT_EQ(err, "") << mc.display;
+    if (!err.empty()) continue;
+    const auto q = Configuration(o, 1);
+    const Kinematics k = ComputeKinematics(o, std::map<std::string, double>(q.begin(), q.end()));
+    EXPECT_EQ(k.X_WB.size(), o.links.size()) << mc.display << ": links unreachable from the root";
+    const MatrixXd M = ComputeMassMatrix(o, k);
+    const double scale = std::max(1.0, M.cwiseAbs().maxCoeff());
+    EXPECT_LE((M - M.transpose()).cwiseAbs().maxCoeff(), 1e-12 * scale) << mc.display;
+    if (M.size() > 0) {
+      Eigen::SelfAdjointEigenSolver<MatrixXd> es(M);
+      EXPECT_GE(es.eigenvalues().minCoeff(), -1e-10 * scale) << mc.display;
+    }
+    if (verbose) {
+      int n_fixed = 0, n_float = 0, n_planar = 0;
+      for (const auto& [n, J] : o.joints) {
+        n_fixed += J.type == JType::kFixed;
+        n_float += J.type == JType::kFloating;
+        n_planar += J.type == JType::kPlanar;
+      }
+      std::printf("%-90s links=%zu dofs=%zu fixed=%d floating=%d planar=%d free=%zu root=%s\n",
+                  mc.display.c_str(), o.links.size(), o.dofs.size(), n_fixed, n_float, n_planar,
+                  o.free_bodies.size(), o.root.c_str());
+      for (const auto& [n, L] : o.links) {
+        if (!L.inertia_note.empty()) std::printf("    link %s: %s\n", n.c_str(), L.inertia_note.c_str());
+      }
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {

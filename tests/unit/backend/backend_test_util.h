@@ -138,7 +138,7 @@ inline Eigen::Vector3d Vee(const Eigen::Matrix3d& S) {
 inline Eigen::VectorXd MoveAlongVelocity(const PlantJoint& joint,
                                          const Eigen::VectorXd& q_joint, int k, double eps) {
   Eigen::VectorXd q = q_joint;
-  const auto rotated = [&](const Eigen::Matrix3d& R) {
+  const auto rotated = [&](const Eigen::Matrix3d& R) -> Eigen::Matrix3d {
     return Eigen::AngleAxisd(eps, Eigen::Vector3d::Unit(k)).toRotationMatrix() * R;
   };
   switch (joint.type) {
