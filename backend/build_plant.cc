@@ -15,8 +15,8 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-/// Builds the plant entity by entity; `ok` turns false on the first error,
-/// and everything after keeps going so one run reports every problem.
+/// Builds the plant entity by entity. `ok_` turns false on the first error
+/// but the builder keeps going, so one run reports every problem it can.
 class PlantBuilder {
  public:
   PlantBuilder(const ir::Module& module, DiagnosticEngine& diags)
@@ -33,7 +33,8 @@ class PlantBuilder {
     AddBodies();
     for (const ir::Frame& frame : m_.frames) AddFrame(frame);
     for (const ir::Joint& joint : m_.joints) AddJoint(joint);
-    if (ok_) ok_ = AssignTreeOrder(m_, plant_, diags_);
+    // the tree needs valid body ids only, so its problems are reported too
+    if (refs_ok_ && !AssignTreeOrder(m_, plant_, diags_)) Fail();
     for (const ir::Actuator& actuator : m_.actuators) AddActuator(actuator);
     for (const ir::Constraint& constraint : m_.constraints) AddConstraint(constraint);
     if (!ok_) return std::nullopt;
@@ -50,7 +51,10 @@ class PlantBuilder {
 
   template <typename IdT>
   IdT Resolve(const ir::Ref<IdT>& ref, size_t size, std::string_view what, Loc loc) {
-    if (!CheckRef(m_, ref, size, what, loc, diags_)) Fail();
+    if (!CheckRef(m_, ref, size, what, loc, diags_)) {
+      Fail();
+      refs_ok_ = false;
+    }
     return ref.id;
   }
   BodyId ResolveBody(const ir::Ref<BodyId>& ref, Loc loc) {
@@ -71,6 +75,7 @@ class PlantBuilder {
                       fmt::format("internal: body '{}' {} the world body but is body {}",
                                   m_.Text(src.name), src.is_world ? "is" : "is not", b));
         Fail();
+        refs_ok_ = false;
       }
       CheckEntityModel(src.model, src.loc);
       PlantBody& body = plant_.bodies.emplace_back();
@@ -225,6 +230,7 @@ class PlantBuilder {
   DiagnosticEngine& diags_;
   Plant plant_;
   bool ok_ = true;
+  bool refs_ok_ = true;  // every id in range (body 0 is the world)
 };
 
 }  // namespace

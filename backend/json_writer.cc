@@ -83,10 +83,11 @@ void JsonWriter::BeforeValue() {
   if (level.pretty) Indent(stack_.size());
 }
 
-void JsonWriter::Open(char bracket) {
+void JsonWriter::Open(char bracket, Layout layout) {
   BeforeValue();
   out_ += bracket;
-  stack_.push_back({static_cast<int>(stack_.size()) < pretty_depth_});
+  stack_.push_back(
+      {layout == Layout::ByDepth && static_cast<int>(stack_.size()) < pretty_depth_});
 }
 
 void JsonWriter::Close(char bracket) {
@@ -97,9 +98,9 @@ void JsonWriter::Close(char bracket) {
   if (stack_.empty()) out_ += '\n';
 }
 
-JsonWriter& JsonWriter::BeginObject() { Open('{'); return *this; }
+JsonWriter& JsonWriter::BeginObject(Layout layout) { Open('{', layout); return *this; }
 JsonWriter& JsonWriter::EndObject() { Close('}'); return *this; }
-JsonWriter& JsonWriter::BeginArray() { Open('['); return *this; }
+JsonWriter& JsonWriter::BeginArray(Layout layout) { Open('[', layout); return *this; }
 JsonWriter& JsonWriter::EndArray() { Close(']'); return *this; }
 
 JsonWriter& JsonWriter::Key(std::string_view key) {

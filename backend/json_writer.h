@@ -8,7 +8,8 @@
 //   0, and NaN or infinities as null;
 // - containers opened at nesting depth < `pretty_depth` put each element on
 //   its own line, indented two spaces per level; deeper ones are compact
-//   (`[1,2]`, `{"a":1}`), so big dumps stay line-oriented and diffable.
+//   (`[1,2]`, `{"a":1}`), so big dumps stay line-oriented and diffable;
+//   Layout::Compact keeps a shallow container on one line all the same.
 // Misuse (a value where a key is due, unbalanced End*) is a programming
 // error and is not diagnosed.
 #pragma once
@@ -22,11 +23,13 @@ namespace mdlc::backend {
 
 class JsonWriter {
  public:
+  enum class Layout { ByDepth, Compact };
+
   explicit JsonWriter(int pretty_depth = 0) : pretty_depth_(pretty_depth) {}
 
-  JsonWriter& BeginObject();
+  JsonWriter& BeginObject(Layout layout = Layout::ByDepth);
   JsonWriter& EndObject();
-  JsonWriter& BeginArray();
+  JsonWriter& BeginArray(Layout layout = Layout::ByDepth);
   JsonWriter& EndArray();
   JsonWriter& Key(std::string_view key);
 
@@ -42,7 +45,7 @@ class JsonWriter {
 
  private:
   void BeforeValue();
-  void Open(char bracket);
+  void Open(char bracket, Layout layout);
   void Close(char bracket);
   void Indent(size_t depth);
 

@@ -31,7 +31,7 @@ class PlantJsonEmitter {
   std::string Emit() {
     w_.BeginObject();
     w_.Key("schema").String("mdlc-plant/1");
-    w_.Key("model_instances").BeginArray();
+    w_.Key("model_instances").BeginArray(JsonWriter::Layout::Compact);
     for (const std::string& name : plant_.model_instances) w_.String(name);
     w_.EndArray();
     List("bodies", plant_.bodies, [&](const PlantBody& b) { if (!b.is_world) Body(b); });
@@ -66,7 +66,7 @@ class PlantJsonEmitter {
   // -- values
 
   void Vector(const Eigen::Ref<const Eigen::VectorXd>& v) {
-    w_.BeginArray();
+    w_.BeginArray(JsonWriter::Layout::Compact);
     for (Eigen::Index i = 0; i < v.size(); ++i) w_.Number(v[i]);
     w_.EndArray();
   }

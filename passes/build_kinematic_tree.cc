@@ -8,6 +8,7 @@
 // level holds. Iterative throughout: chains of any depth are fine.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <unordered_set>
 
 #include "passes/pass_registry.h"
@@ -103,9 +104,13 @@ void BuildKinematicTreePass::ReportLoop(PassContext& ctx, const std::vector<Join
     cycle.push_back(inboard[b]);
     b = m[inboard[b]].parent.id.index();
   } while (b != start && cycle.size() <= m.bodies.size());
+  // report at the loop's first joint in document order, whatever body the
+  // walk that found it started from: the same input gives the same message
+  std::rotate(cycle.begin(), std::min_element(cycle.begin(), cycle.end()), cycle.end());
+  std::reverse(cycle.begin() + 1, cycle.end());
   std::string names;
-  for (auto it = cycle.rbegin(); it != cycle.rend(); ++it) {
-    names += fmt::format("{}'{}'", names.empty() ? "" : " -> ", m.Text(m[*it].name));
+  for (JointId j : cycle) {
+    names += fmt::format("{}'{}'", names.empty() ? "" : " -> ", m.Text(m[j].name));
   }
   auto diag = ctx.diags.Report(
       DiagKind::KinematicLoop, m[cycle.front()].loc,

@@ -26,26 +26,31 @@ std::optional<ModelId> ModelIndex::Find(std::string_view name) const {
 }
 
 namespace {
+// optimal string alignment distance: edits plus adjacent transpositions,
+// the usual shape of a typo ("amr" for "arm")
 size_t EditDistance(std::string_view a, std::string_view b) {
-  std::vector<size_t> row(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    size_t diagonal = row[0];
-    row[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      const size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-      diagonal = up;
+  const size_t n = a.size(), m = b.size();
+  std::vector<size_t> prev2(m + 1), prev(m + 1), cur(m + 1);
+  for (size_t j = 0; j <= m; ++j) prev[j] = j;
+  for (size_t i = 1; i <= n; ++i) {
+    cur[0] = i;
+    for (size_t j = 1; j <= m; ++j) {
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] != b[j - 1])});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
+        cur[j] = std::min(cur[j], prev2[j - 2] + 1);
+      }
     }
+    std::swap(prev2, prev);
+    std::swap(prev, cur);
   }
-  return row[b.size()];
+  return prev[m];
 }
 }  // namespace
 
 std::optional<std::string> ClosestName(std::string_view wanted,
                                        const std::vector<std::string_view>& candidates) {
   // only a typo's worth of edits, and never scan absurdly many candidates
-  const size_t limit = std::max<size_t>(1, wanted.size() / 3);
+  const size_t limit = std::max<size_t>(1, (wanted.size() + 2) / 3);
   std::optional<std::string> best;
   size_t best_distance = limit + 1;
   size_t scanned = 0;

@@ -13,7 +13,7 @@
 #include "backend/backend.h"
 #include "ir/module.h"
 
-namespace mdlc::backend::testing {
+namespace mdlc::backend::test_util {
 
 /// A module with one model instance ("robot" by default) and helpers that add
 /// entities with every reference already resolved.
@@ -209,4 +209,4 @@ inline Eigen::MatrixXd MassMatrixByFiniteDifferences(const Plant& plant,
   return M;
 }
 
-}  // namespace mdlc::backend::testing
+}  // namespace mdlc::backend::test_util

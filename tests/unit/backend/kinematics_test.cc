@@ -13,7 +13,7 @@ namespace mdlc::backend {
 namespace {
 
 using ir::JointType;
-using testing::ModelBuilder;
+using test_util::ModelBuilder;
 using std::numbers::pi;
 
 PlantJoint MakeJoint(JointType type, const Eigen::Vector3d& axis = Eigen::Vector3d::UnitZ(),
@@ -129,7 +129,7 @@ TEST(Kinematics, MotionSubspaceMatchesDerivativeOfJointPose) {
       qp[k] += h;
       qm[k] -= h;
       const Transform Xp = JointPose(joint, qp), Xm = JointPose(joint, qm);
-      const Eigen::Vector3d w = testing::Vee((Xp.R - Xm.R) / (2 * h) * X.R.transpose());
+      const Eigen::Vector3d w = test_util::Vee((Xp.R - Xm.R) / (2 * h) * X.R.transpose());
       const Eigen::Vector3d v = (Xp.p - Xm.p) / (2 * h);
       EXPECT_LT((H.col(k).head<3>() - w).norm(), 1e-8) << k;
       EXPECT_LT((H.col(k).tail<3>() - v).norm(), 1e-8) << k;
@@ -143,7 +143,7 @@ TEST(Kinematics, SinglePendulumForwardKinematics) {
   const BodyId link = b.AddBody("link", 2.0, Eigen::Vector3d(0, 0, -l), Eigen::Matrix3d::Identity());
   b.AddJoint("pivot", JointType::Revolute, ir::kWorldBody, link,
              Transform::FromTranslation(Eigen::Vector3d(0, 0, 1)), Eigen::Vector3d::UnitY());
-  auto model = testing::InstantiateOk(b.module());
+  auto model = test_util::InstantiateOk(b.module());
   ASSERT_TRUE(model);
   const std::vector<Transform> X_WB = BodyPosesInWorld(model->plant, Q({0.5}));
   ExpectPose(X_WB[link.index()], Rot(Eigen::Vector3d::UnitY(), 0.5), Eigen::Vector3d(0, 0, 1));
@@ -161,7 +161,7 @@ TEST(Kinematics, ChainComposesJointFrames) {
   const Transform X_PF2{Rot(Eigen::Vector3d::UnitY(), 1.0), Eigen::Vector3d(0, 0, 2)};
   b.AddJoint("j1", JointType::Revolute, ir::kWorldBody, a, X_PF1, Eigen::Vector3d::UnitZ(), X_CM1);
   b.AddJoint("j2", JointType::Prismatic, a, c, X_PF2, Eigen::Vector3d::UnitX());
-  auto model = testing::InstantiateOk(b.module());
+  auto model = test_util::InstantiateOk(b.module());
   ASSERT_TRUE(model);
   const std::vector<Transform> X_WB = BodyPosesInWorld(model->plant, Q({0.4, 0.25}));
   const Transform X_WA = X_PF1 * Transform::FromRotation(Rot(Eigen::Vector3d::UnitZ(), 0.4)) *
@@ -176,7 +176,7 @@ TEST(Kinematics, ChainComposesJointFrames) {
 TEST(Kinematics, ForwardKinematicsRejectsWrongSizeQ) {
   ModelBuilder b;
   b.AddJoint("j", JointType::Revolute, ir::kWorldBody, b.AddMasslessBody("a"));
-  auto model = testing::InstantiateOk(b.module());
+  auto model = test_util::InstantiateOk(b.module());
   ASSERT_TRUE(model);
   EXPECT_THROW(BodyPosesInWorld(model->plant, Q({1, 2})), std::invalid_argument);
 }
@@ -188,7 +188,7 @@ TEST(Kinematics, DefaultPositionsUseModelValuesElseZeroOrIdentity) {
   b.AddJoint("base", JointType::QuaternionFloating, ir::kWorldBody, base);
   const JointId elbow = b.AddJoint("elbow", JointType::Revolute, base, arm);
   b.module()[elbow].default_positions = {0.25};
-  auto model = testing::InstantiateOk(b.module());
+  auto model = test_util::InstantiateOk(b.module());
   ASSERT_TRUE(model);
   const Eigen::VectorXd q = DefaultPositions(model->plant);
   ASSERT_EQ(q.size(), 8);
@@ -202,7 +202,7 @@ TEST(Kinematics, SetJointPositionByScopedOrUnambiguousLocalName) {
   b.AddJoint("ball", JointType::Ball, ir::kWorldBody, b.AddMasslessBody("l3"));
   b.SetInstance(b.AddInstance("right"));
   b.AddJoint("shoulder", JointType::Revolute, ir::kWorldBody, b.AddMasslessBody("r1"));
-  auto model = testing::InstantiateOk(b.module());
+  auto model = test_util::InstantiateOk(b.module());
   ASSERT_TRUE(model);
   const Plant& plant = model->plant;
   Eigen::VectorXd q = DefaultPositions(plant);

@@ -14,7 +14,7 @@ namespace mdlc::backend {
 namespace {
 
 using ir::JointType;
-using testing::ModelBuilder;
+using test_util::ModelBuilder;
 
 Eigen::Matrix3d Diag(double x, double y, double z) { return Eigen::Vector3d(x, y, z).asDiagonal(); }
 
@@ -24,11 +24,11 @@ TEST(MassMatrix, SinglePendulumIsMlSquaredPlusI) {
   // a full inertia tensor, in a rotated inertia frame: only the component
   // about the joint axis (y of B) counts
   std::mt19937 rng(7);
-  const Eigen::Matrix3d I_I = testing::RandomInertia(rng, m);
+  const Eigen::Matrix3d I_I = test_util::RandomInertia(rng, m);
   const Eigen::Matrix3d R_BI = RotationFromRpy(Eigen::Vector3d(0.3, -0.4, 1.2));
   const BodyId link = b.AddBody("link", m, Eigen::Vector3d(0, 0, -l), I_I, R_BI);
   b.AddJoint("pivot", JointType::Revolute, ir::kWorldBody, link, {}, Eigen::Vector3d::UnitY());
-  auto model = testing::InstantiateOk(b.module());
+  auto model = test_util::InstantiateOk(b.module());
   ASSERT_TRUE(model);
   const double I_yy = (R_BI * I_I * R_BI.transpose())(1, 1);
   for (double q : {0.0, 0.7, -2.0}) {
@@ -46,7 +46,7 @@ TEST(MassMatrix, DoublePendulumClosedForm) {
   b.AddJoint("shoulder", JointType::Revolute, ir::kWorldBody, link1, {}, Eigen::Vector3d::UnitY());
   b.AddJoint("elbow", JointType::Revolute, link1, link2,
              Transform::FromTranslation(Eigen::Vector3d(0, 0, -l1)), Eigen::Vector3d::UnitY());
-  auto model = testing::InstantiateOk(b.module());
+  auto model = test_util::InstantiateOk(b.module());
   ASSERT_TRUE(model);
   for (const auto& [q1, q2] : {std::pair{0.0, 0.0}, {0.3, 1.2}, {-1.0, 2.5}, {2.0, -0.7}}) {
     const double c2 = std::cos(q2);
@@ -66,7 +66,7 @@ TEST(MassMatrix, CartPoleClosedForm) {
   const BodyId pole = b.AddBody("pole", mp, Eigen::Vector3d(0, 0, lp), Diag(0.01, Ip, 0.001));
   b.AddJoint("slider", JointType::Prismatic, ir::kWorldBody, cart, {}, Eigen::Vector3d::UnitX());
   b.AddJoint("hinge", JointType::Revolute, cart, pole, {}, Eigen::Vector3d::UnitY());
-  auto model = testing::InstantiateOk(b.module());
+  auto model = test_util::InstantiateOk(b.module());
   ASSERT_TRUE(model);
   for (double theta : {0.0, 0.4, 2.0, -2.9}) {
     Eigen::Matrix2d expected;
@@ -87,13 +87,13 @@ ir::Module RandomChain(std::mt19937& rng, int num_joints) {
   for (int i = 0; i < num_joints; ++i) {
     const double m = mass(rng);
     const BodyId body =
-        b.AddBody("link" + std::to_string(i), m, testing::RandomVector(rng, 0.2),
-                  testing::RandomInertia(rng, m), testing::RandomRotation(rng));
+        b.AddBody("link" + std::to_string(i), m, test_util::RandomVector(rng, 0.2),
+                  test_util::RandomInertia(rng, m), test_util::RandomRotation(rng));
     const JointId j = b.AddJoint(
         "joint" + std::to_string(i), types[i % 6], parent, body,
-        {testing::RandomRotation(rng), testing::RandomVector(rng, 0.5)},
-        testing::RandomVector(rng, 1.0).normalized(),
-        {testing::RandomRotation(rng), testing::RandomVector(rng, 0.3)});
+        {test_util::RandomRotation(rng), test_util::RandomVector(rng, 0.5)},
+        test_util::RandomVector(rng, 1.0).normalized(),
+        {test_util::RandomRotation(rng), test_util::RandomVector(rng, 0.3)});
     b.module()[j].screw_thread_pitch = 0.07;
     parent = body;
   }
@@ -111,13 +111,13 @@ TEST(MassMatrix, CrbaMatchesFiniteDifferenceJacobiansOnRandomChain) {
   std::mt19937 rng(20240611);
   for (int trial = 0; trial < 3; ++trial) {
     const ir::Module module = RandomChain(rng, 6);
-    auto model = testing::InstantiateOk(module);
+    auto model = test_util::InstantiateOk(module);
     ASSERT_TRUE(model);
     ASSERT_EQ(model->plant.num_velocities, 1 + 1 + 1 + 2 + 3 + 1);
     for (int k = 0; k < 4; ++k) {
       const Eigen::VectorXd q = RandomQ(rng, model->plant);
       const Eigen::MatrixXd M = CalcMassMatrix(model->plant, q);
-      const Eigen::MatrixXd expected = testing::MassMatrixByFiniteDifferences(model->plant, q);
+      const Eigen::MatrixXd expected = test_util::MassMatrixByFiniteDifferences(model->plant, q);
       EXPECT_LT((M - expected).cwiseAbs().maxCoeff(), 1e-9)
           << "trial " << trial << "\n" << M << "\n\n" << expected;
       EXPECT_LT((M - M.transpose()).cwiseAbs().maxCoeff(), 1e-12);
@@ -131,12 +131,12 @@ TEST(MassMatrix, CrbaMatchesFiniteDifferenceJacobiansOnFloatingTree) {
   std::mt19937 rng(42);
   ModelBuilder b;
   const auto body = [&](const std::string& name) {
-    const double m = 0.5 + std::abs(testing::RandomVector(rng, 2.0).x());
-    return b.AddBody(name, m, testing::RandomVector(rng, 0.2), testing::RandomInertia(rng, m),
-                     testing::RandomRotation(rng));
+    const double m = 0.5 + std::abs(test_util::RandomVector(rng, 2.0).x());
+    return b.AddBody(name, m, test_util::RandomVector(rng, 0.2), test_util::RandomInertia(rng, m),
+                     test_util::RandomRotation(rng));
   };
   const auto pose = [&] {
-    return Transform{testing::RandomRotation(rng), testing::RandomVector(rng, 0.4)};
+    return Transform{test_util::RandomRotation(rng), test_util::RandomVector(rng, 0.4)};
   };
   const BodyId base = body("base");
   const BodyId shoulder = body("shoulder");
@@ -153,7 +153,7 @@ TEST(MassMatrix, CrbaMatchesFiniteDifferenceJacobiansOnFloatingTree) {
   b.AddJoint("tool", JointType::Prismatic, massless, tool, pose(), Eigen::Vector3d::UnitY(), pose());
   b.AddJoint("flyer", JointType::RpyFloating, base, flyer, pose(), z, pose());
   b.AddJoint("finger", JointType::Revolute, hand, finger, pose(), Eigen::Vector3d::UnitX(), pose());
-  auto model = testing::InstantiateOk(b.module());
+  auto model = test_util::InstantiateOk(b.module());
   ASSERT_TRUE(model);
   ASSERT_EQ(model->plant.num_velocities, 6 + 3 + 1 + 1 + 6 + 1);
   for (int k = 0; k < 4; ++k) {
@@ -161,7 +161,7 @@ TEST(MassMatrix, CrbaMatchesFiniteDifferenceJacobiansOnFloatingTree) {
     const PlantJoint& floating = model->plant.joint(JointId(size_t{0}));
     q.segment<4>(floating.q_start).normalize();
     const Eigen::MatrixXd M = CalcMassMatrix(model->plant, q);
-    const Eigen::MatrixXd expected = testing::MassMatrixByFiniteDifferences(model->plant, q);
+    const Eigen::MatrixXd expected = test_util::MassMatrixByFiniteDifferences(model->plant, q);
     EXPECT_LT((M - expected).cwiseAbs().maxCoeff(), 1e-9) << M << "\n\n" << expected;
   }
 }
@@ -169,7 +169,7 @@ TEST(MassMatrix, CrbaMatchesFiniteDifferenceJacobiansOnFloatingTree) {
 TEST(MassMatrix, RestrictedToJointsIsTheMatchingSubmatrix) {
   std::mt19937 rng(5);
   const ir::Module module = RandomChain(rng, 6);
-  auto model = testing::InstantiateOk(module);
+  auto model = test_util::InstantiateOk(module);
   ASSERT_TRUE(model);
   const Plant& plant = model->plant;
   const Eigen::VectorXd q = RandomQ(rng, plant);

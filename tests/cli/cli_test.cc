@@ -1,0 +1,261 @@
+// Behaviour of the mdlc command line: exit codes, diagnostics formats and
+// policy flags, pass instrumentation, determinism, and inputs that must not
+// crash or hang (deep chains, empty files, entity declarations).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string ReadFile(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("mdlc_cli_test_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path Write(const std::string& name, const std::string& text) {
+    fs::path p = dir_ / name;
+    std::ofstream(p, std::ios::binary) << text;
+    return p;
+  }
+
+  Result Run(const std::string& args) {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string cmd = std::string(MDLC_BINARY) + " " + args + " >" + out.string() + " 2>" +
+                            err.string() + " </dev/null";
+    Result r;
+    const int raw = std::system(cmd.c_str());
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+    r.out = ReadFile(out);
+    r.err = ReadFile(err);
+    return r;
+  }
+
+  fs::path dir_;
+};
+
+const char* kPendulum = R"(<?xml version="1.0"?>
+<robot name="pendulum">
+  <link name="base"/>
+  <link name="arm">
+    <inertial>
+      <origin xyz="0 0 -0.5"/>
+      <mass value="2"/>
+      <inertia ixx="0.01" iyy="0.01" izz="0.001" ixy="0" ixz="0" iyz="0"/>
+    </inertial>
+    <visual><geometry><cylinder radius="0.02" length="1"/></geometry></visual>
+    <collision><geometry><cylinder radius="0.02" length="1"/></geometry></collision>
+  </link>
+  <joint name="base_weld" type="fixed"><parent link="world"/><child link="base"/></joint>
+  <joint name="theta" type="revolute">
+    <parent link="base"/><child link="arm"/>
+    <axis xyz="0 1 0"/>
+    <limit lower="-2" upper="2" effort="10" velocity="5"/>
+  </joint>
+</robot>
+)";
+
+TEST_F(CliTest, SuccessExitsZeroAndPrintsSummary) {
+  Result r = Run("compile " + Write("p.urdf", kPendulum).string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("bodies: 2"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("total mass: 2 kg"), std::string::npos) << r.out;
+}
+
+TEST_F(CliTest, BadUsageExitsTwo) {
+  EXPECT_EQ(Run("compile").status, 2);
+  EXPECT_EQ(Run("compile x.urdf --emit=bogus").status, 2);
+}
+
+TEST_F(CliTest, EmptyFileIsALocatedError) {  // COMMON-004
+  Result r = Run("compile " + Write("empty.urdf", "").string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("empty.urdf:1:1: error: Failed to parse XML: the file is empty"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST_F(CliTest, MissingFileAndUnknownExtensionAreErrors) {  // COMMON-005
+  Result missing = Run("compile " + (dir_ / "nope.urdf").string());
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.err.find("cannot read"), std::string::npos) << missing.err;
+  Result ext = Run("compile " + Write("model.txt", kPendulum).string());
+  EXPECT_EQ(ext.status, 1);
+  EXPECT_NE(ext.err.find("extension"), std::string::npos) << ext.err;
+}
+
+TEST_F(CliTest, TextDiagnosticsShowSourceLineAndCaretAtTheAttribute) {
+  Result r = Run("compile " + Write("bad.urdf", R"(<robot name="r">
+  <link name="a"><inertial><mass value="heavy"/></inertial></link>
+</robot>
+)").string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("bad.urdf:2:34: error: attribute 'value' of <mass> must be numbers"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("  <link name=\"a\"><inertial><mass value=\"heavy\"/></inertial></link>\n"
+                       "                                 ^\n"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("1 error generated."), std::string::npos);
+}
+
+TEST_F(CliTest, JsonDiagnosticsAreOneObjectPerLine) {
+  Result r = Run("compile --diagnostics-format=json " +
+                 Write("bad.urdf", R"(<robot name="r">
+  <link name="a"><inertial><mass value="nan"/></inertial></link>
+  <lnk/>
+</robot>
+)").string());
+  EXPECT_EQ(r.status, 1);
+  std::istringstream lines(r.err);
+  std::string line;
+  int count = 0;
+  while (std::getline(lines, line)) {
+    auto j = nlohmann::json::parse(line);
+    EXPECT_TRUE(j.contains("severity"));
+    EXPECT_TRUE(j.contains("kind"));
+    EXPECT_TRUE(j.contains("message"));
+    EXPECT_EQ(j["line"].get<int>() >= 2, true);
+    EXPECT_GT(j["column"].get<int>(), 0);
+    ++count;
+  }
+  EXPECT_EQ(count, 2) << r.err;
+}
+
+TEST_F(CliTest, StrictAndWerrorPromoteWarnings) {  // COMMON-002
+  fs::path f = Write("warn.urdf", R"(<robot name="r"><link name="a"/><lnk/></robot>)");
+  EXPECT_EQ(Run("compile --emit=none " + f.string()).status, 0);
+  Result strict = Run("compile --emit=none --strict " + f.string());
+  EXPECT_EQ(strict.status, 1);
+  EXPECT_NE(strict.err.find("error: unknown element <lnk>"), std::string::npos) << strict.err;
+  EXPECT_EQ(Run("compile --emit=none -Werror " + f.string()).status, 1);
+  EXPECT_EQ(Run("compile --emit=none -Werror=unknown " + f.string()).status, 1);
+  EXPECT_EQ(Run("compile --emit=none -Werror=inertia " + f.string()).status, 0);
+  Result silenced = Run("compile --emit=none -Wno-unknown " + f.string());
+  EXPECT_EQ(silenced.status, 0);
+  EXPECT_EQ(silenced.err, "");
+}
+
+TEST_F(CliTest, NegativeMassWarnsByDefaultAndFailsWhenStrict) {  // COMMON-041
+  fs::path f = fs::path(MDLC_DIAG_DIR) / "urdf" / "negative_mass.urdf";
+  Result lax = Run("compile --emit=plant-json " + f.string());
+  EXPECT_EQ(lax.status, 0);
+  auto json = nlohmann::json::parse(lax.out);
+  // the plausible replacement: mass 1 kg (COMMON-040)
+  EXPECT_EQ(json["bodies"][0]["mass"].get<double>(), 1.0);
+  Result strict = Run("compile --strict --emit=none " + f.string());
+  EXPECT_EQ(strict.status, 1);
+  EXPECT_NE(strict.err.find("negative_mass.urdf:7:5: error:"), std::string::npos) << strict.err;
+}
+
+TEST_F(CliTest, IrDumpAndPlantJsonAreDeterministic) {
+  fs::path f = Write("p.urdf", kPendulum);
+  Result a = Run("compile --emit=ir " + f.string());
+  Result b = Run("compile --emit=ir " + f.string());
+  ASSERT_EQ(a.status, 0) << a.err;
+  EXPECT_EQ(a.out, b.out);
+  EXPECT_NE(a.out.find("joint #1 \"theta\" model=pendulum revolute"), std::string::npos) << a.out;
+  Result c = Run("compile --emit=plant-json --q theta=0.3 " + f.string());
+  Result d = Run("compile --emit=plant-json --q theta=0.3 " + f.string());
+  ASSERT_EQ(c.status, 0) << c.err;
+  EXPECT_EQ(c.out, d.out);
+}
+
+TEST_F(CliTest, PlantJsonAtAConfiguration) {
+  fs::path f = Write("p.urdf", kPendulum);
+  Result r = Run("compile --emit=plant-json --q theta=0.5 -o " + (dir_ / "plant.json").string() +
+                 " " + f.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = nlohmann::json::parse(ReadFile(dir_ / "plant.json"));
+  EXPECT_EQ(j["schema"], "mdlc-plant/1");
+  ASSERT_EQ(j["dofs"].size(), 1u);
+  EXPECT_EQ(j["dofs"][0], "pendulum::theta");
+  // M = I_yy + m d^2 about the joint axis
+  EXPECT_NEAR(j["mass_matrix"][0][0].get<double>(), 0.01 + 2 * 0.25, 1e-12);
+  EXPECT_EQ(Run("compile --emit=plant-json --q nosuch=1 " + f.string()).status, 1);
+}
+
+TEST_F(CliTest, PassInstrumentation) {
+  Result list = Run("--list-passes");
+  EXPECT_EQ(list.status, 0);
+  for (const char* pass : {"resolve-names", "check-joints", "build-kinematic-tree", "check-inertia"}) {
+    EXPECT_NE(list.out.find(pass), std::string::npos) << pass;
+  }
+  fs::path f = Write("p.urdf", kPendulum);
+  Result after = Run("compile --emit=none --print-after=resolve-names " + f.string());
+  EXPECT_EQ(after.status, 0);
+  EXPECT_NE(after.err.find("// ----- IR dump after resolve-names -----"), std::string::npos);
+  EXPECT_EQ(after.err.find("IR dump after check-inertia"), std::string::npos);
+  Result all = Run("compile --emit=none --print-after-all --verify-each " + f.string());
+  EXPECT_NE(all.err.find("IR dump after check-inertia"), std::string::npos);
+  Result timing = Run("compile --emit=none --time-passes " + f.string());
+  EXPECT_NE(timing.err.find("pass execution timing"), std::string::npos);
+  EXPECT_NE(timing.err.find("build-kinematic-tree"), std::string::npos);
+}
+
+TEST_F(CliTest, ModelNameOverride) {  // COMMON-021
+  Result r = Run("compile --emit=ir --model-name renamed " + Write("p.urdf", kPendulum).string());
+  EXPECT_NE(r.out.find("model #2 \"renamed\""), std::string::npos) << r.out;
+}
+
+TEST_F(CliTest, TenThousandLinkChainCompiles) {
+  // no recursion per nesting level: a deep chain must not overflow the stack
+  std::string urdf = "<robot name=\"chain\">\n<link name=\"l0\"/>\n";
+  for (int i = 1; i <= 10000; ++i) {
+    urdf += "<link name=\"l" + std::to_string(i) +
+            "\"><inertial><mass value=\"1\"/><inertia ixx=\"1\" iyy=\"1\" izz=\"1\"/>"
+            "</inertial></link>\n<joint name=\"j" + std::to_string(i) +
+            "\" type=\"continuous\"><parent link=\"l" + std::to_string(i - 1) +
+            "\"/><child link=\"l" + std::to_string(i) + "\"/><origin xyz=\"0 0 0.1\"/></joint>\n";
+  }
+  urdf += "</robot>\n";
+  Result r = Run("compile --emit=summary " + Write("chain.urdf", urdf).string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("bodies: 10001"), std::string::npos) << r.out;
+}
+
+TEST_F(CliTest, DeeplyNestedXmlDoesNotCrash) {
+  // 100,000 nested unknown elements: warned about, never recursed into
+  std::string deep = "<robot name=\"r\"><link name=\"a\"/>";
+  for (int i = 0; i < 100000; ++i) deep += "<x>";
+  for (int i = 0; i < 100000; ++i) deep += "</x>";
+  deep += "</robot>";
+  Result r = Run("compile --emit=none " + Write("deep.urdf", deep).string());
+  EXPECT_EQ(r.status, 0) << r.err.substr(0, 500);
+}
+
+TEST_F(CliTest, EveryDiagnosticFileVerifies) {
+  // the same files ctest runs one by one, here also checked for a clean exit
+  for (const auto& entry : fs::recursive_directory_iterator(MDLC_DIAG_DIR)) {
+    if (!entry.is_regular_file()) continue;
+    Result r = Run("compile --verify-diagnostics " + entry.path().string());
+    EXPECT_EQ(r.status, 0) << entry.path() << "\n" << r.err;
+  }
+}
+
+}  // namespace

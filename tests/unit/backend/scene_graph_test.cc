@@ -1,0 +1,171 @@
+// The scene graph: geometry properties and collision filters
+// (backend/build_scene_graph.h, backend/collision_filters.h).
+#include "backend/build_scene_graph.h"
+
+#include <gtest/gtest.h>
+
+#include "tests/unit/backend/backend_test_util.h"
+
+namespace mdlc::backend {
+namespace {
+
+using ir::JointType;
+using test_util::ModelBuilder;
+using Pairs = std::vector<std::pair<std::string, std::string>>;
+
+Pairs FilterNames(const CompiledModel& model) {
+  Pairs out;
+  for (const auto& [a, b] : model.scene.collision_filters) {
+    out.emplace_back(model.plant.body(a).scoped_name, model.plant.body(b).scoped_name);
+  }
+  return out;
+}
+
+void AddCollision(ModelBuilder& b, BodyId body) {
+  b.AddGeometry("collision", body, ir::Sphere{0.1}, ir::kProximityRole);
+}
+
+// COMMON-054: bodies connected by a joint never collide, when both carry
+// proximity geometry; Drake (and MuJoCo) exempt joints to the world and
+// Drake exempts floating joints.
+TEST(BackendCollisionFilters, Common054AdjacentBodies) {
+  ModelBuilder b;
+  const BodyId base = b.AddMasslessBody("base");
+  const BodyId upper = b.AddMasslessBody("upper");
+  const BodyId lower = b.AddMasslessBody("lower");
+  const BodyId visual_only = b.AddMasslessBody("visual_only");
+  const BodyId floater = b.AddMasslessBody("floater");
+  b.AddJoint("base", JointType::Revolute, ir::kWorldBody, base);
+  b.AddJoint("shoulder", JointType::Revolute, base, upper);
+  b.AddJoint("elbow", JointType::Revolute, upper, lower);
+  b.AddJoint("wrist", JointType::Revolute, lower, visual_only);
+  b.AddJoint("floater", JointType::QuaternionFloating, lower, floater);
+  b.AddGeometry("ground", ir::kWorldBody, ir::HalfSpace{}, ir::kProximityRole);
+  for (BodyId body : {base, upper, lower, floater}) AddCollision(b, body);
+  b.AddGeometry("visual", visual_only, ir::Sphere{0.1}, ir::kIllustrationRole);
+  auto model = test_util::InstantiateOk(b.module());
+  ASSERT_TRUE(model);
+  EXPECT_EQ(FilterNames(*model), (Pairs{{"robot::base", "robot::upper"},
+                                        {"robot::lower", "robot::upper"}}));
+}
+
+// COMMON-054: bodies welded together into one composite filter each other,
+// the world's composite included.
+TEST(BackendCollisionFilters, Common054WeldedComposites) {
+  ModelBuilder b;
+  const BodyId a = b.AddMasslessBody("a");
+  const BodyId c = b.AddMasslessBody("c");
+  const BodyId d = b.AddMasslessBody("d");
+  const BodyId e = b.AddMasslessBody("e");
+  const BodyId f = b.AddMasslessBody("f");
+  b.AddJoint("a", JointType::Revolute, ir::kWorldBody, a);
+  b.AddJoint("c", JointType::Weld, a, c);
+  b.AddJoint("d", JointType::Weld, c, d);   // a, c, d: one composite
+  b.AddJoint("e", JointType::Weld, ir::kWorldBody, e);  // world, e
+  b.AddJoint("f", JointType::Weld, e, f);   // world, e, f
+  b.AddGeometry("ground", ir::kWorldBody, ir::Box{Eigen::Vector3d::Ones()}, ir::kProximityRole);
+  for (BodyId body : {a, d, e, f}) AddCollision(b, body);  // not c
+  auto model = test_util::InstantiateOk(b.module());
+  ASSERT_TRUE(model);
+  EXPECT_EQ(FilterNames(*model), (Pairs{{"robot::a", "robot::d"},
+                                        {"robot::e", "robot::f"},
+                                        {"robot::e", "world"},
+                                        {"robot::f", "world"}}));
+}
+
+ir::Ref<FilterGroupId> GroupRef(ModelBuilder& b, FilterGroupId id) { return b.Ref(id, "group"); }
+
+// COMMON-051: (G, G) excludes pairs within G, (G, H) pairs across;
+// COMMON-052: member groups count transitively, and a cycle merges groups.
+TEST(BackendCollisionFilters, Common051FilterGroups) {
+  ModelBuilder b;
+  std::vector<BodyId> bodies;
+  for (const char* name : {"b0", "b1", "b2", "b3", "b4"}) {
+    bodies.push_back(b.AddMasslessBody(name));
+    b.AddJoint(name, JointType::QuaternionFloating, ir::kWorldBody, bodies.back());
+    AddCollision(b, bodies.back());
+  }
+  ir::Module& m = b.module();
+  const auto group = [&](std::string_view name, std::vector<BodyId> members) {
+    ir::CollisionFilterGroup g;
+    g.name = m.Intern(name);
+    g.model = b.model();
+    for (BodyId id : members) g.members.push_back(b.BodyRef(id));
+    return m.Add(g);
+  };
+  const FilterGroupId self = group("self", {bodies[0], bodies[1]});
+  const FilterGroupId left = group("left", {bodies[2]});
+  const FilterGroupId right = group("right", {bodies[3]});
+  const FilterGroupId loop = group("loop", {bodies[4]});
+  m.filter_groups[self.index()].ignored_groups.push_back(GroupRef(b, self));
+  // right contains loop, loop contains right: both are {b3, b4}
+  m.filter_groups[right.index()].member_groups.push_back(GroupRef(b, loop));
+  m.filter_groups[loop.index()].member_groups.push_back(GroupRef(b, right));
+  m.filter_groups[left.index()].ignored_groups.push_back(GroupRef(b, loop));
+  auto model = test_util::InstantiateOk(m);
+  ASSERT_TRUE(model);
+  EXPECT_EQ(FilterNames(*model), (Pairs{{"robot::b0", "robot::b1"},
+                                        {"robot::b2", "robot::b3"},
+                                        {"robot::b2", "robot::b4"}}));
+}
+
+TEST(BackendCollisionFilters, UnresolvedGroupReferenceIsAnError) {
+  ModelBuilder b;
+  ir::CollisionFilterGroup g;
+  g.name = b.module().Intern("g");
+  g.model = b.model();
+  g.ignored_groups.push_back(b.Ref(FilterGroupId(), "missing"));
+  b.module().Add(g);
+  DiagnosticEngine diags;
+  EXPECT_FALSE(Instantiate(b.module(), diags));
+  ASSERT_EQ(diags.diagnostics().size(), 1u);
+  EXPECT_EQ(diags.diagnostics()[0].kind, DiagKind::UnknownReference);
+}
+
+TEST(BackendSceneGraph, ColorBecomesPhongDiffuseForVisibleGeometry) {
+  ModelBuilder b;
+  const BodyId link = b.AddMasslessBody("link");
+  b.AddJoint("j", JointType::Revolute, ir::kWorldBody, link);
+  ir::Module& m = b.module();
+  ir::Material red;
+  red.name = m.Intern("red");
+  red.model = b.model();
+  red.rgba = Eigen::Vector4d(1, 0, 0, 1);
+  red.texture = "red.png";
+  const MaterialId red_id = m.Add(red);
+
+  const GeometryId inline_color = b.AddGeometry("inline", link, ir::Sphere{1}, ir::kIllustrationRole);
+  m[inline_color].rgba = Eigen::Vector4d(0.5, 0.25, 0, 1);
+  m[inline_color].material = b.Ref(red_id, "red");
+  m[inline_color].properties = {{"z/last", 1.0}, {"a/first", true}, {"a/first", false}};
+  const GeometryId from_material = b.AddGeometry("material", link, ir::Sphere{1}, ir::kPerceptionRole);
+  m[from_material].material = b.Ref(red_id, "red");
+  m[from_material].properties = {{"renderer/accepting", std::vector<std::string>{"vtk", "gl"}}};
+  const GeometryId collision = b.AddGeometry("collision", link, ir::Sphere{1}, ir::kProximityRole);
+  m[collision].rgba = Eigen::Vector4d(0, 1, 0, 1);
+
+  auto model = test_util::InstantiateOk(m);
+  ASSERT_TRUE(model);
+  const auto& g = model->scene.geometries;
+  ASSERT_EQ(g.size(), 3u);
+  ASSERT_EQ(g[0].properties.size(), 4u);  // sorted, one per key, last wins
+  EXPECT_EQ(g[0].properties[0].key, "a/first");
+  EXPECT_EQ(std::get<bool>(g[0].properties[0].value), false);
+  EXPECT_EQ(g[0].properties[1].key, "phong/diffuse");
+  EXPECT_EQ(std::get<std::vector<double>>(g[0].properties[1].value),
+            (std::vector<double>{0.5, 0.25, 0, 1}));
+  EXPECT_EQ(g[0].properties[2].key, "phong/diffuse_map");
+  EXPECT_EQ(g[0].properties[3].key, "z/last");
+
+  ASSERT_EQ(g[1].properties.size(), 3u);
+  EXPECT_EQ(std::get<std::vector<double>>(g[1].properties[0].value),
+            (std::vector<double>{1, 0, 0, 1}));
+  EXPECT_EQ(g[1].properties[2].key, "renderer/accepting");
+  EXPECT_EQ(std::get<std::vector<std::string>>(g[1].properties[2].value),
+            (std::vector<std::string>{"gl", "vtk"}));
+
+  EXPECT_TRUE(g[2].properties.empty());  // proximity only: no color
+}
+
+}  // namespace
+}  // namespace mdlc::backend
