@@ -34,8 +34,14 @@ class PlantJsonEmitter {
     w_.Key("model_instances").BeginArray(JsonWriter::Layout::Compact);
     for (const std::string& name : plant_.model_instances) w_.String(name);
     w_.EndArray();
-    List("bodies", plant_.bodies, [&](const PlantBody& b) { if (!b.is_world) Body(b); });
-    List("joints", plant_.joints, [&](const PlantJoint& j) { Joint(j); });
+    w_.Key("bodies").BeginArray();
+    for (size_t b = 0; b < plant_.bodies.size(); ++b) {
+      if (!plant_.bodies[b].is_world) Body(plant_.bodies[b], X_WB_[b]);
+    }
+    w_.EndArray();
+    w_.Key("joints").BeginArray();
+    for (size_t j = 0; j < plant_.joints.size(); ++j) Joint(JointId(j));
+    w_.EndArray();
     List("frames", plant_.frames, [&](const PlantFrame& f) { Frame(f); });
     List("geometries", scene_.geometries, [&](const SceneGeometry& g) { Geometry(g); });
     List("actuators", plant_.actuators, [&](const PlantActuator& a) { Actuator(a); });
@@ -102,7 +108,7 @@ class PlantJsonEmitter {
 
   // -- entities
 
-  void Body(const PlantBody& body) {
+  void Body(const PlantBody& body, const Transform& X_WB) {
     const Eigen::Matrix3d& I = body.I_BBcm_B;
     w_.BeginObject();
     NameAndInstance(body.name, body.model);
@@ -113,12 +119,12 @@ class PlantJsonEmitter {
     for (double x : {I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2)}) w_.Number(x);
     w_.EndArray();
     w_.Key("X_WB");
-    Pose(X_WB_[&body - plant_.bodies.data()]);
+    Pose(X_WB);
     w_.EndObject();
   }
 
-  void Joint(const PlantJoint& joint) {
-    const JointId id(static_cast<size_t>(&joint - plant_.joints.data()));
+  void Joint(JointId id) {
+    const PlantJoint& joint = plant_.joint(id);
     w_.BeginObject();
     NameAndInstance(joint.name, joint.model);
     w_.Key("type").String(ir::JointTypeName(joint.type));

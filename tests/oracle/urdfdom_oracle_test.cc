@@ -352,11 +352,52 @@ std::map<std::string, LimitAttrs> ReadLimitAttributes(const std::string& path) {
   return out;
 }
 
+// urdfdom 3.0.1 requires <mass> and all six <inertia> attributes; when one
+// is missing it logs an error and leaves the link's Inertial half-filled
+// (origin, maybe mass) yet still returns the model. URDF-004 says missing
+// sub-elements default to 0, so complete such inertials from the XML.
+// Returns the names of the links that needed it.
+std::set<std::string> CompleteInertials(const std::string& path, urdf::ModelInterface* model) {
+  std::set<std::string> patched;
+  TiXmlDocument doc;
+  if (!doc.LoadFile(path)) return patched;
+  const TiXmlElement* robot = doc.FirstChildElement("robot");
+  if (!robot) return patched;
+  for (const TiXmlElement* l = robot->FirstChildElement("link"); l; l = l->NextSiblingElement("link")) {
+    const char* name = l->Attribute("name");
+    const TiXmlElement* in = l->FirstChildElement("inertial");
+    if (!name || !in || !model->links_.count(name)) continue;
+    const TiXmlElement* mass = in->FirstChildElement("mass");
+    const TiXmlElement* inertia = in->FirstChildElement("inertia");
+    static const char* kAttrs[6] = {"ixx", "ixy", "ixz", "iyy", "iyz", "izz"};
+    bool complete = mass && mass->Attribute("value") && inertia;
+    for (const char* a : kAttrs) complete = complete && inertia->Attribute(a);
+    if (complete) continue;
+    urdf::LinkSharedPtr link = model->links_.at(name);
+    if (!link->inertial) link->inertial = std::make_shared<urdf::Inertial>();
+    const auto num = [](const TiXmlElement* e, const char* attr) {
+      const char* v = e ? e->Attribute(attr) : nullptr;
+      return v ? std::strtod(v, nullptr) : 0.0;
+    };
+    urdf::Inertial& I = *link->inertial;
+    I.mass = num(mass, "value");
+    I.ixx = num(inertia, "ixx");
+    I.ixy = num(inertia, "ixy");
+    I.ixz = num(inertia, "ixz");
+    I.iyy = num(inertia, "iyy");
+    I.iyz = num(inertia, "iyz");
+    I.izz = num(inertia, "izz");
+    patched.insert(name);
+  }
+  return patched;
+}
+
 // Builds the oracle. Returns an error string on failure.
 std::string BuildOracle(const std::string& path, Oracle* o) {
   urdf::ModelInterfaceSharedPtr model = urdf::parseURDFFile(path);
   if (!model) return "urdfdom could not parse " + path;
   const auto limit_attrs = ReadLimitAttributes(path);
+  const auto patched_inertials = CompleteInertials(path, model.get());
   o->robot = model->getName();
   o->root = model->getRoot()->name;
   for (const auto& [name, link] : model->links_) {
@@ -365,6 +406,10 @@ std::string BuildOracle(const std::string& path, Oracle* o) {
     // URDF-003: a link named `world` is the world body; <inertial> ignored.
     L.is_world = (name == "world");
     if (!L.is_world) FillMassProperties(link->inertial.get(), &L);
+    if (patched_inertials.count(name)) {
+      L.inertia_note += std::string(L.inertia_note.empty() ? "" : "; ") +
+                        "URDF-004: incomplete <inertial>, missing values taken as 0";
+    }
     if (link->parent_joint) L.parent_joint = link->parent_joint->name;
     for (const auto& cj : link->child_joints) L.child_joints.push_back(cj->name);
     o->links[name] = L;
@@ -1293,6 +1338,6 @@ int main(int argc, char** argv) {
     const std::string a = argv[i];
     if (a.rfind("--mdlc=", 0) == 0) g_mdlc_binary = a.substr(7);
   }
-  console_bridge::setLogLevel(console_bridge::CONSOLE_BRIDGE_LOG_NONE);
+  console_bridge::setLogLevel(console_bridge::CONSOLE_BRIDGE_LOG_ERROR);
   return RUN_ALL_TESTS();
 }

@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# setup.sh - one command from a fresh Debian 12 machine to a working mdlc.
+#
+#   tools/setup.sh example   install what is missing, build, compile a bundled example
+#   tools/setup.sh test      install what is missing, build, run the whole test suite
+#
+# Installing needs root (apt-get); as another user the script prints the exact
+# apt-get line to run and stops. BUILD_DIR (default: build) and JOBS (default:
+# the number of cores) may be set in the environment.
+set -euo pipefail
+
+mode=${1:-example}
+case "$mode" in
+  example|test) ;;
+  *) echo "usage: $0 example|test" >&2; exit 2 ;;
+esac
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build_dir=${BUILD_DIR:-$root/build}
+jobs=${JOBS:-$(nproc)}
+
+# what mdlc needs to build and run
+runtime_packages=(cmake ninja-build g++ pkg-config libeigen3-dev libxml2-dev libyaml-cpp-dev
+                  libfmt-dev libassimp-dev libcli11-dev)
+# what its tests need besides: GoogleTest, Google Benchmark, and the reference
+# implementations the differential tests compare against (test-only)
+test_packages=(libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
+               liburdfdom-dev libsdformat-dev libmujoco-dev)
+
+packages=("${runtime_packages[@]}" "${test_packages[@]}")
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+if ((${#missing[@]})); then
+  install_line="apt-get install -y --no-install-recommends ${missing[*]}"
+  if [ "$(id -u)" -ne 0 ]; then
+    echo "mdlc needs these Debian packages. Run, as root:" >&2
+    echo "  apt-get update && $install_line" >&2
+    exit 1
+  fi
+  echo "==> installing: ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+echo "==> configuring and building in $build_dir"
+cmake -S "$root" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake --build "$build_dir" -j "$jobs"
+
+mdlc="$build_dir/tools/mdlc/mdlc"
+if [ "$mode" = example ]; then
+  example="$root/examples/urdf/double_pendulum.urdf"
+  echo "==> $mdlc compile $example"
+  "$mdlc" compile "$example"
+  exit 0
+fi
+
+echo "==> running the test suite"
+cd "$build_dir"
+ctest --output-on-failure -j "$jobs" --timeout 600
