@@ -114,9 +114,10 @@ std::string Printer::Run() {
     out_ += fmt::format("  joint #{} {} model={} {} parent={} child={} X_PF={} X_CM={}", i,
                         Name(j.name), Model(j.model), JointTypeName(j.type), BodyRef(j.parent),
                         BodyRef(j.child), Pose(j.X_PF), Pose(j.X_CM));
+    if (JointVelocityCount(j.type) == 1) out_ += " axis=" + Vec(j.axis);
     if (JointVelocityCount(j.type) > 0) {
-      out_ += fmt::format(" axis={} lower={} upper={} velocity={} effort={} damping={}",
-                          Vec(j.axis), List(j.limits.lower), List(j.limits.upper),
+      out_ += fmt::format(" lower={} upper={} velocity={} effort={} damping={}",
+                          List(j.limits.lower), List(j.limits.upper),
                           List(j.limits.velocity_upper), List(j.limits.effort), List(j.damping));
     }
     if (!j.default_positions.empty()) out_ += " default=" + List(j.default_positions);

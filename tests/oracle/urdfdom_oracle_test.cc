@@ -3,7 +3,8 @@
 //
 // Nothing here uses mdlc library code. For every model the oracle
 //   1. parses the URDF with urdf::parseURDFFile (and, only to recover what
-//      urdfdom loses, looks at which <limit> attributes were written),
+//      urdfdom loses, reads the XML with tinyxml for which <limit> attributes
+//      were written and for <inertial> elements urdfdom left half-parsed),
 //   2. applies the mdlc/Drake conventions from /work/shared/spec/features.md
 //      (cited by feature ID next to each rule),
 //   3. computes link poses, joint axes and the joint-space mass matrix
@@ -25,6 +26,8 @@
 //     MassPropertiesAndJoints  URDF-003/004/005/012/013/014/017, COMMON-040/041/042
 //     KinematicsAndMassMatrix  URDF-005/011/012/017 (X_WB, axis_W, M(q))
 //   plus OracleSelfCheck.* (the oracle against closed forms; no mdlc needed).
+// Corpus models that the spec requires mdlc to reject (kExpectedRejections)
+// are skipped when mdlc rejects them with the expected message.
 
 #include <fcntl.h>
 #include <poll.h>

@@ -1,0 +1,103 @@
+// XmlDocument: exact element and attribute locations recovered from the
+// buffer, and the security rules (COMMON-004, COMMON-008).
+#include "frontend/xml/xml_document.h"
+
+#include <gtest/gtest.h>
+
+namespace mdlc::xml {
+namespace {
+
+class XmlDocumentTest : public ::testing::Test {
+ protected:
+  std::unique_ptr<XmlDocument> Parse(std::string text) {
+    file_ = sources_.AddBuffer("test.xml", std::move(text));
+    return XmlDocument::Parse(file_, sources_, diags_);
+  }
+  SourceManager sources_;
+  DiagnosticEngine diags_;
+  FileId file_;
+};
+
+TEST_F(XmlDocumentTest, ElementsAndAttributesHaveExactColumns) {
+  auto doc = Parse("<robot name='r'>\n  <link\n      name=\"a\"/>  <link name='b'/>\n</robot>\n");
+  ASSERT_TRUE(doc);
+  XmlElement robot = doc->Root();
+  EXPECT_EQ(robot.GetLoc(), (Loc{file_, 1, 1}));
+  EXPECT_EQ(robot.Attribute("name").loc, (Loc{file_, 1, 8}));
+  XmlElement a = robot.FirstChild();
+  // a multi-line start tag: the element is where '<' is, the attribute where its name is
+  EXPECT_EQ(a.GetLoc(), (Loc{file_, 2, 3}));
+  EXPECT_EQ(a.Attribute("name").loc, (Loc{file_, 3, 7}));
+  EXPECT_EQ(a.Attribute("name").value, "a");
+  XmlElement b = a.NextSibling();
+  EXPECT_EQ(b.GetLoc(), (Loc{file_, 3, 19}));
+  EXPECT_EQ(b.Attribute("name").loc, (Loc{file_, 3, 25}));
+  EXPECT_FALSE(b.NextSibling());
+}
+
+TEST_F(XmlDocumentTest, MarkupInCommentsAndCdataDoesNotShiftLocations) {
+  auto doc = Parse(
+      "<robot name='r'><!-- <link name='fake'> -->\n"
+      "<![CDATA[ <joint> ]]><?pi <link?>\n"
+      "  <link name='real'/></robot>");
+  ASSERT_TRUE(doc);
+  XmlElement link = doc->Root().FirstChild();
+  EXPECT_EQ(link.Name(), "link");
+  EXPECT_EQ(link.GetLoc(), (Loc{file_, 3, 3}));
+  EXPECT_EQ(link.Attribute("name").value, "real");
+}
+
+TEST_F(XmlDocumentTest, PrefixedNamesWorkWithOrWithoutNamespaceDeclaration) {
+  auto declared = Parse(
+      "<robot xmlns:drake='http://drake.mit.edu' name='r'>"
+      "<drake:joint name='j' drake:x='1'/></robot>");
+  ASSERT_TRUE(declared);
+  EXPECT_EQ(declared->Root().FirstChild().Name(), "drake:joint");
+  EXPECT_TRUE(declared->Root().FirstChild().Attribute("drake:x").present());
+  auto undeclared = Parse("<robot name='r'><drake:joint name='j' drake:x='1'/></robot>");
+  ASSERT_TRUE(undeclared);
+  EXPECT_EQ(undeclared->Root().FirstChild().Name(), "drake:joint");
+  EXPECT_TRUE(undeclared->Root().FirstChild().Attribute("drake:x").present());
+  EXPECT_EQ(diags_.error_count(), 0u);
+}
+
+TEST_F(XmlDocumentTest, MalformedXmlReportsLineAndColumn) {  // COMMON-004
+  EXPECT_FALSE(Parse("<robot name='r'>\n  <link>\n</robot>\n"));
+  ASSERT_GE(diags_.diagnostics().size(), 1u);
+  const Diagnostic& d = diags_.diagnostics()[0];
+  EXPECT_EQ(d.kind, DiagKind::XmlSyntax);
+  EXPECT_EQ(d.loc.line, 3u);
+  EXPECT_GT(d.loc.column, 0u);
+  EXPECT_NE(d.message.find("Failed to parse XML"), std::string::npos);
+}
+
+TEST_F(XmlDocumentTest, EmptyAndWhitespaceOnlyFilesAreErrors) {  // COMMON-004
+  EXPECT_FALSE(Parse(""));
+  EXPECT_FALSE(Parse("  \n\t\n"));
+  EXPECT_EQ(diags_.error_count(), 2u);
+  EXPECT_EQ(diags_.diagnostics()[0].kind, DiagKind::EmptyFile);
+}
+
+TEST_F(XmlDocumentTest, EntityDeclarationsAreRefusedBeforeParsing) {  // COMMON-008
+  EXPECT_FALSE(Parse("<!DOCTYPE r [\n <!ENTITY x SYSTEM 'file:///etc/passwd'>\n]>\n<r>&x;</r>"));
+  ASSERT_EQ(diags_.diagnostics().size(), 1u);
+  EXPECT_EQ(diags_.diagnostics()[0].kind, DiagKind::EntityDeclaration);
+  EXPECT_EQ(diags_.diagnostics()[0].loc, (Loc{file_, 2, 2}));
+}
+
+TEST_F(XmlDocumentTest, ExternalDtdIsNeverLoaded) {  // COMMON-008
+  // a DOCTYPE naming an external DTD parses, without reading it
+  auto doc = Parse("<!DOCTYPE robot SYSTEM 'file:///definitely/not/here.dtd'>\n<robot name='r'/>");
+  ASSERT_TRUE(doc);
+  EXPECT_EQ(doc->Root().Name(), "robot");
+  EXPECT_EQ(diags_.error_count(), 0u);
+}
+
+TEST_F(XmlDocumentTest, TextContentConcatenatesTextAndCdata) {
+  auto doc = Parse("<t>a<![CDATA[b]]>c<!-- no -->d</t>");
+  ASSERT_TRUE(doc);
+  EXPECT_EQ(doc->Root().Text(), "abcd");
+}
+
+}  // namespace
+}  // namespace mdlc::xml
