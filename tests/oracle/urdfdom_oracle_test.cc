@@ -18,6 +18,7 @@
 //   --mdlc=PATH            or env MDLC_BINARY   (default: compiled-in path)
 //   env MDLC_ORACLE_CONFIGS=N   number of random configurations (default 5)
 //   env MDLC_ORACLE_MAX_MESSAGES=N  discrepancies printed per test (default 60)
+//   env MDLC_ORACLE_EXTRA_MODELS=a.urdf:dir  extra models (Extra/...) to compare
 //
 // Test layout (value-parameterized, one case per model):
 //   Corpus/UrdfdomOracle.*/<path>    every corpus URDF that urdfdom loads
@@ -643,16 +644,20 @@ std::vector<ModelCase> CorpusCases() {
   return cases;
 }
 
-std::vector<ModelCase> HandMadeCases() {
-  std::vector<ModelCase> cases;
-  const fs::path dir = fs::path(MDLC_TEST_MODELS) / "urdf";
+std::vector<fs::path> UrdfFilesIn(const fs::path& dir) {
   std::error_code ec;
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(dir, ec)) {
     if (e.path().extension() == ".urdf") files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
-  for (const auto& f : files) {
+  return files;
+}
+
+std::vector<ModelCase> HandMadeCases() {
+  std::vector<ModelCase> cases;
+  const fs::path dir = fs::path(MDLC_TEST_MODELS) / "urdf";
+  for (const auto& f : UrdfFilesIn(dir)) {
     ModelCase c;
     c.id = Sanitize(f.stem().string());
     c.path = f.string();
@@ -1155,6 +1160,29 @@ TEST_P(UrdfdomOracle, KinematicsAndMassMatrix) {
   rep.Flush();
 }
 
+// Ad-hoc models for investigating a discrepancy: MDLC_ORACLE_EXTRA_MODELS is
+// a ':'-separated list of .urdf files or directories of them.
+std::vector<ModelCase> ExtraCases() {
+  std::vector<ModelCase> cases;
+  const char* env = std::getenv("MDLC_ORACLE_EXTRA_MODELS");
+  std::stringstream ss(env ? env : "");
+  for (std::string item; std::getline(ss, item, ':');) {
+    if (item.empty()) continue;
+    std::vector<fs::path> files;
+    if (fs::is_directory(item)) files = UrdfFilesIn(item);
+    else files.push_back(item);
+    for (const auto& f : files) {
+      ModelCase c;
+      c.id = Sanitize(f.stem().string());
+      c.path = fs::absolute(f).string();
+      c.display = f.string();
+      cases.push_back(c);
+    }
+  }
+  Uniquify(&cases);
+  return cases;
+}
+
 struct CaseName {
   std::string operator()(const ::testing::TestParamInfo<ModelCase>& info) const {
     return info.param.id;
@@ -1163,6 +1191,8 @@ struct CaseName {
 
 INSTANTIATE_TEST_SUITE_P(Corpus, UrdfdomOracle, ::testing::ValuesIn(CorpusCases()), CaseName());
 INSTANTIATE_TEST_SUITE_P(HandMade, UrdfdomOracle, ::testing::ValuesIn(HandMadeCases()), CaseName());
+INSTANTIATE_TEST_SUITE_P(Extra, UrdfdomOracle, ::testing::ValuesIn(ExtraCases()), CaseName());
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(UrdfdomOracle);
 
 // ---------------------------------------------------------------------------
 // Self-checks of the oracle itself against closed forms (no mdlc involved).

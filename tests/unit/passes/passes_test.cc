@@ -1,0 +1,208 @@
+// The default passes: name resolution, the kinematic tree, inertia checks,
+// and the pass manager's contract (URDF-010, URDF-017, COMMON-030..033,
+// COMMON-040, COMMON-041).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "ir/printer.h"
+#include "ir/verifier.h"
+#include "passes/name_index.h"
+#include "passes/pass_registry.h"
+#include "tests/unit/urdf_test_util.h"
+
+namespace mdlc {
+namespace {
+
+using testing::Lowered;
+
+TEST(ScopedNameTest, SplitsAtTheLastDelimiter) {  // COMMON-030, COMMON-031
+  auto s = passes::SplitScopedName("a::b::c");
+  ASSERT_TRUE(s);
+  EXPECT_EQ(s->scope, "a::b");
+  EXPECT_EQ(s->element, "c");
+  EXPECT_EQ(passes::SplitScopedName("c")->scope, "");
+  EXPECT_FALSE(passes::SplitScopedName("::c"));
+  EXPECT_FALSE(passes::SplitScopedName("a::"));
+  EXPECT_FALSE(passes::SplitScopedName("a::::b"));
+  EXPECT_FALSE(passes::SplitScopedName(""));
+}
+
+TEST(ClosestNameTest, SuggestsTyposOnly) {
+  std::vector<std::string_view> names = {"shoulder", "elbow", "wrist"};
+  EXPECT_EQ(passes::ClosestName("elbwo", names), "elbow");   // transposition
+  EXPECT_EQ(passes::ClosestName("sholder", names), "shoulder");
+  EXPECT_FALSE(passes::ClosestName("gripper", names));
+}
+
+TEST(ResolveNamesTest, ResolvesAndSuggests) {  // URDF-010
+  Lowered l;
+  ASSERT_TRUE(l.Read(R"(<robot name='r'><link name='base'/><link name='forearm'/>
+    <joint name='j' type='fixed'><parent link='base'/><child link='foreram'/></joint></robot>)"));
+  EXPECT_FALSE(l.RunPasses());
+  ASSERT_EQ(l.diags.error_count(), 1u);
+  const Diagnostic& d = l.diags.diagnostics()[0];
+  EXPECT_EQ(d.kind, DiagKind::UnknownReference);
+  EXPECT_NE(d.message.find("Could not find link 'foreram'"), std::string::npos);
+  ASSERT_EQ(d.notes.size(), 1u);
+  EXPECT_EQ(d.notes[0].message, "did you mean 'forearm'?");
+  EXPECT_EQ(d.loc.line, 2u);
+}
+
+TEST(ResolveNamesTest, WorldIsAlwaysTheWorldBody) {  // COMMON-032
+  Lowered l;
+  ASSERT_TRUE(l.Read(R"(<robot name='r'><link name='a'/>
+    <joint name='j' type='fixed'><parent link='world'/><child link='a'/></joint></robot>)"));
+  ASSERT_TRUE(l.RunPasses()) << l.Messages();
+  EXPECT_EQ(l.Joint("j")->parent.id, ir::kWorldBody);
+  EXPECT_EQ(l.module.joints.size(), 1u);  // welded to the world: no floating joint
+}
+
+TEST(BuildKinematicTreeTest, RootsGetFloatingJointsNamedAfterTheirBody) {  // URDF-017
+  Lowered l;
+  ASSERT_TRUE(l.Read(R"(<robot name='r'><link name='a'/><link name='b'/><link name='c'/>
+    <joint name='a' type='fixed'><parent link='b'/><child link='c'/></joint></robot>)"));
+  ASSERT_TRUE(l.RunPasses()) << l.Messages();
+  // 'a' and 'b' are roots; the joint name 'a' is taken, so Drake's rule prefixes '_'
+  ASSERT_NE(l.Joint("_a"), nullptr);
+  EXPECT_EQ(l.Joint("_a")->type, ir::JointType::QuaternionFloating);
+  ASSERT_NE(l.Joint("b"), nullptr);
+  EXPECT_TRUE(l.Joint("b")->unnamed);
+  EXPECT_EQ(l.Joint("b")->parent.id, ir::kWorldBody);
+  EXPECT_TRUE(ir::VerifyModule(l.module, ir::VerifyLevel::Tree, l.diags));
+}
+
+TEST(BuildKinematicTreeTest, JointToItselfAndWorldAsChildAreErrors) {
+  Lowered l;
+  ASSERT_TRUE(l.Read(R"(<robot name='r'><link name='a'/>
+    <joint name='self' type='fixed'><parent link='a'/><child link='a'/></joint>
+    <joint name='up' type='fixed'><parent link='a'/><child link='world'/></joint></robot>)"));
+  EXPECT_FALSE(l.RunPasses());
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::SelfJoint, "to itself"));
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::KinematicLoop, "world its child"));
+}
+
+TEST(BuildKinematicTreeTest, LongLoopIsFoundWithoutRecursion) {
+  std::string urdf = "<robot name='r'>";
+  const int n = 20000;
+  for (int i = 0; i < n; ++i) urdf += "<link name='l" + std::to_string(i) + "'/>";
+  for (int i = 0; i < n; ++i) {
+    urdf += "<joint name='j" + std::to_string(i) + "' type='fixed'><parent link='l" +
+            std::to_string(i) + "'/><child link='l" + std::to_string((i + 1) % n) + "'/></joint>";
+  }
+  urdf += "</robot>";
+  Lowered l;
+  ASSERT_TRUE(l.Read(urdf));
+  EXPECT_FALSE(l.RunPasses());
+  ASSERT_EQ(l.diags.error_count(), 1u);
+  EXPECT_EQ(l.diags.diagnostics()[0].kind, DiagKind::KinematicLoop);
+  EXPECT_EQ(l.diags.diagnostics()[0].notes.size(), static_cast<size_t>(n));
+}
+
+TEST(CheckInertiaTest, ReplacesNonPhysicalInertiaWithASphere) {  // COMMON-040
+  Lowered l;
+  ASSERT_TRUE(l.Read(R"(<robot name='r'><link name='a'><inertial>
+      <origin xyz='1 2 3' rpy='0 0 1'/><mass value='2'/>
+      <inertia ixx='1' iyy='1' izz='5'/></inertial></link></robot>)"));
+  ASSERT_TRUE(l.RunPasses());
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::NonPhysicalInertia, "triangle inequality: 1 + 1 < 5"));
+  const ir::Inertial& in = *l.Body("a")->inertial;
+  const double r = std::cbrt(3 * 2.0 / (4 * std::numbers::pi * 1000));
+  EXPECT_DOUBLE_EQ(in.mass, 2);
+  EXPECT_DOUBLE_EQ(in.ixx, 0.4 * 2 * r * r);
+  EXPECT_EQ(in.ixx, in.izz);
+  EXPECT_EQ(in.X_BI.p, Eigen::Vector3d(1, 2, 3));  // centred at the given COM
+}
+
+TEST(CheckInertiaTest, MassRules) {  // COMMON-041
+  Lowered l;
+  ASSERT_TRUE(l.Read(R"(<robot name='r'>
+    <link name='massless'><inertial><mass value='0'/></inertial></link>
+    <link name='zero_mass'><inertial><mass value='0'/><inertia ixx='1' iyy='1' izz='1'/></inertial></link>
+    <link name='negative'><inertial><mass value='-1'/><inertia ixx='1' iyy='1' izz='1'/></inertial></link>
+    <link name='negative_moment'><inertial><mass value='1'/><inertia ixx='-1' iyy='1' izz='1'/></inertial></link>
+    <link name='fine'><inertial><mass value='1'/><inertia ixx='1' iyy='1' izz='2'/></inertial></link>
+  </robot>)"));
+  ASSERT_TRUE(l.RunPasses());
+  EXPECT_EQ(l.Body("massless")->inertial->mass, 0);  // zero mass and inertia: accepted
+  EXPECT_EQ(l.Body("zero_mass")->inertial->mass, 1);
+  EXPECT_EQ(l.Body("negative")->inertial->mass, 1);
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::NonPositiveMass, "mass -1 is negative"));
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::NonPhysicalInertia, "principal moment -1 is negative"));
+  EXPECT_EQ(l.Body("fine")->inertial->izz, 2);  // a flat disk is exactly on the boundary
+  EXPECT_EQ(l.diags.warning_count(), 3u) << l.Messages();
+}
+
+TEST(PassManagerTest, StopsAtTheFirstPassThatFails) {
+  Lowered l;
+  ASSERT_TRUE(l.Read(R"(<robot name='r'><link name='a'/>
+    <joint name='j' type='fixed'><parent link='a'/><child link='missing'/></joint></robot>)"));
+  std::vector<std::string> printed;
+  passes::PassInstrumentation inst;
+  inst.print_after_all = true;
+  inst.print_sink = [&](std::string_view s) {
+    if (s.starts_with("// -----")) printed.emplace_back(s);
+  };
+  passes::PassManager pm(inst);
+  pm.AddDefaultPipeline();
+  passes::PassContext ctx{l.module, l.diags, l.sources};
+  EXPECT_FALSE(pm.Run(ctx));
+  ASSERT_EQ(printed.size(), 1u);  // only resolve-names ran
+  EXPECT_NE(printed[0].find("resolve-names"), std::string::npos);
+}
+
+TEST(PassManagerTest, EveryRegisteredPassCanBeCreatedByName) {
+  for (const auto& info : passes::RegisteredPasses()) {
+    auto pass = passes::CreatePass(info.name);
+    ASSERT_TRUE(pass) << info.name;
+    EXPECT_EQ(pass->name(), info.name);
+    EXPECT_FALSE(pass->description().empty());
+  }
+  EXPECT_FALSE(passes::CreatePass("no-such-pass"));
+}
+
+TEST(VerifierTest, CatchesUnresolvedReferencesAndBrokenTrees) {
+  ir::Module m;
+  ir::Body b;
+  b.name = m.Intern("a");
+  b.model = ir::kDefaultModel;
+  m.Add(b);
+  ir::Joint j;
+  j.name = m.Intern("j");
+  j.model = ir::kDefaultModel;
+  j.parent = {m.Intern("world"), {}, ir::kWorldBody};
+  j.child = {m.Intern("a"), {}, {}};
+  m.Add(j);
+  DiagnosticEngine diags;
+  EXPECT_TRUE(ir::VerifyModule(m, ir::VerifyLevel::Raw, diags));
+  EXPECT_FALSE(ir::VerifyModule(m, ir::VerifyLevel::Resolved, diags));
+  m.joints[0].child.id = BodyId(uint32_t{1});
+  DiagnosticEngine more;
+  EXPECT_TRUE(ir::VerifyModule(m, ir::VerifyLevel::Tree, more));
+  m.joints.push_back(m.joints[0]);  // a second inboard joint
+  EXPECT_FALSE(ir::VerifyModule(m, ir::VerifyLevel::Tree, more));
+  EXPECT_EQ(more.diagnostics()[0].kind, DiagKind::VerifierFailure);
+}
+
+TEST(PrinterTest, DumpIsDeterministicAndLocated) {
+  const char* urdf = R"(<robot name='r'><link name='a'/>
+    <joint name='j' type='continuous'><parent link='world'/><child link='a'/></joint></robot>)";
+  Lowered a, b;
+  ASSERT_TRUE(a.Read(urdf));
+  ASSERT_TRUE(b.Read(urdf));
+  ASSERT_TRUE(a.RunPasses());
+  ASSERT_TRUE(b.RunPasses());
+  const std::string dump = ir::PrintModule(a.module, a.sources);
+  EXPECT_EQ(dump, ir::PrintModule(b.module, b.sources));
+  EXPECT_NE(dump.find("joint #0 \"j\" model=r revolute parent=world child=r::a"),
+            std::string::npos)
+      << dump;
+  EXPECT_NE(dump.find("loc(test.urdf:2:5)"), std::string::npos) << dump;
+  ir::PrintOptions no_locs;
+  no_locs.locations = false;
+  EXPECT_EQ(ir::PrintModule(a.module, a.sources, no_locs).find("loc("), std::string::npos);
+}
+
+}  // namespace
+}  // namespace mdlc

@@ -1,0 +1,60 @@
+// urdf_test_util.h - lowers URDF text into a Module for frontend and pass
+// tests, and finds entities by name.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "frontend/frontend.h"
+#include "ir/module.h"
+#include "passes/pass_manager.h"
+
+namespace mdlc::testing {
+
+struct Lowered {
+  SourceManager sources;
+  DiagnosticEngine diags;
+  ir::Module module;
+  std::optional<ModelId> model;
+
+  /// Runs the URDF frontend on `text`.
+  bool Read(std::string text, frontend::FrontendOptions options = {}) {
+    FileId file = sources.AddBuffer("test.urdf", std::move(text));
+    frontend::FrontendContext ctx{sources, diags, module, std::move(options)};
+    model = frontend::ReadUrdf(file, ctx);
+    return model.has_value() && !diags.has_errors();
+  }
+  /// Runs the default pass pipeline, verifying after each pass.
+  bool RunPasses() {
+    passes::PassInstrumentation inst;
+    inst.verify_each = true;
+    passes::PassManager pm(inst);
+    pm.AddDefaultPipeline();
+    passes::PassContext ctx{module, diags, sources};
+    return pm.Run(ctx);
+  }
+
+  const ir::Body* Body(std::string_view name) const {
+    for (const auto& b : module.bodies) if (module.Text(b.name) == name) return &b;
+    return nullptr;
+  }
+  const ir::Joint* Joint(std::string_view name) const {
+    for (const auto& j : module.joints) if (module.Text(j.name) == name) return &j;
+    return nullptr;
+  }
+  /// Messages of all diagnostics, one per line, for failure output.
+  std::string Messages() const {
+    std::string out;
+    for (const auto& d : diags.diagnostics()) out += d.message + "\n";
+    return out;
+  }
+  bool HasDiagnostic(DiagKind kind, std::string_view text) const {
+    for (const auto& d : diags.diagnostics()) {
+      if (d.kind == kind && d.message.find(text) != std::string::npos) return true;
+    }
+    return false;
+  }
+};
+
+}  // namespace mdlc::testing
