@@ -7,7 +7,7 @@
 namespace mdlc {
 
 bool Compilation::RunFrontends() {
-  frontend::FrontendContext ctx{sources, diags, module, options.frontend};
+  frontend::FrontendContext ctx{sources, diags, module, options.frontend, &documents};
   for (const std::string& file : options.files) {
     // keep going: report the problems of every file in one run
     frontend::ReadModelFile(file, ctx);

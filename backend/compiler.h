@@ -46,6 +46,8 @@ class Compilation {
   DiagnosticEngine diags;
   ir::Module module;
   std::optional<backend::CompiledModel> model;
+  /// Parsed source documents, released with the Compilation.
+  frontend::RetainedDocuments documents;
 
   /// Each stage returns false once an error has been reported.
   bool RunFrontends();

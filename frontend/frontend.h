@@ -5,7 +5,9 @@
 // it cannot read. It resolves nothing across entities; passes do that.
 #pragma once
 
+#include <memory>
 #include <optional>
+#include <vector>
 #include <string>
 
 #include "ir/diagnostics.h"
@@ -28,12 +30,21 @@ struct FrontendOptions {
   bool auto_rename = false;
 };
 
+/// Parsed documents kept alive until the compile ends. Freeing a large DOM
+/// as soon as it is lowered leaves the allocator with millions of small free
+/// chunks, which every later allocation pays for; releasing them all at the
+/// end (or never, in a process about to exit) is much cheaper.
+struct RetainedDocuments {
+  std::vector<std::shared_ptr<const void>> documents;
+};
+
 /// Everything a frontend works with. Owns nothing.
 struct FrontendContext {
   SourceManager& sources;
   DiagnosticEngine& diags;
   ir::Module& module;
   FrontendOptions options;
+  RetainedDocuments* retained = nullptr;  // null: free each document when lowered
 };
 
 /// Loads `path` and lowers it with the frontend its extension selects.

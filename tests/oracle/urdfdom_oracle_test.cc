@@ -251,6 +251,7 @@ struct OJoint {
   Isometry3d X_PJ = Isometry3d::Identity();
   Vector3d axis = Vector3d::UnitX();  // normalized (URDF-011)
   bool has_limit = false;
+  bool lower_given = false, upper_given = false;  // attribute written in the file
   double lower = -kInf, upper = kInf, velocity = kInf, effort = kInf;
   double damping = 0;
 };
@@ -447,6 +448,8 @@ std::string BuildOracle(const std::string& path, Oracle* o) {
       if (J.type == JType::kRevolute || J.type == JType::kPrismatic) {
         if (a.lower) J.lower = j->limits->lower;
         if (a.upper) J.upper = j->limits->upper;
+        J.lower_given = a.lower;
+        J.upper_given = a.upper;
       }
       // (continuous: position limits ignored, URDF-012.)
       if (a.velocity) J.velocity = j->limits->velocity;
@@ -826,7 +829,8 @@ bool ReadVec3(const json& v, Vector3d* out) {
 
 // Checks one limit array (1-dof: one entry).
 void CheckLimitArray(Report* rep, const std::string& feature, const std::string& entity,
-                     const json& jj, const char* key, double expected, bool negative_null) {
+                     const json& jj, const char* key, double expected, bool negative_null,
+                     const std::string& note = "") {
   if (!jj.contains(key) || !jj[key].is_array() || jj[key].size() != 1) {
     rep->Add(feature + " " + entity + " " + key + ": expected a 1-element array, mdlc gave " +
              (jj.contains(key) ? jj[key].dump() : std::string("<missing>")) +
@@ -840,7 +844,8 @@ void CheckLimitArray(Report* rep, const std::string& feature, const std::string&
   }
   if (!Near(*v, expected)) {
     const auto show = [](double x) { return std::isinf(x) ? std::string("null(unbounded)") : Fmt(x); };
-    rep->Add(feature + " " + entity + " " + key + "[0]: mdlc=" + show(*v) + " urdfdom=" + show(expected));
+    rep->Add(feature + " " + entity + " " + key + "[0]: mdlc=" + show(*v) + " urdfdom=" + show(expected) +
+             (note.empty() ? "" : " [" + note + "]"));
   }
 }
 
@@ -934,8 +939,13 @@ void CheckStatic(const Oracle& o, const Dump& d, Report* rep) {
     }
     if (!IsOneDof(J.type)) continue;
     // URDF-013: position limits (continuous => unbounded => null).
-    CheckLimitArray(rep, "URDF-013", ent, jj, "lower", J.lower, true);
-    CheckLimitArray(rep, "URDF-013", ent, jj, "upper", J.upper, false);
+    const auto absent = [&](bool given) {
+      if (J.type == JType::kContinuous) return std::string("continuous: position limits ignored");
+      if (!J.has_limit) return std::string("no <limit> element");
+      return given ? std::string() : std::string("attribute absent from <limit>: unbounded by default");
+    };
+    CheckLimitArray(rep, "URDF-013", ent, jj, "lower", J.lower, true, absent(J.lower_given));
+    CheckLimitArray(rep, "URDF-013", ent, jj, "upper", J.upper, false, absent(J.upper_given));
     CheckLimitArray(rep, "URDF-013", ent, jj, "velocity_limit", J.velocity, false);
     CheckLimitArray(rep, "URDF-013", ent, jj, "effort_limit", J.effort, false);
     // URDF-014: damping.

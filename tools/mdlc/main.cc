@@ -87,7 +87,10 @@ int RunCompile(const CliOptions& cli) {
     fmt::print(stderr, "mdlc: error: {}\n", bad);
     return 2;
   }
-  mdlc::Compilation c(policy);
+  // The compilation is deliberately never freed: the process exits right
+  // after, and tearing down a large model's DOM and IR would only cost time
+  // (clang's -disable-free, for the same reason).
+  auto& c = *new mdlc::Compilation(policy);
   c.options.files = cli.files;
   c.options.frontend.model_name = cli.model_name;
   c.options.frontend.auto_rename = cli.auto_rename;

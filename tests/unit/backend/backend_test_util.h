@@ -33,8 +33,11 @@ class ModelBuilder {
   ir::Ref<IdT> Ref(IdT id, std::string_view name) {
     return {module_.Intern(name), {}, id};
   }
+  /// A resolved reference to `id`; an out-of-range id (for error tests)
+  /// gets the name "missing".
   ir::Ref<BodyId> BodyRef(BodyId id) {
-    return {module_.bodies[id.index()].name, {}, id};
+    const bool in_range = id.index() < module_.bodies.size();
+    return {in_range ? module_.bodies[id.index()].name : module_.Intern("missing"), {}, id};
   }
 
   BodyId AddMasslessBody(std::string_view name) {
