@@ -167,8 +167,8 @@ void UrdfReader::ReadLimits(const xml::XmlElement& e, ir::Joint& joint, bool con
     }
   }
   if (!continuous) {
-    // URDF omits a bound as 0; Drake reads an absent one as 0 too
-    const double lo = lower.value_or(0.0), hi = upper.value_or(0.0);
+    // an absent bound leaves that side unbounded, as in Drake
+    const double lo = lower.value_or(-kInf), hi = upper.value_or(kInf);
     if (lo > hi) {
       diags().Report(DiagKind::BadLimits, e.GetLoc(),
                      fmt::format("joint '{}': lower limit {} is greater than upper limit {}",

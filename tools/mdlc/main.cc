@@ -147,7 +147,7 @@ int RunCompile(const CliOptions& cli) {
   // plant-json
   Eigen::VectorXd q = mdlc::backend::DefaultPositions(model.plant);
   for (const std::string& assignment : cli.q) {
-    const size_t eq = assignment.find('=');
+    const size_t eq = assignment.rfind('=');
     char* end = nullptr;
     const double value =
         eq == std::string::npos ? 0 : std::strtod(assignment.c_str() + eq + 1, &end);
