@@ -60,7 +60,9 @@ class PairCollector {
 
     std::vector<std::pair<BodyId, BodyId>> out;
     out.reserve(pairs_.size());
-    for (const BodyPair& p : pairs_) out.emplace_back(BodyId(by_name[p.first]), BodyId(by_name[p.second]));
+    for (const BodyPair& p : pairs_) {
+      out.emplace_back(BodyId(by_name[p.first]), BodyId(by_name[p.second]));
+    }
     return out;
   }
 

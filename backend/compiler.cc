@@ -30,7 +30,7 @@ bool Compilation::RunPasses() {
       pm.AddPass(std::move(pass));
     }
   }
-  passes::PassContext ctx{module, diags, sources};
+  passes::PassContext ctx{module, diags, sources, &packages};
   const bool ok = pm.Run(ctx);
   if (options.instrumentation.time_passes) timing_report_ = pm.TimingReport();
   return ok && !diags.has_errors();

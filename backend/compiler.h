@@ -17,6 +17,7 @@
 
 #include "backend/backend.h"
 #include "frontend/frontend.h"
+#include "frontend/package_map.h"
 #include "ir/diagnostics.h"
 #include "ir/module.h"
 #include "ir/source_manager.h"
@@ -45,6 +46,8 @@ class Compilation {
   SourceManager sources;
   DiagnosticEngine diags;
   ir::Module module;
+  /// Packages for package:// and model:// URIs; fill before Run().
+  frontend::PackageMap packages;
   std::optional<backend::CompiledModel> model;
   /// Parsed source documents, released with the Compilation.
   frontend::RetainedDocuments documents;

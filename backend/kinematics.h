@@ -29,8 +29,9 @@
 
 namespace mdlc::backend {
 
-/// X_FM for `joint` at its own positions `q_joint` (size joint.nq). A
-/// quaternion is normalized first; an all-zero one counts as the identity.
+/// X_FM for `joint` at its own positions `q_joint` (precondition: size
+/// joint.nq). A quaternion is normalized first; an all-zero one counts as the
+/// identity.
 Transform JointPose(const PlantJoint& joint, const Eigen::Ref<const Eigen::VectorXd>& q_joint);
 
 /// The joint's motion subspace H_FM(q) in F: V_FM_F = H * v_joint, one

@@ -57,8 +57,7 @@ Eigen::MatrixXd CalcMassMatrix(const Plant& plant, const Eigen::VectorXd& q,
   for (JointId i : joints) {
     const PlantJoint& joint_i = plant.joint(i);
     if (joint_i.nv == 0) continue;
-    const Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6> F =
-        Ic[joint_i.child.index()] * S[i.index()];
+    const MotionSubspace F = Ic[joint_i.child.index()] * S[i.index()];  // 6 x nv_i
     const int row = out_start[i.index()];
     M.block(row, row, joint_i.nv, joint_i.nv) = S[i.index()].transpose() * F;
     // walk up to the world, filling the blocks with selected ancestor joints

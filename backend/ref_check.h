@@ -33,9 +33,14 @@ bool CheckRef(const ir::Module& module, const ir::Ref<IdT>& ref, size_t size,
                  ref.loc.valid() ? ref.loc : entity_loc, diags);
 }
 
+/// True when an entity's model instance id is in range; else reports.
 inline bool CheckModel(const ir::Module& module, ModelId model, Loc loc,
                        DiagnosticEngine& diags) {
-  return CheckId(model, module.models.size(), "model instance", "", loc, diags);
+  if (model.valid() && model.index() < module.models.size()) return true;
+  diags.Report(DiagKind::UnknownReference, loc,
+               fmt::format("internal: entity belongs to no known model instance (id {})",
+                           model.value));
+  return false;
 }
 
 }  // namespace mdlc::backend

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Core>
+#include <vector>
 
 #include "backend/compiler.h"
 
@@ -55,8 +56,12 @@ int main(int argc, char** argv) {
   }
 
   // the mass matrix M(q), one row and column per velocity, in the order of the
-  // joints in plant.joint_order (for large models, CalcMassMatrix also takes a
-  // span of joints and returns just their block)
+  // joints in plant.joint_order; it is nv x nv, so for large models pass
+  // CalcMassMatrix a span of joints to get just their block
+  if (plant.num_velocities > 12) {
+    fmt::print("\n(mass matrix not printed: {} velocities)\n", plant.num_velocities);
+    return 0;
+  }
   const Eigen::MatrixXd M = mdlc::backend::CalcMassMatrix(plant, q);
   fmt::print("\nmass matrix at the default configuration ({0} x {0}):\n", M.rows());
   for (mdlc::JointId id : plant.joint_order) {

@@ -122,6 +122,7 @@ struct Ellipsoid { double a = 0, b = 0, c = 0; };
 struct HalfSpace {};
 struct Mesh {
   std::string uri;       // as written
+  Loc uri_loc;           // where it is written
   std::string resolved;  // filesystem path once resolved
   Eigen::Vector3d scale = Eigen::Vector3d::Ones();
   bool convex = false;   // drake:declare_convex / convex hull requested

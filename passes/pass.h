@@ -9,6 +9,7 @@
 #include <memory>
 #include <string_view>
 
+#include "frontend/package_map.h"
 #include "ir/diagnostics.h"
 #include "ir/module.h"
 #include "ir/source_manager.h"
@@ -20,6 +21,8 @@ struct PassContext {
   ir::Module& module;
   DiagnosticEngine& diags;
   const SourceManager& sources;
+  /// Packages for resolving package:// URIs (none: only paths resolve).
+  const frontend::PackageMap* packages = nullptr;
 };
 
 class Pass {

@@ -15,6 +15,7 @@ const std::vector<PassInfo>& RegisteredPasses() {
       Info<CreateCheckJointsPass>(),
       Info<CreateBuildKinematicTreePass>(),
       Info<CreateCheckInertiaPass>(),
+      Info<CreateResolveAssetsPass>(),
   };
   return passes;
 }

@@ -228,6 +228,7 @@ std::optional<ir::Shape> UrdfReader::ReadShape(const xml::XmlElement& geometry) 
     if (!filename) return std::nullopt;
     ir::Mesh mesh;
     mesh.uri = std::string(*filename);
+    mesh.uri_loc = e.Attribute("filename").loc;
     if (auto scale = e.Attribute("scale"); scale.present()) {
       auto values = xml::ParseDoubleList(scale.value);
       if (values && values->size() == 1) {

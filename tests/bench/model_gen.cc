@@ -175,8 +175,8 @@ std::string GenerateUrdf(Shape shape, int num_links) {
     const double a = rng.Uniform(0.05, 0.3), b = rng.Uniform(0.05, 0.3), c = rng.Uniform(0.05, 0.3);
     const Vec3 principal = {mass * (b * b + c * c) / 12, mass * (a * a + c * c) / 12,
                             mass * (a * a + b * b) / 12};
-    const double qr = rng.Uniform(-kPi, kPi), qp = rng.Uniform(-1.5, 1.5), qy = rng.Uniform(-kPi, kPi);
-    const Mat3 I = RotateDiagonal(RotationFromRpy(qr, qp, qy), principal);
+    const Vec3 q_rpy = {rng.Uniform(-kPi, kPi), rng.Uniform(-1.5, 1.5), rng.Uniform(-kPi, kPi)};
+    const Mat3 I = RotateDiagonal(RotationFromRpy(q_rpy[0], q_rpy[1], q_rpy[2]), principal);
     const Geom visual = MakeGeom(rng, kKinds[i % 4]);
     const Geom collision = MakeGeom(rng, kKinds[(i + 1) % 4]);
 

@@ -114,10 +114,18 @@ int RunCompile(const CliOptions& cli) {
       fmt::print(stderr, "{}", mdlc::FormatDiagnosticText(d, c.sources, color));
     }
   });
-  if (!cli.package_paths.empty() || !cli.packages.empty()) {
-    c.diags.Report(mdlc::DiagKind::UnsupportedValue, {},
-                   "package resolution (--package-path, --package) is not implemented yet; "
-                   "mesh URIs are kept as written");
+  // packages: explicit definitions first, then scanned folders, then the environment
+  for (const std::string& definition : cli.packages) {
+    const size_t eq = definition.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      fmt::print(stderr, "mdlc: error: --package expects NAME=DIR, got '{}'\n", definition);
+      return 2;
+    }
+    c.packages.Add(definition.substr(0, eq), definition.substr(eq + 1), c.diags);
+  }
+  for (const std::string& dir : cli.package_paths) c.packages.PopulateFromFolder(dir, c.sources, c.diags);
+  if (const char* ros = std::getenv("ROS_PACKAGE_PATH")) {
+    c.packages.PopulateFromPathList(ros, c.sources, c.diags);
   }
 
   const bool ok = c.Run();

@@ -68,7 +68,8 @@ TEST(BackendBuildPlant, JointVectorsAreNormalizedToTheirSizes) {
   const BodyId a = b.AddMasslessBody("a");
   const BodyId c = b.AddMasslessBody("c");
   b.AddJoint("free", JointType::QuaternionFloating, ir::kWorldBody, a);
-  const JointId hinge = b.AddJoint("hinge", JointType::Revolute, a, c, {}, Eigen::Vector3d(0, 0, 2));
+  const JointId hinge =
+      b.AddJoint("hinge", JointType::Revolute, a, c, {}, Eigen::Vector3d(0, 0, 2));
   b.module()[hinge].limits.lower = {-1};
   b.module()[hinge].limits.upper = {1};
   b.module()[hinge].damping = {0.5};

@@ -140,7 +140,8 @@ TEST(Kinematics, MotionSubspaceMatchesDerivativeOfJointPose) {
 TEST(Kinematics, SinglePendulumForwardKinematics) {
   ModelBuilder b;
   const double l = 0.7;
-  const BodyId link = b.AddBody("link", 2.0, Eigen::Vector3d(0, 0, -l), Eigen::Matrix3d::Identity());
+  const BodyId link =
+      b.AddBody("link", 2.0, Eigen::Vector3d(0, 0, -l), Eigen::Matrix3d::Identity());
   b.AddJoint("pivot", JointType::Revolute, ir::kWorldBody, link,
              Transform::FromTranslation(Eigen::Vector3d(0, 0, 1)), Eigen::Vector3d::UnitY());
   auto model = test_util::InstantiateOk(b.module());

@@ -148,9 +148,11 @@ TEST(MassMatrix, CrbaMatchesFiniteDifferenceJacobiansOnFloatingTree) {
   const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();  // unused by these joint types
   b.AddJoint("base", JointType::QuaternionFloating, ir::kWorldBody, base, {}, z, pose());
   b.AddJoint("shoulder", JointType::Ball, base, shoulder, pose(), z, pose());
-  b.AddJoint("wrist", JointType::Revolute, shoulder, hand, pose(), Eigen::Vector3d::UnitZ(), pose());
+  b.AddJoint("wrist", JointType::Revolute, shoulder, hand, pose(), Eigen::Vector3d::UnitZ(),
+             pose());
   b.AddJoint("mount", JointType::Weld, hand, massless, pose(), z, pose());
-  b.AddJoint("tool", JointType::Prismatic, massless, tool, pose(), Eigen::Vector3d::UnitY(), pose());
+  b.AddJoint("tool", JointType::Prismatic, massless, tool, pose(), Eigen::Vector3d::UnitY(),
+             pose());
   b.AddJoint("flyer", JointType::RpyFloating, base, flyer, pose(), z, pose());
   b.AddJoint("finger", JointType::Revolute, hand, finger, pose(), Eigen::Vector3d::UnitX(), pose());
   auto model = test_util::InstantiateOk(b.module());

@@ -319,7 +319,9 @@ TEST(PlantJson, TenThousandBodyChainIsFast) {
   RecordProperty("seconds", std::to_string(seconds));
   std::cout << "10k chain: IR " << std::chrono::duration<double>(built_ir - start).count()
             << " s, instantiate + FK + JSON " << seconds << " s, " << json.size() << " bytes\n";
-  EXPECT_LT(seconds, 1.0);
+#if defined(NDEBUG) && !defined(__SANITIZE_ADDRESS__)
+  EXPECT_LT(seconds, 1.0);  // optimized builds only; debug and sanitizer builds just report
+#endif
   EXPECT_EQ(json.find("\"mass_matrix\""), std::string::npos);
   EXPECT_EQ(model->scene.collision_filters.size(), 9999u);
 }

@@ -134,11 +134,13 @@ TEST(BackendSceneGraph, ColorBecomesPhongDiffuseForVisibleGeometry) {
   red.texture = "red.png";
   const MaterialId red_id = m.Add(red);
 
-  const GeometryId inline_color = b.AddGeometry("inline", link, ir::Sphere{1}, ir::kIllustrationRole);
+  const GeometryId inline_color =
+      b.AddGeometry("inline", link, ir::Sphere{1}, ir::kIllustrationRole);
   m[inline_color].rgba = Eigen::Vector4d(0.5, 0.25, 0, 1);
   m[inline_color].material = b.Ref(red_id, "red");
   m[inline_color].properties = {{"z/last", 1.0}, {"a/first", true}, {"a/first", false}};
-  const GeometryId from_material = b.AddGeometry("material", link, ir::Sphere{1}, ir::kPerceptionRole);
+  const GeometryId from_material =
+      b.AddGeometry("material", link, ir::Sphere{1}, ir::kPerceptionRole);
   m[from_material].material = b.Ref(red_id, "red");
   m[from_material].properties = {{"renderer/accepting", std::vector<std::string>{"vtk", "gl"}}};
   const GeometryId collision = b.AddGeometry("collision", link, ir::Sphere{1}, ir::kProximityRole);

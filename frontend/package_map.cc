@@ -1,0 +1,186 @@
+#include "frontend/package_map.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <system_error>
+
+#include "frontend/xml/xml_document.h"
+
+namespace mdlc::frontend {
+namespace fs = std::filesystem;
+
+bool PackageMap::Add(const std::string& name, const std::string& path, DiagnosticEngine& diags,
+                     Loc loc) {
+  std::error_code ec;
+  const std::string normal = fs::weakly_canonical(path, ec).string();
+  auto it = packages_.find(name);
+  if (it != packages_.end()) {
+    if (it->second.path == normal) return true;
+    diags.Report(DiagKind::DuplicateName, loc,
+                 fmt::format("package '{}' is already defined at '{}'; cannot also be '{}'", name,
+                             it->second.path, normal));
+    return false;
+  }
+  if (!fs::is_directory(normal, ec)) {
+    diags.Report(DiagKind::FileNotFound, loc,
+                 fmt::format("package '{}': '{}' is not a directory", name, path));
+    return false;
+  }
+  packages_.emplace(name, Package{normal, std::nullopt, loc});
+  return true;
+}
+
+void PackageMap::AddFromManifest(const std::string& manifest, SourceManager& sources,
+                                 DiagnosticEngine& diags) {
+  // package.xml is read strictly (COMMON-014)
+  std::string error;
+  auto file = sources.LoadFile(manifest, {}, &error);
+  if (!file) {
+    diags.Report(DiagKind::FileNotFound, {}, fmt::format("cannot read '{}': {}", manifest, error));
+    return;
+  }
+  auto doc = xml::XmlDocument::Parse(*file, sources, diags);
+  if (!doc) return;
+  xml::XmlElement root = doc->Root();
+  xml::XmlElement name = root.Child("name");
+  std::string text = name ? name.Text() : "";
+  const size_t first = text.find_first_not_of(" \t\r\n");
+  text = first == std::string::npos ? "" : text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
+  if (root.Name() != "package" || text.empty()) {
+    diags.Report(DiagKind::MissingElement, root.GetLoc(),
+                 "package.xml must be a <package> with a non-empty <name>");
+    return;
+  }
+  std::optional<std::string> deprecated;
+  if (auto exp = root.Child("export")) {
+    if (auto dep = exp.Child("deprecated")) deprecated = dep.Text();
+  }
+  const std::string dir = fs::path(manifest).parent_path().string();
+  std::error_code ec;
+  const std::string normal = fs::weakly_canonical(dir, ec).string();
+  auto it = packages_.find(text);
+  if (it != packages_.end()) {
+    if (it->second.path != normal) {
+      // the first one found wins (COMMON-013)
+      auto diag = diags.Report(
+          DiagKind::RenamedDuplicate, name.GetLoc(),
+          fmt::format("package '{}' found again at '{}'; keeping the first, at '{}'", text,
+                      normal, it->second.path));
+      if (it->second.defined_at.valid()) diag.Note(it->second.defined_at, "first defined here");
+    }
+    return;
+  }
+  packages_.emplace(text, Package{normal, std::move(deprecated), name.GetLoc()});
+}
+
+void PackageMap::PopulateFromFolder(const std::string& root, SourceManager& sources,
+                                    DiagnosticEngine& diags) {
+  std::error_code ec;
+  if (!fs::is_directory(root, ec)) {
+    diags.Report(DiagKind::FileNotFound, {},
+                 fmt::format("package path '{}' is not a directory", root));
+    return;
+  }
+  searched_.push_back(root);
+  // the recursive iterator keeps its own stack: no recursion per folder level
+  auto is_ignored = [](const fs::path& dir) {
+    std::error_code e;
+    return fs::exists(dir / "COLCON_IGNORE", e) || fs::exists(dir / "AMENT_IGNORE", e) ||
+           fs::exists(dir / "CATKIN_IGNORE", e);
+  };
+  if (is_ignored(root)) return;
+  if (fs::exists(fs::path(root) / "package.xml", ec)) {
+    AddFromManifest((fs::path(root) / "package.xml").string(), sources, diags);
+  }
+  // visit folders in sorted order, so "the first one found" is deterministic
+  std::vector<fs::path> dirs;
+  for (fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, ec),
+       end;
+       it != end; it.increment(ec)) {
+    if (ec) break;
+    if (!it->is_directory(ec) || it->is_symlink(ec)) continue;
+    if (is_ignored(it->path())) {
+      it.disable_recursion_pending();
+      continue;
+    }
+    dirs.push_back(it->path());
+  }
+  std::sort(dirs.begin(), dirs.end());
+  for (const fs::path& dir : dirs) {
+    if (fs::exists(dir / "package.xml", ec)) AddFromManifest((dir / "package.xml").string(), sources, diags);
+  }
+}
+
+void PackageMap::PopulateFromPathList(std::string_view paths, SourceManager& sources,
+                                      DiagnosticEngine& diags) {
+  size_t start = 0;
+  while (start <= paths.size()) {
+    size_t end = paths.find(':', start);
+    if (end == std::string_view::npos) end = paths.size();
+    if (end > start) PopulateFromFolder(std::string(paths.substr(start, end - start)), sources, diags);
+    start = end + 1;
+  }
+}
+
+const PackageMap::Package* PackageMap::Find(std::string_view name) const {
+  auto it = packages_.find(name);
+  return it == packages_.end() ? nullptr : &it->second;
+}
+
+std::optional<std::string> ResolveUri(std::string_view uri, const std::string& base_dir,
+                                      const PackageMap& packages, Loc loc,
+                                      DiagnosticEngine& diags) {
+  std::string path;
+  const size_t scheme_end = uri.find("://");
+  if (scheme_end == std::string_view::npos) {
+    fs::path p(uri);
+    path = p.is_absolute() ? p.string() : (fs::path(base_dir) / p).string();
+  } else {
+    const std::string_view scheme = uri.substr(0, scheme_end);
+    std::string_view rest = uri.substr(scheme_end + 3);
+    if (scheme == "file") {
+      path = std::string(rest);
+    } else if (scheme == "package" || scheme == "model") {
+      const size_t slash = rest.find('/');
+      const std::string_view name = rest.substr(0, slash);
+      const PackageMap::Package* package = packages.Find(name);
+      if (!package) {
+        auto diag = diags.Report(
+            DiagKind::FileNotFound, loc,
+            fmt::format("unknown package '{}' in '{}'", name, uri));
+        if (packages.searched().empty() && packages.size() == 0) {
+          diag.Note(loc, "no packages are known: give --package-path DIR, --package NAME=DIR "
+                         "or set ROS_PACKAGE_PATH");
+        } else {
+          diag.Note(loc, fmt::format("{} packages known; searched {}", packages.size(),
+                                     packages.searched().empty()
+                                         ? std::string("no folders")
+                                         : fmt::format("'{}'", fmt::join(packages.searched(), "', '"))));
+        }
+        return std::nullopt;
+      }
+      if (package->deprecated) {
+        diags.Report(DiagKind::UnsupportedValue, loc,
+                     fmt::format("package '{}' is deprecated: {}", name, *package->deprecated));
+      }
+      path = (fs::path(package->path) / (slash == std::string_view::npos ? "" : rest.substr(slash + 1))).string();
+    } else {
+      diags.Report(DiagKind::BadValue, loc,
+                   fmt::format("unsupported scheme '{}://' in '{}'; use package://, model://, "
+                               "file:// or a path",
+                               scheme, uri));
+      return std::nullopt;
+    }
+  }
+  std::error_code ec;
+  if (!fs::exists(path, ec)) {
+    diags.Report(DiagKind::FileNotFound, loc,
+                 fmt::format("'{}' resolves to '{}', which does not exist", uri, path));
+    return std::nullopt;
+  }
+  return fs::path(path).lexically_normal().string();
+}
+
+}  // namespace mdlc::frontend

@@ -1,0 +1,68 @@
+// package_map.h - ROS-style packages and the URIs that name files in them
+// (COMMON-010..015).
+//
+// A package is a directory holding a package.xml; its name is that file's
+// <name> element, not the directory's. The map is filled explicitly (Add),
+// by scanning folders (PopulateFromFolder, e.g. for --package-path) or from
+// ROS_PACKAGE_PATH, and is then used to resolve `package://`, `model://`,
+// `file://`, absolute and relative references. It is a plain value type that
+// embedders fill programmatically as well.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ir/diagnostics.h"
+#include "ir/source_manager.h"
+
+namespace mdlc::frontend {
+
+class PackageMap {
+ public:
+  struct Package {
+    std::string path;                       // the package's directory
+    std::optional<std::string> deprecated;  // message of a <deprecated> export
+    Loc defined_at;                         // its package.xml, when scanned
+  };
+
+  /// Adds `name` at `path`. A different path for a known name is an error
+  /// (COMMON-013); the same path again is fine. Returns false on error.
+  bool Add(const std::string& name, const std::string& path, DiagnosticEngine& diags,
+           Loc loc = {});
+
+  /// Finds every package.xml under `root` (nested packages included;
+  /// folders holding COLCON_IGNORE, AMENT_IGNORE or CATKIN_IGNORE skipped).
+  /// A name found again at another path keeps the first and warns.
+  void PopulateFromFolder(const std::string& root, SourceManager& sources,
+                          DiagnosticEngine& diags);
+  /// PopulateFromFolder for each entry of a colon-separated list.
+  void PopulateFromPathList(std::string_view paths, SourceManager& sources,
+                            DiagnosticEngine& diags);
+
+  const Package* Find(std::string_view name) const;
+  size_t size() const { return packages_.size(); }
+  const std::map<std::string, Package, std::less<>>& packages() const { return packages_; }
+  /// Folders scanned so far, for "searched in" notes.
+  const std::vector<std::string>& searched() const { return searched_; }
+
+ private:
+  void AddFromManifest(const std::string& manifest, SourceManager& sources,
+                       DiagnosticEngine& diags);
+
+  std::map<std::string, Package, std::less<>> packages_;
+  std::vector<std::string> searched_;
+};
+
+/// Resolves a file reference written in a model (COMMON-010, COMMON-011):
+/// `package://PKG/rel`, `model://PKG/rel`, `file:///abs`, an absolute path,
+/// or a path relative to `base_dir` (the referring file's folder). Reports
+/// an error at `loc` and returns nullopt when the scheme is unsupported, the
+/// package unknown, or the file does not exist.
+std::optional<std::string> ResolveUri(std::string_view uri, const std::string& base_dir,
+                                      const PackageMap& packages, Loc loc,
+                                      DiagnosticEngine& diags);
+
+}  // namespace mdlc::frontend

@@ -1,0 +1,143 @@
+// PackageMap and URI resolution (COMMON-010..014).
+#include "frontend/package_map.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace mdlc::frontend {
+namespace {
+namespace fs = std::filesystem;
+
+class PackageMapTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root_ = fs::temp_directory_path() /
+            ("mdlc_pkg_" + std::to_string(::getpid()) + "_" +
+             ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(root_);
+  }
+  void TearDown() override { fs::remove_all(root_); }
+  void Write(const fs::path& rel, const std::string& text) {
+    fs::create_directories((root_ / rel).parent_path());
+    std::ofstream(root_ / rel) << text;
+  }
+  void Package(const fs::path& dir, const std::string& name, const std::string& extra = "") {
+    Write(dir / "package.xml", "<package><name>" + name + "</name>" + extra + "</package>");
+  }
+  std::string Canonical(const fs::path& rel) { return fs::weakly_canonical(root_ / rel).string(); }
+
+  fs::path root_;
+  SourceManager sources_;
+  DiagnosticEngine diags_;
+};
+
+TEST_F(PackageMapTest, NameComesFromPackageXmlAndNestedPackagesAreFound) {  // COMMON-012
+  Package("dir_a", "alpha");
+  Package("dir_a/inner", "alpha_inner");
+  Package("set/dir_b", "beta");
+  PackageMap map;
+  map.PopulateFromFolder(root_.string(), sources_, diags_);
+  EXPECT_EQ(map.size(), 3u);
+  ASSERT_TRUE(map.Find("alpha"));
+  EXPECT_EQ(map.Find("alpha")->path, Canonical("dir_a"));
+  EXPECT_TRUE(map.Find("alpha_inner"));
+  EXPECT_TRUE(map.Find("beta"));
+  EXPECT_FALSE(map.Find("dir_a"));
+  EXPECT_EQ(diags_.diagnostics().size(), 0u);
+}
+
+TEST_F(PackageMapTest, IgnoreMarkersSkipTheirSubtree) {  // COMMON-012
+  Package("kept", "kept");
+  Package("skipped/pkg", "skipped");
+  Write("skipped/COLCON_IGNORE", "");
+  Package("also/pkg", "also");
+  Write("also/CATKIN_IGNORE", "");
+  PackageMap map;
+  map.PopulateFromFolder(root_.string(), sources_, diags_);
+  EXPECT_TRUE(map.Find("kept"));
+  EXPECT_FALSE(map.Find("skipped"));
+  EXPECT_FALSE(map.Find("also"));
+}
+
+TEST_F(PackageMapTest, FirstFoundWinsWithAWarning) {  // COMMON-013
+  Package("a", "same");
+  Package("b", "same");
+  PackageMap map;
+  map.PopulateFromFolder(root_.string(), sources_, diags_);
+  EXPECT_EQ(map.Find("same")->path, Canonical("a"));
+  EXPECT_EQ(diags_.warning_count(), 1u);
+  EXPECT_EQ(diags_.error_count(), 0u);
+}
+
+TEST_F(PackageMapTest, ConflictingExplicitDefinitionIsAnError) {  // COMMON-013
+  fs::create_directories(root_ / "x");
+  fs::create_directories(root_ / "y");
+  PackageMap map;
+  EXPECT_TRUE(map.Add("p", (root_ / "x").string(), diags_));
+  EXPECT_TRUE(map.Add("p", (root_ / "x").string(), diags_));
+  EXPECT_FALSE(map.Add("p", (root_ / "y").string(), diags_));
+  EXPECT_EQ(diags_.error_count(), 1u);
+}
+
+TEST_F(PackageMapTest, MalformedOrNamelessManifestIsAnError) {  // COMMON-014
+  Write("bad/package.xml", "<package><name>oops</package>");
+  Write("nameless/package.xml", "<package><version>1</version></package>");
+  PackageMap map;
+  map.PopulateFromFolder(root_.string(), sources_, diags_);
+  EXPECT_EQ(map.size(), 0u);
+  // libxml2 may say more than once what is wrong with the malformed one
+  EXPECT_GE(diags_.error_count(), 2u);
+  bool nameless_reported = false;
+  for (const auto& d : diags_.diagnostics()) {
+    nameless_reported |= d.message.find("non-empty <name>") != std::string::npos;
+  }
+  EXPECT_TRUE(nameless_reported);
+}
+
+TEST_F(PackageMapTest, DeprecatedPackagesWarnOnUse) {  // COMMON-014
+  Package("old", "old", "<export><deprecated>use new</deprecated></export>");
+  Write("old/mesh.obj", "");
+  PackageMap map;
+  map.PopulateFromFolder(root_.string(), sources_, diags_);
+  auto path = ResolveUri("package://old/mesh.obj", "/", map, {}, diags_);
+  ASSERT_TRUE(path);
+  EXPECT_EQ(diags_.warning_count(), 1u);
+  EXPECT_NE(diags_.diagnostics()[0].message.find("deprecated"), std::string::npos);
+}
+
+TEST_F(PackageMapTest, ResolvesEveryUriForm) {  // COMMON-010
+  Package("pkg", "pkg");
+  Write("pkg/meshes/a.obj", "");
+  Write("models/b.obj", "");
+  PackageMap map;
+  map.PopulateFromFolder(root_.string(), sources_, diags_);
+  const std::string base = (root_ / "models").string();
+  EXPECT_EQ(ResolveUri("package://pkg/meshes/a.obj", base, map, {}, diags_),
+            Canonical("pkg/meshes/a.obj"));
+  EXPECT_EQ(ResolveUri("model://pkg/meshes/a.obj", base, map, {}, diags_),
+            Canonical("pkg/meshes/a.obj"));
+  EXPECT_EQ(ResolveUri("b.obj", base, map, {}, diags_), (root_ / "models/b.obj").string());
+  EXPECT_EQ(ResolveUri("../models/b.obj", base, map, {}, diags_), (root_ / "models/b.obj").string());
+  EXPECT_EQ(ResolveUri("file://" + (root_ / "models/b.obj").string(), base, map, {}, diags_),
+            (root_ / "models/b.obj").string());
+  EXPECT_EQ(ResolveUri((root_ / "models/b.obj").string(), "/elsewhere", map, {}, diags_),
+            (root_ / "models/b.obj").string());
+  EXPECT_EQ(diags_.diagnostics().size(), 0u);
+}
+
+TEST_F(PackageMapTest, UnresolvableUrisAreErrors) {  // COMMON-010, COMMON-011
+  PackageMap map;
+  EXPECT_FALSE(ResolveUri("http://example.com/a.obj", "/", map, {}, diags_));
+  EXPECT_FALSE(ResolveUri("package://nowhere/a.obj", "/", map, {}, diags_));
+  EXPECT_FALSE(ResolveUri("missing.obj", root_.string(), map, {}, diags_));
+  ASSERT_EQ(diags_.error_count(), 3u);
+  EXPECT_NE(diags_.diagnostics()[0].message.find("unsupported scheme"), std::string::npos);
+  EXPECT_NE(diags_.diagnostics()[1].message.find("unknown package 'nowhere'"), std::string::npos);
+  EXPECT_EQ(diags_.diagnostics()[1].notes.size(), 1u);  // says where it looked
+  EXPECT_NE(diags_.diagnostics()[2].message.find("does not exist"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace mdlc::frontend
