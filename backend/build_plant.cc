@@ -24,7 +24,7 @@ class PlantBuilder {
 
   std::optional<Plant> Build() {
     if (m_.bodies.empty()) {
-      diags_.Report(DiagKind::KinematicLoop, {}, "internal: the module has no world body");
+      diags_.Report(DiagKind::VerifierFailure, {}, "internal: the module has no world body");
       return std::nullopt;
     }
     for (const ir::ModelInstance& model : m_.models) {
@@ -71,7 +71,7 @@ class PlantBuilder {
     for (size_t b = 0; b < m_.bodies.size(); ++b) {
       const ir::Body& src = m_.bodies[b];
       if (src.is_world != (b == 0)) {
-        diags_.Report(DiagKind::KinematicLoop, src.loc,
+        diags_.Report(DiagKind::VerifierFailure, src.loc,
                       fmt::format("internal: body '{}' {} the world body but is body {}",
                                   m_.Text(src.name), src.is_world ? "is" : "is not", b));
         Fail();

@@ -20,7 +20,7 @@ template <typename IdT>
 bool CheckId(IdT id, size_t size, std::string_view what, std::string_view name, Loc loc,
              DiagnosticEngine& diags) {
   if (id.valid() && id.index() < size) return true;
-  diags.Report(DiagKind::UnknownReference, loc,
+  diags.Report(DiagKind::VerifierFailure, loc,
                fmt::format("internal: unresolved reference to {} '{}'", what, name));
   return false;
 }
@@ -37,7 +37,7 @@ bool CheckRef(const ir::Module& module, const ir::Ref<IdT>& ref, size_t size,
 inline bool CheckModel(const ir::Module& module, ModelId model, Loc loc,
                        DiagnosticEngine& diags) {
   if (model.valid() && model.index() < module.models.size()) return true;
-  diags.Report(DiagKind::UnknownReference, loc,
+  diags.Report(DiagKind::VerifierFailure, loc,
                fmt::format("internal: entity belongs to no known model instance (id {})",
                            model.value));
   return false;

@@ -41,7 +41,7 @@ bool LinkChildren(const ir::Module& module, Plant& plant, DiagnosticEngine& diag
   for (size_t b = 0; b < plant.bodies.size(); ++b) {
     const PlantBody& body = plant.bodies[b];
     if (body.is_world || body.inbound_joint.valid()) continue;
-    diags.Report(DiagKind::KinematicLoop, module.bodies[b].loc,
+    diags.Report(DiagKind::VerifierFailure, module.bodies[b].loc,
                  fmt::format("body '{}' is not the child of any joint (internal: a floating "
                              "joint should have been added)",
                              body.scoped_name));

@@ -1,1 +1,0 @@
-void mdlc_backend_placeholder(){}
