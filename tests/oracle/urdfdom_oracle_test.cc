@@ -584,6 +584,9 @@ constexpr ExpectedRejection kExpectedRejections[] = {
      "URDF-032: a <visual> without <geometry> (link hokuyo_link) is an error"},
     {"example-robot-data/robots/talos_data/robots/talos_left_arm.urdf", "unknown joint",
      "URDF-020: a transmission naming a joint that does not exist (arm_left_1_joint) is an error"},
+    {"sdformat/test/sdf/joint_mimic_rack_pinion.urdf", "unsupported scheme 'https://'",
+     "COMMON-010: a mesh fetched over https:// (a Gazebo Fuel URL) is an error; mdlc never "
+     "downloads anything"},
 };
 
 // Keeps gtest from dumping the struct's bytes in test listings.
