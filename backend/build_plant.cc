@@ -30,6 +30,8 @@ class PlantBuilder {
     for (const ir::ModelInstance& model : m_.models) {
       plant_.model_instances.emplace_back(m_.Text(model.name));
     }
+    if (m_.gravity) plant_.gravity = *m_.gravity;
+    if (m_.time_step) plant_.time_step = *m_.time_step;
     AddBodies();
     for (const ir::Frame& frame : m_.frames) AddFrame(frame);
     for (const ir::Joint& joint : m_.joints) AddJoint(joint);
@@ -116,6 +118,7 @@ class PlantBuilder {
     joint.X_PF = src.X_PF;
     joint.X_CM = src.X_CM;
     joint.screw_thread_pitch = src.screw_thread_pitch;
+    joint.curvilinear_path = src.curvilinear_path;
     joint.unnamed = src.unnamed;
     joint.nq = ir::JointPositionCount(src.type);
     joint.nv = ir::JointVelocityCount(src.type);

@@ -51,8 +51,7 @@ Transform JointPose(const PlantJoint& joint, const Eigen::Ref<const Eigen::Vecto
     case JointType::Planar:
       return {Rz(q[2]), Eigen::Vector3d(q[0], q[1], 0)};
     case JointType::Curvilinear:
-      // TODO(issue 3): follow the joint's path once the IR carries it.
-      return Transform::FromTranslation(Eigen::Vector3d(q[0], 0, 0));
+      return joint.curvilinear_path.PoseAt(q[0]);
     case JointType::Weld:
       return Transform::Identity();
     case JointType::QuaternionFloating:
@@ -93,8 +92,7 @@ MotionSubspace JointMotionSubspace(const PlantJoint& joint,
       H.col(2) << ez, zero;
       break;
     case JointType::Curvilinear:
-      // TODO(issue 3): the path's tangent (and curvature) once the IR has them.
-      H.col(0) << zero, ex;
+      H.col(0) = joint.curvilinear_path.VelocityAt(q[0]);
       break;
     case JointType::Weld:
       break;

@@ -10,9 +10,8 @@
 //   weld          identity                                              no q, no v
 //   quaternion_floating  q = [qw qx qy qz px py pz]      v = [w_FM_F, v_FM_F]
 //   rpy_floating         q = [roll pitch yaw px py pz]    v = [w_FM_F, v_FM_F]
-//   curvilinear   PLACEHOLDER: translation q along F's x axis. The IR carries
-//                 no path data yet (it arrives with issue 3); until then a
-//                 curvilinear joint is a straight prismatic path along x.
+//   curvilinear   X_FM = the pose at arc length q along the joint's planar path
+//                 (ir/curvilinear_path.h)     v = qdot: V = [curvature * normal; tangent]
 // A child's pose is X_WC = X_WP * X_PF * X_FM(q) * X_CM^-1.
 //
 // Everything here iterates the plant's topological order; nothing recurses.

@@ -68,6 +68,7 @@ struct PlantJoint {
   std::vector<double> damping;
   std::vector<double> default_positions;
   double screw_thread_pitch = 0;  // meters per revolution
+  ir::CurvilinearPath curvilinear_path;  // curvilinear joints: X_FM(q) = path pose at s = q
   bool unnamed = false;           // synthesized by the compiler
   int q_start = 0, nq = 0;        // this joint's slice of q
   int v_start = 0, nv = 0;        // this joint's slice of v

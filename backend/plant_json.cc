@@ -131,10 +131,11 @@ class PlantJsonEmitter {
     w_.Key("parent").String(BodyName(joint.parent));
     w_.Key("child").String(BodyName(joint.child));
     if (joint.nv == 1) {
-      // TODO(issue 3): a curvilinear joint moves along its path's tangent;
-      // until the IR has paths it moves along F's x axis (kinematics.h).
+      // a curvilinear joint moves along its path's tangent at q
       const Eigen::Vector3d axis_F =
-          joint.type == ir::JointType::Curvilinear ? Eigen::Vector3d::UnitX() : joint.axis;
+          joint.type == ir::JointType::Curvilinear
+              ? joint.curvilinear_path.PoseAt(q_[joint.q_start]).R.col(0)
+              : joint.axis;
       w_.Key("axis_W");
       Vector(JointFrameInWorld(plant_, X_WB_, id).R * axis_F);
     }

@@ -16,6 +16,7 @@
 #include <variant>
 #include <vector>
 
+#include "ir/curvilinear_path.h"
 #include "ir/ids.h"
 #include "ir/location.h"
 #include "ir/symbol.h"
@@ -111,6 +112,7 @@ struct Joint {
   std::vector<double> damping;            // per velocity coordinate
   std::vector<double> default_positions;  // per position coordinate; empty = zero/identity
   double screw_thread_pitch = 0;          // screw joints: meters per revolution
+  CurvilinearPath curvilinear_path;       // curvilinear joints: the path M follows in F
   bool unnamed = false;                   // synthesized by the compiler
 };
 

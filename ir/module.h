@@ -6,6 +6,7 @@
 // Drake; a fresh Module already holds them.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,6 +34,10 @@ struct Module {
   std::vector<Constraint> constraints;
   std::vector<CollisionFilterGroup> filter_groups;
   std::vector<Camera> cameras;
+
+  /// Plant-wide settings a model may give (MJCF <option>); unset: Drake's defaults.
+  std::optional<Eigen::Vector3d> gravity;  // m/s^2, in world
+  std::optional<double> time_step;         // s; 0 = continuous
 
   // typed access
   ModelInstance& operator[](ModelId id) { return models[id.index()]; }

@@ -100,10 +100,47 @@ TEST(Kinematics, RpyFloatingIsRpyThenTranslation) {
              RotationFromRpy(Eigen::Vector3d(0.1, -0.2, 0.3)), Eigen::Vector3d(4, 5, 6));
 }
 
-TEST(Kinematics, CurvilinearIsAStraightLineAlongXUntilPathsExist) {
-  // placeholder until the IR carries path data (issue 3)
+// a line of 1 m along a tilted tangent, then a left arc of radius 0.5 m turning
+// through pi/2, in a plane whose normal is not z
+PlantJoint CurvedJoint(bool periodic) {
+  PlantJoint j = MakeJoint(JointType::Curvilinear);
+  j.curvilinear_path.initial_tangent = Eigen::Vector3d(1, 1, 0).normalized();
+  j.curvilinear_path.plane_normal = Eigen::Vector3d(0, 0, 1);
+  j.curvilinear_path.segments = {{1.0, 0.0}, {0.25 * M_PI, 2.0}};
+  if (periodic) {
+    // four lines and four quarter circles: a closed rounded square
+    j.curvilinear_path.segments = {{1.0, 0}, {0.25 * M_PI, 2}, {1.0, 0}, {0.25 * M_PI, 2},
+                                   {1.0, 0}, {0.25 * M_PI, 2}, {1.0, 0}, {0.25 * M_PI, 2}};
+    j.curvilinear_path.periodic = true;
+  }
+  return j;
+}
+
+TEST(Kinematics, CurvilinearFollowsLinesAndArcs) {
+  const PlantJoint j = CurvedJoint(false);
+  const Eigen::Vector3d t = Eigen::Vector3d(1, 1, 0).normalized();
+  const Eigen::Vector3d n = Eigen::Vector3d::UnitZ().cross(t);  // the side the arc turns to
+  // along the line: translation only, the frame's x along the tangent
+  const Transform X_line = JointPose(j, Q({0.6}));
+  EXPECT_TRUE(X_line.p.isApprox(0.6 * t, 1e-12));
+  EXPECT_TRUE(X_line.R.col(0).isApprox(t, 1e-12));
+  // end of the quarter arc: one radius along t and one along n, turned by 90 degrees
+  const Transform X_end = JointPose(j, Q({1.0 + 0.25 * M_PI}));
+  EXPECT_TRUE(X_end.p.isApprox(1.0 * t + 0.5 * t + 0.5 * n, 1e-12)) << X_end.p.transpose();
+  EXPECT_TRUE(X_end.R.col(0).isApprox(n, 1e-12));
+  EXPECT_TRUE(X_end.R.col(2).isApprox(Eigen::Vector3d::UnitZ(), 1e-12));
+  // a closed loop comes back to its start after its length
+  const PlantJoint loop = CurvedJoint(true);
+  const double length = loop.curvilinear_path.TotalLength();
+  const Transform X0 = JointPose(loop, Q({0.2})), X1 = JointPose(loop, Q({0.2 + length}));
+  EXPECT_TRUE(X0.p.isApprox(X1.p, 1e-12));
+  EXPECT_TRUE(X0.R.isApprox(X1.R, 1e-12));
+}
+
+TEST(Kinematics, CurvilinearWithoutSegmentsStaysAtItsStart) {
+  // an empty path has no length: the child stays at the path's start
   ExpectPose(JointPose(MakeJoint(JointType::Curvilinear), Q({0.4})),
-             Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.4, 0, 0));
+             Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
 }
 
 // For joints with qdot = v, H's columns are the derivatives of X_FM(q):
@@ -117,6 +154,10 @@ TEST(Kinematics, MotionSubspaceMatchesDerivativeOfJointPose) {
       {MakeJoint(JointType::Universal), Q({0.4, -1.1})},
       {MakeJoint(JointType::Planar), Q({0.3, 0.6, -2.1})},
       {MakeJoint(JointType::Curvilinear), Q({0.1})},
+      {CurvedJoint(false), Q({0.3})},   // inside the first (straight) piece
+      {CurvedJoint(false), Q({1.7})},   // inside the arc
+      {CurvedJoint(false), Q({-0.4})},  // before the start: the first piece continues
+      {CurvedJoint(true), Q({7.9})},    // a closed loop wraps around
   };
   const double h = 1e-6;
   for (const auto& [joint, q] : cases) {
