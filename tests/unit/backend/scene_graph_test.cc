@@ -119,7 +119,7 @@ TEST(BackendCollisionFilters, UnresolvedGroupReferenceIsAnError) {
   DiagnosticEngine diags;
   EXPECT_FALSE(Instantiate(b.module(), diags));
   ASSERT_EQ(diags.diagnostics().size(), 1u);
-  EXPECT_EQ(diags.diagnostics()[0].kind, DiagKind::UnknownReference);
+  EXPECT_EQ(diags.diagnostics()[0].kind, DiagKind::VerifierFailure);
 }
 
 TEST(BackendSceneGraph, ColorBecomesPhongDiffuseForVisibleGeometry) {
