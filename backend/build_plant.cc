@@ -39,6 +39,7 @@ class PlantBuilder {
     if (refs_ok_ && !AssignTreeOrder(m_, plant_, diags_)) Fail();
     for (const ir::Actuator& actuator : m_.actuators) AddActuator(actuator);
     for (const ir::Constraint& constraint : m_.constraints) AddConstraint(constraint);
+    for (const ir::ForceElement& element : m_.force_elements) AddForceElement(element);
     if (!ok_) return std::nullopt;
     return std::move(plant_);
   }
@@ -98,6 +99,39 @@ class PlantBuilder {
     body.mass = in.mass;
     body.p_BoBcm_B = in.X_BI.p;
     body.I_BBcm_B = R_BI * I_I * R_BI.transpose();
+  }
+
+  // the scoped name plant-json uses for a frame: an explicit frame's, or the body's
+  std::string FrameName(const ir::FrameRef& ref, Loc loc) {
+    if (ref.frame.valid() && ref.frame.index() < m_.frames.size()) {
+      const ir::Frame& f = m_[ref.frame];
+      return Scoped(f.model, f.name);
+    }
+    if (ref.body.valid() && ref.body.index() < m_.bodies.size()) return m_.ScopedName(ref.body);
+    diags_.Report(DiagKind::VerifierFailure, ref.loc.valid() ? ref.loc : loc,
+                  fmt::format("internal: unresolved frame reference '{}'", m_.Text(ref.name)));
+    Fail();
+    return {};
+  }
+
+  void AddForceElement(const ir::ForceElement& src) {
+    CheckEntityModel(src.model, src.loc);
+    switch (src.type) {
+      case ir::ForceElementType::LinearBushingRpy:
+        plant_.force_elements.emplace_back(LinearBushingRpy{
+            FrameName(src.frame_A, src.loc), FrameName(src.frame_C, src.loc),
+            src.torque_stiffness, src.torque_damping, src.force_stiffness, src.force_damping});
+        break;
+      case ir::ForceElementType::LinearSpringDamper:
+        plant_.force_elements.emplace_back(LinearSpringDamper{
+            ResolveBody(src.body_A, src.loc), ResolveBody(src.body_B, src.loc), src.p_AP,
+            src.p_BQ, src.free_length, src.stiffness, src.damping});
+        break;
+      case ir::ForceElementType::JointSpring:
+        plant_.force_elements.emplace_back(
+            JointSpring{ResolveJoint(src.joint, src.loc), src.nominal, src.stiffness});
+        break;
+    }
   }
 
   void AddFrame(const ir::Frame& src) {

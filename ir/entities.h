@@ -209,6 +209,38 @@ struct CollisionFilterGroup {
   std::vector<Ref<FilterGroupId>> ignored_groups;
 };
 
+/// A reference to a frame that may be a body's own frame (a link name) or an
+/// explicit Frame; resolve-names fills exactly one of `frame` and `body`.
+struct FrameRef {
+  Symbol name;
+  Loc loc;
+  FrameId frame;
+  BodyId body;
+  bool resolved() const { return frame.valid() || body.valid(); }
+};
+
+enum class ForceElementType { LinearBushingRpy, LinearSpringDamper, JointSpring };
+
+/// Force elements of the plant (Drake's ForceElement subclasses).
+struct ForceElement {
+  ModelId model;
+  Loc loc;
+  ForceElementType type = ForceElementType::LinearSpringDamper;
+  // linear_bushing_rpy: between frames A and C, gains per axis
+  FrameRef frame_A, frame_C;
+  Eigen::Vector3d torque_stiffness = Eigen::Vector3d::Zero();
+  Eigen::Vector3d torque_damping = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force_stiffness = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force_damping = Eigen::Vector3d::Zero();
+  // linear_spring_damper: between point P of body A and point Q of body B
+  Ref<BodyId> body_A, body_B;
+  Eigen::Vector3d p_AP = Eigen::Vector3d::Zero(), p_BQ = Eigen::Vector3d::Zero();
+  double free_length = 0, stiffness = 0, damping = 0;
+  // joint spring (revolute or prismatic, by the joint's type): stiffness, nominal
+  Ref<JointId> joint;
+  double nominal = 0;
+};
+
 struct Camera {
   Symbol name;
   ModelId model;

@@ -32,6 +32,7 @@ struct Module {
   std::vector<Material> materials;
   std::vector<Actuator> actuators;
   std::vector<Constraint> constraints;
+  std::vector<ForceElement> force_elements;
   std::vector<CollisionFilterGroup> filter_groups;
   std::vector<Camera> cameras;
 
@@ -63,6 +64,7 @@ struct Module {
   GeometryId Add(Geometry g) { geometries.push_back(std::move(g)); return GeometryId(geometries.size() - 1); }
   MaterialId Add(Material m) { materials.push_back(std::move(m)); return MaterialId(materials.size() - 1); }
   ActuatorId Add(Actuator a) { actuators.push_back(std::move(a)); return ActuatorId(actuators.size() - 1); }
+  ForceElementId Add(ForceElement f) { force_elements.push_back(std::move(f)); return ForceElementId(force_elements.size() - 1); }
   ConstraintId Add(Constraint c) { constraints.push_back(std::move(c)); return ConstraintId(constraints.size() - 1); }
   FilterGroupId Add(CollisionFilterGroup g) { filter_groups.push_back(std::move(g)); return FilterGroupId(filter_groups.size() - 1); }
   CameraId Add(Camera c) { cameras.push_back(std::move(c)); return CameraId(cameras.size() - 1); }

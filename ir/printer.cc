@@ -57,6 +57,11 @@ class Printer {
     return RefText(r, [&](JointId id) { return m_.ScopedName(id); });
   }
   std::string Shape(const ir::Shape& shape) const;
+  std::string FrameRefText(const FrameRef& r) const {
+    if (r.frame.valid()) return fmt::format("{}::{}", Model(m_[r.frame].model), m_.Text(m_[r.frame].name));
+    if (r.body.valid()) return m_.ScopedName(r.body);
+    return fmt::format("?{}", Name(r.name));
+  }
 
   const Module& m_;
   const SourceManager& sources_;
@@ -169,6 +174,30 @@ std::string Printer::Run() {
       out_ += fmt::format(" body_A={} body_B={}", BodyRef(c.body_A), BodyRef(c.body_B));
     }
     out_ += Where(c.loc) + "\n";
+  }
+  for (size_t i = 0; i < m_.force_elements.size(); ++i) {
+    const ForceElement& f = m_.force_elements[i];
+    out_ += fmt::format("  force_element #{} model={}", i, Model(f.model));
+    switch (f.type) {
+      case ForceElementType::LinearBushingRpy:
+        out_ += fmt::format(" linear_bushing_rpy frame_A={} frame_C={} torque_stiffness={} "
+                            "torque_damping={} force_stiffness={} force_damping={}",
+                            FrameRefText(f.frame_A), FrameRefText(f.frame_C),
+                            Vec(f.torque_stiffness), Vec(f.torque_damping),
+                            Vec(f.force_stiffness), Vec(f.force_damping));
+        break;
+      case ForceElementType::LinearSpringDamper:
+        out_ += fmt::format(" linear_spring_damper body_A={} p_AP={} body_B={} p_BQ={} "
+                            "free_length={} stiffness={} damping={}",
+                            BodyRef(f.body_A), Vec(f.p_AP), BodyRef(f.body_B), Vec(f.p_BQ),
+                            Num(f.free_length), Num(f.stiffness), Num(f.damping));
+        break;
+      case ForceElementType::JointSpring:
+        out_ += fmt::format(" joint_spring joint={} nominal={} stiffness={}", JointRef(f.joint),
+                            Num(f.nominal), Num(f.stiffness));
+        break;
+    }
+    out_ += Where(f.loc) + "\n";
   }
   out_ += "}\n";
   return std::move(out_);

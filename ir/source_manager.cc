@@ -14,13 +14,18 @@ struct SourceManager::Buffer {
   Loc included_from;
   // offsets of the first byte of each line; built on first use
   mutable std::vector<size_t> line_starts;
+  // the line of the last lookup: frontends ask in nearly increasing order
+  mutable size_t last_line_index = 0;
 
   const std::vector<size_t>& LineStarts() const {
     if (line_starts.empty()) {
+      line_starts.reserve(contents.size() / 32 + 1);
       line_starts.push_back(0);
       const char* data = contents.data();
-      for (size_t i = 0, n = contents.size(); i < n; ++i) {
-        if (data[i] == '\n') line_starts.push_back(i + 1);
+      const char* end = data + contents.size();
+      for (const char* p = data; (p = static_cast<const char*>(std::memchr(p, '\n', end - p)));) {
+        ++p;
+        line_starts.push_back(static_cast<size_t>(p - data));
       }
     }
     return line_starts;
@@ -63,9 +68,25 @@ Loc SourceManager::IncludedFrom(FileId id) const { return Get(id).included_from;
 size_t SourceManager::FileCount() const { return buffers_.size(); }
 
 Loc SourceManager::LocForOffset(FileId id, size_t offset) const {
-  const auto& starts = Get(id).LineStarts();
-  auto it = std::upper_bound(starts.begin(), starts.end(), offset);
-  const size_t line_index = static_cast<size_t>(it - starts.begin()) - 1;
+  const Buffer& buffer = Get(id);
+  const auto& starts = buffer.LineStarts();
+  auto on_line = [&](size_t i) {
+    return i < starts.size() && starts[i] <= offset && (i + 1 == starts.size() || offset < starts[i + 1]);
+  };
+  // the same line as last time, or one of the next few; else a binary search
+  size_t line_index = buffer.last_line_index;
+  if (!on_line(line_index)) {
+    size_t i = line_index + 1;
+    const size_t limit = line_index + 4;
+    while (i < limit && !on_line(i)) ++i;
+    if (i < limit) {
+      line_index = i;
+    } else {
+      auto it = std::upper_bound(starts.begin(), starts.end(), offset);
+      line_index = static_cast<size_t>(it - starts.begin()) - 1;
+    }
+    buffer.last_line_index = line_index;
+  }
   return Loc{id, static_cast<uint32_t>(line_index + 1),
              static_cast<uint32_t>(offset - starts[line_index] + 1)};
 }

@@ -4,6 +4,8 @@
 // Buffers are never moved once loaded (each lives in its own heap block), so
 // `std::string_view`s into them stay valid for the SourceManager's lifetime.
 // The line table of a buffer is built lazily, the first time it is needed.
+// Lookups remember the last line they found, so a SourceManager is for one
+// thread at a time.
 #pragma once
 
 #include <memory>

@@ -38,6 +38,22 @@ class Verifier {
         CheckRef(c.joint1, m_.joints.size(), "coupler joint");
       }
     }
+    for (const ForceElement& f : m_.force_elements) {
+      CheckModel(f.model, f.loc, "force element");
+      switch (f.type) {
+        case ForceElementType::LinearBushingRpy:
+          CheckFrameRef(f.frame_A);
+          CheckFrameRef(f.frame_C);
+          break;
+        case ForceElementType::LinearSpringDamper:
+          CheckRef(f.body_A, m_.bodies.size(), "spring body");
+          CheckRef(f.body_B, m_.bodies.size(), "spring body");
+          break;
+        case ForceElementType::JointSpring:
+          CheckRef(f.joint, m_.joints.size(), "spring joint");
+          break;
+      }
+    }
     if (level_ >= VerifyLevel::Tree) CheckTree();
     return ok_;
   }
@@ -59,6 +75,15 @@ class Verifier {
     }
     if (level_ >= VerifyLevel::Resolved && !ref.id.valid()) {
       Fail(ref.loc, fmt::format("{} reference '{}' is unresolved", what, m_.Text(ref.name)));
+    }
+  }
+  void CheckFrameRef(const FrameRef& ref) {
+    if ((ref.frame.valid() && ref.frame.index() >= m_.frames.size()) ||
+        (ref.body.valid() && ref.body.index() >= m_.bodies.size())) {
+      Fail(ref.loc, "frame reference is out of range");
+    }
+    if (level_ >= VerifyLevel::Resolved && !ref.resolved()) {
+      Fail(ref.loc, fmt::format("frame reference '{}' is unresolved", m_.Text(ref.name)));
     }
   }
   void CheckTree() {

@@ -25,10 +25,14 @@ class ResolveNamesPass : public Pass {
   bool Run(PassContext& ctx) override;
 
  private:
-  template <typename IdT, typename Table>
+  // `user` describes the referring entity; it is called only to report an error
+  template <typename IdT, typename Table, typename User>
   void Resolve(PassContext& ctx, ir::Ref<IdT>& ref, ModelId scope, const NameIndex<IdT>& index,
-               const Table& table, std::string_view kind, std::string_view user);
+               const Table& table, std::string_view kind, const User& user);
   std::optional<ModelId> ScopeFor(PassContext& ctx, ModelId own, std::string_view scope) const;
+  void ResolveFrame(PassContext& ctx, ir::FrameRef& ref, ModelId scope,
+                    const NameIndex<FrameId>& frames, const NameIndex<BodyId>& bodies,
+                    std::string_view user);
 
   std::optional<ModelIndex> models_;
 };
@@ -41,10 +45,10 @@ std::optional<ModelId> ResolveNamesPass::ScopeFor(PassContext& ctx, ModelId own,
   return models_->Find(scope);
 }
 
-template <typename IdT, typename Table>
+template <typename IdT, typename Table, typename User>
 void ResolveNamesPass::Resolve(PassContext& ctx, ir::Ref<IdT>& ref, ModelId scope,
                                const NameIndex<IdT>& index, const Table& table,
-                               std::string_view kind, std::string_view user) {
+                               std::string_view kind, const User& user) {
   if (ref.resolved() || ref.name.empty()) return;
   ir::Module& m = ctx.module;
   std::string_view text = m.Text(ref.name);
@@ -63,7 +67,7 @@ void ResolveNamesPass::Resolve(PassContext& ctx, ir::Ref<IdT>& ref, ModelId scop
   std::optional<ModelId> model = ScopeFor(ctx, scope, split->scope);
   if (!model) {
     ctx.diags.Report(DiagKind::UnknownReference, ref.loc,
-                     fmt::format("{} names {} '{}' in unknown model instance '{}'", user, kind,
+                     fmt::format("{} names {} '{}' in unknown model instance '{}'", user(), kind,
                                  text, split->scope));
     return;
   }
@@ -74,8 +78,8 @@ void ResolveNamesPass::Resolve(PassContext& ctx, ir::Ref<IdT>& ref, ModelId scop
   }
   auto diag = ctx.diags.Report(
       DiagKind::UnknownReference, ref.loc,
-      fmt::format("{} names unknown {} '{}': Could not find {} '{}' in model '{}'", user, kind,
-                  text, kind, split->element, m.Text(m[*model].name)));
+      fmt::format("{} names unknown {} '{}': Could not find {} '{}' in model '{}'", user(),
+                  kind, text, kind, split->element, m.Text(m[*model].name)));
   std::vector<std::string_view> candidates;
   for (const auto& entity : table) {
     if (entity.model == *model) candidates.push_back(m.Text(entity.name));
@@ -85,6 +89,35 @@ void ResolveNamesPass::Resolve(PassContext& ctx, ir::Ref<IdT>& ref, ModelId scop
   }
 }
 
+// a frame reference names an explicit frame, or else a body's own frame
+void ResolveNamesPass::ResolveFrame(PassContext& ctx, ir::FrameRef& ref, ModelId scope,
+                                    const NameIndex<FrameId>& frames,
+                                    const NameIndex<BodyId>& bodies, std::string_view user) {
+  if (ref.resolved() || ref.name.empty()) return;
+  ir::Module& m = ctx.module;
+  std::string_view text = m.Text(ref.name);
+  if (text == "world") {
+    ref.body = ir::kWorldBody;
+    return;
+  }
+  auto split = SplitScopedName(text);
+  std::optional<ModelId> model = split ? ScopeFor(ctx, scope, split->scope) : std::nullopt;
+  const Symbol element = split ? m.symbols.Find(split->element) : Symbol{};
+  if (model && !element.empty()) {
+    if (auto f = frames.Find(*model, element)) {
+      ref.frame = *f;
+      return;
+    }
+    if (auto b = bodies.Find(*model, element)) {
+      ref.body = *b;
+      return;
+    }
+  }
+  ctx.diags.Report(DiagKind::UnknownReference, ref.loc,
+                   fmt::format("{} names unknown frame '{}': no frame or link of that name", user,
+                               text));
+}
+
 bool ResolveNamesPass::Run(PassContext& ctx) {
   ir::Module& m = ctx.module;
   models_.emplace(m);
@@ -92,31 +125,41 @@ bool ResolveNamesPass::Run(PassContext& ctx) {
   NameIndex<JointId> joints;
   for (size_t i = 1; i < m.bodies.size(); ++i) bodies.Add(m.bodies[i].model, m.bodies[i].name, BodyId(i));
   for (size_t i = 0; i < m.joints.size(); ++i) joints.Add(m.joints[i].model, m.joints[i].name, JointId(i));
+  NameIndex<FrameId> frames;
+  for (size_t i = 0; i < m.frames.size(); ++i) frames.Add(m.frames[i].model, m.frames[i].name, FrameId(i));
 
   const size_t errors_before = ctx.diags.error_count();
+  auto described = [&](const char* what, Symbol name) {
+    return [&m, what, name] { return fmt::format("{} '{}'", what, m.Text(name)); };
+  };
   for (ir::Joint& j : m.joints) {
-    const std::string user = fmt::format("joint '{}'", m.Text(j.name));
-    Resolve(ctx, j.parent, j.model, bodies, m.bodies, "link", user);
-    Resolve(ctx, j.child, j.model, bodies, m.bodies, "link", user);
+    Resolve(ctx, j.parent, j.model, bodies, m.bodies, "link", described("joint", j.name));
+    Resolve(ctx, j.child, j.model, bodies, m.bodies, "link", described("joint", j.name));
   }
   for (ir::Frame& f : m.frames) {
-    Resolve(ctx, f.body, f.model, bodies, m.bodies, "link", fmt::format("frame '{}'", m.Text(f.name)));
+    Resolve(ctx, f.body, f.model, bodies, m.bodies, "link", described("frame", f.name));
   }
   for (ir::Geometry& g : m.geometries) {
-    Resolve(ctx, g.body, g.model, bodies, m.bodies, "link",
-            fmt::format("geometry '{}'", m.Text(g.name)));
+    Resolve(ctx, g.body, g.model, bodies, m.bodies, "link", described("geometry", g.name));
   }
   for (ir::Actuator& a : m.actuators) {
-    Resolve(ctx, a.joint, a.model, joints, m.joints, "joint",
-            fmt::format("actuator '{}'", m.Text(a.name)));
+    Resolve(ctx, a.joint, a.model, joints, m.joints, "joint", described("actuator", a.name));
   }
   for (ir::Constraint& c : m.constraints) {
-    const std::string user = fmt::format("{} constraint", ir::ConstraintTypeName(c.type));
+    auto user = [&c] { return fmt::format("{} constraint", ir::ConstraintTypeName(c.type)); };
     Resolve(ctx, c.joint0, c.model, joints, m.joints, "joint", user);
     Resolve(ctx, c.joint1, c.model, joints, m.joints, "joint", user);
     Resolve(ctx, c.body_A, c.model, bodies, m.bodies, "link", user);
     Resolve(ctx, c.body_B, c.model, bodies, m.bodies, "link", user);
     for (auto& jr : c.joints) Resolve(ctx, jr, c.model, joints, m.joints, "joint", user);
+  }
+  for (ir::ForceElement& f : m.force_elements) {
+    auto user = [] { return std::string("force element"); };
+    ResolveFrame(ctx, f.frame_A, f.model, frames, bodies, "force element");
+    ResolveFrame(ctx, f.frame_C, f.model, frames, bodies, "force element");
+    Resolve(ctx, f.body_A, f.model, bodies, m.bodies, "link", user);
+    Resolve(ctx, f.body_B, f.model, bodies, m.bodies, "link", user);
+    Resolve(ctx, f.joint, f.model, joints, m.joints, "joint", user);
   }
   return ctx.diags.error_count() == errors_before;
 }

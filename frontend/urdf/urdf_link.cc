@@ -88,24 +88,22 @@ void UrdfReader::ReadInertial(const xml::XmlElement& e, ir::Body& body) {
 
 Symbol UrdfReader::UniqueGeometryName(BodyId body, uint8_t role, std::string_view wanted,
                                       bool explicit_name, Loc loc) {
-  auto& used = geometry_names_[(uint64_t{body.value} << 8) | role];
-  std::string name(wanted);
-  Symbol symbol = module().Intern(name);
-  auto [it, inserted] = used.emplace(symbol.value, 0);
+  const Symbol symbol = module().Intern(wanted);
+  auto [it, inserted] = geometry_names_.try_emplace({body.value, symbol.value, role}, 0);
   if (inserted) return symbol;
   // a duplicate within this link and role: NAME_1, NAME_2, ... (URDF-040)
-  int& counter = it->second;
-  std::string candidate;
+  Symbol renamed;
+  int counter = it->second;
   do {
-    candidate = fmt::format("{}_{}", wanted, ++counter);
-  } while (used.count(module().Intern(candidate).value));
+    renamed = module().Intern(fmt::format("{}_{}", wanted, ++counter));
+  } while (geometry_names_.count({body.value, renamed.value, role}));
+  geometry_names_[{body.value, symbol.value, role}] = counter;
+  geometry_names_.try_emplace({body.value, renamed.value, role}, 0);
   if (explicit_name) {
     diags().Report(DiagKind::RenamedDuplicate, loc,
                    fmt::format("geometry name '{}' is already used in this link; renamed to '{}'",
-                               wanted, candidate));
+                               wanted, module().Text(renamed)));
   }
-  Symbol renamed = module().Intern(candidate);
-  used.emplace(renamed.value, 0);
   return renamed;
 }
 

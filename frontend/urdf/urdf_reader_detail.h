@@ -66,8 +66,19 @@ class UrdfReader {
   std::unordered_map<uint32_t, Loc> link_names_, joint_names_, frame_names_;
   std::unordered_map<uint32_t, JointId> joint_ids_;  // by Symbol value
   std::vector<xml::XmlElement> transmissions_;  // read after every joint
-  // geometry names already used, per (body, role)
-  std::unordered_map<uint64_t, std::unordered_map<uint32_t, int>> geometry_names_;
+  // geometry names already used, keyed by (body, role, name); the value is
+  // the last suffix tried for that name
+  struct GeometryNameKey {
+    uint32_t body, name;
+    uint8_t role;
+    friend bool operator==(const GeometryNameKey&, const GeometryNameKey&) = default;
+  };
+  struct GeometryNameHash {
+    size_t operator()(const GeometryNameKey& k) const {
+      return (size_t{k.body} * 0x9E3779B97F4A7C15ull) ^ (size_t{k.name} << 8) ^ k.role;
+    }
+  };
+  std::unordered_map<GeometryNameKey, int, GeometryNameHash> geometry_names_;
   ir::Module& module() { return ctx_.module; }
   DiagnosticEngine& diags() { return ctx_.diags; }
 };

@@ -32,6 +32,22 @@ std::optional<double> ParseDouble(std::string_view text) {
   return value;
 }
 
+std::optional<size_t> ParseDoublesInto(std::string_view text, double* out, size_t capacity) {
+  size_t count = 0, i = 0;
+  while (true) {
+    while (i < text.size() && IsSpace(text[i])) ++i;
+    if (i >= text.size()) break;
+    size_t j = i;
+    while (j < text.size() && !IsSpace(text[j])) ++j;
+    auto v = ParseDouble(text.substr(i, j - i));
+    if (!v) return std::nullopt;
+    if (count < capacity) out[count] = *v;
+    ++count;
+    i = j;
+  }
+  return count;
+}
+
 std::optional<std::vector<double>> ParseDoubleList(std::string_view text) {
   std::vector<double> out;
   size_t i = 0;
@@ -63,9 +79,47 @@ std::optional<std::string_view> AttributeReader::String(const XmlElement& e, std
   return a.value;
 }
 
+bool AttributeReader::Fixed(const XmlElement& e, std::string_view attr, double* out,
+                            size_t count, Need need, Finite finite) {
+  XmlAttribute a = e.Attribute(attr);
+  if (!a.present()) {
+    if (need == Need::Required) ReportMissing(e, attr);
+    return false;
+  }
+  auto n = ParseDoublesInto(a.value, out, count);
+  if (!n) {
+    diags_.Report(DiagKind::BadValue, a.loc,
+                  fmt::format("attribute '{}' of <{}> must be numbers, got '{}'", attr, e.Name(),
+                              a.value));
+    return false;
+  }
+  if (*n != count) {
+    diags_.Report(DiagKind::BadValue, a.loc,
+                  fmt::format("attribute '{}' of <{}> must have {} value{}, got {} ('{}')", attr,
+                              e.Name(), count, count == 1 ? "" : "s", *n, a.value));
+    return false;
+  }
+  if (finite == Finite::Required) {
+    for (size_t i = 0; i < count; ++i) {
+      if (!std::isfinite(out[i])) {
+        diags_.Report(DiagKind::NonFinite, a.loc,
+                      fmt::format("attribute '{}' of <{}> must be finite, got '{}'", attr,
+                                  e.Name(), a.value));
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 std::optional<std::vector<double>> AttributeReader::Doubles(const XmlElement& e,
                                                             std::string_view attr, size_t count,
                                                             Need need, Finite finite) {
+  if (count > 0) {
+    std::vector<double> values(count);
+    if (!Fixed(e, attr, values.data(), count, need, finite)) return std::nullopt;
+    return values;
+  }
   XmlAttribute a = e.Attribute(attr);
   if (!a.present()) {
     if (need == Need::Required) ReportMissing(e, attr);
@@ -76,12 +130,6 @@ std::optional<std::vector<double>> AttributeReader::Doubles(const XmlElement& e,
     diags_.Report(DiagKind::BadValue, a.loc,
                   fmt::format("attribute '{}' of <{}> must be numbers, got '{}'", attr, e.Name(),
                               a.value));
-    return std::nullopt;
-  }
-  if (count && values->size() != count) {
-    diags_.Report(DiagKind::BadValue, a.loc,
-                  fmt::format("attribute '{}' of <{}> must have {} value{}, got {} ('{}')", attr,
-                              e.Name(), count, count == 1 ? "" : "s", values->size(), a.value));
     return std::nullopt;
   }
   if (finite == Finite::Required) {
@@ -99,17 +147,17 @@ std::optional<std::vector<double>> AttributeReader::Doubles(const XmlElement& e,
 
 std::optional<double> AttributeReader::Double(const XmlElement& e, std::string_view attr,
                                               Need need, Finite finite) {
-  auto v = Doubles(e, attr, 1, need, finite);
-  if (!v) return std::nullopt;
-  return (*v)[0];
+  double v;
+  if (!Fixed(e, attr, &v, 1, need, finite)) return std::nullopt;
+  return v;
 }
 
 std::optional<Eigen::Vector3d> AttributeReader::Vector3(const XmlElement& e,
                                                         std::string_view attr, Need need,
                                                         Finite finite) {
-  auto v = Doubles(e, attr, 3, need, finite);
-  if (!v) return std::nullopt;
-  return Eigen::Vector3d((*v)[0], (*v)[1], (*v)[2]);
+  Eigen::Vector3d v;
+  if (!Fixed(e, attr, v.data(), 3, need, finite)) return std::nullopt;
+  return v;
 }
 
 std::optional<bool> AttributeReader::Bool(const XmlElement& e, std::string_view attr, Need need) {
@@ -129,13 +177,15 @@ std::optional<bool> AttributeReader::Bool(const XmlElement& e, std::string_view 
 
 void AttributeReader::WarnUnknownAttributes(const XmlElement& e,
                                             std::initializer_list<std::string_view> known) {
-  e.ForEachAttribute([&](const XmlAttribute& a) {
+  // compare names first; build the located attribute only for an unknown one
+  e.ForEachAttributeName([&](std::string_view name) {
     for (std::string_view k : known) {
-      if (k == a.name) return;
+      if (k == name) return;
     }
-    if (a.name.starts_with("xmlns")) return;
-    diags_.Report(DiagKind::UnknownAttribute, a.loc,
-                  fmt::format("unknown attribute '{}' on <{}> is ignored", a.name, e.Name()));
+    if (name.starts_with("xmlns")) return;
+    const std::string copy(name);  // the view may point into reused storage
+    diags_.Report(DiagKind::UnknownAttribute, e.Attribute(copy).loc,
+                  fmt::format("unknown attribute '{}' on <{}> is ignored", copy, e.Name()));
   });
 }
 

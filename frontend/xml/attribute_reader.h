@@ -21,6 +21,10 @@ namespace mdlc::xml {
 std::optional<double> ParseDouble(std::string_view text);
 /// Whitespace-separated doubles; nullopt if any token is not a number.
 std::optional<std::vector<double>> ParseDoubleList(std::string_view text);
+/// Up to `capacity` whitespace-separated doubles into `out`, without
+/// allocating. Returns how many the text holds (which may exceed capacity;
+/// only the first `capacity` are stored), or nullopt if one is not a number.
+std::optional<size_t> ParseDoublesInto(std::string_view text, double* out, size_t capacity);
 
 enum class Need { Optional, Required };
 enum class Finite { Required, NotRequired };
@@ -46,6 +50,11 @@ class AttributeReader {
   void WarnUnknownAttributes(const XmlElement& e, std::initializer_list<std::string_view> known);
 
   void ReportMissing(const XmlElement& e, std::string_view attr);
+  /// Reads exactly `count` doubles into `out` (the common fixed-size case,
+  /// with no allocation). Returns false after reporting a problem, or when
+  /// the attribute is absent (reporting only if required).
+  bool Fixed(const XmlElement& e, std::string_view attr, double* out, size_t count, Need need,
+             Finite finite);
   DiagnosticEngine& diags() { return diags_; }
 
  private:

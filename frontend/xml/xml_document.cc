@@ -4,6 +4,7 @@
 #include <libxml/tree.h>
 #include <libxml/xmlerror.h>
 
+#include <array>
 #include <cstring>
 #include <mutex>
 #include <vector>
@@ -61,9 +62,25 @@ void OnXmlError(void* user, xmlErrorPtr error) {
   sink->diags->Report(DiagKind::XmlSyntax, loc, "Failed to parse XML: " + message);
 }
 
-bool IsNameChar(char c) {
-  return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == ':' || c == '-' ||
-         c == '.' || static_cast<unsigned char>(c) >= 0x80;
+// XML name characters (ASCII letters, digits, _ : - . and any non-ASCII byte),
+// as a table: this runs for every byte of every start tag
+constexpr auto kNameChar = [] {
+  std::array<bool, 256> table{};
+  for (int c = 0; c < 256; ++c) {
+    table[c] = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+               c == '_' || c == ':' || c == '-' || c == '.' || c >= 0x80;
+  }
+  return table;
+}();
+bool IsNameChar(char c) { return kNameChar[static_cast<unsigned char>(c)]; }
+
+// prefix:name == qualified, without building a string
+bool QualifiedNameEquals(const xmlChar* prefix, const xmlChar* name, std::string_view qualified) {
+  std::string_view local(reinterpret_cast<const char*>(name));
+  if (!prefix) return local == qualified;
+  std::string_view p(reinterpret_cast<const char*>(prefix));
+  return qualified.size() == p.size() + 1 + local.size() && qualified.starts_with(p) &&
+         qualified[p.size()] == ':' && qualified.ends_with(local);
 }
 
 // Scans markup from `pos`, skipping comments, PIs, CDATA, DOCTYPE and end
@@ -135,8 +152,11 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
 
   ErrorSink sink{&diags, file, &sources};
   xmlSetStructuredErrorFunc(&sink, OnXmlError);
+  // NOBLANKS and COMPACT: no nodes for indentation, small text inline; mdlc
+  // only reads the tree, and locations come from the buffer itself
   const int options = XML_PARSE_NONET | XML_PARSE_HUGE | XML_PARSE_BIG_LINES |
-                      XML_PARSE_NOWARNING | XML_PARSE_NOERROR;
+                      XML_PARSE_NOWARNING | XML_PARSE_NOERROR | XML_PARSE_NOBLANKS |
+                      XML_PARSE_COMPACT;
   xmlDocPtr doc = xmlReadMemory(text.data(), static_cast<int>(text.size()),
                                 sources.Path(file).c_str(), nullptr, options);
   xmlSetStructuredErrorFunc(nullptr, nullptr);
@@ -158,7 +178,6 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
 bool XmlDocument::AssignOffsets(DiagnosticEngine& diags) {
   std::string_view text = sources_->Contents(file_);
   size_t pos = 0;
-  std::string scratch;
   // iterative pre-order walk over element nodes: document order
   xmlNode* node = xmlDocGetRootElement(doc_);
   while (node) {
@@ -182,8 +201,7 @@ bool XmlDocument::AssignOffsets(DiagnosticEngine& diags) {
         i = close == std::string_view::npos ? text.size() : close + 1;
         for (xmlAttr* a = node->properties; a; a = a->next) {
           if (GetOffset(a->_private)) continue;
-          std::string_view qn = QualifiedName(a->ns ? a->ns->prefix : nullptr, a->name, scratch);
-          if (qn == attr_name) {
+          if (QualifiedNameEquals(a->ns ? a->ns->prefix : nullptr, a->name, attr_name)) {
             SetOffset(a->_private, name_start);
             break;
           }
@@ -274,13 +292,18 @@ XmlAttribute XmlElement::MakeAttribute(_xmlAttr* a) const {
 }
 
 XmlAttribute XmlElement::Attribute(std::string_view name) const {
-  std::string scratch;
   for (xmlAttr* a = node_->properties; a; a = a->next) {
-    if (QualifiedName(a->ns ? a->ns->prefix : nullptr, a->name, scratch) == name) {
+    if (QualifiedNameEquals(a->ns ? a->ns->prefix : nullptr, a->name, name)) {
       return MakeAttribute(a);
     }
   }
   return {};
+}
+
+std::string_view XmlElement::AttributeName(_xmlAttr* a) {
+  if (!(a->ns && a->ns->prefix)) return reinterpret_cast<const char*>(a->name);
+  thread_local std::string storage;
+  return QualifiedName(a->ns->prefix, a->name, storage);
 }
 
 std::string XmlElement::Text() const {

@@ -61,6 +61,9 @@ class XmlElement {
   /// Every attribute in document order, calling f(XmlAttribute).
   template <typename F>
   void ForEachAttribute(F&& f) const;
+  /// Every attribute's qualified name in document order, calling f(string_view).
+  template <typename F>
+  void ForEachAttributeName(F&& f) const;
   /// Concatenated text content of the element (entity references skipped).
   std::string Text() const;
 
@@ -69,6 +72,7 @@ class XmlElement {
  private:
   friend class XmlDocument;
   XmlAttribute MakeAttribute(_xmlAttr* attr) const;
+  static std::string_view AttributeName(_xmlAttr* attr);
   _xmlAttr* FirstAttribute() const;
   static _xmlAttr* NextAttribute(_xmlAttr* attr);
 
@@ -100,6 +104,11 @@ class XmlDocument {
   FileId file_;
   const SourceManager* sources_ = nullptr;
 };
+
+template <typename F>
+void XmlElement::ForEachAttributeName(F&& f) const {
+  for (_xmlAttr* a = FirstAttribute(); a; a = NextAttribute(a)) f(AttributeName(a));
+}
 
 template <typename F>
 void XmlElement::ForEachAttribute(F&& f) const {
