@@ -6,8 +6,6 @@
 // stage includes the ones above it:
 //
 //   libxml2_parse     xmlReadMemory + xmlFreeDoc with mdlc's options: the floor
-//   libxml2_parse_compact  the same + XML_PARSE_NOBLANKS | XML_PARSE_COMPACT
-//                     (a what-if: how much a leaner DOM would save)
 //   xml_document      mdlc's XmlDocument::Parse (the above + source offsets)
 //   frontend          URDF -> IR (frontend::ReadModel)
 //   frontend_passes   ... + the default pass pipeline
@@ -45,8 +43,10 @@ namespace {
 constexpr int kSizes[] = {10, 100, 1000, 10000};
 
 // what frontend/xml/xml_document.cc passes to xmlReadMemory
+// keep in step with frontend/xml/xml_document.cc
 constexpr int kMdlcXmlOptions = XML_PARSE_NONET | XML_PARSE_HUGE | XML_PARSE_BIG_LINES |
-                                XML_PARSE_NOWARNING | XML_PARSE_NOERROR;
+                                XML_PARSE_NOWARNING | XML_PARSE_NOERROR | XML_PARSE_NOBLANKS |
+                                XML_PARSE_COMPACT;
 
 const std::string& Model(Shape shape, int n) {
   static std::map<std::pair<Shape, int>, std::string> cache;
@@ -96,12 +96,6 @@ void Libxml2Parse(benchmark::State& state, Shape shape, int options) {
 
 void BM_Libxml2Parse(benchmark::State& state, Shape shape) {
   Libxml2Parse(state, shape, kMdlcXmlOptions);
-}
-
-// what-if: no whitespace-only text nodes, small text stored inside the nodes
-// (mdlc never edits the tree); about a third fewer nodes to allocate and free
-void BM_Libxml2ParseCompact(benchmark::State& state, Shape shape) {
-  Libxml2Parse(state, shape, kMdlcXmlOptions | XML_PARSE_NOBLANKS | XML_PARSE_COMPACT);
 }
 
 void BM_XmlDocument(benchmark::State& state, Shape shape) {
@@ -176,7 +170,6 @@ void RegisterAll() {
   };
   static constexpr Stage kStages[] = {
       {"libxml2_parse", BM_Libxml2Parse},
-      {"libxml2_parse_compact", BM_Libxml2ParseCompact},
       {"xml_document", BM_XmlDocument},
       {"frontend", BM_Frontend},
       {"frontend_passes", BM_FrontendPasses},

@@ -20,7 +20,7 @@ std::string FormatSummary(const backend::CompiledModel& model) {
       }
     }
     for (const auto& j : plant.joints) joints += j.model.index() == m;
-    out += fmt::format("  {}: {} bodies, {} joints, mass {} kg\n", plant.model_instances[m],
+    out += fmt::format("  {}: {} bodies, {} joints, mass {:.6g} kg\n", plant.model_instances[m],
                        bodies, joints, mass);
   }
   double total_mass = 0;
@@ -44,7 +44,7 @@ std::string FormatSummary(const backend::CompiledModel& model) {
                      model.scene.geometries.size(), proximity, illustration, perception);
   out += fmt::format("actuators: {}, constraints: {}, frames: {}\n", plant.actuators.size(),
                      plant.constraints.size(), plant.frames.size());
-  out += fmt::format("total mass: {} kg\n", total_mass);
+  out += fmt::format("total mass: {:.6g} kg\n", total_mass);
   return out;
 }
 
