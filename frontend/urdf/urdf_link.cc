@@ -152,14 +152,14 @@ void UrdfReader::ReadGeometryElement(const xml::XmlElement& e, BodyId body, Symb
       diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
                      "tag 'verbose' found as a child of 'collision' is currently unsupported and "
                      "will be ignored");
-    } else if (ctag.starts_with("drake:")) {
-      diags().Report(DiagKind::NotImplementedYet, child.GetLoc(),
-                     fmt::format("<{}> is not implemented yet; the element is ignored", ctag));
+    } else if (is_visual ? ReadVisualExtension(child, g) : ReadCollisionExtension(child, g)) {
+      // a drake: extension, read
     } else {
       diags().Report(DiagKind::UnknownElement, child.GetLoc(),
                      fmt::format("unknown element <{}> in <{}> is ignored", ctag, tag));
     }
   }
+  if (is_visual && !FinishVisual(e, g)) return;
   module().Add(std::move(g));
 }
 

@@ -69,15 +69,30 @@ std::optional<ModelId> UrdfReader::Read() {
     } else if (tag == "loop_joint") {
       diags().Report(DiagKind::NotImplemented, e.GetLoc(),
                      "loop joints are not supported: the plant must be a tree");
+    } else if (tag == "drake:joint") {
+      if (!Ignored(e)) ReadDrakeJoint(e);
+    } else if (tag == "drake:collision_filter_group" || tag == "drake:linear_bushing_rpy" ||
+               tag == "drake:linear_spring_damper" || tag == "drake:ball_constraint" ||
+               tag == "drake:distance_constraint" || tag == "drake:tendon_constraint") {
+      late_elements_.push_back(e);
     } else if (tag.starts_with("drake:")) {
-      diags().Report(DiagKind::NotImplementedYet, e.GetLoc(),
-                     fmt::format("<{}> is not implemented yet; the element is ignored", tag));
+      diags().Report(DiagKind::UnknownElement, e.GetLoc(),
+                     fmt::format("unknown element <{}> in <robot> is ignored", tag));
     } else {
       diags().Report(DiagKind::UnknownElement, e.GetLoc(),
                      fmt::format("unknown element <{}> in <robot> is ignored", tag));
     }
   }
   for (const auto& e : transmissions_) ReadTransmission(e);
+  for (const auto& e : late_elements_) {
+    std::string_view tag = e.Name();
+    if (tag == "drake:collision_filter_group") ReadCollisionFilterGroup(e);
+    else if (tag == "drake:linear_bushing_rpy") ReadLinearBushing(e);
+    else if (tag == "drake:linear_spring_damper") ReadLinearSpringDamper(e);
+    else if (tag == "drake:ball_constraint") ReadBallConstraint(e);
+    else if (tag == "drake:distance_constraint") ReadDistanceConstraint(e);
+    else if (tag == "drake:tendon_constraint") ReadTendonConstraint(e);
+  }
   return model_;
 }
 

@@ -54,6 +54,32 @@ class UrdfReader {
   void ReadFrame(const xml::XmlElement& e);
   // urdf_transmission.cc
   void ReadTransmission(const xml::XmlElement& e);
+  /// drake:rotor_inertia, drake:gear_ratio, drake:controller_gains under a
+  /// transmission's <actuator> (EXT-012..014). Returns true when `child`
+  /// was one of them (handled), false when it is something else.
+  bool ReadActuatorExtension(const xml::XmlElement& child, ir::Actuator& actuator);
+
+  // urdf_drake_joint.cc: <drake:joint> (EXT-001..003)
+  void ReadDrakeJoint(const xml::XmlElement& e);
+
+  // urdf_drake_elements.cc: model-level drake: elements, read after every
+  // link and joint so they may name any of them (EXT-040, EXT-050..054)
+  void ReadCollisionFilterGroup(const xml::XmlElement& e);
+  void ReadLinearBushing(const xml::XmlElement& e);
+  void ReadLinearSpringDamper(const xml::XmlElement& e);
+  void ReadBallConstraint(const xml::XmlElement& e);
+  void ReadDistanceConstraint(const xml::XmlElement& e);
+  void ReadTendonConstraint(const xml::XmlElement& e);
+
+  // urdf_geometry_properties.cc: drake: children of <collision> and <visual>
+  // (EXT-020, EXT-021, EXT-030, EXT-031, URDF-033). Each returns true when
+  // `child` was one of its elements (handled).
+  bool ReadCollisionExtension(const xml::XmlElement& child, ir::Geometry& geometry);
+  bool ReadVisualExtension(const xml::XmlElement& child, ir::Geometry& geometry);
+  /// After all of a visual's children were read: settle its roles (EXT-030)
+  /// and role-dependent properties (EXT-031). Returns false when the visual
+  /// ends with no role and must be dropped.
+  bool FinishVisual(const xml::XmlElement& visual, ir::Geometry& geometry);
 
   void CheckUniqueName(std::unordered_map<uint32_t, Loc>& seen, Symbol name, Loc loc,
                        std::string_view kind);
@@ -66,6 +92,7 @@ class UrdfReader {
   std::unordered_map<uint32_t, Loc> link_names_, joint_names_, frame_names_;
   std::unordered_map<uint32_t, JointId> joint_ids_;  // by Symbol value
   std::vector<xml::XmlElement> transmissions_;  // read after every joint
+  std::vector<xml::XmlElement> late_elements_;  // drake: model-level elements, read last
   // geometry names already used, keyed by (body, role, name); the value is
   // the last suffix tried for that name
   struct GeometryNameKey {

@@ -75,10 +75,13 @@ void UrdfReader::ReadTransmission(const xml::XmlElement& e) {
     diags().Report(DiagKind::MissingElement, e.GetLoc(), "<transmission> has no <joint>");
     return;
   }
+  ir::Actuator a;
   for (const auto& part : {actuator, joint}) {
     for (auto c = part.FirstChild(); c; c = c.NextSibling()) {
       if (c.Name() == "mechanicalReduction") {
         check_reduction(c);
+      } else if (part.raw() == actuator.raw() && ReadActuatorExtension(c, a)) {
+        // drake:rotor_inertia, drake:gear_ratio, drake:controller_gains
       } else if (!IsSilentlyIgnored(c.Name())) {
         warn_unsupported(c, part.Name());
       }
@@ -115,13 +118,22 @@ void UrdfReader::ReadTransmission(const xml::XmlElement& e) {
                                *joint_name));
     return;
   }
-  ir::Actuator a;
   a.name = module().Intern(*actuator_name);
   a.model = model_;
   a.loc = actuator.GetLoc();
   a.joint = {target.name, joint.Attribute("name").loc, {}};
   a.effort_limit = effort;
   module().Add(std::move(a));
+}
+
+bool UrdfReader::ReadActuatorExtension(const xml::XmlElement& child, ir::Actuator& actuator) {
+  std::string_view tag = child.Name();
+  if (tag != "drake:rotor_inertia" && tag != "drake:gear_ratio" && tag != "drake:controller_gains") {
+    return false;
+  }
+  diags().Report(DiagKind::NotImplementedYet, child.GetLoc(),
+                 fmt::format("<{}> is not implemented yet; the element is ignored", tag));
+  return true;
 }
 
 }  // namespace mdlc::frontend::urdf
