@@ -2,6 +2,20 @@
 
 namespace mdlc::ir {
 
+JointLimits JointLimits::Unbounded(int nv) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const auto n = static_cast<size_t>(nv);
+  JointLimits l;
+  l.lower.assign(n, -kInf);
+  l.upper.assign(n, kInf);
+  l.velocity_lower.assign(n, -kInf);
+  l.velocity_upper.assign(n, kInf);
+  l.acceleration_lower.assign(n, -kInf);
+  l.acceleration_upper.assign(n, kInf);
+  l.effort.assign(n, kInf);
+  return l;
+}
+
 std::string_view JointTypeName(JointType type) {
   switch (type) {
     case JointType::Revolute: return "revolute";

@@ -90,6 +90,9 @@ int JointVelocityCount(JointType type);
 
 /// Limits per velocity coordinate; +-infinity when unbounded.
 struct JointLimits {
+  /// Unbounded limits for `nv` velocity coordinates.
+  static JointLimits Unbounded(int nv);
+
   std::vector<double> lower, upper;              // position
   std::vector<double> velocity_lower, velocity_upper;
   std::vector<double> acceleration_lower, acceleration_upper;

@@ -143,14 +143,7 @@ void BuildKinematicTreePass::AddFloatingJoint(PassContext& ctx, BodyId body) {
   j.type = ir::JointType::QuaternionFloating;
   j.parent = {m.bodies[0].name, {}, ir::kWorldBody};
   j.child = {b.name, b.loc, body};
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  j.limits.lower.assign(6, -kInf);
-  j.limits.upper.assign(6, kInf);
-  j.limits.velocity_lower.assign(6, -kInf);
-  j.limits.velocity_upper.assign(6, kInf);
-  j.limits.acceleration_lower.assign(6, -kInf);
-  j.limits.acceleration_upper.assign(6, kInf);
-  j.limits.effort.assign(6, kInf);
+  j.limits = ir::JointLimits::Unbounded(6);
   j.damping.assign(6, 0.0);
   j.unnamed = true;
   m.Add(std::move(j));

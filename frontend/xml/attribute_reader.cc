@@ -32,35 +32,38 @@ std::optional<double> ParseDouble(std::string_view text) {
   return value;
 }
 
-std::optional<size_t> ParseDoublesInto(std::string_view text, double* out, size_t capacity) {
-  size_t count = 0, i = 0;
+namespace {
+// Calls f(value) for each whitespace-separated number; false at the first
+// token that is not a number.
+template <typename F>
+bool ForEachNumber(std::string_view text, F&& f) {
+  size_t i = 0;
   while (true) {
     while (i < text.size() && IsSpace(text[i])) ++i;
-    if (i >= text.size()) break;
+    if (i >= text.size()) return true;
     size_t j = i;
     while (j < text.size() && !IsSpace(text[j])) ++j;
     auto v = ParseDouble(text.substr(i, j - i));
-    if (!v) return std::nullopt;
-    if (count < capacity) out[count] = *v;
-    ++count;
+    if (!v) return false;
+    f(*v);
     i = j;
   }
+}
+}  // namespace
+
+std::optional<size_t> ParseDoublesInto(std::string_view text, double* out, size_t capacity) {
+  size_t count = 0;
+  const bool ok = ForEachNumber(text, [&](double v) {
+    if (count < capacity) out[count] = v;
+    ++count;
+  });
+  if (!ok) return std::nullopt;
   return count;
 }
 
 std::optional<std::vector<double>> ParseDoubleList(std::string_view text) {
   std::vector<double> out;
-  size_t i = 0;
-  while (true) {
-    while (i < text.size() && IsSpace(text[i])) ++i;
-    if (i >= text.size()) break;
-    size_t j = i;
-    while (j < text.size() && !IsSpace(text[j])) ++j;
-    auto v = ParseDouble(text.substr(i, j - i));
-    if (!v) return std::nullopt;
-    out.push_back(*v);
-    i = j;
-  }
+  if (!ForEachNumber(text, [&](double v) { out.push_back(v); })) return std::nullopt;
   return out;
 }
 
