@@ -86,6 +86,7 @@ class PlantBuilder {
       body.scoped_name = src.is_world ? "world" : Scoped(src.model, src.name);
       body.model = src.model;
       body.is_world = src.is_world;
+      body.surface_velocity_axis = src.surface_velocity_axis;
       if (src.inertial) SetMassProperties(*src.inertial, body);
     }
   }

@@ -35,6 +35,7 @@ struct PlantBody {
   Eigen::Vector3d p_BoBcm_B = Eigen::Vector3d::Zero();  // center of mass in B
   Eigen::Matrix3d I_BBcm_B = Eigen::Matrix3d::Zero();   // inertia about Bcm, in B
   bool is_world = false;
+  std::optional<Eigen::Vector3d> surface_velocity_axis;  // unit, in B (EXT-060)
   // topology: the joint whose child this body is, its parent body and its
   // depth in the tree (world: invalid ids, level 0)
   JointId inbound_joint;

@@ -120,6 +120,10 @@ class PlantJsonEmitter {
     w_.EndArray();
     w_.Key("X_WB");
     Pose(X_WB);
+    if (body.surface_velocity_axis) {
+      w_.Key("surface_velocity_axis");
+      Vector(*body.surface_velocity_axis);
+    }
     w_.EndObject();
   }
 

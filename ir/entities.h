@@ -59,6 +59,8 @@ struct Body {
   Loc loc;
   std::optional<Inertial> inertial;  // absent: massless body
   bool is_world = false;             // the one world body (body 0)
+  /// drake:surface_velocity_axis (EXT-060): a unit axis in the body frame
+  std::optional<Eigen::Vector3d> surface_velocity_axis;
 };
 
 /// A frame fixed to a body: X_BF.

@@ -107,6 +107,7 @@ std::string Printer::Run() {
                           Pose(in.X_BI), Num(in.ixx), Num(in.iyy), Num(in.izz), Num(in.ixy),
                           Num(in.ixz), Num(in.iyz));
     }
+    if (b.surface_velocity_axis) out_ += " surface_velocity_axis=" + Vec(*b.surface_velocity_axis);
     out_ += Where(b.loc) + "\n";
   }
   for (size_t i = 0; i < m_.frames.size(); ++i) {
@@ -119,7 +120,20 @@ std::string Printer::Run() {
     out_ += fmt::format("  joint #{} {} model={} {} parent={} child={} X_PF={} X_CM={}", i,
                         Name(j.name), Model(j.model), JointTypeName(j.type), BodyRef(j.parent),
                         BodyRef(j.child), Pose(j.X_PF), Pose(j.X_CM));
-    if (JointVelocityCount(j.type) == 1) out_ += " axis=" + Vec(j.axis);
+    if (j.type == JointType::Curvilinear) {
+      const CurvilinearPath& path = j.curvilinear_path;
+      std::string segments;
+      for (const auto& seg : path.segments) {
+        segments += fmt::format("{}({} {})", segments.empty() ? "" : " ", Num(seg.length),
+                                Num(seg.curvature));
+      }
+      out_ += fmt::format(" path={{tangent={} normal={} segments=[{}]{}}}",
+                          Vec(path.initial_tangent), Vec(path.plane_normal), segments,
+                          path.periodic ? " periodic" : "");
+    } else if (JointVelocityCount(j.type) == 1) {
+      out_ += " axis=" + Vec(j.axis);
+    }
+    if (j.type == JointType::Screw) out_ += " pitch=" + Num(j.screw_thread_pitch);
     if (JointVelocityCount(j.type) > 0) {
       out_ += fmt::format(" lower={} upper={} velocity={} effort={} damping={}",
                           List(j.limits.lower), List(j.limits.upper),
@@ -160,20 +174,60 @@ std::string Printer::Run() {
   }
   for (size_t i = 0; i < m_.actuators.size(); ++i) {
     const Actuator& a = m_.actuators[i];
-    out_ += fmt::format("  actuator #{} {} model={} joint={} effort={} gear={} rotor_inertia={}{}\n",
+    out_ += fmt::format("  actuator #{} {} model={} joint={} effort={} gear={} rotor_inertia={}",
                         i, Name(a.name), Model(a.model), JointRef(a.joint), Num(a.effort_limit),
-                        Num(a.gear_ratio), Num(a.rotor_inertia), Where(a.loc));
+                        Num(a.gear_ratio), Num(a.rotor_inertia));
+    if (a.kp) out_ += " kp=" + Num(*a.kp);
+    if (a.kd) out_ += " kd=" + Num(*a.kd);
+    out_ += Where(a.loc) + "\n";
   }
   for (size_t i = 0; i < m_.constraints.size(); ++i) {
     const Constraint& c = m_.constraints[i];
     out_ += fmt::format("  constraint #{} {} model={}", i, ConstraintTypeName(c.type), Model(c.model));
-    if (c.type == ConstraintType::Coupler) {
-      out_ += fmt::format(" joint0={} joint1={} gear_ratio={} offset={}", JointRef(c.joint0),
-                          JointRef(c.joint1), Num(c.gear_ratio), Num(c.offset));
-    } else {
-      out_ += fmt::format(" body_A={} body_B={}", BodyRef(c.body_A), BodyRef(c.body_B));
+    switch (c.type) {
+      case ConstraintType::Coupler:
+        out_ += fmt::format(" joint0={} joint1={} gear_ratio={} offset={}", JointRef(c.joint0),
+                            JointRef(c.joint1), Num(c.gear_ratio), Num(c.offset));
+        break;
+      case ConstraintType::Ball:
+        out_ += fmt::format(" body_A={} p_AP={} body_B={} p_BQ={}", BodyRef(c.body_A),
+                            Vec(c.X_AP.p), BodyRef(c.body_B), Vec(c.X_BQ.p));
+        break;
+      case ConstraintType::Distance:
+        out_ += fmt::format(" body_A={} p_AP={} body_B={} p_BQ={} distance={} stiffness={} "
+                            "damping={}",
+                            BodyRef(c.body_A), Vec(c.X_AP.p), BodyRef(c.body_B), Vec(c.X_BQ.p),
+                            Num(c.distance), Num(c.stiffness), Num(c.damping));
+        break;
+      case ConstraintType::Weld:
+        out_ += fmt::format(" body_A={} X_AP={} body_B={} X_BQ={}", BodyRef(c.body_A),
+                            Pose(c.X_AP), BodyRef(c.body_B), Pose(c.X_BQ));
+        break;
+      case ConstraintType::Tendon: {
+        std::string joints;
+        for (const auto& j : c.joints) joints += (joints.empty() ? "" : " ") + JointRef(j);
+        out_ += fmt::format(" joints=[{}] a={} offset={} lower={} upper={} stiffness={} damping={}",
+                            joints, List(c.a), Num(c.offset), Num(c.lower), Num(c.upper),
+                            Num(c.stiffness), Num(c.damping));
+        break;
+      }
     }
     out_ += Where(c.loc) + "\n";
+  }
+  for (size_t i = 0; i < m_.filter_groups.size(); ++i) {
+    const CollisionFilterGroup& g = m_.filter_groups[i];
+    auto group_ref = [&](const Ref<FilterGroupId>& r) {
+      if (!r.resolved()) return fmt::format("?{}", Name(r.name));
+      const CollisionFilterGroup& target = m_.filter_groups[r.id.index()];
+      return fmt::format("{}::{}", Model(target.model), m_.Text(target.name));
+    };
+    std::string members, groups, ignored;
+    for (const auto& r : g.members) members += (members.empty() ? "" : " ") + BodyRef(r);
+    for (const auto& r : g.member_groups) groups += (groups.empty() ? "" : " ") + group_ref(r);
+    for (const auto& r : g.ignored_groups) ignored += (ignored.empty() ? "" : " ") + group_ref(r);
+    out_ += fmt::format("  collision_filter_group #{} {} model={} members=[{}] member_groups=[{}] "
+                        "ignored=[{}]{}\n",
+                        i, Name(g.name), Model(g.model), members, groups, ignored, Where(g.loc));
   }
   for (size_t i = 0; i < m_.force_elements.size(); ++i) {
     const ForceElement& f = m_.force_elements[i];

@@ -33,10 +33,29 @@ class Verifier {
     }
     for (const Actuator& a : m_.actuators) CheckRef(a.joint, m_.joints.size(), "actuator joint");
     for (const Constraint& c : m_.constraints) {
-      if (c.type == ConstraintType::Coupler) {
-        CheckRef(c.joint0, m_.joints.size(), "coupler joint");
-        CheckRef(c.joint1, m_.joints.size(), "coupler joint");
+      CheckModel(c.model, c.loc, "constraint");
+      switch (c.type) {
+        case ConstraintType::Coupler:
+          CheckRef(c.joint0, m_.joints.size(), "coupler joint");
+          CheckRef(c.joint1, m_.joints.size(), "coupler joint");
+          break;
+        case ConstraintType::Ball:
+        case ConstraintType::Distance:
+        case ConstraintType::Weld:
+          CheckRef(c.body_A, m_.bodies.size(), "constraint body");
+          CheckRef(c.body_B, m_.bodies.size(), "constraint body");
+          break;
+        case ConstraintType::Tendon:
+          for (const auto& j : c.joints) CheckRef(j, m_.joints.size(), "tendon joint");
+          if (c.joints.size() != c.a.size()) Fail(c.loc, "tendon joints and coefficients differ in number");
+          break;
       }
+    }
+    for (const CollisionFilterGroup& g : m_.filter_groups) {
+      CheckModel(g.model, g.loc, "collision filter group");
+      for (const auto& r : g.members) CheckRef(r, m_.bodies.size(), "filter group member");
+      for (const auto& r : g.member_groups) CheckRef(r, m_.filter_groups.size(), "member group");
+      for (const auto& r : g.ignored_groups) CheckRef(r, m_.filter_groups.size(), "ignored group");
     }
     for (const ForceElement& f : m_.force_elements) {
       CheckModel(f.model, f.loc, "force element");

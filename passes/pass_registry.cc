@@ -13,6 +13,7 @@ const std::vector<PassInfo>& RegisteredPasses() {
   static const std::vector<PassInfo> passes = {
       Info<CreateResolveNamesPass>(),
       Info<CreateCheckJointsPass>(),
+      Info<CreateCheckModelElementsPass>(),
       Info<CreateBuildKinematicTreePass>(),
       Info<CreateCheckInertiaPass>(),
       Info<CreateResolveAssetsPass>(),

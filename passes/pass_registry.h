@@ -29,6 +29,7 @@ std::unique_ptr<Pass> CreateResolveNamesPass();
 std::unique_ptr<Pass> CreateBuildKinematicTreePass();
 std::unique_ptr<Pass> CreateCheckInertiaPass();
 std::unique_ptr<Pass> CreateCheckJointsPass();
+std::unique_ptr<Pass> CreateCheckModelElementsPass();
 std::unique_ptr<Pass> CreateResolveAssetsPass();
 
 }  // namespace mdlc::passes

@@ -7,7 +7,14 @@
 // Lookup (COMMON-030..033): "world" is the world body everywhere; an
 // unscoped name is looked up in the referring entity's own instance; a
 // scoped name "a::x" in the nested instance "<own>::a", then in "a".
+// Collision filter groups (COMMON-053, Drake's CollisionFilterGroupResolver)
+// are stricter: a member names a body and a member or ignored group names a
+// group of the group's own instance or of one nested in it ("<own>::a"), never
+// the world body; only groups of the world or default instance (the global
+// scope of model directives) name top-level instances ("a::x" in "a").
 #include <fmt/format.h>
+
+#include <type_traits>
 
 #include "passes/name_index.h"
 #include "passes/pass_registry.h"
@@ -33,6 +40,10 @@ class ResolveNamesPass : public Pass {
   void ResolveFrame(PassContext& ctx, ir::FrameRef& ref, ModelId scope,
                     const NameIndex<FrameId>& frames, const NameIndex<BodyId>& bodies,
                     std::string_view user);
+  // a reference from collision filter group `group` (COMMON-053)
+  template <typename IdT, typename Table>
+  void ResolveForGroup(PassContext& ctx, ir::Ref<IdT>& ref, const ir::CollisionFilterGroup& group,
+                       const NameIndex<IdT>& index, const Table& table, std::string_view kind);
 
   std::optional<ModelIndex> models_;
 };
@@ -118,6 +129,60 @@ void ResolveNamesPass::ResolveFrame(PassContext& ctx, ir::FrameRef& ref, ModelId
                                text));
 }
 
+template <typename IdT, typename Table>
+void ResolveNamesPass::ResolveForGroup(PassContext& ctx, ir::Ref<IdT>& ref,
+                                       const ir::CollisionFilterGroup& group,
+                                       const NameIndex<IdT>& index, const Table& table,
+                                       std::string_view kind) {
+  if (ref.resolved()) return;
+  ir::Module& m = ctx.module;
+  const std::string group_name = m.ScopedName(group.model, group.name);
+  std::string_view text = m.Text(ref.name);
+  auto split = SplitScopedName(text);
+  if (!split || split->element.empty()) {
+    ctx.diags.Report(DiagKind::InvalidName, ref.loc,
+                     fmt::format("collision filter group '{}': '{}' is not a valid scoped name",
+                                 group_name, text));
+    return;
+  }
+  const bool global = group.model == ir::kWorldModel || group.model == ir::kDefaultModel;
+  std::optional<ModelId> model = group.model;
+  if (!split->scope.empty()) {
+    model = global ? models_->Find(split->scope)
+                   : models_->Find(fmt::format("{}::{}", m.Text(m[group.model].name),
+                                               split->scope));
+  }
+  if (model) {
+    const Symbol element = m.symbols.Find(split->element);
+    if (auto id = element.empty() ? std::nullopt : index.Find(*model, element)) {
+      ref.id = *id;
+      return;
+    }
+  }
+  // Drake qualifies the name with the group's instance before looking it up
+  const std::string full = model    ? fmt::format("{}::{}", m.Text(m[*model].name), split->element)
+                           : global ? std::string(text)
+                                    : fmt::format("{}::{}", m.Text(m[group.model].name), text);
+  auto diag = ctx.diags.Report(
+      DiagKind::UnknownReference, ref.loc,
+      fmt::format("collision filter group '{}' names unknown {} '{}': {} with name '{}' not found",
+                  group_name, kind, text, kind, full));
+  if constexpr (std::is_same_v<IdT, BodyId>) {
+    if (text == "world") {
+      diag.Note(ref.loc, "the world body belongs to no model instance's collision filter groups");
+      return;
+    }
+  }
+  if (!model) return;
+  std::vector<std::string_view> candidates;
+  for (const auto& entity : table) {
+    if (entity.model == *model) candidates.push_back(m.Text(entity.name));
+  }
+  if (auto best = ClosestName(split->element, candidates)) {
+    diag.Note(ref.loc, fmt::format("did you mean '{}'?", *best));
+  }
+}
+
 bool ResolveNamesPass::Run(PassContext& ctx) {
   ir::Module& m = ctx.module;
   models_.emplace(m);
@@ -127,6 +192,11 @@ bool ResolveNamesPass::Run(PassContext& ctx) {
   for (size_t i = 0; i < m.joints.size(); ++i) joints.Add(m.joints[i].model, m.joints[i].name, JointId(i));
   NameIndex<FrameId> frames;
   for (size_t i = 0; i < m.frames.size(); ++i) frames.Add(m.frames[i].model, m.frames[i].name, FrameId(i));
+  // a duplicate group name is reported by check-model-elements; the first wins
+  NameIndex<FilterGroupId> groups;
+  for (size_t i = 0; i < m.filter_groups.size(); ++i) {
+    groups.Add(m.filter_groups[i].model, m.filter_groups[i].name, FilterGroupId(i));
+  }
 
   const size_t errors_before = ctx.diags.error_count();
   auto described = [&](const char* what, Symbol name) {
@@ -160,6 +230,16 @@ bool ResolveNamesPass::Run(PassContext& ctx) {
     Resolve(ctx, f.body_A, f.model, bodies, m.bodies, "link", user);
     Resolve(ctx, f.body_B, f.model, bodies, m.bodies, "link", user);
     Resolve(ctx, f.joint, f.model, joints, m.joints, "joint", user);
+  }
+  // groups may name groups defined later, in this file or another (COMMON-055)
+  for (ir::CollisionFilterGroup& g : m.filter_groups) {
+    for (auto& ref : g.members) ResolveForGroup(ctx, ref, g, bodies, m.bodies, "body");
+    for (auto& ref : g.member_groups) {
+      ResolveForGroup(ctx, ref, g, groups, m.filter_groups, "collision filter group");
+    }
+    for (auto& ref : g.ignored_groups) {
+      ResolveForGroup(ctx, ref, g, groups, m.filter_groups, "collision filter group");
+    }
   }
   return ctx.diags.error_count() == errors_before;
 }

@@ -1,23 +1,87 @@
-// urdf_joint.cc - <joint>, <frame> and <transmission> (URDF-010..024, URDF-041).
+// urdf_joint.cc - <joint> and <drake:joint> (their shared reading), <frame>
+// (URDF-010..018, URDF-041, URDF-042, EXT-001).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "frontend/urdf/urdf_reader_detail.h"
 
 namespace mdlc::frontend::urdf {
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// Drake rejects an axis shorter than this ("axis is zero")
+constexpr double kMinAxisNorm = 1e-8;
 
 // Drake's planar joint moves in the x-y plane of its frame: rotate the frame
 // so that its z axis is the URDF axis.
 Eigen::Matrix3d FrameWithZAlong(const Eigen::Vector3d& axis) {
   return Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), axis).toRotationMatrix();
 }
+
+// Which element may declare a joint type (EXT-001): the standard URDF types
+// belong in <joint>, Drake's custom ones in <drake:joint>, and planar is
+// accepted in both (Drake long supported only the custom spelling).
+enum class Spelling { Joint, DrakeJoint, Either };
+
+struct UrdfJointType {
+  std::string_view name;
+  ir::JointType type;
+  Spelling spelling;
+  bool continuous = false;  // revolute without position limits
+  bool floating = false;    // makes no joint at all
+};
+
+constexpr UrdfJointType kJointTypes[] = {
+    {"revolute", ir::JointType::Revolute, Spelling::Joint},
+    {"continuous", ir::JointType::Revolute, Spelling::Joint, true},
+    {"prismatic", ir::JointType::Prismatic, Spelling::Joint},
+    {"fixed", ir::JointType::Weld, Spelling::Joint},
+    {"floating", ir::JointType::QuaternionFloating, Spelling::Joint, false, true},
+    {"planar", ir::JointType::Planar, Spelling::Either},
+    {"ball", ir::JointType::Ball, Spelling::DrakeJoint},
+    {"universal", ir::JointType::Universal, Spelling::DrakeJoint},
+    {"screw", ir::JointType::Screw, Spelling::DrakeJoint},
+    {"curvilinear", ir::JointType::Curvilinear, Spelling::DrakeJoint},
+};
+
+const UrdfJointType* FindJointType(std::string_view name) {
+  for (const UrdfJointType& t : kJointTypes) {
+    if (t.name == name) return &t;
+  }
+  return nullptr;
+}
+
+// The drake: children of a joint element that belong to one joint type
+// (EXT-002, EXT-003); they are read by that type's helper.
+struct TypeSpecificChild {
+  std::string_view tag;
+  ir::JointType type;
+};
+constexpr TypeSpecificChild kTypeSpecificChildren[] = {
+    {"drake:screw_thread_pitch", ir::JointType::Screw},
+    {"drake:plane_normal", ir::JointType::Curvilinear},
+    {"drake:initial_tangent", ir::JointType::Curvilinear},
+    {"drake:is_periodic", ir::JointType::Curvilinear},
+    {"drake:curves", ir::JointType::Curvilinear},
+};
+
+// Drake reads no <limit> for its custom joint types: their limits stay
+// unbounded (curvilinear: the ends of an open path) and their effort
+// infinite.
+bool IgnoresLimits(ir::JointType type) {
+  return type == ir::JointType::Ball || type == ir::JointType::Universal ||
+         type == ir::JointType::Screw || type == ir::JointType::Curvilinear;
+}
 }  // namespace
 
-void UrdfReader::ReadJoint(const xml::XmlElement& e) {
+void UrdfReader::ReadJoint(const xml::XmlElement& e) { ReadAnyJoint(e, /*drake_element=*/false); }
+
+void UrdfReader::ReadAnyJoint(const xml::XmlElement& e, bool drake_element) {
+  // a copy: the view Name() returns for a prefixed name is reused by the next call
+  const std::string element(e.Name());  // "joint" or "drake:joint"
   auto name = attrs_.String(e, "name", xml::Need::Required);
   auto type = attrs_.String(e, "type", xml::Need::Required);
   attrs_.WarnUnknownAttributes(e, {"name", "type", "drake_ignore"});
@@ -25,10 +89,11 @@ void UrdfReader::ReadJoint(const xml::XmlElement& e) {
   auto child = e.Child("child");
   if (!parent) {
     diags().Report(DiagKind::MissingElement, e.GetLoc(),
-                   "<joint> is missing its <parent> element");
+                   fmt::format("<{}> is missing its <parent> element", element));
   }
   if (!child) {
-    diags().Report(DiagKind::MissingElement, e.GetLoc(), "<joint> is missing its <child> element");
+    diags().Report(DiagKind::MissingElement, e.GetLoc(),
+                   fmt::format("<{}> is missing its <child> element", element));
   }
   auto parent_link = parent ? attrs_.String(parent, "link", xml::Need::Required) : std::nullopt;
   auto child_link = child ? attrs_.String(child, "link", xml::Need::Required) : std::nullopt;
@@ -44,45 +109,64 @@ void UrdfReader::ReadJoint(const xml::XmlElement& e) {
   joint.X_PF = ReadOrigin(e);
 
   const Loc type_loc = e.Attribute("type").loc;
-  bool continuous = false;
-  if (*type == "revolute") {
-    joint.type = ir::JointType::Revolute;
-  } else if (*type == "continuous") {
-    joint.type = ir::JointType::Revolute;
-    continuous = true;
-  } else if (*type == "prismatic") {
-    joint.type = ir::JointType::Prismatic;
-  } else if (*type == "fixed") {
-    joint.type = ir::JointType::Weld;
-  } else if (*type == "floating") {
+  const UrdfJointType* kind = FindJointType(*type);
+  if (!kind) {
+    diags().Report(DiagKind::BadValue, type_loc,
+                   fmt::format("joint '{}' has unrecognized type '{}'; expected {}", *name, *type,
+                               drake_element
+                                   ? "ball, universal, screw, planar or curvilinear"
+                                   : "revolute, continuous, prismatic, fixed, floating or planar"));
+    return;
+  }
+  // the element must suit the type (EXT-001). Drake reports the mismatch and
+  // still makes the joint; so does mdlc, so that nothing else fails because
+  // of it (transmissions and mimics naming the joint, its child's parent).
+  if (drake_element && kind->spelling == Spelling::Joint) {
+    diags().Report(DiagKind::BadValue, type_loc,
+                   fmt::format("joint '{}' of type '{}' is a standard joint type: declare it with "
+                               "<joint>, not <drake:joint>",
+                               *name, *type));
+  } else if (!drake_element && kind->spelling == Spelling::DrakeJoint) {
+    diags().Report(DiagKind::BadValue, type_loc,
+                   fmt::format("joint '{}' of type '{}' is a custom joint type: declare it with "
+                               "<drake:joint>, not <joint>",
+                               *name, *type));
+  }
+  if (kind->floating) {
     // Drake makes no joint: the child stays a free body (URDF-012)
     diags().Report(DiagKind::FloatingJoint, type_loc,
                    fmt::format("joint '{}' of type 'floating' creates no joint: link '{}' becomes "
                                "a free body",
                                *name, *child_link));
     return;
-  } else if (*type == "planar") {
-    joint.type = ir::JointType::Planar;
-  } else {
-    diags().Report(DiagKind::BadValue, type_loc,
-                   fmt::format("joint '{}' has unrecognized type '{}'; expected revolute, "
-                               "continuous, prismatic, fixed, floating or planar",
-                               *name, *type));
-    return;
   }
+  joint.type = kind->type;
 
-  // the axis, in the joint frame (URDF-011)
-  const bool has_axis = joint.type == ir::JointType::Revolute ||
-                        joint.type == ir::JointType::Prismatic ||
-                        joint.type == ir::JointType::Planar;
-  if (auto axis = e.Child("axis"); axis && has_axis) {
+  // the axis, in the joint frame (URDF-011). Drake reads and checks it for
+  // every type but fixed, floating and ball; universal and curvilinear
+  // joints do not use it.
+  const bool reads_axis = joint.type != ir::JointType::Weld && joint.type != ir::JointType::Ball;
+  const bool uses_axis = joint.type == ir::JointType::Revolute ||
+                         joint.type == ir::JointType::Prismatic ||
+                         joint.type == ir::JointType::Planar || joint.type == ir::JointType::Screw;
+  if (auto axis = e.Child("axis"); axis && reads_axis) {
+    attrs_.WarnUnknownAttributes(axis, {"xyz"});
     if (auto xyz = attrs_.Vector3(axis, "xyz", xml::Need::Required)) {
-      if (xyz->norm() < 1e-12) {
+      if (xyz->norm() < kMinAxisNorm) {
         diags().Report(DiagKind::ZeroAxis, axis.Attribute("xyz").loc,
                        fmt::format("joint '{}': axis is zero; it must have a direction", *name));
         return;
       }
-      joint.axis = xyz->normalized();
+      if (uses_axis) {
+        joint.axis = xyz->normalized();
+      } else {
+        diags().Report(DiagKind::JointWarning, axis.GetLoc(),
+                       fmt::format("<axis> of {} joint '{}' is ignored{}", *type, *name,
+                                   joint.type == ir::JointType::Universal
+                                       ? ": Drake's universal joint turns about its frame's x "
+                                         "axis, then y"
+                                       : ": the path gives the motion"));
+      }
     }
   }
   if (joint.type == ir::JointType::Planar) {
@@ -101,27 +185,56 @@ void UrdfReader::ReadJoint(const xml::XmlElement& e) {
   joint.limits.effort.assign(nv, kInf);
   joint.damping.assign(nv, 0.0);
 
+  // the parameters of Drake's custom types (EXT-002, EXT-003). After an
+  // error here the joint is still declared, for the same reason as above.
+  if (joint.type == ir::JointType::Screw) {
+    ReadScrewThreadPitch(e, joint);
+  } else if (joint.type == ir::JointType::Curvilinear) {
+    // Drake's curvilinear joint limits an open path to its ends
+    if (ReadCurvilinearPath(e, joint) && !joint.curvilinear_path.periodic) {
+      joint.limits.lower[0] = 0;
+      joint.limits.upper[0] = joint.curvilinear_path.TotalLength();
+    }
+  }
+
   for (auto c = e.FirstChild(); c; c = c.NextSibling()) {
     std::string_view tag = c.Name();
     if (tag == "origin" || tag == "parent" || tag == "child" || tag == "axis") {
       continue;
     } else if (tag == "limit") {
-      if (nv == 1) ReadLimits(c, joint, continuous);
+      if (joint.type == ir::JointType::Revolute || joint.type == ir::JointType::Prismatic) {
+        ReadLimits(c, joint, kind->continuous);
+      } else if (IgnoresLimits(joint.type)) {
+        diags().Report(DiagKind::UnsupportedElement, c.GetLoc(),
+                       fmt::format("<limit> of {} joint '{}' is ignored: Drake reads no limits "
+                                   "or effort for {} joints",
+                                   *type, *name, *type));
+      }
+      // fixed and planar joints ignore <limit> silently, as in Drake
     } else if (tag == "dynamics") {
       attrs_.WarnUnknownAttributes(c, {"damping", "friction", "coulomb_window", "spring_reference",
                                        "spring_stiffness"});
       if (joint.type == ir::JointType::Planar) {
+        // three values: x, y and the rotation about z (URDF-014)
         if (auto d = c.Attribute("damping"); d.present()) {
-          auto values = attrs_.Doubles(c, "damping", 3);
-          if (values) joint.damping = *values;
+          if (auto values = attrs_.Doubles(c, "damping", 3)) {
+            if (std::any_of(values->begin(), values->end(), [](double v) { return v < 0; })) {
+              diags().Report(DiagKind::BadValue, d.loc,
+                             fmt::format("joint '{}': damping must not be negative", *name));
+            } else {
+              joint.damping = *values;
+            }
+          }
         }
-      } else if (nv == 1) {
+      } else if (nv > 0) {
+        // one value; ball and universal joints apply it to every dof, as
+        // Drake's BallRpyJoint and UniversalJoint do
         if (auto d = attrs_.Double(c, "damping")) {
           if (*d < 0) {
             diags().Report(DiagKind::BadValue, c.Attribute("damping").loc,
                            fmt::format("joint '{}': damping must not be negative", *name));
           } else {
-            joint.damping[0] = *d;
+            joint.damping.assign(nv, *d);
           }
         }
       }
@@ -137,12 +250,22 @@ void UrdfReader::ReadJoint(const xml::XmlElement& e) {
       ReadMimic(c, joint);
     } else if (tag == "calibration" || tag == "safety_controller") {
       diags().Report(DiagKind::UnsupportedElement, c.GetLoc(),
-                     fmt::format("tag '{}' found as a child of 'joint' is currently unsupported "
+                     fmt::format("tag '{}' found as a child of '{}' is currently unsupported "
                                  "and will be ignored",
-                                 tag));
+                                 tag, element));
+    } else if (auto it = std::find_if(std::begin(kTypeSpecificChildren),
+                                      std::end(kTypeSpecificChildren),
+                                      [&](const TypeSpecificChild& s) { return s.tag == tag; });
+               it != std::end(kTypeSpecificChildren)) {
+      // read above when the type is right
+      if (it->type != joint.type) {
+        diags().Report(DiagKind::UnknownElement, c.GetLoc(),
+                       fmt::format("<{}> applies only to {} joints; it is ignored in {} joint '{}'",
+                                   tag, ir::JointTypeName(it->type), *type, *name));
+      }
     } else {
       diags().Report(DiagKind::UnknownElement, c.GetLoc(),
-                     fmt::format("unknown element <{}> in <joint> is ignored", tag));
+                     fmt::format("unknown element <{}> in <{}> is ignored", tag, element));
     }
   }
   joint_ids_[joint.name.value] = module().Add(std::move(joint));

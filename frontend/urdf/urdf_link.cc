@@ -55,6 +55,35 @@ void UrdfReader::ReadLink(const xml::XmlElement& e) {
       ReadGeometryElement(child, body_id, symbol, /*is_visual=*/false);
     } else if (tag == "inertial") {
       // read above
+    } else if (tag == "drake:surface_velocity_axis") {
+      // EXT-060: the link's surface velocity axis, in the link frame; the
+      // first such element counts
+      if (auto first = e.Child(tag); first.raw() != child.raw()) {
+        diags()
+            .Report(DiagKind::UnsupportedElement, child.GetLoc(),
+                    "<drake:surface_velocity_axis> is given more than once in <link>; only the "
+                    "first one is used, this one is ignored")
+            .Note(first.GetLoc(), "the first <drake:surface_velocity_axis> is here");
+        continue;
+      }
+      if (body_id == ir::kWorldBody) {
+        diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
+                       "<drake:surface_velocity_axis> on the 'world' link is ignored: only "
+                       "<collision> and <visual> geometries can be given to the world link");
+        continue;
+      }
+      attrs_.WarnUnknownAttributes(child, {"axis"});
+      if (auto axis = attrs_.Vector3(child, "axis", xml::Need::Required)) {
+        const double norm = axis->norm();
+        if (!(norm > 0) || std::abs(1.0 - (*axis / norm).norm()) >= 1e-14) {
+          diags().Report(DiagKind::BadValue, child.Attribute("axis").loc,
+                         fmt::format("the 'axis' of <drake:surface_velocity_axis> must have a "
+                                     "non-zero length, got '{}'",
+                                     child.Attribute("axis").value));
+        } else {
+          module()[body_id].surface_velocity_axis = *axis / norm;
+        }
+      }
     } else if (tag == "self_collision_checking" || tag == "gazebo") {
       diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
                      fmt::format("tag '{}' found as a child of 'link' is currently unsupported "

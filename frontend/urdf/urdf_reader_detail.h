@@ -61,6 +61,18 @@ class UrdfReader {
 
   // urdf_drake_joint.cc: <drake:joint> (EXT-001..003)
   void ReadDrakeJoint(const xml::XmlElement& e);
+  // --- begin: <joint> / <drake:joint> helpers (urdf_joint.cc, urdf_drake_joint.cc) ---
+  /// Reads one <joint> (drake_element = false) or <drake:joint> (true): the
+  /// children both share (parent, child, origin, axis, limit, dynamics,
+  /// mimic) and the drake: children of custom types; registers the joint in
+  /// joint_ids_ / joint_names_ (URDF-010..014, URDF-042, EXT-001..003).
+  void ReadAnyJoint(const xml::XmlElement& e, bool drake_element);
+  /// drake:screw_thread_pitch of a screw joint (EXT-002).
+  void ReadScrewThreadPitch(const xml::XmlElement& e, ir::Joint& joint);
+  /// drake:plane_normal, drake:initial_tangent, drake:is_periodic and
+  /// drake:curves of a curvilinear joint (EXT-003); false after an error.
+  bool ReadCurvilinearPath(const xml::XmlElement& e, ir::Joint& joint);
+  // --- end: <joint> / <drake:joint> helpers ---
 
   // urdf_drake_elements.cc: model-level drake: elements, read after every
   // link and joint so they may name any of them (EXT-040, EXT-050..054)

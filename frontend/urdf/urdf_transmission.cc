@@ -131,8 +131,45 @@ bool UrdfReader::ReadActuatorExtension(const xml::XmlElement& child, ir::Actuato
   if (tag != "drake:rotor_inertia" && tag != "drake:gear_ratio" && tag != "drake:controller_gains") {
     return false;
   }
-  diags().Report(DiagKind::NotImplementedYet, child.GetLoc(),
-                 fmt::format("<{}> is not implemented yet; the element is ignored", tag));
+  // as in Drake, the first element of each name counts
+  if (auto first = child.Parent().Child(tag); first.raw() != child.raw()) {
+    diags()
+        .Report(DiagKind::UnsupportedElement, child.GetLoc(),
+                fmt::format("<{}> is given more than once in <actuator>; only the first one is "
+                            "used, this one is ignored",
+                            tag))
+        .Note(first.GetLoc(), fmt::format("the first <{}> is here", tag));
+    return true;
+  }
+  // a number that must not be negative (p: must be positive)
+  auto read = [&](std::string_view attr, bool zero_allowed,
+                  std::string_view what) -> std::optional<double> {
+    auto v = attrs_.Double(child, attr, xml::Need::Required);
+    if (!v) return std::nullopt;
+    if (zero_allowed ? *v >= 0 : *v > 0) return v;
+    diags().Report(DiagKind::BadValue, child.Attribute(attr).loc,
+                   fmt::format("the {} given by <{}> must be {}, got {}", what, tag,
+                               zero_allowed ? "non-negative" : "positive", *v));
+    return std::nullopt;
+  };
+  if (tag == "drake:rotor_inertia") {
+    // EXT-012: kg·m² (revolute) or kg (prismatic)
+    attrs_.WarnUnknownAttributes(child, {"value"});
+    if (auto v = read("value", true, "rotor inertia")) actuator.rotor_inertia = *v;
+  } else if (tag == "drake:gear_ratio") {
+    // EXT-013: reflected inertia = gear_ratio² · rotor_inertia
+    attrs_.WarnUnknownAttributes(child, {"value"});
+    if (auto v = read("value", true, "gear ratio")) actuator.gear_ratio = *v;
+  } else {
+    // EXT-014: both gains are required
+    attrs_.WarnUnknownAttributes(child, {"p", "d"});
+    auto p = read("p", false, "proportional gain 'p'");
+    auto d = read("d", true, "derivative gain 'd'");
+    if (p && d) {
+      actuator.kp = *p;
+      actuator.kd = *d;
+    }
+  }
   return true;
 }
 

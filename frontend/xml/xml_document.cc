@@ -236,11 +236,11 @@ xmlNode* SkipToElement(xmlNode* n) {
   while (n && n->type != XML_ELEMENT_NODE) n = n->next;
   return n;
 }
-thread_local std::string name_storage;
 }  // namespace
 
 std::string_view XmlElement::Name() const {
-  return QualifiedName(node_->ns ? node_->ns->prefix : nullptr, node_->name, name_storage);
+  if (!(node_->ns && node_->ns->prefix)) return reinterpret_cast<const char*>(node_->name);
+  return doc_->JoinedName(node_->ns->prefix, node_->name);
 }
 
 Loc XmlElement::GetLoc() const {
@@ -270,9 +270,7 @@ XmlAttribute XmlElement::MakeAttribute(_xmlAttr* a) const {
   XmlAttribute out;
   // attribute names are stable in the dictionary; qualified names need storage
   if (a->ns && a->ns->prefix) {
-    thread_local std::string attr_name_storage;
-    std::string_view qn = QualifiedName(a->ns->prefix, a->name, attr_name_storage);
-    out.name = qn;
+    out.name = doc_->JoinedName(a->ns->prefix, a->name);
   } else {
     out.name = reinterpret_cast<const char*>(a->name);
   }
@@ -300,10 +298,19 @@ XmlAttribute XmlElement::Attribute(std::string_view name) const {
   return {};
 }
 
-std::string_view XmlElement::AttributeName(_xmlAttr* a) {
+std::string_view XmlElement::AttributeName(_xmlAttr* a) const {
   if (!(a->ns && a->ns->prefix)) return reinterpret_cast<const char*>(a->name);
-  thread_local std::string storage;
-  return QualifiedName(a->ns->prefix, a->name, storage);
+  return doc_->JoinedName(a->ns->prefix, a->name);
+}
+
+std::string_view XmlDocument::JoinedName(const unsigned char* prefix,
+                                         const unsigned char* name) const {
+  auto [it, inserted] = joined_names_.try_emplace({prefix, name});
+  if (inserted) {
+    std::string scratch;
+    it->second = std::string(QualifiedName(prefix, name, scratch));
+  }
+  return it->second;
 }
 
 std::string XmlElement::Text() const {

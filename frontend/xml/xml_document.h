@@ -17,6 +17,8 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
+#include <utility>
 
 #include "ir/diagnostics.h"
 #include "ir/location.h"
@@ -72,12 +74,18 @@ class XmlElement {
  private:
   friend class XmlDocument;
   XmlAttribute MakeAttribute(_xmlAttr* attr) const;
-  static std::string_view AttributeName(_xmlAttr* attr);
+  std::string_view AttributeName(_xmlAttr* attr) const;
   _xmlAttr* FirstAttribute() const;
   static _xmlAttr* NextAttribute(_xmlAttr* attr);
 
   const XmlDocument* doc_ = nullptr;
   _xmlNode* node_ = nullptr;
+};
+
+struct PairHash {
+  size_t operator()(const std::pair<const void*, const void*>& p) const {
+    return std::hash<const void*>()(p.first) * 31 + std::hash<const void*>()(p.second);
+  }
 };
 
 class XmlDocument {
@@ -96,11 +104,19 @@ class XmlDocument {
   const SourceManager& sources() const { return *sources_; }
   Loc LocForOffset(size_t offset) const { return sources_->LocForOffset(file_, offset); }
 
+  /// "prefix:name", stored for the document's lifetime (libxml2 keeps the
+  /// two parts apart; views of the joined name must stay valid).
+  std::string_view JoinedName(const unsigned char* prefix, const unsigned char* name) const;
+
  private:
   XmlDocument() = default;
   bool AssignOffsets(DiagnosticEngine& diags);
 
   _xmlDoc* doc_ = nullptr;
+  // joined prefixed names by (prefix, name) pointers, which libxml2 interns;
+  // unordered_map never moves its values, so views into them stay valid
+  mutable std::unordered_map<std::pair<const void*, const void*>, std::string, PairHash>
+      joined_names_;
   FileId file_;
   const SourceManager* sources_ = nullptr;
 };
