@@ -249,6 +249,28 @@ TEST_F(CliTest, DeeplyNestedXmlDoesNotCrash) {
   EXPECT_EQ(r.status, 0) << r.err.substr(0, 500);
 }
 
+TEST_F(CliTest, ConstraintsCannotReachIntoAnotherModel) {  // EXT-052, COMMON-022
+  fs::path first = Write("first.urdf", R"(<robot name="first"><link name="l"/></robot>)");
+  fs::path second = Write("second.urdf", R"(<robot name="second" xmlns:drake="http://drake.mit.edu">
+  <link name="m"/>
+  <drake:ball_constraint>
+    <drake:ball_constraint_body_A name="first::l"/>
+    <drake:ball_constraint_body_B name="m"/>
+    <drake:ball_constraint_p_AP value="0 0 0"/>
+    <drake:ball_constraint_p_BQ value="0 0 0"/>
+  </drake:ball_constraint>
+</robot>
+)");
+  Result r = Run("compile --emit=none " + first.string() + " " + second.string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("second.urdf:4:"), std::string::npos) << r.err;
+  // the same two files compile when the constraint stays inside its model
+  Result twice = Run("compile --emit=none " + first.string() + " " + first.string());
+  EXPECT_EQ(twice.status, 1);  // COMMON-022: the name 'first' is taken
+  EXPECT_NE(twice.err.find("already exists"), std::string::npos) << twice.err;
+  EXPECT_EQ(Run("compile --emit=none --auto-rename " + first.string() + " " + first.string()).status, 0);
+}
+
 TEST_F(CliTest, EveryDiagnosticFileVerifies) {
   // the same files ctest runs one by one, here also checked for a clean exit
   for (const auto& entry : fs::recursive_directory_iterator(MDLC_DIAG_DIR)) {
