@@ -186,9 +186,8 @@ void AttributeReader::WarnUnknownAttributes(const XmlElement& e,
       if (k == name) return;
     }
     if (name.starts_with("xmlns")) return;
-    const std::string copy(name);  // the view may point into reused storage
-    diags_.Report(DiagKind::UnknownAttribute, e.Attribute(copy).loc,
-                  fmt::format("unknown attribute '{}' on <{}> is ignored", copy, e.Name()));
+    diags_.Report(DiagKind::UnknownAttribute, e.Attribute(name).loc,
+                  fmt::format("unknown attribute '{}' on <{}> is ignored", name, e.Name()));
   });
 }
 
