@@ -80,8 +80,7 @@ bool IgnoresLimits(ir::JointType type) {
 void UrdfReader::ReadJoint(const xml::XmlElement& e) { ReadAnyJoint(e, /*drake_element=*/false); }
 
 void UrdfReader::ReadAnyJoint(const xml::XmlElement& e, bool drake_element) {
-  // a copy: the view Name() returns for a prefixed name is reused by the next call
-  const std::string element(e.Name());  // "joint" or "drake:joint"
+  const std::string_view element = e.Name();  // "joint" or "drake:joint"
   auto name = attrs_.String(e, "name", xml::Need::Required);
   auto type = attrs_.String(e, "type", xml::Need::Required);
   attrs_.WarnUnknownAttributes(e, {"name", "type", "drake_ignore"});

@@ -22,13 +22,6 @@ std::optional<size_t> GetOffset(void* slot) {
   return static_cast<size_t>(v - 1);
 }
 
-std::string_view QualifiedName(const xmlChar* prefix_src, const xmlChar* name, std::string& storage) {
-  if (!prefix_src) return reinterpret_cast<const char*>(name);
-  storage = reinterpret_cast<const char*>(prefix_src);
-  storage += ':';
-  storage += reinterpret_cast<const char*>(name);
-  return storage;
-}
 
 // No document may pull in anything from outside: refuse every external load.
 xmlParserInputPtr RefuseExternalEntity(const char*, const char*, xmlParserCtxtPtr) { return nullptr; }
@@ -44,7 +37,6 @@ void InstallSecurityHooks() {
 struct ErrorSink {
   DiagnosticEngine* diags;
   FileId file;
-  const SourceManager* sources;
   int reported = 0;
 };
 
@@ -150,7 +142,7 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
     return nullptr;
   }
 
-  ErrorSink sink{&diags, file, &sources};
+  ErrorSink sink{&diags, file};
   xmlSetStructuredErrorFunc(&sink, OnXmlError);
   // NOBLANKS and COMPACT: no nodes for indentation, small text inline; mdlc
   // only reads the tree, and locations come from the buffer itself
@@ -171,11 +163,11 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
   result->doc_ = doc;
   result->file_ = file;
   result->sources_ = &sources;
-  if (!result->AssignOffsets(diags)) return nullptr;
+  result->AssignOffsets();
   return result;
 }
 
-bool XmlDocument::AssignOffsets(DiagnosticEngine& diags) {
+void XmlDocument::AssignOffsets() {
   std::string_view text = sources_->Contents(file_);
   size_t pos = 0;
   // iterative pre-order walk over element nodes: document order
@@ -224,7 +216,6 @@ bool XmlDocument::AssignOffsets(DiagnosticEngine& diags) {
     }
     if (node) node = node->next;
   }
-  return true;
 }
 
 XmlElement XmlDocument::Root() const { return XmlElement(this, xmlDocGetRootElement(doc_)); }
@@ -268,12 +259,7 @@ _xmlAttr* XmlElement::NextAttribute(_xmlAttr* attr) { return attr->next; }
 
 XmlAttribute XmlElement::MakeAttribute(_xmlAttr* a) const {
   XmlAttribute out;
-  // attribute names are stable in the dictionary; qualified names need storage
-  if (a->ns && a->ns->prefix) {
-    out.name = doc_->JoinedName(a->ns->prefix, a->name);
-  } else {
-    out.name = reinterpret_cast<const char*>(a->name);
-  }
+  out.name = AttributeName(a);
   if (a->children && a->children->content && !a->children->next) {
     out.value = reinterpret_cast<const char*>(a->children->content);
   } else if (a->children) {
@@ -307,8 +293,8 @@ std::string_view XmlDocument::JoinedName(const unsigned char* prefix,
                                          const unsigned char* name) const {
   auto [it, inserted] = joined_names_.try_emplace({prefix, name});
   if (inserted) {
-    std::string scratch;
-    it->second = std::string(QualifiedName(prefix, name, scratch));
+    it->second = std::string(reinterpret_cast<const char*>(prefix)) + ':' +
+                 reinterpret_cast<const char*>(name);
   }
   return it->second;
 }

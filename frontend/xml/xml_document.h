@@ -60,9 +60,6 @@ class XmlElement {
 
   /// The attribute `name`; `present()` is false when absent.
   XmlAttribute Attribute(std::string_view name) const;
-  /// Every attribute in document order, calling f(XmlAttribute).
-  template <typename F>
-  void ForEachAttribute(F&& f) const;
   /// Every attribute's qualified name in document order, calling f(string_view).
   template <typename F>
   void ForEachAttributeName(F&& f) const;
@@ -110,7 +107,7 @@ class XmlDocument {
 
  private:
   XmlDocument() = default;
-  bool AssignOffsets(DiagnosticEngine& diags);
+  void AssignOffsets();
 
   _xmlDoc* doc_ = nullptr;
   // joined prefixed names by (prefix, name) pointers, which libxml2 interns;
@@ -126,9 +123,5 @@ void XmlElement::ForEachAttributeName(F&& f) const {
   for (_xmlAttr* a = FirstAttribute(); a; a = NextAttribute(a)) f(AttributeName(a));
 }
 
-template <typename F>
-void XmlElement::ForEachAttribute(F&& f) const {
-  for (_xmlAttr* a = FirstAttribute(); a; a = NextAttribute(a)) f(MakeAttribute(a));
-}
 
 }  // namespace mdlc::xml
