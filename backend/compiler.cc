@@ -8,6 +8,7 @@ namespace mdlc {
 
 bool Compilation::RunFrontends() {
   frontend::FrontendContext ctx{sources, diags, module, options.frontend, &documents};
+  ctx.packages = &packages;
   for (const std::string& file : options.files) {
     // keep going: report the problems of every file in one run
     frontend::ReadModelFile(file, ctx);

@@ -50,7 +50,7 @@ std::optional<ModelId> ReadModelFile(const std::string& path, FrontendContext& c
 std::optional<ModelId> ReadModel(FileId file, Format format, FrontendContext& ctx) {
   switch (format) {
     case Format::Urdf: return ReadUrdf(file, ctx);
-    case Format::Sdf:
+    case Format::Sdf: return ReadSdf(file, ctx);
     case Format::Mjcf:
     case Format::Directives:
       ctx.diags.Report(DiagKind::NotImplemented, Loc{file, 1, 1},

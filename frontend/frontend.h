@@ -14,6 +14,8 @@
 #include "ir/module.h"
 #include "ir/source_manager.h"
 
+namespace mdlc::frontend { class PackageMap; }
+
 namespace mdlc::frontend {
 
 enum class Format { Urdf, Sdf, Mjcf, Directives };
@@ -28,6 +30,9 @@ struct FrontendOptions {
   std::optional<std::string> model_name;
   /// On an instance-name collision, pick NAME_1, NAME_2, ... instead of failing.
   bool auto_rename = false;
+  /// Prepended to the instance name ("outer::" for a model an SDFormat file
+  /// includes): the instance is scoped by its includer (COMMON-022).
+  std::string name_prefix;
 };
 
 /// Parsed documents kept alive until the compile ends. Freeing a large DOM
@@ -45,6 +50,8 @@ struct FrontendContext {
   ir::Module& module;
   FrontendOptions options;
   RetainedDocuments* retained = nullptr;  // null: free each document when lowered
+  /// Packages for the files a model includes (SDFormat <include>); null: paths only.
+  const PackageMap* packages = nullptr;
 };
 
 /// Loads `path` and lowers it with the frontend its extension selects.
@@ -56,5 +63,7 @@ std::optional<ModelId> ReadModel(FileId file, Format format, FrontendContext& ct
 
 /// URDF frontend (frontend/urdf/).
 std::optional<ModelId> ReadUrdf(FileId file, FrontendContext& ctx);
+/// SDFormat frontend (frontend/sdf/).
+std::optional<ModelId> ReadSdf(FileId file, FrontendContext& ctx);
 
 }  // namespace mdlc::frontend

@@ -16,7 +16,9 @@ std::optional<ModelId> FindModel(const ir::Module& module, std::string_view name
 
 std::optional<ModelId> AddModelInstance(std::string_view requested, Loc loc,
                                         ir::SourceFormat format, FrontendContext& ctx) {
-  std::string name(ctx.options.model_name ? std::string_view(*ctx.options.model_name) : requested);
+  std::string name = ctx.options.name_prefix +
+                     std::string(ctx.options.model_name ? std::string_view(*ctx.options.model_name)
+                                                        : requested);
   if (auto existing = FindModel(ctx.module, name)) {
     if (!ctx.options.auto_rename) {
       auto diag = ctx.diags.Report(

@@ -61,6 +61,9 @@ struct Body {
   bool is_world = false;             // the one world body (body 0)
   /// drake:surface_velocity_axis (EXT-060): a unit axis in the body frame
   std::optional<Eigen::Vector3d> surface_velocity_axis;
+  /// X_WB where the file places the body (SDFormat links); a free body's
+  /// floating joint starts there (SDF-008)
+  std::optional<Transform> default_pose;
 };
 
 /// A frame fixed to a body: X_BF.

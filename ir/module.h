@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ir/entities.h"
+#include "ir/frame_graph.h"
 #include "ir/symbol.h"
 
 namespace mdlc::ir {
@@ -35,6 +36,8 @@ struct Module {
   std::vector<ForceElement> force_elements;
   std::vector<CollisionFilterGroup> filter_groups;
   std::vector<Camera> cameras;
+  /// SDFormat poses and attachments awaiting the resolve-frames pass.
+  FrameGraph frame_graph;
 
   /// Plant-wide settings a model may give (MJCF <option>); unset: Drake's defaults.
   std::optional<Eigen::Vector3d> gravity;  // m/s^2, in world

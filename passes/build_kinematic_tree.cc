@@ -145,6 +145,11 @@ void BuildKinematicTreePass::AddFloatingJoint(PassContext& ctx, BodyId body) {
   j.child = {b.name, b.loc, body};
   j.limits = ir::JointLimits::Unbounded(6);
   j.damping.assign(6, 0.0);
+  if (b.default_pose) {
+    const Eigen::Quaterniond q = CanonicalQuaternion(b.default_pose->R);
+    const Eigen::Vector3d& p = b.default_pose->p;
+    j.default_positions = {q.w(), q.x(), q.y(), q.z(), p.x(), p.y(), p.z()};
+  }
   j.unnamed = true;
   m.Add(std::move(j));
 }

@@ -1,0 +1,334 @@
+// sdf_joint.cc - <joint>: type, parent and child frames, axes, limits,
+// dynamics, springs and the actuator SDFormat joints get by default
+// (SDF-010..014, SDF-020, SDF-035). Where the joint frame is, and what the
+// parent and child frames are attached to, the resolve-frames pass decides.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "frontend/sdf/sdf_reader_detail.h"
+
+namespace mdlc::frontend::sdf {
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct AxisValues {
+  double lower = -kInf, upper = kInf;
+  double velocity = kInf, effort = kInf, acceleration = kInf;
+  double damping = 0;
+  double spring_reference = 0, spring_stiffness = 0;
+  bool has_limit = false;
+};
+}  // namespace
+
+void SdfReader::ReadJoint(const xml::XmlElement& e, ModelScope& s) {
+  auto name = attrs_.String(e, "name", xml::Need::Required);
+  auto type_text = attrs_.String(e, "type", xml::Need::Required);
+  if (!name || !type_text) return;
+  attrs_.WarnUnknownAttributes(e, {"name", "type"});
+  if (!CheckDefinedName(*name, e.GetLoc(), "joint")) return;
+  CheckChildren(e,
+                {"parent", "child", "pose", "axis", "axis2", "physics", "sensor",
+                 "screw_thread_pitch", "thread_pitch", "gearbox_ratio",
+                 "gearbox_reference_body", "drake:rotor_inertia", "drake:gear_ratio",
+                 "drake:controller_gains", "drake:mimic"},
+                {});
+  const Symbol joint_name = module().Intern(*name);
+
+  ir::Joint joint;
+  joint.name = joint_name;
+  joint.model = s.model;
+  joint.loc = e.GetLoc();
+  const std::string_view type = *type_text;
+  const Loc type_loc = e.Attribute("type").loc;
+  int axes_needed = 1;
+  if (type == "revolute" || type == "continuous") {
+    joint.type = ir::JointType::Revolute;
+  } else if (type == "prismatic") {
+    joint.type = ir::JointType::Prismatic;
+  } else if (type == "screw") {
+    joint.type = ir::JointType::Screw;
+  } else if (type == "fixed") {
+    joint.type = ir::JointType::Weld;
+    axes_needed = 0;
+  } else if (type == "ball") {
+    joint.type = ir::JointType::Ball;
+    axes_needed = 0;
+  } else if (type == "universal") {
+    joint.type = ir::JointType::Universal;
+    axes_needed = 2;
+  } else if (type == "revolute2" || type == "gearbox") {
+    diags().Report(DiagKind::NotImplemented, type_loc,
+                   fmt::format("joint type ({}) not supported for joint '{}': Drake's plant has "
+                               "no such joint",
+                               type, *name));
+    return;
+  } else {
+    diags().Report(DiagKind::BadValue, type_loc,
+                   fmt::format("unknown joint type '{}' for joint '{}'", type, *name));
+    return;
+  }
+
+  // parent and child name frames (SDF-011)
+  auto frame_name = [&](std::string_view tag) -> ir::NameRef {
+    xml::XmlElement el = e.Child(tag);
+    if (!el) {
+      diags().Report(DiagKind::MissingElement, e.GetLoc(),
+                     fmt::format("joint '{}' is missing required element <{}>", *name, tag));
+      return {};
+    }
+    std::string text = el.Text();
+    auto b = text.find_first_not_of(" \t\r\n");
+    auto t = text.find_last_not_of(" \t\r\n");
+    if (b == std::string::npos) {
+      diags().Report(DiagKind::BadValue, el.GetLoc(),
+                     fmt::format("<{}> of joint '{}' must name a frame", tag, *name));
+      return {};
+    }
+    return {module().Intern(std::string_view(text).substr(b, t - b + 1)), el.GetLoc()};
+  };
+  ir::NameRef parent = frame_name("parent");
+  ir::NameRef child = frame_name("child");
+  if (parent.empty() || child.empty()) return;
+  if (parent.name == child.name) {
+    diags().Report(DiagKind::SelfJoint, e.GetLoc(),
+                   fmt::format("joint '{}' must name different frames for parent and child, "
+                               "but names '{}' for both",
+                               *name, module().Text(parent.name)));
+    return;
+  }
+  if (child.name == joint_name || parent.name == joint_name) {
+    diags().Report(DiagKind::FrameCycle, e.GetLoc(),
+                   fmt::format("joint '{}' must not name itself as its {} frame", *name,
+                               child.name == joint_name ? "child" : "parent"));
+    return;
+  }
+  if (module().Text(child.name) == "world") {
+    diags().Report(DiagKind::BadValue, child.loc,
+                   fmt::format("joint '{}' names the world as its child: the world can only "
+                               "be a parent",
+                               *name));
+    return;
+  }
+
+  // axes (SDF-012..014)
+  ir::JointFrameSpec spec;
+  spec.parent = parent;
+  AxisValues values[2];
+  const char* axis_tags[2] = {"axis", "axis2"};
+  for (int k = 0; k < 2; ++k) {
+    xml::XmlElement axis = e.Child(axis_tags[k]);
+    if (!axis) continue;
+    if (k >= axes_needed) {
+      if (joint.type == ir::JointType::Ball || (joint.type != ir::JointType::Weld && k == 1)) {
+        diags().Report(DiagKind::JointWarning, axis.GetLoc(),
+                       fmt::format("<{}> of {} joint '{}' is ignored{}", axis_tags[k], type,
+                                   *name,
+                                   joint.type == ir::JointType::Ball && k == 0
+                                       ? ": only its dynamics are used"
+                                       : ""));
+      }
+      if (k == 0 && joint.type == ir::JointType::Ball) {
+        if (xml::XmlElement dyn = axis.Child("dynamics")) {
+          if (auto d = ChildDouble(dyn, "damping")) values[0].damping = *d;
+        }
+      }
+      continue;
+    }
+    CheckChildren(axis, {"xyz", "dynamics", "limit", "initial_position",
+                         "use_parent_model_frame", "mimic"});
+    spec.axis_count = k + 1;
+    if (xml::XmlElement xyz = axis.Child("xyz")) {
+      if (auto v = TextVector3(xyz)) {
+        if (v->norm() < 1e-12) {
+          diags().Report(DiagKind::ZeroAxis, xyz.GetLoc(),
+                         fmt::format("the norm of the <xyz> of joint '{}' must not be zero", *name));
+          return;
+        }
+        spec.xyz[k] = v->normalized();
+      }
+      if (auto a = xyz.Attribute("expressed_in"); a.present() && !a.value.empty()) {
+        spec.expressed_in[k] = {module().Intern(a.value), a.loc};
+      }
+    } else {
+      spec.xyz[k] = k == 0 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitY();
+    }
+    // SDFormat 1.4/1.5: the axis may be expressed in the model frame
+    if (auto upm = ChildBool(axis, "use_parent_model_frame"); upm && *upm) {
+      spec.expressed_in[k] = {s.model_frame_name, axis.Child("use_parent_model_frame").GetLoc()};
+    }
+    AxisValues& v = values[k];
+    if (xml::XmlElement limit = axis.Child("limit")) {
+      v.has_limit = true;
+      CheckChildren(limit,
+                    {"lower", "upper", "effort", "velocity", "stiffness", "dissipation",
+                     "drake:acceleration"});
+      if (auto x = ChildDouble(limit, "lower", xml::Need::Optional, xml::Finite::NotRequired)) {
+        v.lower = *x;
+      }
+      if (auto x = ChildDouble(limit, "upper", xml::Need::Optional, xml::Finite::NotRequired)) {
+        v.upper = *x;
+      }
+      // negative velocity and effort mean "unlimited" (SDF-013)
+      if (auto x = ChildDouble(limit, "velocity", xml::Need::Optional, xml::Finite::NotRequired)) {
+        v.velocity = *x < 0 ? kInf : *x;
+      }
+      if (auto x = ChildDouble(limit, "effort", xml::Need::Optional, xml::Finite::NotRequired)) {
+        v.effort = *x < 0 ? kInf : *x;
+      }
+      if (xml::XmlElement acc = limit.Child("drake:acceleration")) {
+        if (auto x = TextDouble(acc, xml::Finite::NotRequired)) {
+          if (*x < 0) {
+            diags().Report(DiagKind::BadLimits, acc.GetLoc(),
+                           fmt::format("the acceleration limit of joint '{}' must not be "
+                                       "negative",
+                                       *name));
+          } else {
+            v.acceleration = *x;
+          }
+        }
+      }
+      if (v.lower > v.upper && type != "continuous") {
+        diags().Report(DiagKind::BadLimits, limit.GetLoc(),
+                       fmt::format("the lower limit must be lower than or equal to the upper "
+                                   "limit for joint '{}'",
+                                   *name));
+      }
+    }
+    if (xml::XmlElement dyn = axis.Child("dynamics")) {
+      CheckChildren(dyn, {"damping", "friction", "spring_reference", "spring_stiffness"});
+      if (auto x = ChildDouble(dyn, "damping")) {
+        if (*x < 0) {
+          diags().Report(DiagKind::BadValue, dyn.Child("damping").GetLoc(),
+                         fmt::format("joint damping is negative for joint '{}': it must be a "
+                                     "non-negative number",
+                                     *name));
+        } else {
+          v.damping = *x;
+        }
+      }
+      if (auto x = ChildDouble(dyn, "friction"); x && *x != 0) {
+        diags().Report(DiagKind::JointWarning, dyn.Child("friction").GetLoc(),
+                       fmt::format("joint friction of joint '{}' is unsupported and will be "
+                                   "ignored",
+                                   *name));
+      }
+      if (auto x = ChildDouble(dyn, "spring_reference")) v.spring_reference = *x;
+      if (auto x = ChildDouble(dyn, "spring_stiffness")) v.spring_stiffness = *x;
+    }
+  }
+  if (spec.axis_count < axes_needed) {
+    diags().Report(DiagKind::MissingElement, e.GetLoc(),
+                   axes_needed == 2
+                       ? fmt::format("both <axis> and <axis2> must be specified for {} joint '{}'",
+                                     type, *name)
+                       : fmt::format("an <axis> must be specified for {} joint '{}'", type, *name));
+    return;
+  }
+
+  const int nv = ir::JointVelocityCount(joint.type);
+  joint.limits = ir::JointLimits::Unbounded(nv);
+  joint.damping.assign(nv, values[0].damping);
+  if (joint.type == ir::JointType::Universal) {
+    if (values[1].damping != values[0].damping) {
+      diags().Report(DiagKind::JointWarning, e.GetLoc(),
+                     fmt::format("joint damping must be equal for both axes of joint '{}': the "
+                                 "damping of <axis> ({}) is used, that of <axis2> ({}) ignored",
+                                 *name, values[0].damping, values[1].damping));
+    }
+  }
+  const bool one_dof = nv == 1 && joint.type != ir::JointType::Weld;
+  if (one_dof) {
+    const AxisValues& v = values[0];
+    if (type != "continuous" && joint.type != ir::JointType::Screw) {
+      joint.limits.lower[0] = v.lower;
+      joint.limits.upper[0] = v.upper;
+    }
+    joint.limits.velocity_lower[0] = -v.velocity;
+    joint.limits.velocity_upper[0] = v.velocity;
+    joint.limits.acceleration_lower[0] = -v.acceleration;
+    joint.limits.acceleration_upper[0] = v.acceleration;
+    joint.limits.effort[0] = v.effort;
+  }
+  if (joint.type == ir::JointType::Screw) {
+    // meters per revolution; SDFormat before 1.10 wrote radians per meter
+    // with the opposite handedness (libsdformat's conversion)
+    joint.screw_thread_pitch = 1.0;
+    if (auto p = ChildDouble(e, "screw_thread_pitch")) {
+      joint.screw_thread_pitch = *p;
+    } else if (auto legacy = ChildDouble(e, "thread_pitch")) {
+      if (*legacy == 0) {
+        diags().Report(DiagKind::BadValue, e.Child("thread_pitch").GetLoc(),
+                       "thread_pitch must not be zero");
+      } else {
+        joint.screw_thread_pitch = -2 * std::numbers::pi / *legacy;
+      }
+    }
+  }
+
+  const JointId joint_id = module().Add(std::move(joint));
+
+  // the joint frame J: attached to the child, posed relative to it by default
+  ir::FrameNode node;
+  node.kind = ir::FrameNodeKind::Joint;
+  node.name = joint_name;
+  node.loc = e.GetLoc();
+  xml::XmlElement pose = e.Child("pose");
+  node.relative_to = RelativeTo(pose);
+  if (node.relative_to.empty()) node.relative_to = child;
+  node.X_RN = ReadPoseValue(pose);
+  node.attached_to = child;
+  node.target = ir::FrameTarget::Joint;
+  node.target_index = joint_id.value;
+  spec.node = AddNode(s, std::move(node));
+  spec.joint = joint_id;
+  graph().joints.push_back(spec);
+
+  // the actuator every actuable SDFormat joint gets unless its effort is 0 (SDF-020)
+  std::optional<ActuatorId> actuator;
+  const ir::Joint& j = module()[joint_id];
+  if (one_dof && values[0].effort != 0) {
+    ir::Actuator a;
+    a.name = joint_name;
+    a.model = s.model;
+    a.loc = e.GetLoc();
+    a.joint = {joint_name, e.GetLoc(), joint_id};
+    a.effort_limit = values[0].effort;
+    actuator = module().Add(std::move(a));
+  } else if ((j.type == ir::JointType::Universal &&
+              (values[0].effort != 0 || values[1].effort != 0) &&
+              (values[0].has_limit || values[1].has_limit)) ||
+             (j.type == ir::JointType::Ball && e.Child("axis") && values[0].effort != 0 &&
+              values[0].has_limit)) {
+    diags().Report(DiagKind::ActuatorWarning, e.GetLoc(),
+                   fmt::format("actuation (via non-zero effort limits) for {} joint '{}' is not "
+                               "implemented yet and will be ignored",
+                               type, *name));
+  }
+
+  // springs (SDF-013): revolute and prismatic joints with a stiffness
+  const AxisValues& v = values[0];
+  if ((j.type == ir::JointType::Revolute || j.type == ir::JointType::Prismatic) &&
+      v.spring_stiffness != 0) {
+    if (v.spring_stiffness < 0) {
+      diags().Report(DiagKind::BadValue, e.GetLoc(),
+                     fmt::format("the spring stiffness of joint '{}' must be non-negative",
+                                 *name));
+    } else {
+      ir::ForceElement spring;
+      spring.model = s.model;
+      spring.loc = e.GetLoc();
+      spring.type = ir::ForceElementType::JointSpring;
+      spring.joint = {joint_name, e.GetLoc(), joint_id};
+      spring.nominal = v.spring_reference;
+      spring.stiffness = v.spring_stiffness;
+      module().Add(std::move(spring));
+    }
+  }
+
+  ReadJointDrakeChildren(e, s, joint_id, actuator);
+}
+
+}  // namespace mdlc::frontend::sdf

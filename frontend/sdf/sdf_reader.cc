@@ -1,0 +1,364 @@
+// sdf_reader.cc - the <sdf> root, <world> and <model>: model instances, name
+// scopes, the frame graph's model nodes, and dispatch to the element readers
+// (SDF-001, SDF-002, SDF-005, SDF-006, SDF-030, SDF-034, SDF-035).
+#include <fmt/format.h>
+
+#include "frontend/model_naming.h"
+#include "frontend/sdf/sdf_reader_detail.h"
+
+namespace mdlc::frontend {
+
+std::optional<ModelId> ReadSdf(FileId file, FrontendContext& ctx) {
+  sdf::SdfReader reader(ctx);
+  return reader.ReadRootFile(file);
+}
+
+}  // namespace mdlc::frontend
+
+namespace mdlc::frontend::sdf {
+namespace {
+// "1.9" -> 109; nullopt when it is not MAJOR.MINOR
+std::optional<int> ParseVersion(std::string_view text) {
+  size_t dot = text.find('.');
+  if (dot == std::string_view::npos || dot == 0 || dot + 1 >= text.size()) return std::nullopt;
+  int major = 0, minor = 0;
+  for (size_t i = 0; i < dot; ++i) {
+    if (text[i] < '0' || text[i] > '9') return std::nullopt;
+    major = major * 10 + (text[i] - '0');
+  }
+  for (size_t i = dot + 1; i < text.size(); ++i) {
+    if (text[i] < '0' || text[i] > '9') return std::nullopt;
+    minor = minor * 10 + (text[i] - '0');
+  }
+  return major * 100 + minor;
+}
+
+std::string DirectoryOf(const std::string& path) {
+  size_t slash = path.rfind('/');
+  return slash == std::string::npos ? "." : path.substr(0, slash);
+}
+}  // namespace
+
+bool SdfReader::CheckDefinedName(std::string_view name, Loc loc, std::string_view kind) {
+  if (name.empty()) {
+    diags().Report(DiagKind::InvalidName, loc, fmt::format("the {} name must not be empty", kind));
+    return false;
+  }
+  if (name.find("::") != std::string_view::npos) {
+    diags().Report(DiagKind::InvalidName, loc,
+                   fmt::format("{} name '{}' must not contain '::': the delimiter of scoped names "
+                               "is reserved for references",
+                               kind, name));
+    return false;
+  }
+  if (name == "world" || (name.size() >= 4 && name.starts_with("__") && name.ends_with("__"))) {
+    diags().Report(DiagKind::ReservedName, loc,
+                   fmt::format("the supplied {} name '{}' is reserved", kind, name));
+    return false;
+  }
+  return true;
+}
+
+FrameNodeId SdfReader::AddNode(const ModelScope& s, ir::FrameNode node) {
+  // merged models publish their names into the scope they merge into
+  FrameScopeId ns = s.scope;
+  while (graph()[ns].merged_into.valid()) ns = graph()[ns].merged_into;
+  auto [it, inserted] = defined_.emplace(ScopedKey{ns.value, node.name.value}, node.loc);
+  if (!inserted) {
+    diags()
+        .Report(DiagKind::DuplicateName, node.loc,
+                fmt::format("the name '{}' is already used by a link, joint, frame or model "
+                            "of this model",
+                            module().Text(node.name)))
+        .Note(it->second, "first defined here");
+  }
+  node.scope = s.scope;
+  return graph().Add(std::move(node));
+}
+
+FrameNodeId SdfReader::AddAnchor(const ModelScope& s, const xml::XmlElement& pose_element,
+                                 Symbol link_name, Loc loc, ir::FrameTarget target,
+                                 uint32_t index) {
+  ir::FrameNode node;
+  node.kind = ir::FrameNodeKind::Anchor;
+  node.scope = s.scope;
+  node.loc = loc;
+  node.relative_to = RelativeTo(pose_element);
+  if (node.relative_to.empty()) node.relative_to = {link_name, loc};
+  node.X_RN = ReadPoseValue(pose_element);
+  node.attached_to = {link_name, loc};
+  node.target = target;
+  node.target_index = index;
+  return graph().Add(std::move(node));
+}
+
+void SdfReader::CheckChildren(const xml::XmlElement& e,
+                              std::initializer_list<std::string_view> known,
+                              std::initializer_list<std::string_view> unsupported) {
+  for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
+    std::string_view tag = child.Name();
+    bool is_known = false;
+    for (std::string_view k : known) is_known |= (k == tag);
+    if (is_known) continue;
+    bool is_unsupported = false;
+    for (std::string_view k : unsupported) is_unsupported |= (k == tag);
+    if (is_unsupported) {
+      diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
+                     fmt::format("tag '{}' found as a child of '{}' is currently unsupported and "
+                                 "will be ignored",
+                                 tag, e.Name()));
+    } else if (tag.starts_with("drake:")) {
+      diags().Report(DiagKind::UnknownElement, child.GetLoc(),
+                     fmt::format("unsupported element <{}> in <{}> is ignored", tag, e.Name()));
+    } else if (tag.find(':') == std::string_view::npos) {
+      diags().Report(DiagKind::UnknownSdfElement, child.GetLoc(),
+                     fmt::format("<{}> is not an SDFormat element of <{}>", tag, e.Name()));
+    }
+    // other namespaces (gazebo:, ignition:, ...) belong to other tools (SDF-001)
+  }
+}
+
+std::optional<ModelId> SdfReader::ReadRootFile(FileId file_id) {
+  std::shared_ptr<const xml::XmlDocument> doc =
+      xml::XmlDocument::Parse(file_id, ctx_.sources, ctx_.diags);
+  if (!doc) return std::nullopt;
+  if (ctx_.retained) ctx_.retained->documents.push_back(doc);
+  documents_.push_back(doc);
+  auto file = std::make_unique<SdfFile>();
+  file->doc = doc.get();
+  file->path = std::string(ctx_.sources.Path(file_id));
+  file->dir = DirectoryOf(file->path);
+  const SdfFile& root_file = *file;
+  files_.push_back(std::move(file));
+
+  xml::XmlElement sdf = doc->Root();
+  if (sdf.Name() != "sdf") {
+    diags().Report(DiagKind::WrongRoot, sdf.GetLoc(),
+                   fmt::format("SDFormat file must have an <sdf> root element, found <{}>",
+                               sdf.Name()));
+    return std::nullopt;
+  }
+  auto version_text = attrs_.String(sdf, "version", xml::Need::Required);
+  if (!version_text) return std::nullopt;
+  auto version = ParseVersion(*version_text);
+  if (!version || *version < 100) {
+    diags().Report(DiagKind::BadValue, sdf.Attribute("version").loc,
+                   fmt::format("unsupported SDFormat version '{}'", *version_text));
+    return std::nullopt;
+  }
+  files_.back()->version = *version;
+  attrs_.WarnUnknownAttributes(sdf, {"version", "xmlns:drake", "xmlns:xacro"});
+
+  // the world scope: its frame is the world body's
+  ir::FrameScope world_scope;
+  world_scope.name = module().Intern("world");
+  world_scope.model = ir::kWorldModel;
+  world_scope.is_world = true;
+  const FrameScopeId world_id = graph().Add(world_scope);
+  ir::FrameNode world_node;
+  world_node.kind = ir::FrameNodeKind::World;
+  world_node.name = module().Intern("world");
+  world_node.scope = world_id;
+  world_node.target = ir::FrameTarget::Body;
+  world_node.target_index = ir::kWorldBody.value;
+  graph()[world_id].frame = graph().Add(std::move(world_node));
+  ModelScope world{world_id, ir::kWorldModel, &root_file, false, module().Intern("world")};
+
+  xml::XmlElement model_element, world_element;
+  for (auto child = sdf.FirstChild(); child; child = child.NextSibling()) {
+    std::string_view tag = child.Name();
+    if (tag == "model") {
+      if (model_element) {
+        diags()
+            .Report(DiagKind::BadValue, child.GetLoc(),
+                    "a model file must hold exactly one top-level <model> (use a <world> for "
+                    "several)")
+            .Note(model_element.GetLoc(), "the first model is here");
+        return std::nullopt;
+      }
+      model_element = child;
+    } else if (tag == "world") {
+      if (world_element) {
+        diags()
+            .Report(DiagKind::BadValue, child.GetLoc(), "an SDFormat file may hold only one <world>")
+            .Note(world_element.GetLoc(), "the first world is here");
+        return std::nullopt;
+      }
+      world_element = child;
+    } else if (tag == "light" || tag == "actor") {
+      diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
+                     fmt::format("tag '{}' found as a child of 'sdf' is currently unsupported and "
+                                 "will be ignored",
+                                 tag));
+    } else {
+      CheckChildren(sdf, {"model", "world", "light", "actor"});
+      break;
+    }
+  }
+  if (model_element && world_element) {
+    diags()
+        .Report(DiagKind::BadValue, model_element.GetLoc(),
+                "an SDFormat file holds either one <model> or one <world>, not both")
+        .Note(world_element.GetLoc(), "the world is here");
+    return std::nullopt;
+  }
+  if (world_element) return ReadWorld(world_element, root_file);
+  if (!model_element) {
+    diags().Report(DiagKind::MissingElement, sdf.GetLoc(),
+                   "the SDFormat file holds no <model> and no <world>");
+    return std::nullopt;
+  }
+  if (ir::NameRef r = RelativeTo(model_element.Child("pose")); !r.empty()) {
+    diags().Report(DiagKind::BadValue, r.loc,
+                   "the pose of a top-level model must not have a relative_to attribute: "
+                   "nothing lies outside it");
+  }
+  return ReadModel(model_element, root_file, &world, nullptr);
+}
+
+std::optional<ModelId> SdfReader::ReadWorld(const xml::XmlElement& e, const SdfFile& file) {
+  auto name = attrs_.String(e, "name", xml::Need::Required);
+  if (!name) return std::nullopt;
+  CheckChildren(e,
+                {"model", "include", "frame", "joint", "audio", "wind", "gravity",
+                 "magnetic_field", "atmosphere", "gui", "physics", "scene", "plugin",
+                 "road", "spherical_coordinates", "state", "population", "light", "actor"},
+                {});
+  const FrameScopeId world_id{uint32_t{0}};
+  ModelScope world{world_id, ir::kWorldModel, &file, false, module().Intern("world")};
+  std::vector<xml::XmlElement> joints;
+  for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
+    std::string_view tag = child.Name();
+    if (tag == "model") {
+      ReadModel(child, file, &world, nullptr);
+    } else if (tag == "include") {
+      ReadInclude(child, file, &world);
+    } else if (tag == "frame") {
+      ReadFrame(child, world);
+    } else if (tag == "joint") {
+      joints.push_back(child);  // world joints connect models, which may come later
+    } else if (tag == "light" || tag == "actor") {
+      diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
+                     fmt::format("tag '{}' found as a child of 'world' is currently unsupported "
+                                 "and will be ignored",
+                                 tag));
+    }
+    // physics, scene, gravity, plugins...: simulator settings, not the model
+  }
+  for (const xml::XmlElement& j : joints) ReadJoint(j, world);
+  if (!first_model_) {
+    // a world with no model is a valid (empty) scene
+    return ir::kWorldModel;
+  }
+  return first_model_;
+}
+
+std::optional<ModelId> SdfReader::ReadModel(const xml::XmlElement& e, const SdfFile& file,
+                                            const ModelScope* parent,
+                                            const ModelOverrides* overrides) {
+  auto written_name = attrs_.String(e, "name", xml::Need::Required);
+  attrs_.WarnUnknownAttributes(e, {"name", "canonical_link", "placement_frame"});
+  std::string local_name =
+      overrides && overrides->name ? *overrides->name : std::string(written_name.value_or(""));
+  const Loc loc = overrides ? overrides->loc : e.GetLoc();
+  if (!written_name && !(overrides && overrides->name)) return std::nullopt;
+  if (!CheckDefinedName(local_name, loc, "model")) return std::nullopt;
+
+  const ir::FrameScope& parent_scope = graph()[parent->scope];
+  const bool top_level = parent_scope.is_world;
+  std::optional<ModelId> model;
+  if (top_level && files_.size() >= 1 && &file == files_.front().get() && !first_model_) {
+    // the root file's first model takes --model-name and --auto-rename
+    model = AddModelInstance(local_name, loc, ir::SourceFormat::Sdf, ctx_);
+  } else if (top_level) {
+    FrontendContext plain = ctx_;
+    plain.options.model_name.reset();
+    model = AddModelInstance(local_name, loc, ir::SourceFormat::Sdf, plain);
+  } else {
+    std::string scoped = module().ScopedName(parent->model, module().Intern(local_name));
+    model = module().Add(ir::ModelInstance{module().Intern(scoped), loc, ir::SourceFormat::Sdf});
+  }
+  if (!model) return std::nullopt;
+  if (!first_model_) first_model_ = model;
+
+  // the model's scope, and its frame as a node of the parent scope
+  ir::FrameScope scope;
+  scope.name = module().Intern(local_name);
+  scope.loc = loc;
+  scope.parent = parent->scope;
+  scope.model = *model;
+  if (auto a = e.Attribute("canonical_link"); a.present()) {
+    scope.canonical_link = {module().Intern(a.value), a.loc};
+  }
+  if (overrides && !overrides->placement_frame.empty()) {
+    scope.placement_frame = overrides->placement_frame;
+  } else if (auto a = e.Attribute("placement_frame"); a.present()) {
+    scope.placement_frame = {module().Intern(a.value), a.loc};
+  }
+  bool is_static = parent->is_static;
+  if (auto s = ChildBool(e, "static")) is_static = is_static || *s;
+  if (overrides && overrides->is_static) is_static = is_static || *overrides->is_static;
+  scope.is_static = is_static;
+  const FrameScopeId scope_id = graph().Add(std::move(scope));
+  graph()[parent->scope].children.push_back(scope_id);
+
+  // Drake gives every SDFormat model instance a `__model__` frame (COMMON-024)
+  ir::Frame model_frame;
+  model_frame.name = module().Intern("__model__");
+  model_frame.model = *model;
+  model_frame.loc = loc;
+  const FrameId model_frame_id = module().Add(std::move(model_frame));
+
+  xml::XmlElement pose = overrides && overrides->pose ? overrides->pose : e.Child("pose");
+  ir::FrameNode node;
+  node.kind = ir::FrameNodeKind::Model;
+  node.name = module().Intern(local_name);
+  node.loc = loc;
+  node.relative_to = RelativeTo(pose);
+  if (node.relative_to.empty()) node.relative_to = {parent->model_frame_name, loc};
+  node.X_RN = ReadPoseValue(pose);
+  node.nested = scope_id;
+  node.target = ir::FrameTarget::Frame;
+  node.target_index = model_frame_id.value;
+  graph()[scope_id].frame = AddNode(*parent, std::move(node));
+
+  ModelScope s{scope_id, *model, &file, is_static, module().Intern("__model__")};
+  ReadModelBody(e, s);
+  return model;
+}
+
+void SdfReader::ReadModelBody(const xml::XmlElement& e, ModelScope& s) {
+  CheckChildren(e,
+                {"static", "self_collide", "allow_auto_disable", "include", "model",
+                 "enable_wind", "frame", "pose", "link", "joint", "plugin"},
+                {"gripper"});
+  std::vector<xml::XmlElement> joints, drake_elements;
+  for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
+    std::string_view tag = child.Name();
+    if (tag == "link") {
+      ReadLink(child, s);
+    } else if (tag == "model") {
+      ReadModel(child, *s.file, &s, nullptr);
+    } else if (tag == "include") {
+      ReadInclude(child, *s.file, &s);
+    } else if (tag == "frame") {
+      ReadFrame(child, s);
+    } else if (tag == "joint") {
+      joints.push_back(child);
+    } else if (tag.starts_with("drake:")) {
+      drake_elements.push_back(child);
+    } else if (tag == "self_collide" || tag == "enable_wind" || tag == "allow_auto_disable") {
+      if (auto v = TextBool(child); v && *v) {
+        diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
+                       fmt::format("tag '{}' found as a child of 'model' is currently "
+                                   "unsupported and will be ignored",
+                                   tag));
+      }
+    }
+  }
+  // joints after every link and nested model, as Drake adds them
+  for (const xml::XmlElement& j : joints) ReadJoint(j, s);
+  for (const xml::XmlElement& d : drake_elements) ReadDrakeModelElement(d, s);
+}
+
+}  // namespace mdlc::frontend::sdf

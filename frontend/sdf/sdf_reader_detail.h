@@ -1,0 +1,160 @@
+// sdf_reader_detail.h - state shared by the pieces of the SDFormat frontend.
+//
+// The frontend is split by element group, one file each:
+//   sdf_reader.cc         <sdf>, <world>, <model>: scopes, names, dispatch
+//   sdf_include.cc        <include>: SDFormat and URDF files, merge-include
+//   sdf_values.cc         element-text values (numbers, vectors, booleans, poses)
+//   sdf_link.cc           <link>, <inertial>, <frame>
+//   sdf_joint.cc          <joint>: types, axes, limits, dynamics, actuators
+//   sdf_geometry.cc       <visual>, <collision>, shapes, materials, sensors
+//   sdf_drake_elements.cc drake: elements of a model (custom joints, filter
+//                         groups, bushings, constraints, deformables, mimic)
+// Poses and attachments are recorded in Module::frame_graph, unevaluated;
+// the resolve-frames pass evaluates them. Other references stay names until
+// resolve-names.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "frontend/frontend.h"
+#include "frontend/xml/attribute_reader.h"
+#include "frontend/xml/xml_document.h"
+
+namespace mdlc::frontend::sdf {
+
+/// A file being read, and the chain of files that included it (SDF-033).
+struct SdfFile {
+  const xml::XmlDocument* doc = nullptr;
+  std::string path;
+  std::string dir;  // relative URIs resolve against it
+  const SdfFile* included_from = nullptr;
+  /// SDFormat version as written on <sdf version>: major*100 + minor (1.9 -> 109).
+  int version = 109;
+};
+
+/// The model scope being read: where its entities go and how names are looked up.
+struct ModelScope {
+  FrameScopeId scope;
+  ModelId model;
+  const SdfFile* file = nullptr;
+  bool is_static = false;
+  /// The name "__model__" means in this scope (a merged model's own frame node name).
+  Symbol model_frame_name;
+};
+
+class SdfReader {
+ public:
+  SdfReader(FrontendContext& ctx) : ctx_(ctx), attrs_(ctx.diags) {}
+
+  /// Reads the top-level file: a model file adds its model, a world file
+  /// every model of the world. Returns the first instance added.
+  std::optional<ModelId> ReadRootFile(FileId file);
+
+  // --- sdf_values.cc: element-text values (all report at the element) ---
+  /// Text of the child `name` (trimmed); nullopt when absent (error if required).
+  std::optional<std::string> ChildText(const xml::XmlElement& parent, std::string_view name,
+                                       xml::Need need = xml::Need::Optional);
+  std::optional<double> TextDouble(const xml::XmlElement& e,
+                                   xml::Finite finite = xml::Finite::Required);
+  std::optional<double> ChildDouble(const xml::XmlElement& parent, std::string_view name,
+                                    xml::Need need = xml::Need::Optional,
+                                    xml::Finite finite = xml::Finite::Required);
+  /// Exactly `count` numbers in the element's text.
+  std::optional<std::vector<double>> TextDoubles(const xml::XmlElement& e, size_t count,
+                                                 xml::Finite finite = xml::Finite::Required);
+  std::optional<Eigen::Vector3d> TextVector3(const xml::XmlElement& e);
+  std::optional<Eigen::Vector3d> ChildVector3(const xml::XmlElement& parent, std::string_view name,
+                                              xml::Need need = xml::Need::Optional);
+  /// SDFormat booleans: true/false/1/0.
+  std::optional<bool> TextBool(const xml::XmlElement& e);
+  std::optional<bool> ChildBool(const xml::XmlElement& parent, std::string_view name);
+  /// <pose relative_to rotation_format degrees>: X_RF (SDF-003). Identity
+  /// when `pose` is null. Reports bad values and returns identity for them.
+  Transform ReadPoseValue(const xml::XmlElement& pose);
+  /// relative_to of `pose` (empty NameRef when absent or `pose` is null).
+  ir::NameRef RelativeTo(const xml::XmlElement& pose);
+
+  // --- sdf_reader.cc: names and the frame graph ---
+  /// Checks a name defined in a scope (SDF-034, COMMON-031): not empty, no
+  /// "::", not reserved (world, __model__, __anything__). False after an error.
+  bool CheckDefinedName(std::string_view name, Loc loc, std::string_view kind);
+  /// Adds a named frame node to scope `s`, reporting a sibling of the same
+  /// name (SDF names of links, joints, frames and models share one namespace).
+  FrameNodeId AddNode(const ModelScope& s, ir::FrameNode node);
+  /// Adds an unnamed anchor node: the pose of `pose_element` relative to its
+  /// relative_to, defaulting to `link_name` (visuals, collisions, sensors).
+  FrameNodeId AddAnchor(const ModelScope& s, const xml::XmlElement& pose_element,
+                        Symbol link_name, Loc loc, ir::FrameTarget target, uint32_t index);
+  /// Reports unknown children of an SDF element (SDF-001): drake: ones warn,
+  /// other namespaced ones are skipped silently, plain ones are errors.
+  void CheckChildren(const xml::XmlElement& e, std::initializer_list<std::string_view> known,
+                     std::initializer_list<std::string_view> unsupported = {});
+
+  // --- sdf_link.cc ---
+  void ReadLink(const xml::XmlElement& e, ModelScope& s);
+  void ReadInertial(const xml::XmlElement& e, ir::Body& body);
+  void ReadFrame(const xml::XmlElement& e, ModelScope& s);
+
+  // --- sdf_joint.cc ---
+  void ReadJoint(const xml::XmlElement& e, ModelScope& s);
+
+  // --- sdf_geometry.cc: children of a link ---
+  void ReadVisual(const xml::XmlElement& e, ModelScope& s, BodyId body, Symbol link_name);
+  void ReadCollision(const xml::XmlElement& e, ModelScope& s, BodyId body, Symbol link_name);
+  void ReadSensor(const xml::XmlElement& e, ModelScope& s, BodyId body, Symbol link_name);
+
+  // --- sdf_drake_elements.cc: model-level drake: elements, read after every
+  // link, joint and nested model of the model (EXT-001, EXT-040, EXT-050..054)
+  void ReadDrakeModelElement(const xml::XmlElement& e, ModelScope& s);
+  /// drake: children of a <joint> (drake:mimic, drake:rotor_inertia,
+  /// drake:gear_ratio, drake:controller_gains; SDF-021, EXT-010, EXT-012..014).
+  /// Called after the joint and its actuator (if any) exist.
+  void ReadJointDrakeChildren(const xml::XmlElement& joint_element, ModelScope& s, JointId joint,
+                              std::optional<ActuatorId> actuator);
+  /// drake:deformable_properties on a link (EXT-070); `body` is the link's body.
+  void ReadDeformableProperties(const xml::XmlElement& link, ModelScope& s, BodyId body);
+
+  FrontendContext& ctx_;
+  xml::AttributeReader attrs_;
+  ir::Module& module() { return ctx_.module; }
+  ir::FrameGraph& graph() { return ctx_.module.frame_graph; }
+  DiagnosticEngine& diags() { return ctx_.diags; }
+
+  // implementation details of sdf_reader.cc / sdf_include.cc
+  std::optional<ModelId> ReadWorld(const xml::XmlElement& e, const SdfFile& file);
+  struct ModelOverrides {
+    std::optional<std::string> name;
+    std::optional<bool> is_static;
+    xml::XmlElement pose;             // the include's <pose>, if any
+    ir::NameRef placement_frame;
+    Loc loc;                          // the <include>
+  };
+  std::optional<ModelId> ReadModel(const xml::XmlElement& e, const SdfFile& file,
+                                   const ModelScope* parent, const ModelOverrides* overrides);
+  void ReadModelBody(const xml::XmlElement& e, ModelScope& s);
+  void ReadInclude(const xml::XmlElement& e, const SdfFile& file, const ModelScope* parent);
+  void ReadWorldJoint(const xml::XmlElement& e, ModelScope& world);
+
+  // per-scope names already defined: (scope, name) -> location
+  struct ScopedKey {
+    uint32_t scope, name;
+    friend bool operator==(const ScopedKey&, const ScopedKey&) = default;
+  };
+  struct ScopedKeyHash {
+    size_t operator()(const ScopedKey& k) const {
+      return (size_t{k.scope} * 0x9E3779B97F4A7C15ull) ^ k.name;
+    }
+  };
+  std::unordered_map<ScopedKey, Loc, ScopedKeyHash> defined_;
+  // geometry names per (body, role) for uniqueness checks in sdf_geometry.cc
+  std::unordered_map<ScopedKey, Loc, ScopedKeyHash> geometry_names_;
+  std::vector<std::shared_ptr<const xml::XmlDocument>> documents_;
+  std::vector<std::unique_ptr<SdfFile>> files_;
+  std::optional<ModelId> first_model_;
+};
+
+}  // namespace mdlc::frontend::sdf

@@ -1,0 +1,179 @@
+// sdf_values.cc - SDFormat values written as element text: numbers, vectors,
+// booleans and poses (SDF-003). Each reader reports its own problem at the
+// element and returns nullopt, so callers skip what they could not read.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "frontend/sdf/sdf_reader_detail.h"
+
+namespace mdlc::frontend::sdf {
+namespace {
+std::string_view Trim(std::string_view s) {
+  auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+  while (!s.empty() && space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && space(s.back())) s.remove_suffix(1);
+  return s;
+}
+}  // namespace
+
+std::optional<std::string> SdfReader::ChildText(const xml::XmlElement& parent,
+                                                std::string_view name, xml::Need need) {
+  xml::XmlElement child = parent.Child(name);
+  if (!child) {
+    if (need == xml::Need::Required) {
+      diags().Report(DiagKind::MissingElement, parent.GetLoc(),
+                     fmt::format("<{}> is missing required element <{}>", parent.Name(), name));
+    }
+    return std::nullopt;
+  }
+  return std::string(Trim(child.Text()));
+}
+
+std::optional<double> SdfReader::TextDouble(const xml::XmlElement& e, xml::Finite finite) {
+  std::string text = e.Text();
+  auto v = xml::ParseDouble(text);
+  if (!v) {
+    diags().Report(DiagKind::BadValue, e.GetLoc(),
+                   fmt::format("<{}> must hold a number, found '{}'", e.Name(), Trim(text)));
+    return std::nullopt;
+  }
+  if (finite == xml::Finite::Required && !std::isfinite(*v)) {
+    diags().Report(DiagKind::NonFinite, e.GetLoc(),
+                   fmt::format("<{}> must be finite, found '{}'", e.Name(), Trim(text)));
+    return std::nullopt;
+  }
+  return v;
+}
+
+std::optional<double> SdfReader::ChildDouble(const xml::XmlElement& parent, std::string_view name,
+                                             xml::Need need, xml::Finite finite) {
+  xml::XmlElement child = parent.Child(name);
+  if (!child) {
+    if (need == xml::Need::Required) {
+      diags().Report(DiagKind::MissingElement, parent.GetLoc(),
+                     fmt::format("<{}> is missing required element <{}>", parent.Name(), name));
+    }
+    return std::nullopt;
+  }
+  return TextDouble(child, finite);
+}
+
+std::optional<std::vector<double>> SdfReader::TextDoubles(const xml::XmlElement& e, size_t count,
+                                                          xml::Finite finite) {
+  std::string text = e.Text();
+  auto values = xml::ParseDoubleList(text);
+  if (!values || values->size() != count) {
+    diags().Report(DiagKind::BadValue, e.GetLoc(),
+                   fmt::format("<{}> must hold {} numbers, found '{}'", e.Name(), count,
+                               Trim(text)));
+    return std::nullopt;
+  }
+  if (finite == xml::Finite::Required) {
+    for (double v : *values) {
+      if (!std::isfinite(v)) {
+        diags().Report(DiagKind::NonFinite, e.GetLoc(),
+                       fmt::format("<{}> must hold finite numbers, found '{}'", e.Name(),
+                                   Trim(text)));
+        return std::nullopt;
+      }
+    }
+  }
+  return values;
+}
+
+std::optional<Eigen::Vector3d> SdfReader::TextVector3(const xml::XmlElement& e) {
+  auto v = TextDoubles(e, 3);
+  if (!v) return std::nullopt;
+  return Eigen::Vector3d((*v)[0], (*v)[1], (*v)[2]);
+}
+
+std::optional<Eigen::Vector3d> SdfReader::ChildVector3(const xml::XmlElement& parent,
+                                                       std::string_view name, xml::Need need) {
+  xml::XmlElement child = parent.Child(name);
+  if (!child) {
+    if (need == xml::Need::Required) {
+      diags().Report(DiagKind::MissingElement, parent.GetLoc(),
+                     fmt::format("<{}> is missing required element <{}>", parent.Name(), name));
+    }
+    return std::nullopt;
+  }
+  return TextVector3(child);
+}
+
+std::optional<bool> SdfReader::TextBool(const xml::XmlElement& e) {
+  std::string text(Trim(e.Text()));
+  if (text == "true" || text == "1") return true;
+  if (text == "false" || text == "0") return false;
+  diags().Report(DiagKind::BadValue, e.GetLoc(),
+                 fmt::format("<{}> must be true, false, 1 or 0, found '{}'", e.Name(), text));
+  return std::nullopt;
+}
+
+std::optional<bool> SdfReader::ChildBool(const xml::XmlElement& parent, std::string_view name) {
+  xml::XmlElement child = parent.Child(name);
+  if (!child) return std::nullopt;
+  return TextBool(child);
+}
+
+ir::NameRef SdfReader::RelativeTo(const xml::XmlElement& pose) {
+  if (!pose) return {};
+  xml::XmlAttribute a = pose.Attribute("relative_to");
+  if (!a.present() || a.value.empty()) {
+    // SDFormat 1.4 to 1.6 spelled it `frame`; an empty one means the default
+    a = pose.Attribute("frame");
+    if (!a.present() || a.value.empty()) return {};
+  }
+  return {module().Intern(a.value), a.loc};
+}
+
+Transform SdfReader::ReadPoseValue(const xml::XmlElement& pose) {
+  if (!pose) return Transform::Identity();
+  attrs_.WarnUnknownAttributes(pose, {"relative_to", "frame", "rotation_format", "degrees"});
+  bool degrees = false;
+  if (auto d = attrs_.Bool(pose, "degrees")) degrees = *d;
+  std::string_view format = "euler_rpy";
+  if (auto f = attrs_.String(pose, "rotation_format")) format = *f;
+  std::string text = pose.Text();
+  if (Trim(text).empty()) return Transform::Identity();
+  auto values = xml::ParseDoubleList(text);
+  const size_t want = format == "quat_xyzw" ? 7 : 6;
+  if (format != "euler_rpy" && format != "quat_xyzw") {
+    diags().Report(DiagKind::BadValue, pose.Attribute("rotation_format").loc,
+                   fmt::format("rotation_format must be 'euler_rpy' or 'quat_xyzw', found '{}'",
+                               format));
+    return Transform::Identity();
+  }
+  if (!values || values->size() != want) {
+    diags().Report(DiagKind::BadValue, pose.GetLoc(),
+                   fmt::format("<pose> must hold {} numbers ({}), found '{}'", want,
+                               want == 7 ? "x y z qx qy qz qw" : "x y z roll pitch yaw",
+                               Trim(text)));
+    return Transform::Identity();
+  }
+  for (double v : *values) {
+    if (!std::isfinite(v)) {
+      diags().Report(DiagKind::NonFinite, pose.GetLoc(),
+                     fmt::format("<pose> must hold finite numbers, found '{}'", Trim(text)));
+      return Transform::Identity();
+    }
+  }
+  const auto& v = *values;
+  Transform X;
+  X.p = Eigen::Vector3d(v[0], v[1], v[2]);
+  if (want == 7) {
+    Eigen::Quaterniond q(v[6], v[3], v[4], v[5]);  // file order x y z w
+    if (q.norm() < 1e-12) {
+      diags().Report(DiagKind::BadValue, pose.GetLoc(), "<pose> quaternion must not be zero");
+      return Transform::Identity();
+    }
+    X.R = q.normalized().toRotationMatrix();
+  } else {
+    const double scale = degrees ? std::numbers::pi / 180.0 : 1.0;
+    X.R = RotationFromRpy(Eigen::Vector3d(v[3], v[4], v[5]) * scale);
+  }
+  return X;
+}
+
+}  // namespace mdlc::frontend::sdf
