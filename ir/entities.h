@@ -53,6 +53,28 @@ struct Inertial {
   double ixx = 0, iyy = 0, izz = 0, ixy = 0, ixz = 0, iyz = 0;
 };
 
+/// A deformable body's FEM parameters (Drake's DeformableBodyConfig, with its
+/// defaults) and wall boundary conditions (EXT-070).
+struct DeformableProperties {
+  Loc loc;  // the drake:deformable_properties element
+  double youngs_modulus = 1e8;   // Pa, > 0
+  double poissons_ratio = 0.49;  // in (-1, 0.5)
+  double mass_damping = 0;       // 1/s, >= 0
+  double stiffness_damping = 0;  // s, >= 0
+  double mass_density = 1.5e3;   // kg/m^3, > 0
+  /// linear_corotated, corotated, neohookean or linear
+  std::string material_model = "linear_corotated";
+  /// drake:mesh_resolution_hint of a sphere collision (tetrahedralization); absent for meshes
+  std::optional<double> resolution_hint;
+  /// drake:wall_boundary_condition: nodes in the half space behind the plane
+  /// through point_on_plane, with unit outward_normal (both in world) are fixed
+  struct WallBoundaryCondition {
+    Eigen::Vector3d point_on_plane = Eigen::Vector3d::Zero();
+    Eigen::Vector3d outward_normal = Eigen::Vector3d::UnitZ();
+  };
+  std::vector<WallBoundaryCondition> wall_boundary_conditions;
+};
+
 struct Body {
   Symbol name;
   ModelId model;
@@ -64,6 +86,11 @@ struct Body {
   /// X_WB where the file places the body (SDFormat links); a free body's
   /// floating joint starts there (SDF-008)
   std::optional<Transform> default_pose;
+  /// drake:deformable_properties (EXT-070): the link is a deformable body,
+  /// simulated by FEM outside the rigid plant. It has no mass and no joint
+  /// in the rigid plant; its one collision (and optional visual) geometry
+  /// stays registered on it.
+  std::optional<DeformableProperties> deformable;
 };
 
 /// A frame fixed to a body: X_BF.

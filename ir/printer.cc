@@ -108,6 +108,20 @@ std::string Printer::Run() {
                           Num(in.ixz), Num(in.iyz));
     }
     if (b.surface_velocity_axis) out_ += " surface_velocity_axis=" + Vec(*b.surface_velocity_axis);
+    if (b.deformable) {
+      const DeformableProperties& d = *b.deformable;
+      out_ += fmt::format(
+          " deformable{{youngs_modulus={} poissons_ratio={} mass_damping={} "
+          "stiffness_damping={} mass_density={} material_model={}",
+          Num(d.youngs_modulus), Num(d.poissons_ratio), Num(d.mass_damping),
+          Num(d.stiffness_damping), Num(d.mass_density), d.material_model);
+      if (d.resolution_hint) out_ += " resolution_hint=" + Num(*d.resolution_hint);
+      for (const auto& wall : d.wall_boundary_conditions) {
+        out_ += fmt::format(" wall={{point={} normal={}}}", Vec(wall.point_on_plane),
+                            Vec(wall.outward_normal));
+      }
+      out_ += "}";
+    }
     out_ += Where(b.loc) + "\n";
   }
   for (size_t i = 0; i < m_.frames.size(); ++i) {

@@ -11,6 +11,7 @@ PassInfo Info() {
 
 const std::vector<PassInfo>& RegisteredPasses() {
   static const std::vector<PassInfo> passes = {
+      Info<CreateResolveFramesPass>(),
       Info<CreateResolveNamesPass>(),
       Info<CreateCheckJointsPass>(),
       Info<CreateCheckModelElementsPass>(),
