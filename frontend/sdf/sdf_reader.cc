@@ -3,6 +3,8 @@
 // (SDF-001, SDF-002, SDF-005, SDF-006, SDF-030, SDF-034, SDF-035).
 #include <fmt/format.h>
 
+#include <filesystem>
+
 #include "frontend/model_naming.h"
 #include "frontend/sdf/sdf_reader_detail.h"
 
@@ -131,6 +133,7 @@ std::optional<ModelId> SdfReader::ReadRootFile(FileId file_id) {
   const SdfFile& root_file = *file;
   files_.push_back(std::move(file));
 
+  std::error_code fs_error;
   xml::XmlElement sdf = doc->Root();
   if (sdf.Name() != "sdf") {
     diags().Report(DiagKind::WrongRoot, sdf.GetLoc(),
@@ -141,6 +144,7 @@ std::optional<ModelId> SdfReader::ReadRootFile(FileId file_id) {
   auto version_text = attrs_.String(sdf, "version", xml::Need::Required);
   if (!version_text) return std::nullopt;
   auto version = ParseVersion(*version_text);
+  files_.back()->canonical = std::filesystem::weakly_canonical(files_.back()->path, fs_error).string();
   if (!version || *version < 100) {
     diags().Report(DiagKind::BadValue, sdf.Attribute("version").loc,
                    fmt::format("unsupported SDFormat version '{}'", *version_text));
@@ -213,7 +217,7 @@ std::optional<ModelId> SdfReader::ReadRootFile(FileId file_id) {
                    "the pose of a top-level model must not have a relative_to attribute: "
                    "nothing lies outside it");
   }
-  return ReadModel(model_element, root_file, &world, nullptr);
+  return ReadModelTree(model_element, root_file, world, nullptr);
 }
 
 std::optional<ModelId> SdfReader::ReadWorld(const xml::XmlElement& e, const SdfFile& file) {
@@ -230,9 +234,9 @@ std::optional<ModelId> SdfReader::ReadWorld(const xml::XmlElement& e, const SdfF
   for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
     std::string_view tag = child.Name();
     if (tag == "model") {
-      ReadModel(child, file, &world, nullptr);
+      ReadModelTree(child, file, world, nullptr);
     } else if (tag == "include") {
-      ReadInclude(child, file, &world);
+      ReadInclude(child, file, world);
     } else if (tag == "frame") {
       ReadFrame(child, world);
     } else if (tag == "joint") {
@@ -253,8 +257,29 @@ std::optional<ModelId> SdfReader::ReadWorld(const xml::XmlElement& e, const SdfF
   return first_model_;
 }
 
+int SdfReader::ParseVersionNumber(std::string_view text) {
+  return ParseVersion(text).value_or(109);
+}
+
+std::optional<ModelId> SdfReader::ReadModelTree(const xml::XmlElement& e, const SdfFile& file,
+                                                ModelScope parent,
+                                                const ModelOverrides* overrides) {
+  const size_t pending = pending_models_.size();
+  auto model = ReadModel(e, file, parent, overrides);
+  DrainPendingModels(pending);
+  return model;
+}
+
+void SdfReader::DrainPendingModels(size_t down_to) {
+  while (pending_models_.size() > down_to) {
+    PendingModel next = pending_models_.back();
+    pending_models_.pop_back();
+    ReadModel(next.element, *next.file, next.parent, nullptr);
+  }
+}
+
 std::optional<ModelId> SdfReader::ReadModel(const xml::XmlElement& e, const SdfFile& file,
-                                            const ModelScope* parent,
+                                            ModelScope parent,
                                             const ModelOverrides* overrides) {
   auto written_name = attrs_.String(e, "name", xml::Need::Required);
   attrs_.WarnUnknownAttributes(e, {"name", "canonical_link", "placement_frame"});
@@ -264,10 +289,9 @@ std::optional<ModelId> SdfReader::ReadModel(const xml::XmlElement& e, const SdfF
   if (!written_name && !(overrides && overrides->name)) return std::nullopt;
   if (!CheckDefinedName(local_name, loc, "model")) return std::nullopt;
 
-  const ir::FrameScope& parent_scope = graph()[parent->scope];
-  const bool top_level = parent_scope.is_world;
+  const bool top_level = graph()[parent.scope].is_world;
   std::optional<ModelId> model;
-  if (top_level && files_.size() >= 1 && &file == files_.front().get() && !first_model_) {
+  if (top_level && &file == files_.front().get() && !first_model_) {
     // the root file's first model takes --model-name and --auto-rename
     model = AddModelInstance(local_name, loc, ir::SourceFormat::Sdf, ctx_);
   } else if (top_level) {
@@ -275,18 +299,28 @@ std::optional<ModelId> SdfReader::ReadModel(const xml::XmlElement& e, const SdfF
     plain.options.model_name.reset();
     model = AddModelInstance(local_name, loc, ir::SourceFormat::Sdf, plain);
   } else {
-    std::string scoped = module().ScopedName(parent->model, module().Intern(local_name));
+    std::string scoped = module().ScopedName(parent.model, module().Intern(local_name));
     model = module().Add(ir::ModelInstance{module().Intern(scoped), loc, ir::SourceFormat::Sdf});
   }
   if (!model) return std::nullopt;
   if (!first_model_) first_model_ = model;
 
-  // the model's scope, and its frame as a node of the parent scope
+  const FrameScopeId scope_id = OpenScope(e, parent, overrides, local_name, *model, false);
+  ModelScope s{scope_id, *model, &file, graph()[scope_id].is_static, module().Intern("__model__")};
+  ReadModelBody(e, s);
+  return model;
+}
+
+FrameScopeId SdfReader::OpenScope(const xml::XmlElement& e, const ModelScope& parent,
+                                  const ModelOverrides* overrides, const std::string& local_name,
+                                  ModelId model, bool merged) {
+  const Loc loc = overrides ? overrides->loc : e.GetLoc();
   ir::FrameScope scope;
   scope.name = module().Intern(local_name);
   scope.loc = loc;
-  scope.parent = parent->scope;
-  scope.model = *model;
+  scope.parent = parent.scope;
+  if (merged) scope.merged_into = parent.scope;
+  scope.model = model;
   if (auto a = e.Attribute("canonical_link"); a.present()) {
     scope.canonical_link = {module().Intern(a.value), a.loc};
   }
@@ -295,36 +329,36 @@ std::optional<ModelId> SdfReader::ReadModel(const xml::XmlElement& e, const SdfF
   } else if (auto a = e.Attribute("placement_frame"); a.present()) {
     scope.placement_frame = {module().Intern(a.value), a.loc};
   }
-  bool is_static = parent->is_static;
+  bool is_static = parent.is_static;
   if (auto s = ChildBool(e, "static")) is_static = is_static || *s;
   if (overrides && overrides->is_static) is_static = is_static || *overrides->is_static;
   scope.is_static = is_static;
   const FrameScopeId scope_id = graph().Add(std::move(scope));
-  graph()[parent->scope].children.push_back(scope_id);
+  graph()[parent.scope].children.push_back(scope_id);
 
-  // Drake gives every SDFormat model instance a `__model__` frame (COMMON-024)
+  // Drake gives every SDFormat model instance a `__model__` frame (COMMON-024);
+  // a merged model's frame is a frame of the model it merges into (SDF-032)
+  const Symbol node_name = merged ? module().Intern(fmt::format("_merged__{}__model__", local_name))
+                                  : module().Intern(local_name);
   ir::Frame model_frame;
-  model_frame.name = module().Intern("__model__");
-  model_frame.model = *model;
+  model_frame.name = merged ? node_name : module().Intern("__model__");
+  model_frame.model = model;
   model_frame.loc = loc;
   const FrameId model_frame_id = module().Add(std::move(model_frame));
 
   xml::XmlElement pose = overrides && overrides->pose ? overrides->pose : e.Child("pose");
   ir::FrameNode node;
   node.kind = ir::FrameNodeKind::Model;
-  node.name = module().Intern(local_name);
+  node.name = node_name;
   node.loc = loc;
   node.relative_to = RelativeTo(pose);
-  if (node.relative_to.empty()) node.relative_to = {parent->model_frame_name, loc};
+  if (node.relative_to.empty()) node.relative_to = {parent.model_frame_name, loc};
   node.X_RN = ReadPoseValue(pose);
   node.nested = scope_id;
   node.target = ir::FrameTarget::Frame;
   node.target_index = model_frame_id.value;
-  graph()[scope_id].frame = AddNode(*parent, std::move(node));
-
-  ModelScope s{scope_id, *model, &file, is_static, module().Intern("__model__")};
-  ReadModelBody(e, s);
-  return model;
+  graph()[scope_id].frame = AddNode(parent, std::move(node));
+  return scope_id;
 }
 
 void SdfReader::ReadModelBody(const xml::XmlElement& e, ModelScope& s) {
@@ -332,15 +366,15 @@ void SdfReader::ReadModelBody(const xml::XmlElement& e, ModelScope& s) {
                 {"static", "self_collide", "allow_auto_disable", "include", "model",
                  "enable_wind", "frame", "pose", "link", "joint", "plugin"},
                 {"gripper"});
-  std::vector<xml::XmlElement> joints, drake_elements;
+  std::vector<xml::XmlElement> joints, drake_elements, nested;
   for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
     std::string_view tag = child.Name();
     if (tag == "link") {
       ReadLink(child, s);
     } else if (tag == "model") {
-      ReadModel(child, *s.file, &s, nullptr);
+      nested.push_back(child);
     } else if (tag == "include") {
-      ReadInclude(child, *s.file, &s);
+      ReadInclude(child, *s.file, s);
     } else if (tag == "frame") {
       ReadFrame(child, s);
     } else if (tag == "joint") {
@@ -356,9 +390,14 @@ void SdfReader::ReadModelBody(const xml::XmlElement& e, ModelScope& s) {
       }
     }
   }
-  // joints after every link and nested model, as Drake adds them
+  // joints after every link, as Drake adds them; their frames may be in
+  // nested models not read yet, which is fine: the resolve-frames pass binds them
   for (const xml::XmlElement& j : joints) ReadJoint(j, s);
   for (const xml::XmlElement& d : drake_elements) ReadDrakeModelElement(d, s);
+  // nested models go on the work list, last first, so they are read in document order
+  for (auto it = nested.rbegin(); it != nested.rend(); ++it) {
+    pending_models_.push_back({*it, s.file, s});
+  }
 }
 
 }  // namespace mdlc::frontend::sdf

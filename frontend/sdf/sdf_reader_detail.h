@@ -31,7 +31,9 @@ struct SdfFile {
   const xml::XmlDocument* doc = nullptr;
   std::string path;
   std::string dir;  // relative URIs resolve against it
+  std::string canonical;  // absolute, for include-cycle checks
   const SdfFile* included_from = nullptr;
+  Loc include_loc;        // the <uri> that included it
   /// SDFormat version as written on <sdf version>: major*100 + minor (1.9 -> 109).
   int version = 109;
 };
@@ -133,11 +135,32 @@ class SdfReader {
     ir::NameRef placement_frame;
     Loc loc;                          // the <include>
   };
+  /// Reads a <model> and every model nested in it (SDF-030). Nested models
+  /// wait on a work list instead of recursing, so depth costs no stack.
+  std::optional<ModelId> ReadModelTree(const xml::XmlElement& e, const SdfFile& file,
+                                       ModelScope parent, const ModelOverrides* overrides);
   std::optional<ModelId> ReadModel(const xml::XmlElement& e, const SdfFile& file,
-                                   const ModelScope* parent, const ModelOverrides* overrides);
+                                   ModelScope parent, const ModelOverrides* overrides);
+  /// Creates a model's scope, its frame node in `parent` and its IR frame
+  /// (`__model__`, or `_merged__NAME__model__` when merged into `parent`).
+  FrameScopeId OpenScope(const xml::XmlElement& e, const ModelScope& parent,
+                         const ModelOverrides* overrides, const std::string& local_name,
+                         ModelId model, bool merged);
   void ReadModelBody(const xml::XmlElement& e, ModelScope& s);
-  void ReadInclude(const xml::XmlElement& e, const SdfFile& file, const ModelScope* parent);
-  void ReadWorldJoint(const xml::XmlElement& e, ModelScope& world);
+  void DrainPendingModels(size_t down_to);
+  void ReadInclude(const xml::XmlElement& e, const SdfFile& file, ModelScope parent);
+  std::optional<std::string> ModelFileInFolder(const std::string& dir, Loc loc);
+  void MergeModel(const xml::XmlElement& model, const SdfFile& file, ModelScope parent,
+                  const ModelOverrides& overrides);
+  void IncludeUrdf(FileId file, ModelScope parent, const ModelOverrides& overrides, bool merge);
+  static int ParseVersionNumber(std::string_view text);
+
+  struct PendingModel {
+    xml::XmlElement element;
+    const SdfFile* file;
+    ModelScope parent;
+  };
+  std::vector<PendingModel> pending_models_;
 
   // per-scope names already defined: (scope, name) -> location
   struct ScopedKey {
