@@ -95,6 +95,10 @@ std::optional<FrameNodeId> ResolveFramesPass::Lookup(FrameScopeId scope, const i
   std::string_view text = m().Text(ref.name);
   if (text == "world") return g().scopes[0].frame;
   if (text == "__model__") return g()[scope].frame;
+  // SDFormat 1.7 names could hold "::" themselves (flattened models)
+  if (auto it = names_.find(Key(Namespace(scope), ref.name)); it != names_.end()) {
+    return it->second;
+  }
   auto split = SplitScopedName(text);
   if (!split) {
     ctx_->diags.Report(DiagKind::InvalidName, ref.loc,
@@ -204,7 +208,8 @@ std::optional<FrameNodeId> ResolveFramesPass::AttachmentOf(FrameNodeId n) {
       if (!s.canonical_link.empty()) return attached_to_[n.index()];
       if (!s.links.empty()) return s.links.front();
       for (FrameScopeId c : s.children) return g()[c].frame;
-      return std::nullopt;
+      // a static model may have no link at all: its frame is fixed in the world
+      return g().scopes[0].frame;
     }
     default:
       return attached_to_[n.index()];
@@ -424,7 +429,7 @@ bool ResolveFramesPass::Run(PassContext& ctx) {
           attached_to_[i].reset();
         }
         lookups_ok &= attached_to_[i].has_value();
-      } else if (s.links.empty() && s.children.empty()) {
+      } else if (s.links.empty() && s.children.empty() && !s.is_static) {
         ctx.diags.Report(DiagKind::MissingElement, s.loc,
                          fmt::format("model '{}' must have at least one link: it has no "
                                      "canonical link",

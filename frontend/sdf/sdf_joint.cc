@@ -28,7 +28,7 @@ void SdfReader::ReadJoint(const xml::XmlElement& e, ModelScope& s) {
   auto type_text = attrs_.String(e, "type", xml::Need::Required);
   if (!name || !type_text) return;
   attrs_.WarnUnknownAttributes(e, {"name", "type"});
-  if (!CheckDefinedName(*name, e.GetLoc(), "joint")) return;
+  if (!CheckDefinedName(*name, e.GetLoc(), "joint", s.file->version)) return;
   CheckChildren(e,
                 {"parent", "child", "pose", "axis", "axis2", "physics", "sensor",
                  "screw_thread_pitch", "thread_pitch", "gearbox_ratio",
@@ -97,12 +97,6 @@ void SdfReader::ReadJoint(const xml::XmlElement& e, ModelScope& s) {
                    fmt::format("joint '{}' must name different frames for parent and child, "
                                "but names '{}' for both",
                                *name, module().Text(parent.name)));
-    return;
-  }
-  if (child.name == joint_name || parent.name == joint_name) {
-    diags().Report(DiagKind::FrameCycle, e.GetLoc(),
-                   fmt::format("joint '{}' must not name itself as its {} frame", *name,
-                               child.name == joint_name ? "child" : "parent"));
     return;
   }
   if (module().Text(child.name) == "world") {

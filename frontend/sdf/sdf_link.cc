@@ -10,7 +10,7 @@ void SdfReader::ReadLink(const xml::XmlElement& e, ModelScope& s) {
   auto name = attrs_.String(e, "name", xml::Need::Required);
   if (!name) return;
   attrs_.WarnUnknownAttributes(e, {"name"});
-  if (!CheckDefinedName(*name, e.GetLoc(), "link")) return;
+  if (!CheckDefinedName(*name, e.GetLoc(), "link", s.file->version)) return;
   CheckChildren(e,
                 {"gravity", "enable_wind", "self_collide", "kinematic", "must_be_base_link",
                  "velocity_decay", "pose", "inertial", "collision", "visual", "sensor",
@@ -133,7 +133,7 @@ void SdfReader::ReadFrame(const xml::XmlElement& e, ModelScope& s) {
   auto name = attrs_.String(e, "name", xml::Need::Required);
   if (!name) return;
   attrs_.WarnUnknownAttributes(e, {"name", "attached_to"});
-  if (!CheckDefinedName(*name, e.GetLoc(), "frame")) return;
+  if (!CheckDefinedName(*name, e.GetLoc(), "frame", s.file->version)) return;
   CheckChildren(e, {"pose"});
   const Symbol frame_name = module().Intern(*name);
 

@@ -41,12 +41,14 @@ std::string DirectoryOf(const std::string& path) {
 }
 }  // namespace
 
-bool SdfReader::CheckDefinedName(std::string_view name, Loc loc, std::string_view kind) {
+bool SdfReader::CheckDefinedName(std::string_view name, Loc loc, std::string_view kind,
+                                 int version) {
   if (name.empty()) {
     diags().Report(DiagKind::InvalidName, loc, fmt::format("the {} name must not be empty", kind));
     return false;
   }
-  if (name.find("::") != std::string_view::npos) {
+  // SDFormat 1.7 and older allowed "::" in names (flattened models used it)
+  if (version >= 108 && name.find("::") != std::string_view::npos) {
     diags().Report(DiagKind::InvalidName, loc,
                    fmt::format("{} name '{}' must not contain '::': the delimiter of scoped names "
                                "is reserved for references",
@@ -65,14 +67,22 @@ FrameNodeId SdfReader::AddNode(const ModelScope& s, ir::FrameNode node) {
   // merged models publish their names into the scope they merge into
   FrameScopeId ns = s.scope;
   while (graph()[ns].merged_into.valid()) ns = graph()[ns].merged_into;
-  auto [it, inserted] = defined_.emplace(ScopedKey{ns.value, node.name.value}, node.loc);
-  if (!inserted) {
+  auto [it, inserted] =
+      defined_.emplace(ScopedKey{ns.value, node.name.value}, Definition{node.loc, node.kind});
+  if (!inserted && it->second.kind != node.kind && s.file && s.file->version < 108) {
+    diags()
+        .Report(DiagKind::RenamedDuplicate, node.loc,
+                fmt::format("the name '{}' is already used in this model; SDFormat 1.8 and later "
+                            "reject this, and references to the name mean the first",
+                            module().Text(node.name)))
+        .Note(it->second.loc, "first defined here");
+  } else if (!inserted) {
     diags()
         .Report(DiagKind::DuplicateName, node.loc,
                 fmt::format("the name '{}' is already used by a link, joint, frame or model "
                             "of this model",
                             module().Text(node.name)))
-        .Note(it->second, "first defined here");
+        .Note(it->second.loc, "first defined here");
   }
   node.scope = s.scope;
   return graph().Add(std::move(node));
@@ -287,7 +297,7 @@ std::optional<ModelId> SdfReader::ReadModel(const xml::XmlElement& e, const SdfF
       overrides && overrides->name ? *overrides->name : std::string(written_name.value_or(""));
   const Loc loc = overrides ? overrides->loc : e.GetLoc();
   if (!written_name && !(overrides && overrides->name)) return std::nullopt;
-  if (!CheckDefinedName(local_name, loc, "model")) return std::nullopt;
+  if (!CheckDefinedName(local_name, loc, "model", file.version)) return std::nullopt;
 
   const bool top_level = graph()[parent.scope].is_world;
   std::optional<ModelId> model;

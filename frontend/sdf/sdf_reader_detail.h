@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "frontend/frontend.h"
+#include "frontend/package_map.h"
 #include "frontend/xml/attribute_reader.h"
 #include "frontend/xml/xml_document.h"
 
@@ -83,9 +84,12 @@ class SdfReader {
   // --- sdf_reader.cc: names and the frame graph ---
   /// Checks a name defined in a scope (SDF-034, COMMON-031): not empty, no
   /// "::", not reserved (world, __model__, __anything__). False after an error.
-  bool CheckDefinedName(std::string_view name, Loc loc, std::string_view kind);
+  bool CheckDefinedName(std::string_view name, Loc loc, std::string_view kind,
+                        int version = 109);
   /// Adds a named frame node to scope `s`, reporting a sibling of the same
   /// name (SDF names of links, joints, frames and models share one namespace).
+  /// Before SDFormat 1.8 a link and a joint (say) could share a name: then
+  /// it is a warning and the first definition keeps the name.
   FrameNodeId AddNode(const ModelScope& s, ir::FrameNode node);
   /// Adds an unnamed anchor node: the pose of `pose_element` relative to its
   /// relative_to, defaulting to `link_name` (visuals, collisions, sensors).
@@ -150,6 +154,8 @@ class SdfReader {
   void DrainPendingModels(size_t down_to);
   void ReadInclude(const xml::XmlElement& e, const SdfFile& file, ModelScope parent);
   std::optional<std::string> ModelFileInFolder(const std::string& dir, Loc loc);
+  std::optional<std::string> GazeboModelPath(const std::string& uri, const std::string& dir,
+                                             const PackageMap& packages);
   void MergeModel(const xml::XmlElement& model, const SdfFile& file, ModelScope parent,
                   const ModelOverrides& overrides);
   void IncludeUrdf(FileId file, ModelScope parent, const ModelOverrides& overrides, bool merge);
@@ -172,7 +178,11 @@ class SdfReader {
       return (size_t{k.scope} * 0x9E3779B97F4A7C15ull) ^ k.name;
     }
   };
-  std::unordered_map<ScopedKey, Loc, ScopedKeyHash> defined_;
+  struct Definition {
+    Loc loc;
+    ir::FrameNodeKind kind;
+  };
+  std::unordered_map<ScopedKey, Definition, ScopedKeyHash> defined_;
   // geometry names per (body, role) for uniqueness checks in sdf_geometry.cc
   std::unordered_map<ScopedKey, Loc, ScopedKeyHash> geometry_names_;
   std::vector<std::shared_ptr<const xml::XmlDocument>> documents_;

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 
 #include "frontend/sdf/sdf_reader_detail.h"
@@ -34,6 +35,20 @@ std::optional<std::string> SdfReader::ChildText(const xml::XmlElement& parent,
 std::optional<double> SdfReader::TextDouble(const xml::XmlElement& e, xml::Finite finite) {
   std::string text = e.Text();
   auto v = xml::ParseDouble(text);
+  if (!v) {
+    // libsdformat reads the leading number and drops the rest; real models
+    // rely on it ("2.35"" with a stray quote), so take the number, and warn
+    std::string_view trimmed = Trim(text);
+    std::string copy(trimmed);
+    char* end = nullptr;
+    const double prefix = copy.empty() ? 0 : std::strtod(copy.c_str(), &end);
+    if (end && end != copy.c_str()) {
+      diags().Report(DiagKind::TrailingText, e.GetLoc(),
+                     fmt::format("<{}> holds '{}': the text after the number {} is ignored",
+                                 e.Name(), trimmed, std::string_view(copy.c_str(), end - copy.c_str())));
+      v = prefix;
+    }
+  }
   if (!v) {
     diags().Report(DiagKind::BadValue, e.GetLoc(),
                    fmt::format("<{}> must hold a number, found '{}'", e.Name(), Trim(text)));
