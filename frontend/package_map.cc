@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cstdlib>
+
 #include <algorithm>
 #include <filesystem>
 #include <system_error>
@@ -129,6 +131,41 @@ const PackageMap::Package* PackageMap::Find(std::string_view name) const {
   return it == packages_.end() ? nullptr : &it->second;
 }
 
+namespace {
+// `model://NAME` where NAME is no package: Gazebo's convention is a model
+// folder NAME (holding model.config) on its model paths. mdlc looks in the
+// folders SDF_PATH, GZ_SIM_RESOURCE_PATH and GAZEBO_MODEL_PATH list, then in
+// the two folders above the referring file's (the layout of model collections,
+// where models sit side by side).
+std::optional<fs::path> GazeboModelFolder(std::string_view name, const std::string& base_dir) {
+  std::vector<fs::path> roots;
+  for (const char* var : {"SDF_PATH", "GZ_SIM_RESOURCE_PATH", "GAZEBO_MODEL_PATH"}) {
+    if (const char* value = std::getenv(var)) {
+      std::string_view list(value);
+      while (!list.empty()) {
+        const size_t colon = list.find(':');
+        if (colon != 0) roots.emplace_back(std::string(list.substr(0, colon)));
+        if (colon == std::string_view::npos) break;
+        list.remove_prefix(colon + 1);
+      }
+    }
+  }
+  std::error_code ec;
+  fs::path up = fs::absolute(base_dir, ec);
+  for (int i = 0; i < 2 && up.has_parent_path() && up != up.parent_path(); ++i) {
+    up = up.parent_path();
+    roots.push_back(up);
+  }
+  for (const fs::path& root : roots) {
+    const fs::path candidate = root / std::string(name);
+    if (fs::is_directory(candidate, ec) && fs::exists(candidate / "model.config", ec)) {
+      return candidate;
+    }
+  }
+  return std::nullopt;
+}
+}  // namespace
+
 std::optional<std::string> ResolveUri(std::string_view uri, const std::string& base_dir,
                                       const PackageMap& packages, Loc loc,
                                       DiagnosticEngine& diags) {
@@ -146,7 +183,11 @@ std::optional<std::string> ResolveUri(std::string_view uri, const std::string& b
       const size_t slash = rest.find('/');
       const std::string_view name = rest.substr(0, slash);
       const PackageMap::Package* package = packages.Find(name);
-      if (!package) {
+      std::optional<fs::path> gazebo_model;
+      if (!package && scheme == "model") gazebo_model = GazeboModelFolder(name, base_dir);
+      if (gazebo_model) {
+        path = (*gazebo_model / (slash == std::string_view::npos ? "" : rest.substr(slash + 1))).string();
+      } else if (!package) {
         auto diag = diags.Report(
             DiagKind::FileNotFound, loc,
             fmt::format("unknown package '{}' in '{}'", name, uri));
@@ -161,11 +202,13 @@ std::optional<std::string> ResolveUri(std::string_view uri, const std::string& b
         }
         return std::nullopt;
       }
-      if (package->deprecated) {
-        diags.Report(DiagKind::UnsupportedValue, loc,
-                     fmt::format("package '{}' is deprecated: {}", name, *package->deprecated));
+      if (package) {
+        if (package->deprecated) {
+          diags.Report(DiagKind::UnsupportedValue, loc,
+                       fmt::format("package '{}' is deprecated: {}", name, *package->deprecated));
+        }
+        path = (fs::path(package->path) / (slash == std::string_view::npos ? "" : rest.substr(slash + 1))).string();
       }
-      path = (fs::path(package->path) / (slash == std::string_view::npos ? "" : rest.substr(slash + 1))).string();
     } else {
       diags.Report(DiagKind::BadValue, loc,
                    fmt::format("unsupported scheme '{}://' in '{}'; use package://, model://, "

@@ -200,10 +200,12 @@ std::optional<ShapeResult> ReadShape(SdfReader& r, const xml::XmlElement& geomet
                                      const Spelling& sp) {
   CheckVisualChildren(r, geometry, sp,
                       {"empty", "box", "capsule", "cylinder", "ellipsoid", "heightmap", "image",
-                       "mesh", "plane", "polyline", "sphere", "drake:capsule", "drake:ellipsoid"});
-  static constexpr std::array<std::string_view, 13> kShapes = {
-      "box",   "capsule", "cylinder",  "ellipsoid", "heightmap", "image",         "mesh",
-      "plane", "polyline", "sphere", "empty",      "drake:capsule", "drake:ellipsoid"};
+                       "mesh", "plane", "polyline", "sphere", "cone", "drake:capsule",
+                       "drake:ellipsoid"});
+  // cone is SDFormat 1.11's; like heightmap, image and polyline Drake has no such shape
+  static constexpr std::array<std::string_view, 14> kShapes = {
+      "box",   "capsule",  "cylinder", "ellipsoid", "heightmap",     "image",          "mesh",
+      "plane", "polyline", "sphere",   "empty",     "drake:capsule", "drake:ellipsoid", "cone"};
   xml::XmlElement e;
   for (auto c = geometry.FirstChild(); c; c = c.NextSibling()) {
     const std::string_view kind = sp.Local(c.Name());
@@ -313,7 +315,7 @@ std::optional<ShapeResult> ReadShape(SdfReader& r, const xml::XmlElement& geomet
     if (e.Child("drake:declare_convex")) mesh.convex = true;
     result.shape = std::move(mesh);
   } else {
-    // heightmap, image, polyline
+    // heightmap, image, polyline, cone
     r.diags().Report(DiagKind::UnsupportedElement, e.GetLoc(),
                      fmt::format("tag '{}' found as a child of '{}' is currently unsupported and "
                                  "will be ignored; the {} has no geometry",
@@ -676,7 +678,7 @@ void SdfReader::ReadVisual(const xml::XmlElement& e, ModelScope& s, BodyId body,
   auto name = attrs_.String(e, "name", xml::Need::Required);
   if (!name) return;
   attrs_.WarnUnknownAttributes(e, {"name"});
-  if (!CheckDefinedName(*name, e.GetLoc(), "visual")) return;
+  if (!CheckDefinedName(*name, e.GetLoc(), "visual", s.file->version)) return;
   // EXT-032: Drake drops a <drake:visual> with a non-prefixed element
   if (sp.drake && !CheckDrakeNamespaced(*this, e)) return;
   const Symbol symbol = module().Intern(*name);
@@ -688,8 +690,9 @@ void SdfReader::ReadVisual(const xml::XmlElement& e, ModelScope& s, BodyId body,
 
   xml::XmlElement geometry = e.Child(sp("geometry"));
   if (!geometry) {
-    diags().Report(DiagKind::MissingElement, e.GetLoc(),
-                   fmt::format("<{}> is missing required element <{}>", e.Name(),
+    // libsdformat fills in an empty geometry, which Drake skips
+    diags().Report(DiagKind::EmptyGeometry, e.GetLoc(),
+                   fmt::format("<{}> has no <{}>: nothing is registered for it", e.Name(),
                                sp("geometry")));
     return;
   }
@@ -762,7 +765,7 @@ void SdfReader::ReadCollision(const xml::XmlElement& e, ModelScope& s, BodyId bo
   auto name = attrs_.String(e, "name", xml::Need::Required);
   if (!name) return;
   attrs_.WarnUnknownAttributes(e, {"name"});
-  if (!CheckDefinedName(*name, e.GetLoc(), "collision")) return;
+  if (!CheckDefinedName(*name, e.GetLoc(), "collision", s.file->version)) return;
   const Symbol symbol = module().Intern(*name);
   if (!ClaimName(*this, body, kCollisionNames, symbol, e.GetLoc(), "collision", link_name)) {
     return;
@@ -779,8 +782,9 @@ void SdfReader::ReadCollision(const xml::XmlElement& e, ModelScope& s, BodyId bo
   }
   xml::XmlElement geometry = e.Child("geometry");
   if (!geometry) {
-    diags().Report(DiagKind::MissingElement, e.GetLoc(),
-                   "<collision> is missing required element <geometry>");
+    // libsdformat fills in an empty geometry, which Drake skips
+    diags().Report(DiagKind::EmptyGeometry, e.GetLoc(),
+                   "<collision> has no <geometry>: nothing is registered for it");
     return;
   }
   auto shape = ReadShape(*this, geometry, Spelling{});
@@ -818,7 +822,7 @@ void SdfReader::ReadSensor(const xml::XmlElement& e, ModelScope& s, BodyId body,
   auto type = attrs_.String(e, "type", xml::Need::Required);
   if (!name || !type) return;
   attrs_.WarnUnknownAttributes(e, {"name", "type"});
-  if (!CheckDefinedName(*name, e.GetLoc(), "sensor")) return;
+  if (!CheckDefinedName(*name, e.GetLoc(), "sensor", s.file->version)) return;
   const Symbol symbol = module().Intern(*name);
   if (!ClaimName(*this, body, kSensorNames, symbol, e.GetLoc(), "sensor", link_name)) return;
   if (!IsCameraType(*type)) {

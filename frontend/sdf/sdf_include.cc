@@ -37,46 +37,6 @@ bool EndsWith(std::string_view s, std::string_view suffix) {
 }
 }  // namespace
 
-// `model://NAME/...` where NAME is no package: Gazebo looks for a model folder
-// NAME on its model paths; mdlc looks in the folders SDF_PATH,
-// GZ_SIM_RESOURCE_PATH and GAZEBO_MODEL_PATH list, then beside the including
-// model's folder (the layout of model collections).
-std::optional<std::string> SdfReader::GazeboModelPath(const std::string& uri,
-                                                      const std::string& dir,
-                                                      const PackageMap& packages) {
-  if (!uri.starts_with("model://")) return std::nullopt;
-  std::string rest = uri.substr(8);
-  const size_t slash = rest.find('/');
-  const std::string name = rest.substr(0, slash);
-  if (name.empty() || packages.Find(name)) return std::nullopt;
-  const std::string tail = slash == std::string::npos ? "" : rest.substr(slash);
-  std::vector<std::string> roots;
-  for (const char* var : {"SDF_PATH", "GZ_SIM_RESOURCE_PATH", "GAZEBO_MODEL_PATH"}) {
-    if (const char* value = std::getenv(var)) {
-      std::string_view list(value);
-      while (!list.empty()) {
-        size_t colon = list.find(':');
-        if (colon != 0) roots.emplace_back(list.substr(0, colon));
-        if (colon == std::string_view::npos) break;
-        list.remove_prefix(colon + 1);
-      }
-    }
-  }
-  std::error_code ec;
-  fs::path up = fs::absolute(dir, ec);
-  for (int i = 0; i < 2 && up.has_parent_path(); ++i) {
-    up = up.parent_path();
-    roots.push_back(up.string());
-  }
-  for (const std::string& root : roots) {
-    fs::path candidate = fs::path(root) / name;
-    if (fs::is_directory(candidate, ec) && fs::exists(candidate / "model.config", ec)) {
-      return (candidate.string() + tail);
-    }
-  }
-  return std::nullopt;
-}
-
 // A directory URI names a Gazebo-style model folder: its model.config says
 // which file holds the model (the newest SDFormat version mdlc reads).
 std::optional<std::string> SdfReader::ModelFileInFolder(const std::string& dir, Loc loc) {
@@ -148,8 +108,7 @@ void SdfReader::ReadInclude(const xml::XmlElement& e, const SdfFile& file, Model
   const Loc uri_loc = e.Child("uri").GetLoc();
   static const PackageMap kNoPackages;
   const PackageMap& packages = ctx_.packages ? *ctx_.packages : kNoPackages;
-  std::optional<std::string> path = GazeboModelPath(*uri, file.dir, packages);
-  if (!path) path = ResolveUri(*uri, file.dir, packages, uri_loc, diags());
+  std::optional<std::string> path = ResolveUri(*uri, file.dir, packages, uri_loc, diags());
   if (!path) return;
   std::error_code ec;
   if (fs::is_directory(*path, ec)) {

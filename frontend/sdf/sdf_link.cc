@@ -15,7 +15,7 @@ void SdfReader::ReadLink(const xml::XmlElement& e, ModelScope& s) {
                 {"gravity", "enable_wind", "self_collide", "kinematic", "must_be_base_link",
                  "velocity_decay", "pose", "inertial", "collision", "visual", "sensor",
                  "projector", "audio_sink", "audio_source", "battery", "light",
-                 "particle_emitter", "frame", "drake:surface_velocity_axis",
+                 "particle_emitter", "frame", "drake:surface_velocity_axis", "drake:visual",
                  "drake:deformable_properties"},
                 {});
   const Symbol link_name = module().Intern(*name);
@@ -52,7 +52,7 @@ void SdfReader::ReadLink(const xml::XmlElement& e, ModelScope& s) {
 
   for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
     std::string_view tag = child.Name();
-    if (tag == "visual") {
+    if (tag == "visual" || tag == "drake:visual") {
       ReadVisual(child, s, body_id, link_name);
     } else if (tag == "collision") {
       ReadCollision(child, s, body_id, link_name);

@@ -154,8 +154,6 @@ class SdfReader {
   void DrainPendingModels(size_t down_to);
   void ReadInclude(const xml::XmlElement& e, const SdfFile& file, ModelScope parent);
   std::optional<std::string> ModelFileInFolder(const std::string& dir, Loc loc);
-  std::optional<std::string> GazeboModelPath(const std::string& uri, const std::string& dir,
-                                             const PackageMap& packages);
   void MergeModel(const xml::XmlElement& model, const SdfFile& file, ModelScope parent,
                   const ModelOverrides& overrides);
   void IncludeUrdf(FileId file, ModelScope parent, const ModelOverrides& overrides, bool merge);
