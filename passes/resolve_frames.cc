@@ -72,6 +72,7 @@ class ResolveFramesPass : public Pass {
   std::unordered_map<uint64_t, FrameNodeId> names_;  // (namespace, symbol)
   std::vector<uint32_t> depth_;                      // per scope
   std::vector<std::optional<FrameNodeId>> relative_to_, attached_to_, placement_;
+  std::vector<std::optional<FrameNodeId>> joint_parents_;  // per JointFrameSpec
   std::vector<Transform> local_;                     // pose in the node's scope frame
   std::vector<Transform> world_;                     // X_W of each node
   std::vector<BodyId> body_;                         // the body each node is fixed to
@@ -287,7 +288,7 @@ bool ResolveFramesPass::Evaluate(std::string_view graph_name, Deps&& deps, Eval&
 void ResolveFramesPass::WriteJoint(const ir::JointFrameSpec& spec) {
   ir::Joint& joint = m()[spec.joint];
   const FrameNode& jnode = g()[spec.node];
-  auto parent = Lookup(jnode.scope, spec.parent, "parent frame");
+  auto parent = joint_parents_[&spec - g().joints.data()];
   auto child = attached_to_[spec.node.index()];
   if (!parent || !child) return;
   const BodyId P = body_[parent->index()];
@@ -406,7 +407,9 @@ bool ResolveFramesPass::Run(PassContext& ctx) {
   for (size_t i = 0; i < n_nodes; ++i) {
     const FrameNode& node = g().nodes[i];
     if (node.kind == FrameNodeKind::World) continue;
-    if (!node.relative_to.empty()) {
+    const bool same_as_attached = node.relative_to.name == node.attached_to.name &&
+                                  node.relative_to.loc == node.attached_to.loc;
+    if (!node.relative_to.empty() && !same_as_attached) {
       relative_to_[i] = Lookup(node.scope, node.relative_to, "relative_to name");
       lookups_ok &= relative_to_[i].has_value();
       if (relative_to_[i] == FrameNodeId(i)) {
@@ -451,30 +454,30 @@ bool ResolveFramesPass::Run(PassContext& ctx) {
       }
       lookups_ok &= attached_to_[i].has_value();
     }
+    if (same_as_attached) relative_to_[i] = attached_to_[i];
+  }
+  joint_parents_.assign(g().joints.size(), std::nullopt);
+  for (size_t k = 0; k < g().joints.size(); ++k) {
+    const ir::JointFrameSpec& spec = g().joints[k];
+    // a joint connects links (or frames fixed to them), never a model frame
+    const ir::NameRef* child_ref = &g()[spec.node].attached_to;
+    for (const ir::NameRef* ref : {&spec.parent, child_ref}) {
+      if (m().Text(ref->name) == "__model__") {
+        ctx.diags.Report(DiagKind::UnknownReference, ref->loc,
+                         fmt::format("joint '{}' names __model__ as its {} frame: a joint must "
+                                     "connect links or frames, not the model frame",
+                                     m().Text(m()[spec.joint].name),
+                                     ref == &spec.parent ? "parent" : "child"));
+        lookups_ok = false;
+      }
+    }
+    joint_parents_[k] = Lookup(g()[spec.node].scope, spec.parent, "parent frame");
+    lookups_ok &= joint_parents_[k].has_value();
   }
   if (!lookups_ok) return false;
 
-  // poses relative to each node's scope frame, then in world
-  local_.assign(n_nodes, Transform::Identity());
-  failed_ = false;
-  Evaluate("relative_to", [&](FrameNodeId n) { return PoseDependencies(n); },
-           [&](FrameNodeId n) { EvaluateLocalPose(n); });
-  if (failed_) return false;
-  world_.assign(n_nodes, Transform::Identity());
-  // scope frames top-down (each scope's frame lives in its parent scope)
-  for (size_t i = 1; i < n_scopes; ++i) {
-    const FrameScope& s = g().scopes[i];
-    const FrameNodeId f = s.frame;
-    world_[f.index()] = world_[g()[s.parent].frame.index()] * local_[f.index()];
-  }
-  for (size_t i = 0; i < n_nodes; ++i) {
-    const FrameNode& node = g().nodes[i];
-    if (node.kind == FrameNodeKind::World) continue;
-    if (node.kind == FrameNodeKind::Model && node.nested.valid()) continue;  // done above
-    world_[i] = world_[g()[node.scope].frame.index()] * local_[i];
-  }
-
   // attachments
+  failed_ = false;
   body_.assign(n_nodes, BodyId{});
   Evaluate(
       "attached_to",
@@ -494,6 +497,25 @@ bool ResolveFramesPass::Run(PassContext& ctx) {
         }
       });
   if (failed_) return false;
+
+  // poses relative to each node's scope frame, then in world
+  local_.assign(n_nodes, Transform::Identity());
+  Evaluate("relative_to", [&](FrameNodeId n) { return PoseDependencies(n); },
+           [&](FrameNodeId n) { EvaluateLocalPose(n); });
+  if (failed_) return false;
+  world_.assign(n_nodes, Transform::Identity());
+  // scope frames top-down (each scope's frame lives in its parent scope)
+  for (size_t i = 1; i < n_scopes; ++i) {
+    const FrameScope& s = g().scopes[i];
+    const FrameNodeId f = s.frame;
+    world_[f.index()] = world_[g()[s.parent].frame.index()] * local_[f.index()];
+  }
+  for (size_t i = 0; i < n_nodes; ++i) {
+    const FrameNode& node = g().nodes[i];
+    if (node.kind == FrameNodeKind::World) continue;
+    if (node.kind == FrameNodeKind::Model && node.nested.valid()) continue;  // done above
+    world_[i] = world_[g()[node.scope].frame.index()] * local_[i];
+  }
 
   // results
   body_pose_.assign(m().bodies.size(), Transform::Identity());

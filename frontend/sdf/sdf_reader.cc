@@ -256,8 +256,11 @@ std::optional<ModelId> SdfReader::ReadWorld(const xml::XmlElement& e, const SdfF
                      fmt::format("tag '{}' found as a child of 'world' is currently unsupported "
                                  "and will be ignored",
                                  tag));
+    } else if (tag == "gravity") {
+      // the plant's gravity, as MJCF's <option gravity> gives it
+      if (auto g = TextVector3(child)) module().gravity = *g;
     }
-    // physics, scene, gravity, plugins...: simulator settings, not the model
+    // physics, scene, plugins...: simulator settings, not the model
   }
   for (const xml::XmlElement& j : joints) ReadJoint(j, world);
   if (!first_model_) {
