@@ -447,6 +447,20 @@ std::string ScopedBody(const std::string& inst, const std::string& link) {
   return inst + "::" + link;
 }
 
+// The body a frame is attached to, from ResolveAttachedToBody's answer
+// (relative to the scope `inst`; "" for the world scope). A static model
+// without links resolves to its own model frame, which is fixed to the world
+// (SDF-006).
+std::string BodyOfAttachment(const std::string& inst, const std::string& resolved) {
+  const std::string suffix = "__model__";
+  if (resolved.empty() || resolved == "world") return "world";
+  if (resolved.size() >= suffix.size() &&
+      resolved.compare(resolved.size() - suffix.size(), suffix.size(), suffix) == 0) {
+    return "world";
+  }
+  return inst.empty() ? resolved : inst + "::" + resolved;
+}
+
 // Reads `<pose relative_to=...>x y z r p y</pose>` from a raw element.
 bool ReadRawPose(const sdf::ElementPtr& e, Isometry3d* X, std::string* relative_to, std::string* err) {
   *X = Isometry3d::Identity();
@@ -549,7 +563,7 @@ class OracleBuilder {
       f.X_WF0 = X_WM * ToIso(p);
       std::string body;
       check(fr->ResolveAttachedToBody(body), "frame " + inst + "::" + f.name + " body");
-      f.body = ScopedBody(inst, body);
+      f.body = BodyOfAttachment(inst, body);
       o_->frames.push_back(f);
       o_->world_frames[inst + "::" + f.name] = {f.X_WF0, f.body};
     }
@@ -623,7 +637,7 @@ class OracleBuilder {
       std::string body;
       e = fr->ResolveAttachedToBody(body);
       if (!e.empty() && err.empty()) err = "world frame " + f.name + " body: " + ErrorsText(e);
-      f.body = body.empty() ? "world" : body;
+      f.body = BodyOfAttachment("", body);
       o_->frames.push_back(f);
       o_->world_frames[f.name] = {f.X_WF0, f.body};
     }
@@ -943,15 +957,21 @@ constexpr KnownDisagreement kKnownDisagreements[] = {
      "SDF-035: two world joints share one child link (a loop); libsdformat 12 ignores world joints"},
     {"sdformat/test/sdf/world_joint_parent_frame.sdf",
      "SDF-035: two world joints share one child link (a loop); libsdformat 12 ignores world joints"},
-    {"gazebo_models/drc_practice_ball_valve_wall/model.sdf",
-     "SDF-031: model://NAME is found through package.xml packages (Drake's PackageMap); the "
-     "Gazebo convention of a folder NAME beside the file is not used (Drake rejects it too)"},
-    {"gazebo_models/drc_practice_ball_valve_wall/model-1_4.sdf",
-     "SDF-031: model://NAME is found through package.xml packages (Drake's PackageMap); the "
-     "Gazebo convention of a folder NAME beside the file is not used (Drake rejects it too)"},
-    {"gazebo_models/wooden_peg_board/model.sdf",
-     "SDF-031: model://NAME is found through package.xml packages (Drake's PackageMap); the "
-     "Gazebo convention of a folder NAME beside the file is not used (Drake rejects it too)"},
+    {"sdformat/test/integration/model/test_model/model.sdf",
+     "COMMON: a mesh file that does not exist (meshes/mesh.dae) is an error"},
+    {"sdformat/test/integration/model/test_model_with_ns/model.sdf",
+     "COMMON: a mesh file that does not exist (meshes/mesh.dae) is an error"},
+    {"sdformat/test/integration/model/test_model_with_plugin/model.sdf",
+     "COMMON: a mesh file that does not exist (meshes/mesh.dae) is an error"},
+    {"sdformat/test/sdf/basic_shapes.sdf",
+     "SDF-001/040: <cone> (SDFormat 1.11) is unknown to SDFormat 1.9 and an error; libsdformat 12 "
+     "only warns"},
+    {"sdformat/test/sdf/shapes.sdf",
+     "SDF-001/040: <cone> and <convex_decomposition> (SDFormat 1.11) are unknown to SDFormat 1.9 "
+     "and errors; libsdformat 12 only warns"},
+    {"sdformat/test/sdf/shapes_world.sdf",
+     "SDF-001/040: <cone> (SDFormat 1.11) is unknown to SDFormat 1.9 and an error; libsdformat 12 "
+     "only warns"},
     {"sdformat/test/sdf/inertial_stats_auto.sdf",
      "SDF-007: libsdformat 12 predates <inertial auto=\"true\">: it keeps the given/default "
      "inertia where Drake computes it from collision geometry", true},
