@@ -124,6 +124,39 @@ class PlantJsonEmitter {
       w_.Key("surface_velocity_axis");
       Vector(*body.surface_velocity_axis);
     }
+    DeformableOf(body);
+    w_.EndObject();
+  }
+
+  // `bodies[].deformable` (EXT-070). A template so that it compiles before
+  // PlantBody carries `std::optional<ir::DeformableProperties> deformable`
+  // (copied from ir::Body by BuildPlant); until then nothing is printed.
+  template <typename PlantBodyT>
+  void DeformableOf(const PlantBodyT& body) {
+    if constexpr (requires { body.deformable; }) {
+      if (body.deformable) Deformable(*body.deformable);
+    }
+  }
+  void Deformable(const ir::DeformableProperties& d) {
+    w_.Key("deformable").BeginObject();
+    w_.Key("youngs_modulus").Number(d.youngs_modulus);
+    w_.Key("poissons_ratio").Number(d.poissons_ratio);
+    w_.Key("mass_damping").Number(d.mass_damping);
+    w_.Key("stiffness_damping").Number(d.stiffness_damping);
+    w_.Key("mass_density").Number(d.mass_density);
+    w_.Key("material_model").String(d.material_model);
+    w_.Key("resolution_hint");
+    OptionalNumber(d.resolution_hint);
+    w_.Key("wall_boundary_conditions").BeginArray();
+    for (const auto& wall : d.wall_boundary_conditions) {
+      w_.BeginObject();
+      w_.Key("point_on_plane");
+      Vector(wall.point_on_plane);
+      w_.Key("outward_normal");
+      Vector(wall.outward_normal);
+      w_.EndObject();
+    }
+    w_.EndArray();
     w_.EndObject();
   }
 

@@ -1,0 +1,785 @@
+// The SDFormat frontend's drake: elements: what each lowers to (the same IR
+// as the URDF frontend's attribute spelling) and which inputs it rejects
+// (EXT-001, EXT-003, EXT-004, EXT-010, EXT-012..014, EXT-040, EXT-050..054,
+// EXT-070, SDF-021).
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include "tests/unit/sdf_drake_test_util.h"
+
+namespace mdlc {
+namespace {
+
+using testing::CompiledSdf;
+using testing::LoweredSdf;
+using testing::Named;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// links a..d, a revolute joint a->b, and `body`
+std::string Model(std::string_view body) {
+  return fmt::format(R"(<model name='m'>
+  <link name='a'/><link name='b'/><link name='c'/><link name='d'/>
+  <joint name='rev' type='revolute'><parent>a</parent><child>b</child>
+    <axis><xyz>0 0 1</xyz></axis></joint>
+  <frame name='fa' attached_to='a'><pose>0 0 1 0 0 0</pose></frame>
+{}
+</model>)",
+                     body);
+}
+
+// ------------------------------------------------------- EXT-001, EXT-004
+
+TEST(SdfDrakeJointTest, PlanarJointBetweenLinks) {  // EXT-001, EXT-004
+  LoweredSdf l;
+  ASSERT_TRUE(l.Read(Model(R"(<drake:joint name='p' type='planar'>
+    <drake:parent>b</drake:parent><drake:child>c</drake:child>
+    <drake:damping>0.1 0.2 0.3</drake:damping>
+  </drake:joint>)")))
+      << l.Messages();
+  const ir::Joint* j = l.Joint("p");
+  ASSERT_NE(j, nullptr);
+  EXPECT_EQ(j->type, ir::JointType::Planar);
+  EXPECT_EQ(l.module.Text(j->parent.name), "b");
+  EXPECT_EQ(l.module.Text(j->child.name), "c");
+  EXPECT_TRUE(j->X_PF.IsIdentity());  // F is the parent link's frame
+  EXPECT_TRUE(j->X_CM.IsIdentity());  // M is the child link's frame
+  EXPECT_EQ(j->damping, (std::vector<double>{0.1, 0.2, 0.3}));
+  EXPECT_EQ(j->limits.lower, (std::vector<double>{-kInf, -kInf, -kInf}));
+}
+
+TEST(SdfDrakeJointTest, PlanarNeedsThreeNonNegativeDampings) {  // EXT-004
+  for (const char* damping : {"", "<drake:damping>0.1 -0.2 0.3</drake:damping>",
+                              "<drake:damping>0.1 0.2</drake:damping>"}) {
+    LoweredSdf l;
+    EXPECT_FALSE(l.Read(Model(fmt::format(R"(<drake:joint name='p' type='planar'>
+      <drake:parent>b</drake:parent><drake:child>c</drake:child>{}</drake:joint>)",
+                                          damping))))
+        << damping;
+    EXPECT_EQ(l.Joint("p"), nullptr);
+    EXPECT_EQ(l.diags.error_count(), 1u) << l.Messages();
+  }
+  LoweredSdf missing;
+  missing.Read(Model(R"(<drake:joint name='p' type='planar'>
+      <drake:parent>b</drake:parent><drake:child>c</drake:child></drake:joint>)"));
+  EXPECT_TRUE(missing.HasDiagnostic(DiagKind::BadValue, "Unable to find the <drake:damping>"))
+      << missing.Messages();
+}
+
+TEST(SdfDrakeJointTest, CurvilinearJointPath) {  // EXT-001, EXT-003
+  LoweredSdf l;
+  ASSERT_TRUE(l.Read(Model(R"(<drake:joint name='cv' type='curvilinear'>
+    <drake:parent>b</drake:parent><drake:child>c</drake:child>
+    <drake:damping>0.1</drake:damping>
+    <drake:initial_tangent><xyz>0 0 1</xyz></drake:initial_tangent>
+    <drake:plane_normal><xyz>1 0 0</xyz></drake:plane_normal>
+    <drake:is_periodic>false</drake:is_periodic>
+    <drake:curves>
+      <drake:line_segment><drake:length>1.0</drake:length></drake:line_segment>
+      <drake:circular_arc><drake:radius>2.0</drake:radius><drake:angle>1.5707963267948966</drake:angle></drake:circular_arc>
+      <drake:circular_arc><drake:radius>2.0</drake:radius><drake:angle>-1.5707963267948966</drake:angle></drake:circular_arc>
+    </drake:curves>
+  </drake:joint>)")))
+      << l.Messages();
+  const ir::Joint* j = l.Joint("cv");
+  ASSERT_NE(j, nullptr);
+  EXPECT_EQ(j->type, ir::JointType::Curvilinear);
+  EXPECT_EQ(j->damping, std::vector<double>{0.1});
+  const ir::CurvilinearPath& path = j->curvilinear_path;
+  EXPECT_EQ(path.initial_tangent, Eigen::Vector3d(0, 0, 1));
+  EXPECT_EQ(path.plane_normal, Eigen::Vector3d(1, 0, 0));
+  EXPECT_FALSE(path.periodic);
+  ASSERT_EQ(path.segments.size(), 3u);
+  EXPECT_DOUBLE_EQ(path.segments[0].length, 1.0);
+  EXPECT_DOUBLE_EQ(path.segments[0].curvature, 0.0);
+  EXPECT_DOUBLE_EQ(path.segments[1].length, std::numbers::pi);
+  EXPECT_DOUBLE_EQ(path.segments[1].curvature, 0.5);
+  EXPECT_DOUBLE_EQ(path.segments[2].curvature, -0.5);
+  // an open path is limited to its ends, as Drake's CurvilinearJoint
+  EXPECT_DOUBLE_EQ(j->limits.lower[0], 0.0);
+  EXPECT_DOUBLE_EQ(j->limits.upper[0], 1.0 + 2 * std::numbers::pi);
+}
+
+TEST(SdfDrakeJointTest, PeriodicCurvilinearIsUnlimited) {  // EXT-003
+  LoweredSdf l;
+  ASSERT_TRUE(l.Read(Model(R"(<drake:joint name='cv' type='curvilinear'>
+    <drake:parent>b</drake:parent><drake:child>c</drake:child>
+    <drake:is_periodic>true</drake:is_periodic>
+    <drake:curves><drake:circular_arc><drake:radius>1</drake:radius><drake:angle>6.283185307179586</drake:angle></drake:circular_arc></drake:curves>
+  </drake:joint>)")))
+      << l.Messages();
+  const ir::Joint* j = l.Joint("cv");
+  ASSERT_NE(j, nullptr);
+  EXPECT_TRUE(j->curvilinear_path.periodic);
+  EXPECT_EQ(j->limits.lower[0], -kInf);
+  EXPECT_EQ(j->limits.upper[0], kInf);
+}
+
+TEST(SdfDrakeJointTest, CurvilinearErrors) {  // EXT-003
+  struct Case {
+    const char* body;
+    const char* message;
+  };
+  const std::string line = "<drake:line_segment><drake:length>1</drake:length></drake:line_segment>";
+  const Case cases[] = {
+      {"", "Unable to find the <drake:curves> child node"},
+      {"<drake:curves/>", "empty <drake:curves> list"},
+      {"<drake:curves><drake:line_segment/></drake:curves>",
+       "Unable to find the <drake:length> child tag"},
+      {"<drake:curves><drake:line_segment><drake:length>0</drake:length></drake:line_segment>"
+       "</drake:curves>",
+       "0 or negative drake:length"},
+      {"<drake:curves><drake:circular_arc><drake:radius>-2</drake:radius><drake:angle>1"
+       "</drake:angle></drake:circular_arc></drake:curves>",
+       "negative drake:radius"},
+      {"<drake:curves><drake:circular_arc><drake:radius>2</drake:radius><drake:angle>0"
+       "</drake:angle></drake:circular_arc></drake:curves>",
+       "angle must not be zero"},
+      {"<drake:curves><drake:cirQQQcular_arc/></drake:curves>", "invalid child node"},
+      {"<drake:is_periodic>TRUE</drake:is_periodic>LINE", "non-boolean"},
+      {"<drake:damping>-1</drake:damping>LINE", "negative value for 'damping'"},
+      {"<drake:plane_normal><xyz>0 0 0</xyz></drake:plane_normal>LINE", "is zero"},
+      {"<drake:initial_tangent><xyz>0 1 1</xyz></drake:initial_tangent>LINE",
+       "not perpendicular"},
+  };
+  for (const Case& c : cases) {
+    std::string body = c.body;
+    if (auto at = body.find("LINE"); at != std::string::npos) {
+      body.replace(at, 4, "<drake:curves>" + line + "</drake:curves>");
+    }
+    LoweredSdf l;
+    EXPECT_FALSE(l.Read(Model(fmt::format(R"(<drake:joint name='cv' type='curvilinear'>
+      <drake:parent>b</drake:parent><drake:child>c</drake:child>{}</drake:joint>)",
+                                          body))))
+        << c.body;
+    bool found = false;
+    for (const auto& d : l.diags.diagnostics()) {
+      found |= d.severity == Severity::Error && d.message.find(c.message) != std::string::npos;
+      EXPECT_TRUE(d.loc.valid()) << d.message;
+    }
+    EXPECT_TRUE(found) << c.body << "\n" << l.Messages();
+    EXPECT_EQ(l.Joint("cv"), nullptr) << c.body;
+  }
+}
+
+TEST(SdfDrakeJointTest, AttributeTypePoseAndFrameErrors) {  // EXT-001
+  struct Case {
+    const char* element;
+    DiagKind kind;
+    const char* message;
+  };
+  const Case cases[] = {
+      {"<drake:joint name='j'/>", DiagKind::MissingAttribute,
+       "Unable to find the 'type' attribute"},
+      {"<drake:joint type='planar'/>", DiagKind::MissingAttribute,
+       "Unable to find the 'name' attribute"},
+      {"<drake:joint name='j' type='planar'><pose/></drake:joint>", DiagKind::NotImplemented,
+       "does not yet support the <pose> child tag"},
+      {"<drake:joint name='j' type='ball'><drake:parent>a</drake:parent>"
+       "<drake:child>c</drake:child></drake:joint>",
+       DiagKind::BadValue, "unrecognized value for 'type' attribute: ball"},
+      {"<drake:joint name='j' type='planar'><drake:child>c</drake:child>"
+       "<drake:damping>0 0 0</drake:damping></drake:joint>",
+       DiagKind::BadValue, "Unable to find the <drake:parent> child tag"},
+      {"<drake:joint name='j' type='planar'><drake:parent>fa</drake:parent>"
+       "<drake:child>c</drake:child><drake:damping>0 0 0</drake:damping></drake:joint>",
+       DiagKind::NotImplemented, "'fa', which is not a link"},
+      {"<drake:joint name='rev' type='planar'><drake:parent>c</drake:parent>"
+       "<drake:child>d</drake:child><drake:damping>0 0 0</drake:damping></drake:joint>",
+       DiagKind::DuplicateName, "joint name 'rev' is already used"},
+  };
+  for (const Case& c : cases) {
+    LoweredSdf l;
+    EXPECT_FALSE(l.Read(Model(c.element))) << c.element;
+    EXPECT_TRUE(l.HasDiagnostic(c.kind, c.message)) << c.element << "\n" << l.Messages();
+  }
+}
+
+TEST(SdfDrakeJointTest, DrakePoseIsAnUnsupportedElement) {  // EXT-001, SDF-001
+  LoweredSdf l;
+  EXPECT_TRUE(l.Read(Model(R"(<drake:joint name='p' type='planar'>
+    <drake:parent>b</drake:parent><drake:child>c</drake:child>
+    <drake:damping>0 0 0</drake:damping><drake:pose>1 0 0 0 0 0</drake:pose>
+  </drake:joint>)")))
+      << l.Messages();
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnknownElement, "unsupported element <drake:pose>"));
+}
+
+TEST(SdfDrakeJointTest, CompilesWithNestedLinksAndPlacesTheChildOnTheParent) {  // EXT-001
+  // Drake's DrakeJointNestedParentChild: scoped names into a nested model;
+  // the joint's frames are the links' frames, so at q = 0 the child link
+  // sits exactly on the parent link, whatever the links' SDFormat poses
+  CompiledSdf c(R"(<model name='good'>
+  <model name='nested'>
+    <link name='a'><pose>1 2 3 0 0 0</pose></link>
+    <link name='b'><pose>-5 0 0 0 0 0</pose></link>
+  </model>
+  <drake:joint type='planar' name='joint_name'>
+    <drake:parent>nested::a</drake:parent>
+    <drake:child>nested::b</drake:child>
+    <drake:damping>0.1 0.1 0.1</drake:damping>
+  </drake:joint>
+</model>)");
+  ASSERT_TRUE(c.ok()) << c.Messages();
+  const nlohmann::json json = c.PlantJson();
+  const nlohmann::json joint = Named(json["joints"], "joint_name");
+  ASSERT_FALSE(joint.is_null()) << json.dump(1);
+  EXPECT_EQ(joint["type"], "planar");
+  EXPECT_EQ(joint["parent"], "good::nested::a");
+  EXPECT_EQ(joint["child"], "good::nested::b");
+  EXPECT_EQ(joint["damping"], nlohmann::json({0.1, 0.1, 0.1}));
+  const nlohmann::json a = Named(json["bodies"], "a"), b = Named(json["bodies"], "b");
+  EXPECT_EQ(a["X_WB"], b["X_WB"]);
+  EXPECT_EQ(a["X_WB"]["p"], nlohmann::json({1.0, 2.0, 3.0}));
+}
+
+// ------------------------------------------------------------- EXT-040
+
+TEST(SdfCollisionFilterGroupTest, LowersTextMembersAndGroups) {  // EXT-040
+  LoweredSdf l;
+  ASSERT_TRUE(l.Read(Model(R"(<drake:collision_filter_group name='g'>
+    <drake:member>a</drake:member>
+    <drake:member> nested::x </drake:member>
+    <drake:member_group>h</drake:member_group>
+    <drake:ignored_collision_filter_group>g</drake:ignored_collision_filter_group>
+  </drake:collision_filter_group>
+  <drake:collision_filter_group name='h'><drake:member>c</drake:member></drake:collision_filter_group>
+  <drake:collision_filter_group name='skipped' ignore='true'><drake:member>c</drake:member></drake:collision_filter_group>)")))
+      << l.Messages();
+  ASSERT_EQ(l.module.filter_groups.size(), 2u);
+  const ir::CollisionFilterGroup& g = l.module.filter_groups[0];
+  EXPECT_EQ(l.module.Text(g.name), "g");
+  EXPECT_EQ(g.model, *l.model);
+  ASSERT_EQ(g.members.size(), 2u);
+  EXPECT_EQ(l.module.Text(g.members[0].name), "a");
+  EXPECT_EQ(l.module.Text(g.members[1].name), "nested::x");  // trimmed, scoped
+  EXPECT_EQ(g.members[0].loc.line, 9u);  // the element that wrote the name
+  ASSERT_EQ(g.member_groups.size(), 1u);
+  EXPECT_EQ(l.module.Text(g.member_groups[0].name), "h");
+  ASSERT_EQ(g.ignored_groups.size(), 1u);
+  EXPECT_EQ(l.module.Text(g.ignored_groups[0].name), "g");
+}
+
+TEST(SdfCollisionFilterGroupTest, SyntaxErrors) {  // EXT-040, COMMON-050
+  LoweredSdf l;
+  EXPECT_FALSE(l.Read(Model(R"(<drake:collision_filter_group/>
+  <drake:collision_filter_group name='g'>
+    <drake:member></drake:member>
+    <drake:member_group/>
+  </drake:collision_filter_group>)")));
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::MissingAttribute, "missing the required attribute \"name\""));
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::MissingElement,
+                              "The tag <drake:member> is missing a required string value"));
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::MissingElement,
+                              "The tag <drake:member_group> is missing a required string value"));
+  EXPECT_TRUE(l.module.filter_groups.empty());
+}
+
+TEST(SdfCollisionFilterGroupTest, FiltersPairsInThePlant) {  // EXT-040, COMMON-051
+  CompiledSdf c(Model(R"(<drake:collision_filter_group name='g'>
+    <drake:member>c</drake:member><drake:member>d</drake:member>
+    <drake:ignored_collision_filter_group>g</drake:ignored_collision_filter_group>
+  </drake:collision_filter_group>)"));
+  ASSERT_TRUE(c.ok()) << c.Messages();
+  EXPECT_EQ(c.compilation().module.filter_groups.size(), 1u);
+  for (const auto& ref : c.compilation().module.filter_groups[0].members) {
+    EXPECT_TRUE(ref.resolved());
+  }
+}
+
+TEST(SdfCollisionFilterGroupTest, UnknownMemberIsReportedByResolveNames) {  // COMMON-053
+  CompiledSdf c(Model(R"(<drake:collision_filter_group name='g'>
+    <drake:member>nope</drake:member></drake:collision_filter_group>)"));
+  EXPECT_FALSE(c.ok());
+  EXPECT_NE(c.Messages().find("not found"), std::string::npos) << c.Messages();
+}
+
+// ------------------------------------------------------- EXT-050, EXT-051
+
+TEST(SdfForceElementTest, LinearBushingRpy) {  // EXT-050
+  LoweredSdf l;
+  ASSERT_TRUE(l.Read(Model(R"(<drake:linear_bushing_rpy>
+    <drake:bushing_frameA>fa</drake:bushing_frameA>
+    <drake:bushing_frameC>c</drake:bushing_frameC>
+    <drake:bushing_torque_stiffness>1 2 3</drake:bushing_torque_stiffness>
+    <drake:bushing_torque_damping>4 5 6</drake:bushing_torque_damping>
+    <drake:bushing_force_stiffness>7 8 9</drake:bushing_force_stiffness>
+    <drake:bushing_force_damping>10 11 12</drake:bushing_force_damping>
+  </drake:linear_bushing_rpy>)")))
+      << l.Messages();
+  ASSERT_EQ(l.module.force_elements.size(), 1u);
+  const ir::ForceElement& f = l.module.force_elements[0];
+  EXPECT_EQ(f.type, ir::ForceElementType::LinearBushingRpy);
+  EXPECT_EQ(l.module.Text(f.frame_A.name), "fa");
+  EXPECT_EQ(l.module.Text(f.frame_C.name), "c");
+  EXPECT_EQ(f.torque_stiffness, Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(f.torque_damping, Eigen::Vector3d(4, 5, 6));
+  EXPECT_EQ(f.force_stiffness, Eigen::Vector3d(7, 8, 9));
+  EXPECT_EQ(f.force_damping, Eigen::Vector3d(10, 11, 12));
+
+  CompiledSdf c(Model(R"(<drake:linear_bushing_rpy>
+    <drake:bushing_frameA>fa</drake:bushing_frameA>
+    <drake:bushing_frameC>c</drake:bushing_frameC>
+    <drake:bushing_torque_stiffness>1 2 3</drake:bushing_torque_stiffness>
+    <drake:bushing_torque_damping>4 5 6</drake:bushing_torque_damping>
+    <drake:bushing_force_stiffness>7 8 9</drake:bushing_force_stiffness>
+    <drake:bushing_force_damping>10 11 12</drake:bushing_force_damping>
+  </drake:linear_bushing_rpy>)"));
+  ASSERT_TRUE(c.ok()) << c.Messages();
+  const nlohmann::json json = c.PlantJson();
+  ASSERT_EQ(json["force_elements"].size(), 1u) << json.dump(1);
+  EXPECT_EQ(json["force_elements"][0]["type"], "linear_bushing_rpy");
+  EXPECT_EQ(json["force_elements"][0]["frameA"], "m::fa");
+  EXPECT_EQ(json["force_elements"][0]["frameC"], "m::c");
+}
+
+TEST(SdfForceElementTest, BushingErrors) {  // EXT-050
+  LoweredSdf l;
+  EXPECT_FALSE(l.Read(Model(R"(<drake:linear_bushing_rpy>
+    <drake:bushing_frameA>fa</drake:bushing_frameA>
+    <drake:bushing_torque_stiffness>1 2 3</drake:bushing_torque_stiffness>
+    <drake:bushing_torque_damping>4 -5 6</drake:bushing_torque_damping>
+    <drake:bushing_force_stiffness>7 8</drake:bushing_force_stiffness>
+    <drake:bushing_force_damping>10 11 12</drake:bushing_force_damping>
+  </drake:linear_bushing_rpy>)")));
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue,
+                              "Unable to find the <drake:bushing_frameC> child tag"));
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "must be non-negative"));
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "must hold 3 numbers"));
+  EXPECT_EQ(l.diags.error_count(), 3u) << l.Messages();
+  EXPECT_TRUE(l.module.force_elements.empty());
+}
+
+TEST(SdfForceElementTest, LinearSpringDamper) {  // EXT-051
+  const std::string element = R"(<drake:linear_spring_damper>
+    <drake:linear_spring_damper_body_A>a</drake:linear_spring_damper_body_A>
+    <drake:linear_spring_damper_body_B>c</drake:linear_spring_damper_body_B>
+    <drake:linear_spring_damper_p_AP>0 0 1</drake:linear_spring_damper_p_AP>
+    <drake:linear_spring_damper_p_BQ>0 1 0</drake:linear_spring_damper_p_BQ>
+    <drake:linear_spring_damper_free_length>{}</drake:linear_spring_damper_free_length>
+    <drake:linear_spring_damper_stiffness>{}</drake:linear_spring_damper_stiffness>
+    <drake:linear_spring_damper_damping>{}</drake:linear_spring_damper_damping>
+  </drake:linear_spring_damper>)";
+  LoweredSdf l;
+  ASSERT_TRUE(l.Read(Model(fmt::format(fmt::runtime(element), 0.5, 100, 2)))) << l.Messages();
+  ASSERT_EQ(l.module.force_elements.size(), 1u);
+  const ir::ForceElement& f = l.module.force_elements[0];
+  EXPECT_EQ(f.type, ir::ForceElementType::LinearSpringDamper);
+  EXPECT_EQ(l.module.Text(f.body_A.name), "a");
+  EXPECT_EQ(l.module.Text(f.body_B.name), "c");
+  EXPECT_EQ(f.p_AP, Eigen::Vector3d(0, 0, 1));
+  EXPECT_EQ(f.p_BQ, Eigen::Vector3d(0, 1, 0));
+  EXPECT_EQ(f.free_length, 0.5);
+  EXPECT_EQ(f.stiffness, 100);
+  EXPECT_EQ(f.damping, 2);
+
+  struct Case {
+    double free_length, stiffness, damping;
+    const char* message;
+  };
+  for (const Case& c : {Case{0, 1, 1, "free_length> child tag must be strictly positive"},
+                        Case{1, -1, 1, "stiffness> child tag must be non-negative"},
+                        Case{1, 1, -1, "damping> child tag must be non-negative"}}) {
+    LoweredSdf bad;
+    EXPECT_FALSE(bad.Read(
+        Model(fmt::format(fmt::runtime(element), c.free_length, c.stiffness, c.damping))));
+    EXPECT_TRUE(bad.HasDiagnostic(DiagKind::BadValue, c.message)) << bad.Messages();
+    EXPECT_TRUE(bad.module.force_elements.empty());
+  }
+}
+
+// ------------------------------------------------------- EXT-052..054
+
+TEST(SdfConstraintTest, BallConstraint) {  // EXT-052
+  LoweredSdf l;
+  ASSERT_TRUE(l.Read(Model(R"(<drake:ball_constraint>
+    <drake:ball_constraint_body_A>a</drake:ball_constraint_body_A>
+    <drake:ball_constraint_body_B>c</drake:ball_constraint_body_B>
+    <drake:ball_constraint_p_AP>1 2 3</drake:ball_constraint_p_AP>
+    <drake:ball_constraint_p_BQ>4 5 6</drake:ball_constraint_p_BQ>
+  </drake:ball_constraint>)")))
+      << l.Messages();
+  ASSERT_EQ(l.module.constraints.size(), 1u);
+  const ir::Constraint& c = l.module.constraints[0];
+  EXPECT_EQ(c.type, ir::ConstraintType::Ball);
+  EXPECT_EQ(l.module.Text(c.body_A.name), "a");
+  EXPECT_EQ(l.module.Text(c.body_B.name), "c");
+  EXPECT_EQ(c.X_AP.p, Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(c.X_BQ.p, Eigen::Vector3d(4, 5, 6));
+
+  LoweredSdf missing;
+  EXPECT_FALSE(missing.Read(Model(R"(<drake:ball_constraint>
+    <drake:ball_constraint_body_A>a</drake:ball_constraint_body_A>
+    <drake:ball_constraint_p_AP>1 2 3</drake:ball_constraint_p_AP>
+    <drake:ball_constraint_p_BQ>4 5 6</drake:ball_constraint_p_BQ>
+  </drake:ball_constraint>)")));
+  EXPECT_TRUE(missing.HasDiagnostic(DiagKind::BadValue,
+                                    "Unable to find the <drake:ball_constraint_body_B> child tag"));
+
+  CompiledSdf unknown(Model(R"(<drake:ball_constraint>
+    <drake:ball_constraint_body_A>a</drake:ball_constraint_body_A>
+    <drake:ball_constraint_body_B>zz</drake:ball_constraint_body_B>
+    <drake:ball_constraint_p_AP>1 2 3</drake:ball_constraint_p_AP>
+    <drake:ball_constraint_p_BQ>4 5 6</drake:ball_constraint_p_BQ>
+  </drake:ball_constraint>)"));
+  EXPECT_FALSE(unknown.ok());
+  EXPECT_NE(unknown.Messages().find("unknown link 'zz'"), std::string::npos)
+      << unknown.Messages();
+}
+
+TEST(SdfConstraintTest, DistanceConstraint) {  // EXT-053
+  const std::string element = R"(<drake:distance_constraint>
+    <drake:distance_constraint_body_A>a</drake:distance_constraint_body_A>
+    <drake:distance_constraint_body_B>c</drake:distance_constraint_body_B>
+    <drake:distance_constraint_p_AP>1 2 3</drake:distance_constraint_p_AP>
+    <drake:distance_constraint_p_BQ>4 5 6</drake:distance_constraint_p_BQ>
+    <drake:distance_constraint_distance>{}</drake:distance_constraint_distance>
+    <drake:distance_constraint_stiffness>{}</drake:distance_constraint_stiffness>
+    <drake:distance_constraint_damping>{}</drake:distance_constraint_damping>
+  </drake:distance_constraint>)";
+  CompiledSdf c(Model(fmt::format(fmt::runtime(element), "0.5", "inf", "3")));
+  ASSERT_TRUE(c.ok()) << c.Messages();
+  const nlohmann::json json = c.PlantJson();
+  ASSERT_EQ(json["constraints"].size(), 1u);
+  const nlohmann::json& d = json["constraints"][0];
+  EXPECT_EQ(d["type"], "distance");
+  EXPECT_EQ(d["body_A"], "m::a");
+  EXPECT_EQ(d["body_B"], "m::c");
+  EXPECT_EQ(d["distance"], 0.5);
+  EXPECT_TRUE(d["stiffness"].is_null());  // +inf: rigid
+  EXPECT_EQ(d["damping"], 3);
+
+  for (auto [distance, stiffness, damping, message] :
+       {std::tuple{"0", "1", "1", "distance> child tag must be strictly positive"},
+        std::tuple{"1", "0", "1", "stiffness> child tag must be strictly positive"},
+        std::tuple{"1", "1", "-1", "damping> child tag must be non-negative"}}) {
+    LoweredSdf bad;
+    EXPECT_FALSE(bad.Read(Model(fmt::format(fmt::runtime(element), distance, stiffness, damping))));
+    EXPECT_TRUE(bad.HasDiagnostic(DiagKind::BadValue, message)) << bad.Messages();
+    EXPECT_TRUE(bad.module.constraints.empty());
+  }
+}
+
+TEST(SdfConstraintTest, TendonConstraint) {  // EXT-054
+  LoweredSdf l;
+  ASSERT_TRUE(l.Read(Model(R"(<drake:tendon_constraint>
+    <drake:tendon_constraint_joint name='rev' a='2'/>
+    <drake:tendon_constraint_joint name='other' a='-1'/>
+    <drake:tendon_constraint_offset>0.5</drake:tendon_constraint_offset>
+    <drake:tendon_constraint_upper_limit>1</drake:tendon_constraint_upper_limit>
+    <drake:tendon_constraint_damping>4</drake:tendon_constraint_damping>
+  </drake:tendon_constraint>)")))
+      << l.Messages();
+  ASSERT_EQ(l.module.constraints.size(), 1u);
+  const ir::Constraint& c = l.module.constraints[0];
+  EXPECT_EQ(c.type, ir::ConstraintType::Tendon);
+  ASSERT_EQ(c.joints.size(), 2u);
+  EXPECT_EQ(l.module.Text(c.joints[0].name), "rev");
+  EXPECT_EQ(l.module.Text(c.joints[1].name), "other");
+  EXPECT_EQ(c.a, (std::vector<double>{2, -1}));
+  EXPECT_EQ(c.offset, 0.5);
+  EXPECT_EQ(c.lower, -kInf);
+  EXPECT_EQ(c.upper, 1);
+  EXPECT_EQ(c.stiffness, kInf);  // AddTendonConstraint's defaults
+  EXPECT_EQ(c.damping, 4);
+
+  LoweredSdf bad;
+  EXPECT_FALSE(bad.Read(Model(R"(<drake:tendon_constraint>
+    <drake:tendon_constraint_joint a='2'/>
+    <drake:tendon_constraint_joint name='rev'/>
+  </drake:tendon_constraint>
+  <drake:tendon_constraint><drake:tendon_constraint_joint name='rev' a='1'/></drake:tendon_constraint>)")));
+  EXPECT_TRUE(bad.HasDiagnostic(DiagKind::MissingAttribute, "missing the required attribute \"name\""));
+  EXPECT_TRUE(bad.HasDiagnostic(DiagKind::MissingAttribute, "missing the required attribute \"a\""));
+  EXPECT_TRUE(bad.HasDiagnostic(DiagKind::BadValue, "needs a finite bound"));
+  EXPECT_TRUE(bad.module.constraints.empty());
+}
+
+TEST(SdfDrakeModelElementTest, UnknownDrakeElementWarns) {  // SDF-001
+  LoweredSdf l;
+  EXPECT_TRUE(l.Read(Model("<drake:flux_capacitor/>"))) << l.Messages();
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnknownElement, "<drake:flux_capacitor>"));
+}
+
+// ------------------------------------------- EXT-010, EXT-012..014, SDF-021
+
+std::string JointModel(std::string_view extra, std::string_view effort = "") {
+  return fmt::format(R"(<model name='m'>
+  <link name='a'/><link name='b'/><link name='c'/>
+  <joint name='j1' type='revolute'><parent>a</parent><child>b</child>
+    <axis><xyz>0 0 1</xyz>{}</axis>{}</joint>
+  <joint name='j2' type='revolute'><parent>b</parent><child>c</child>
+    <axis><xyz>0 0 1</xyz></axis></joint>
+</model>)",
+                     effort, extra);
+}
+
+TEST(SdfJointDrakeChildrenTest, ActuatorParameters) {  // SDF-021, EXT-012..014
+  LoweredSdf l;
+  ASSERT_TRUE(l.Read(JointModel(R"(
+    <drake:rotor_inertia>1.5</drake:rotor_inertia>
+    <drake:gear_ratio>300</drake:gear_ratio>
+    <drake:controller_gains p='10000' d='100'/>)")))
+      << l.Messages();
+  ASSERT_EQ(l.module.actuators.size(), 2u);
+  const ir::Actuator& a = l.module.actuators[0];
+  EXPECT_EQ(l.module.Text(a.name), "j1");
+  EXPECT_EQ(a.rotor_inertia, 1.5);
+  EXPECT_EQ(a.gear_ratio, 300);
+  EXPECT_EQ(a.kp, 10000);
+  EXPECT_EQ(a.kd, 100);
+  EXPECT_FALSE(l.module.actuators[1].kp.has_value());
+}
+
+TEST(SdfJointDrakeChildrenTest, ActuatorParameterErrors) {  // EXT-012..014
+  LoweredSdf l;
+  EXPECT_FALSE(l.Read(JointModel(R"(
+    <drake:rotor_inertia>-1</drake:rotor_inertia>
+    <drake:gear_ratio>x</drake:gear_ratio>
+    <drake:controller_gains p='0'/>)")));
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "rotor inertia given by <drake:rotor_inertia> "
+                                                  "must be non-negative"));
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "<drake:gear_ratio> must hold a number"));
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::MissingAttribute,
+                              "<drake:controller_gains>: Unable to find the 'd' attribute"));
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "proportional gain 'p'"));
+  const ir::Actuator& a = l.module.actuators[0];
+  EXPECT_EQ(a.rotor_inertia, 0);
+  EXPECT_EQ(a.gear_ratio, 1);
+  EXPECT_FALSE(a.kp.has_value());
+}
+
+TEST(SdfJointDrakeChildrenTest, NoActuatorIgnoresTheParameters) {  // SDF-020, SDF-021
+  // effort 0: no actuator, and Drake ignores the actuator parameters
+  LoweredSdf l;
+  EXPECT_TRUE(l.Read(JointModel("<drake:gear_ratio>3</drake:gear_ratio>",
+                                "<limit><effort>0</effort></limit>")))
+      << l.Messages();
+  EXPECT_EQ(l.module.actuators.size(), 1u);  // j2's only
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::ActuatorWarning, "has no actuator"));
+}
+
+TEST(SdfJointDrakeChildrenTest, ReflectedInertiaInPlantJson) {  // EXT-012, EXT-013
+  CompiledSdf c(JointModel(R"(
+    <drake:rotor_inertia>0.5</drake:rotor_inertia>
+    <drake:gear_ratio>2</drake:gear_ratio>)"));
+  ASSERT_TRUE(c.ok()) << c.Messages();
+  const nlohmann::json json = c.PlantJson();
+  const nlohmann::json a = Named(json["actuators"], "j1");
+  EXPECT_EQ(a["rotor_inertia"], 0.5);
+  EXPECT_EQ(a["gear_ratio"], 2);
+  EXPECT_EQ(json["dofs"][0], "m::j1");
+  EXPECT_DOUBLE_EQ(json["reflected_inertia"][0].get<double>(), 2.0);
+}
+
+TEST(SdfJointDrakeChildrenTest, MimicIsACouplerConstraint) {  // EXT-010
+  LoweredSdf l;
+  ASSERT_TRUE(l.Read(JointModel("<drake:mimic joint='j2' multiplier='2' offset='0.5'/>")))
+      << l.Messages();
+  ASSERT_EQ(l.module.constraints.size(), 1u);
+  const ir::Constraint& c = l.module.constraints[0];
+  EXPECT_EQ(c.type, ir::ConstraintType::Coupler);
+  EXPECT_EQ(l.module.Text(c.joint0.name), "j2");  // the mimicked joint
+  EXPECT_EQ(l.module.Text(c.joint1.name), "j1");  // the mimicking joint
+  EXPECT_EQ(c.gear_ratio, 2);
+  EXPECT_EQ(c.offset, 0.5);
+
+  CompiledSdf compiled(JointModel("<drake:mimic joint='j2' multiplier='2' offset='0.5'/>"));
+  ASSERT_TRUE(compiled.ok()) << compiled.Messages();
+  const nlohmann::json json = compiled.PlantJson();
+  ASSERT_EQ(json["constraints"].size(), 1u);
+  EXPECT_EQ(json["constraints"][0]["type"], "coupler");
+  EXPECT_EQ(json["constraints"][0]["joint0"], "m::j2");
+  EXPECT_EQ(json["constraints"][0]["joint1"], "m::j1");
+}
+
+TEST(SdfJointDrakeChildrenTest, MimicErrors) {  // EXT-010
+  struct Case {
+    const char* mimic;
+    DiagKind kind;
+    const char* message;
+  };
+  const Case cases[] = {
+      {"<drake:mimic multiplier='1' offset='0'/>", DiagKind::MissingAttribute,
+       "missing the required 'joint' attribute"},
+      {"<drake:mimic joint='j2' offset='0'/>", DiagKind::MissingAttribute,
+       "missing the required 'multiplier' attribute"},
+      {"<drake:mimic joint='j2' multiplier='1'/>", DiagKind::MissingAttribute,
+       "missing the required 'offset' attribute"},
+      {"<drake:mimic joint='j1' multiplier='1' offset='0'/>", DiagKind::BadValue,
+       "Joints cannot mimic themselves"},
+  };
+  for (const Case& c : cases) {
+    LoweredSdf l;
+    EXPECT_FALSE(l.Read(JointModel(c.mimic))) << c.mimic;
+    EXPECT_TRUE(l.HasDiagnostic(c.kind, c.message)) << c.mimic << "\n" << l.Messages();
+    EXPECT_TRUE(l.module.constraints.empty());
+  }
+  CompiledSdf unknown(JointModel("<drake:mimic joint='nope' multiplier='1' offset='0'/>"));
+  EXPECT_FALSE(unknown.ok());
+  EXPECT_NE(unknown.Messages().find("unknown joint 'nope'"), std::string::npos)
+      << unknown.Messages();
+}
+
+// ------------------------------------------------------------- EXT-070
+
+std::string DeformableModel(std::string_view link_body, std::string_view after_link = "") {
+  return fmt::format(R"(<model name='deformable'>
+  <link name='body'>
+{}
+  </link>
+  <link name='rigid'/>
+{}
+</model>)",
+                     link_body, after_link);
+}
+constexpr std::string_view kVtkCollision = R"(<collision name='collision'>
+      <geometry><mesh><uri>single_tet.vtk</uri></mesh></geometry>
+    </collision>)";
+
+TEST(SdfDeformableTest, DefaultsAndValues) {  // EXT-070
+  LoweredSdf minimal;
+  ASSERT_TRUE(minimal.Read(
+      DeformableModel(fmt::format("{}<drake:deformable_properties/>", kVtkCollision))))
+      << minimal.Messages();
+  const ir::Body* body = minimal.Body("body");
+  ASSERT_NE(body, nullptr);
+  ASSERT_TRUE(body->deformable.has_value());
+  EXPECT_FALSE(body->inertial.has_value());  // no mass in the rigid plant
+  EXPECT_EQ(body->deformable->youngs_modulus, 1e8);  // DeformableBodyConfig's defaults
+  EXPECT_EQ(body->deformable->poissons_ratio, 0.49);
+  EXPECT_EQ(body->deformable->mass_density, 1.5e3);
+  EXPECT_EQ(body->deformable->material_model, "linear_corotated");
+  EXPECT_FALSE(body->deformable->resolution_hint.has_value());
+  EXPECT_FALSE(minimal.Body("rigid")->deformable.has_value());
+
+  LoweredSdf full;
+  ASSERT_TRUE(full.Read(DeformableModel(fmt::format(R"({}
+    <drake:deformable_properties>
+      <drake:youngs_modulus>100.0</drake:youngs_modulus>
+      <drake:poissons_ratio>0.3</drake:poissons_ratio>
+      <drake:mass_damping>0.01</drake:mass_damping>
+      <drake:stiffness_damping>0.02</drake:stiffness_damping>
+      <drake:mass_density>800.0</drake:mass_density>
+      <drake:material_model> corotated </drake:material_model>
+    </drake:deformable_properties>
+    <drake:wall_boundary_condition>
+      <drake:point_on_plane>0 0 -10</drake:point_on_plane>
+      <drake:outward_normal>0 0 2</drake:outward_normal>
+    </drake:wall_boundary_condition>)",
+                                                    kVtkCollision))))
+      << full.Messages();
+  const ir::DeformableProperties& d = *full.Body("body")->deformable;
+  EXPECT_EQ(d.youngs_modulus, 100);
+  EXPECT_EQ(d.poissons_ratio, 0.3);
+  EXPECT_EQ(d.mass_damping, 0.01);
+  EXPECT_EQ(d.stiffness_damping, 0.02);
+  EXPECT_EQ(d.mass_density, 800);
+  EXPECT_EQ(d.material_model, "corotated");
+  ASSERT_EQ(d.wall_boundary_conditions.size(), 1u);
+  EXPECT_EQ(d.wall_boundary_conditions[0].point_on_plane, Eigen::Vector3d(0, 0, -10));
+  EXPECT_EQ(d.wall_boundary_conditions[0].outward_normal, Eigen::Vector3d(0, 0, 1));
+}
+
+TEST(SdfDeformableTest, SphereNeedsAPositiveResolutionHint) {  // EXT-070
+  auto sphere = [](std::string_view proximity) {
+    return fmt::format(R"(<collision name='collision'>
+      <geometry><sphere><radius>0.1</radius></sphere></geometry>{}
+    </collision><drake:deformable_properties/>)",
+                       proximity);
+  };
+  LoweredSdf ok;
+  ASSERT_TRUE(ok.Read(DeformableModel(sphere(
+      "<drake:proximity_properties><drake:mesh_resolution_hint>0.05</drake:mesh_resolution_hint>"
+      "</drake:proximity_properties>"))))
+      << ok.Messages();
+  EXPECT_EQ(ok.Body("body")->deformable->resolution_hint, 0.05);
+
+  LoweredSdf missing;
+  EXPECT_FALSE(missing.Read(DeformableModel(sphere(""))));
+  EXPECT_TRUE(missing.HasDiagnostic(DiagKind::MissingElement, "positive "
+                                                              "<drake:mesh_resolution_hint>"))
+      << missing.Messages();
+  EXPECT_FALSE(missing.Body("body")->deformable.has_value());
+}
+
+TEST(SdfDeformableTest, PropertyAndLinkErrors) {  // EXT-070
+  struct Case {
+    std::string link_body, after_link, message;
+  };
+  const std::string props = "<drake:deformable_properties/>";
+  const std::string coll(kVtkCollision);
+  const std::vector<Case> cases = {
+      {coll + "<drake:deformable_properties><drake:youngs_modulus>0</drake:youngs_modulus>"
+              "</drake:deformable_properties>",
+       "", "Young's modulus must be positive"},
+      {coll + "<drake:deformable_properties><drake:poissons_ratio>0.5</drake:poissons_ratio>"
+              "</drake:deformable_properties>",
+       "", "Poisson's ratio must be in the range (-1, 0.5)"},
+      {coll + "<drake:deformable_properties><drake:mass_damping>-1</drake:mass_damping>"
+              "</drake:deformable_properties>",
+       "", "Mass damping must be non-negative"},
+      {coll + "<drake:deformable_properties><drake:stiffness_damping>-1"
+              "</drake:stiffness_damping></drake:deformable_properties>",
+       "", "Stiffness damping must be non-negative"},
+      {coll + "<drake:deformable_properties><drake:mass_density>-1</drake:mass_density>"
+              "</drake:deformable_properties>",
+       "", "Mass density must be positive"},
+      {coll + "<drake:deformable_properties><drake:material_model>jelly</drake:material_model>"
+              "</drake:deformable_properties>",
+       "", "Invalid <drake:material_model> value 'jelly'"},
+      {props, "", "exactly one <collision>"},
+      {coll + coll + props, "", "exactly one <collision>"},
+      {coll + "<visual name='v1'/><visual name='v2'/>" + props, "", "at most one <visual>"},
+      {"<collision name='c'><geometry><box><size>1 1 1</size></box></geometry></collision>" +
+           props,
+       "", "must be either a <mesh>"},
+      {"<collision name='c'><geometry><mesh><uri>x.obj</uri></mesh></geometry></collision>" +
+           props,
+       "", "must name a .vtk file"},
+      {coll + "<inertial><mass>1</mass></inertial>" + props, "", "must not have an <inertial>"},
+      {coll + props,
+       "<joint name='j' type='fixed'><parent>rigid</parent><child>body</child></joint>",
+       "cannot be the child of joint 'j'"},
+      {coll + props, "<frame name='f' attached_to='body'/>",
+       "cannot be attached to deformable link 'body'"},
+      {coll + props +
+           "<drake:wall_boundary_condition><drake:point_on_plane>1 2 3</drake:point_on_plane>"
+           "</drake:wall_boundary_condition>",
+       "", "Unable to find the <drake:outward_normal> child tag"},
+      {coll + props +
+           "<drake:wall_boundary_condition><drake:point_on_plane>1 2 3</drake:point_on_plane>"
+           "<drake:outward_normal>0 0 0</drake:outward_normal></drake:wall_boundary_condition>",
+       "", "Outward normal vector cannot be zero"},
+  };
+  for (const Case& c : cases) {
+    LoweredSdf l;
+    EXPECT_FALSE(l.Read(DeformableModel(c.link_body, c.after_link))) << c.link_body;
+    bool found = false;
+    for (const auto& d : l.diags.diagnostics()) {
+      found |= d.severity == Severity::Error && d.message.find(c.message) != std::string::npos;
+    }
+    EXPECT_TRUE(found) << c.message << "\n" << l.Messages();
+    if (const ir::Body* b = l.Body("body")) {
+      EXPECT_FALSE(b->deformable.has_value());
+    }
+  }
+}
+
+TEST(SdfDeformableTest, MeshWithResolutionHintWarns) {  // EXT-070
+  LoweredSdf l;
+  EXPECT_TRUE(l.Read(DeformableModel(R"(<collision name='collision'>
+      <geometry><mesh><uri>single_tet.vtk</uri></mesh></geometry>
+      <drake:proximity_properties><drake:mesh_resolution_hint>0.1</drake:mesh_resolution_hint></drake:proximity_properties>
+    </collision><drake:deformable_properties/>)")))
+      << l.Messages();
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedElement, "the hint is ignored"));
+  EXPECT_FALSE(l.Body("body")->deformable->resolution_hint.has_value());
+}
+
+}  // namespace
+}  // namespace mdlc
