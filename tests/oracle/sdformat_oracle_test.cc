@@ -397,6 +397,7 @@ struct OBody {
   Matrix3d I_B = Matrix3d::Zero();  // about Bcm, expressed in B
   Isometry3d X_WB0 = Isometry3d::Identity();  // libsdformat's pose = default pose
   bool is_static = false;           // SDF-006: welded to world
+  bool deformable = false;          // EXT-070: no rigid mass properties
 };
 
 struct OJoint {
@@ -538,6 +539,7 @@ class OracleBuilder {
       b.I_B = R * I_I * R.transpose();
       b.com = X_LI.translation();
       b.is_static = is_static;
+      b.deformable = l->Element() && l->Element()->HasElement("drake:deformable_properties");
       o_->bodies[b.scoped] = b;
       o_->world_frames[b.scoped] = {b.X_WB0, b.scoped};
     }
@@ -863,7 +865,7 @@ MatrixXd ComputeMassMatrix(const Oracle& o, const Kinematics& k) {
   for (int i = 0; i < n; ++i) col_of[o.dofs[i]] = i;
   MatrixXd M = MatrixXd::Zero(n, n);
   for (const auto& [name, B] : o.bodies) {
-    if (B.mass == 0 && B.I_B.isZero(0.0)) continue;
+    if (B.deformable || (B.mass == 0 && B.I_B.isZero(0.0))) continue;
     const Isometry3d& X_WB = k.X_WB.at(name);
     const Vector3d c = X_WB * B.com;
     const Matrix3d R = X_WB.linear();
@@ -963,15 +965,12 @@ constexpr KnownDisagreement kKnownDisagreements[] = {
      "COMMON: a mesh file that does not exist (meshes/mesh.dae) is an error"},
     {"sdformat/test/integration/model/test_model_with_plugin/model.sdf",
      "COMMON: a mesh file that does not exist (meshes/mesh.dae) is an error"},
-    {"sdformat/test/sdf/basic_shapes.sdf",
-     "SDF-001/040: <cone> (SDFormat 1.11) is unknown to SDFormat 1.9 and an error; libsdformat 12 "
-     "only warns"},
     {"sdformat/test/sdf/shapes.sdf",
-     "SDF-001/040: <cone> and <convex_decomposition> (SDFormat 1.11) are unknown to SDFormat 1.9 "
-     "and errors; libsdformat 12 only warns"},
+     "SDF-001/040: <convex_decomposition> (SDFormat 1.11) is unknown to SDFormat 1.9 and an "
+     "error (libsdformat 12 only warns); COMMON-010: a mesh fetched over https:// is an error"},
     {"sdformat/test/sdf/shapes_world.sdf",
-     "SDF-001/040: <cone> (SDFormat 1.11) is unknown to SDFormat 1.9 and an error; libsdformat 12 "
-     "only warns"},
+     "COMMON-010: a mesh fetched over https:// (a Gazebo Fuel URL) is an error; mdlc never "
+     "downloads anything"},
     {"sdformat/test/sdf/inertial_stats_auto.sdf",
      "SDF-007: libsdformat 12 predates <inertial auto=\"true\">: it keeps the given/default "
      "inertia where Drake computes it from collision geometry", true},
@@ -1318,6 +1317,7 @@ void CheckStatic(const Oracle& o, const Dump& d, Report* rep) {
     const auto it = d.bodies.find(Key(B.inst, B.name));
     const std::string ent = "body '" + scoped + "'";
     if (it == d.bodies.end()) continue;  // reported by CheckBodyPoses
+    if (B.deformable) continue;  // EXT-070: a deformable body has no rigid inertia to compare
     const json& b = *it->second;
     if (!b.contains("mass") || !b["mass"].is_number()) {
       rep->Add("SDF-007 " + ent + " mass missing/not a number");
