@@ -1,0 +1,260 @@
+// bench_sdf_frames.cc - load-time benchmarks for SDFormat: does reading
+// frame graphs (relative_to / attached_to chains, deeply nested models,
+// scoped names) stay linear in their size, what does it cost on top of the
+// XML parse, and how does it compare with libsdformat?
+//
+// For the models of model_gen_sdf.h (frame_chain, nested_models, sdf_chain)
+// of N = 10, 100, 1000, 10000, each stage is timed on an in-memory buffer;
+// from xml_document down each stage includes the ones above it:
+//
+//   libxml2_parse     xmlReadMemory + xmlFreeDoc with mdlc's options: the floor
+//   xml_document      mdlc's XmlDocument::Parse (the above + source offsets)
+//   frontend          SDFormat -> IR (frontend::ReadModel), as the CLI calls it
+//   frontend_passes   ... + the default pass pipeline (resolve-frames included)
+//   compile           ... + backend::Instantiate (plant and scene graph)
+//   libsdformat_load  sdf::Root::LoadSdfString + ~Root (libsdformat 12; only
+//                     when the benchmark was built with it; N up to
+//                     --sdformat_max_n, default 1000, as it is slow)
+//
+// Copying the text into a SourceManager is setup and not timed; tearing the
+// results down is timed in every stage. Each family reports BigO over N and
+// bytes/s. sdf_chain's joints have friction, which draws a warning per joint
+// (as the URDF chain's do); the engine stores them, nothing prints them.
+//
+//   mdlc_bench_sdf                        run everything
+//   mdlc_bench_sdf --benchmark_filter='(libxml2_parse|compile)/frame_chain'
+//   mdlc_bench_sdf --sdformat_max_n=10000 also time libsdformat on N = 10000
+//   mdlc_bench_sdf --write_models=DIR     write DIR/{family}_n{N}.sdf
+#include <benchmark/benchmark.h>
+#include <fmt/format.h>
+#include <libxml/parser.h>
+
+#include <algorithm>
+#include <charconv>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "backend/compiler.h"
+#include "frontend/xml/xml_document.h"
+#include "model_gen_sdf.h"
+
+#ifdef MDLC_BENCH_HAVE_SDFORMAT
+#include <sdf/Root.hh>
+#endif
+
+namespace mdlc::bench {
+namespace {
+
+constexpr int kSizes[] = {10, 100, 1000, 10000};
+constexpr SdfFamily kFamilies[] = {SdfFamily::FrameChain, SdfFamily::NestedModels,
+                                   SdfFamily::SdfChain};
+int sdformat_max_n = 1000;
+
+// keep in step with frontend/xml/xml_document.cc (as bench_compile.cc)
+constexpr int kMdlcXmlOptions = XML_PARSE_NONET | XML_PARSE_HUGE | XML_PARSE_BIG_LINES |
+                                XML_PARSE_NOWARNING | XML_PARSE_NOERROR | XML_PARSE_NOBLANKS |
+                                XML_PARSE_COMPACT;
+
+const std::string& Model(SdfFamily family, int n) {
+  static std::map<std::pair<SdfFamily, int>, std::string> cache;
+  auto [it, inserted] = cache.try_emplace({family, n});
+  if (inserted) it->second = GenerateSdf(family, n);
+  return it->second;
+}
+
+std::string FileName(SdfFamily family, int n) {
+  return fmt::format("{}_n{}.sdf", SdfFamilyName(family), n);
+}
+
+std::unique_ptr<Compilation> Prepare(benchmark::State& state, SdfFamily family, FileId* file) {
+  state.PauseTiming();
+  auto c = std::make_unique<Compilation>();
+  const int n = static_cast<int>(state.range(0));
+  *file = c->sources.AddBuffer(FileName(family, n), Model(family, n));
+  state.ResumeTiming();
+  return c;
+}
+
+// as Compilation::RunFrontends does it: documents retained, packages known
+bool RunFrontend(Compilation& c, FileId file) {
+  frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend, &c.documents};
+  ctx.packages = &c.packages;
+  return frontend::ReadModel(file, frontend::Format::Sdf, ctx).has_value() &&
+         !c.diags.has_errors();
+}
+
+void ReportFirstError(benchmark::State& state, const Compilation& c, std::string_view stage) {
+  for (const auto& d : c.diags.diagnostics()) {
+    if (d.severity == Severity::Error) {
+      state.SkipWithError(fmt::format("{}: {}", stage, d.message).c_str());
+      return;
+    }
+  }
+  state.SkipWithError(fmt::format("{} failed", stage).c_str());
+}
+
+void Finish(benchmark::State& state, SdfFamily family) {
+  const int n = static_cast<int>(state.range(0));
+  state.SetComplexityN(n);
+  state.SetBytesProcessed(static_cast<int64_t>(state.iterations()) *
+                          static_cast<int64_t>(Model(family, n).size()));
+}
+
+// ---------------------------------------------------------------- stages
+
+void BM_Libxml2Parse(benchmark::State& state, SdfFamily family) {
+  const std::string& text = Model(family, static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    xmlDocPtr doc = xmlReadMemory(text.data(), static_cast<int>(text.size()), "bench.sdf",
+                                  nullptr, kMdlcXmlOptions);
+    if (!doc) state.SkipWithError("libxml2 rejected the model");
+    benchmark::DoNotOptimize(doc);
+    xmlFreeDoc(doc);
+  }
+  Finish(state, family);
+}
+
+void BM_XmlDocument(benchmark::State& state, SdfFamily family) {
+  for (auto _ : state) {
+    FileId file;
+    auto c = Prepare(state, family, &file);
+    auto doc = xml::XmlDocument::Parse(file, c->sources, c->diags);
+    if (!doc) ReportFirstError(state, *c, "XmlDocument::Parse");
+    benchmark::DoNotOptimize(doc.get());
+  }
+  Finish(state, family);
+}
+
+void BM_Frontend(benchmark::State& state, SdfFamily family) {
+  for (auto _ : state) {
+    FileId file;
+    auto c = Prepare(state, family, &file);
+    if (!RunFrontend(*c, file)) ReportFirstError(state, *c, "frontend");
+    benchmark::DoNotOptimize(c->module);
+  }
+  Finish(state, family);
+}
+
+void BM_FrontendPasses(benchmark::State& state, SdfFamily family) {
+  for (auto _ : state) {
+    FileId file;
+    auto c = Prepare(state, family, &file);
+    if (!RunFrontend(*c, file) || !c->RunPasses()) ReportFirstError(state, *c, "passes");
+    benchmark::DoNotOptimize(c->module);
+  }
+  Finish(state, family);
+}
+
+void BM_Compile(benchmark::State& state, SdfFamily family) {
+  for (auto _ : state) {
+    FileId file;
+    auto c = Prepare(state, family, &file);
+    if (!RunFrontend(*c, file) || !c->RunPasses() || !c->RunBackend()) {
+      ReportFirstError(state, *c, "compile");
+    }
+    benchmark::DoNotOptimize(c->model);
+  }
+  Finish(state, family);
+}
+
+#ifdef MDLC_BENCH_HAVE_SDFORMAT
+void BM_LibsdformatLoad(benchmark::State& state, SdfFamily family) {
+  const std::string& text = Model(family, static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    sdf::Root root;
+    sdf::Errors errors = root.LoadSdfString(text);
+    if (!errors.empty()) {
+      // the message may quote the whole model: its first line is enough
+      std::string first = errors.front().Message();
+      first = first.substr(0, std::min<size_t>(first.find('\n'), 160));
+      state.SkipWithError(
+          fmt::format("libsdformat: {} errors, the first: {}", errors.size(), first).c_str());
+    }
+    benchmark::DoNotOptimize(root.Model());
+  }
+  Finish(state, family);
+}
+#endif
+
+void RegisterAll() {
+  struct Stage {
+    const char* name;
+    void (*fn)(benchmark::State&, SdfFamily);
+    int max_n;
+  };
+  const Stage stages[] = {
+      {"libxml2_parse", BM_Libxml2Parse, kSizes[3]},
+      {"xml_document", BM_XmlDocument, kSizes[3]},
+      {"frontend", BM_Frontend, kSizes[3]},
+      {"frontend_passes", BM_FrontendPasses, kSizes[3]},
+      {"compile", BM_Compile, kSizes[3]},
+#ifdef MDLC_BENCH_HAVE_SDFORMAT
+      {"libsdformat_load", BM_LibsdformatLoad, sdformat_max_n},
+#endif
+  };
+  for (SdfFamily family : kFamilies) {
+    for (const Stage& stage : stages) {
+      auto* b = benchmark::RegisterBenchmark(
+          fmt::format("{}/{}", stage.name, SdfFamilyName(family)).c_str(), stage.fn, family);
+      for (int n : kSizes) {
+        if (n <= stage.max_n) b->Arg(n);
+      }
+      b->Unit(benchmark::kMillisecond)->Complexity(benchmark::oN);
+    }
+  }
+}
+
+int WriteModels(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  for (SdfFamily family : kFamilies) {
+    for (int n : kSizes) {
+      const std::filesystem::path path = dir / FileName(family, n);
+      std::ofstream out(path, std::ios::binary);
+      out << Model(family, n);
+      if (!out) {
+        fmt::print(stderr, "mdlc_bench_sdf: cannot write '{}'\n", path.string());
+        return 1;
+      }
+      fmt::print("{}\n", path.string());
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace mdlc::bench
+
+int main(int argc, char** argv) {
+  // our own flags first (removed from argv); Google Benchmark rejects flags it does not know
+  constexpr std::string_view kWriteModels = "--write_models=";
+  constexpr std::string_view kSdformatMaxN = "--sdformat_max_n=";
+  int kept = 1;
+  for (int i = 1; i < argc; ++i) {
+    std::string_view arg(argv[i]);
+    if (arg.starts_with(kWriteModels)) {
+      return mdlc::bench::WriteModels(argv[i] + kWriteModels.size());
+    }
+    if (arg.starts_with(kSdformatMaxN)) {
+      arg.remove_prefix(kSdformatMaxN.size());
+      auto [end, error] = std::from_chars(arg.data(), arg.data() + arg.size(),
+                                          mdlc::bench::sdformat_max_n);
+      if (error != std::errc() || end != arg.data() + arg.size()) {
+        fmt::print(stderr, "mdlc_bench_sdf: --sdformat_max_n wants a number\n");
+        return 1;
+      }
+      continue;
+    }
+    argv[kept++] = argv[i];
+  }
+  argc = kept;
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  mdlc::bench::RegisterAll();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
