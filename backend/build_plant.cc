@@ -87,6 +87,7 @@ class PlantBuilder {
       body.model = src.model;
       body.is_world = src.is_world;
       body.surface_velocity_axis = src.surface_velocity_axis;
+      body.deformable = src.deformable;
       if (src.inertial) SetMassProperties(*src.inertial, body);
     }
   }

@@ -36,6 +36,9 @@ struct PlantBody {
   Eigen::Matrix3d I_BBcm_B = Eigen::Matrix3d::Zero();   // inertia about Bcm, in B
   bool is_world = false;
   std::optional<Eigen::Vector3d> surface_velocity_axis;  // unit, in B (EXT-060)
+  /// A deformable link (EXT-070): outside the rigid plant's dynamics; it is
+  /// kept as a massless body so its geometry and properties stay reachable.
+  std::optional<ir::DeformableProperties> deformable;
   // topology: the joint whose child this body is, its parent body and its
   // depth in the tree (world: invalid ids, level 0)
   JointId inbound_joint;

@@ -178,7 +178,10 @@ std::optional<std::string> ResolveUri(std::string_view uri, const std::string& b
     const std::string_view scheme = uri.substr(0, scheme_end);
     std::string_view rest = uri.substr(scheme_end + 3);
     if (scheme == "file") {
-      path = std::string(rest);
+      // file:///abs is absolute; a relative file://x (sloppy, but written)
+      // is taken relative to the referring file, like a bare path
+      fs::path p(rest);
+      path = p.is_absolute() ? p.string() : (fs::path(base_dir) / p).string();
     } else if (scheme == "package" || scheme == "model") {
       const size_t slash = rest.find('/');
       const std::string_view name = rest.substr(0, slash);

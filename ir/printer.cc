@@ -14,6 +14,7 @@ class Printer {
       : m_(m), sources_(s), options_(o) {}
 
   std::string Run();
+  void PrintFrameGraph();
 
  private:
   std::string Num(double v) const {
@@ -92,6 +93,47 @@ std::string Printer::Shape(const ir::Shape& shape) const {
   return std::visit(V{*this}, shape);
 }
 
+// SDFormat's frame graph as the frontend recorded it (names, not results)
+void Printer::PrintFrameGraph() {
+  const FrameGraph& g = m_.frame_graph;
+  auto ref = [&](const NameRef& r) { return r.empty() ? std::string("-") : Name(r.name); };
+  for (size_t i = 0; i < g.scopes.size(); ++i) {
+    const FrameScope& s = g.scopes[i];
+    out_ += fmt::format("  frame_scope #{} {} model={} frame=#{}", i, Name(s.name), Model(s.model),
+                        s.frame.value);
+    if (s.parent.valid()) out_ += fmt::format(" parent=#{}", s.parent.value);
+    if (s.merged_into.valid()) out_ += fmt::format(" merged_into=#{}", s.merged_into.value);
+    if (s.is_static) out_ += " static";
+    if (!s.canonical_link.empty()) out_ += " canonical_link=" + ref(s.canonical_link);
+    if (!s.placement_frame.empty()) out_ += " placement_frame=" + ref(s.placement_frame);
+    out_ += Where(s.loc) + "\n";
+  }
+  static constexpr const char* kKinds[] = {"world", "model", "link", "joint", "frame", "anchor"};
+  static constexpr const char* kTargets[] = {"none", "body", "frame", "joint", "geometry", "camera"};
+  for (size_t i = 0; i < g.nodes.size(); ++i) {
+    const FrameNode& n = g.nodes[i];
+    out_ += fmt::format("  frame_node #{} {} {} scope=#{}", i, kKinds[static_cast<int>(n.kind)],
+                        n.name.empty() ? std::string("-") : Name(n.name), n.scope.value);
+    if (!n.relative_to.empty()) {
+      out_ += fmt::format(" X_{}={}", ref(n.relative_to), Pose(n.X_RN));
+    }
+    if (!n.attached_to.empty()) out_ += " attached_to=" + ref(n.attached_to);
+    if (n.target != FrameTarget::None) {
+      out_ += fmt::format(" -> {}#{}", kTargets[static_cast<int>(n.target)], n.target_index);
+    }
+    out_ += Where(n.loc) + "\n";
+  }
+  for (const JointFrameSpec& j : g.joints) {
+    out_ += fmt::format("  frame_joint joint=#{} node=#{} parent={}", j.joint.value, j.node.value,
+                        ref(j.parent));
+    for (int k = 0; k < j.axis_count; ++k) {
+      out_ += fmt::format(" axis{}={}", k + 1, Vec(j.xyz[k]));
+      if (!j.expressed_in[k].empty()) out_ += "@" + ref(j.expressed_in[k]);
+    }
+    out_ += "\n";
+  }
+}
+
 std::string Printer::Run() {
   out_ += "module {\n";
   for (size_t i = 0; i < m_.models.size(); ++i) {
@@ -108,6 +150,7 @@ std::string Printer::Run() {
                           Num(in.ixz), Num(in.iyz));
     }
     if (b.surface_velocity_axis) out_ += " surface_velocity_axis=" + Vec(*b.surface_velocity_axis);
+    if (b.default_pose) out_ += " default_pose=" + Pose(*b.default_pose);
     if (b.deformable) {
       const DeformableProperties& d = *b.deformable;
       out_ += fmt::format(
@@ -267,6 +310,7 @@ std::string Printer::Run() {
     }
     out_ += Where(f.loc) + "\n";
   }
+  PrintFrameGraph();
   out_ += "}\n";
   return std::move(out_);
 }

@@ -214,12 +214,14 @@ std::optional<ShapeResult> ReadShape(SdfReader& r, const xml::XmlElement& geomet
     }
     if (!e) {
       e = c;
+    } else if (kind == "polyline" && sp.Local(e.Name()) == "polyline") {
+      // SDFormat allows several polylines in one geometry (one unsupported shape)
     } else {
       r.diags()
           .Report(DiagKind::BadGeometry, c.GetLoc(),
-                  fmt::format("<{}> must hold exactly one shape; <{}> is ignored",
+                  fmt::format("<{}> must hold exactly one shape, but also holds <{}>",
                               geometry.Name(), c.Name()))
-          .Note(e.GetLoc(), fmt::format("the shape is <{}>", e.Name()));
+          .Note(e.GetLoc(), fmt::format("the first shape is <{}>", e.Name()));
     }
   }
   // <empty/>, or nothing at all: no geometry, silently (SDF-040)
@@ -293,7 +295,8 @@ std::optional<ShapeResult> ReadShape(SdfReader& r, const xml::XmlElement& geomet
     result.shape = ir::HalfSpace{};
     result.X_GC = HalfSpacePose(normal);
   } else if (kind == "mesh") {
-    CheckVisualChildren(r, e, sp, {"uri", "scale", "drake:declare_convex"}, {"submesh"});
+    CheckVisualChildren(r, e, sp, {"uri", "scale", "drake:declare_convex"},
+                        {"submesh", "convex_decomposition", "optimization"});
     xml::XmlElement uri = e.Child(sp("uri"));
     const std::string written = uri ? uri.Text() : std::string();
     const std::string_view text = Trim(written);
@@ -359,6 +362,25 @@ void ReadMaterial(SdfReader& r, const xml::XmlElement& material, const Spelling&
   CheckVisualChildren(r, material, sp,
                       {"ambient", "diffuse", "specular", "emissive", kDiffuseMapTag},
                       {"script", "shader", "render_order", "lighting", "double_sided", "pbr"});
+  // SDFormat's material rules, though Drake draws neither scripts nor shaders
+  if (xml::XmlElement script = material.Child("script")) {
+    for (std::string_view needed : {"uri", "name"}) {
+      xml::XmlElement c = script.Child(needed);
+      if (!c || Trim(c.Text()).empty() || Trim(c.Text()) == "__default__") {
+        r.diags().Report(DiagKind::MissingElement, script.GetLoc(),
+                         fmt::format("a <script> element is missing a child <{}> element, or "
+                                     "it is empty",
+                                     needed));
+      }
+    }
+  }
+  if (xml::XmlElement shader = material.Child("shader")) {
+    auto type = shader.Attribute("type");
+    if (type.present() && type.value.starts_with("normal_map") && !shader.Child("normal_map")) {
+      r.diags().Report(DiagKind::MissingElement, shader.GetLoc(),
+                       "a normal map shader type has been specified, but a <normal_map> has not");
+    }
+  }
   if (xml::XmlElement diffuse = material.Child(sp("diffuse"))) g.rgba = ReadColor(r, diffuse);
   for (std::string_view name : {"ambient", "specular", "emissive"}) {
     if (xml::XmlElement c = material.Child(sp(name))) {
@@ -690,10 +712,15 @@ void SdfReader::ReadVisual(const xml::XmlElement& e, ModelScope& s, BodyId body,
 
   xml::XmlElement geometry = e.Child(sp("geometry"));
   if (!geometry) {
-    // libsdformat fills in an empty geometry, which Drake skips
+    // libsdformat fills in an empty geometry, which Drake skips; the material
+    // is still checked
     diags().Report(DiagKind::EmptyGeometry, e.GetLoc(),
                    fmt::format("<{}> has no <{}>: nothing is registered for it", e.Name(),
                                sp("geometry")));
+    if (xml::XmlElement material = e.Child(sp("material"))) {
+      ir::Geometry unused;
+      ReadMaterial(*this, material, sp, unused);
+    }
     return;
   }
   auto shape = ReadShape(*this, geometry, sp);
@@ -851,7 +878,8 @@ void SdfReader::ReadSensor(const xml::XmlElement& e, ModelScope& s, BodyId body,
     attrs_.WarnUnknownAttributes(c, {"name"});
     CheckChildren(c, {"horizontal_fov", "image", "clip", "save", "depth_camera",
                       "segmentation_type", "box_type", "noise", "distortion", "lens",
-                      "visibility_mask", "pose"});
+                      "visibility_mask", "pose", "camera_info_topic", "triggered",
+                      "trigger_topic", "optical_frame_id"});
     if (xml::XmlElement fov = c.Child("horizontal_fov")) {
       auto v = TextDouble(fov);
       if (!v) return;

@@ -149,9 +149,11 @@ void SdfReader::ReadJoint(const xml::XmlElement& e, ModelScope& s) {
     } else {
       spec.xyz[k] = k == 0 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitY();
     }
-    // SDFormat 1.4/1.5: the axis may be expressed in the model frame
-    if (auto upm = ChildBool(axis, "use_parent_model_frame"); upm && *upm) {
-      spec.expressed_in[k] = {s.model_frame_name, axis.Child("use_parent_model_frame").GetLoc()};
+    // SDFormat 1.5/1.6 could express the axis in the model frame; 1.4 always
+    // did (libsdformat's 1.4 to 1.5 conversion sets use_parent_model_frame)
+    auto upm = ChildBool(axis, "use_parent_model_frame");
+    if (upm.value_or(s.file->version < 105) && spec.expressed_in[k].empty()) {
+      spec.expressed_in[k] = {s.model_frame_name, axis.GetLoc()};
     }
     AxisValues& v = values[k];
     if (xml::XmlElement limit = axis.Child("limit")) {
@@ -278,6 +280,7 @@ void SdfReader::ReadJoint(const xml::XmlElement& e, ModelScope& s) {
   node.target_index = joint_id.value;
   spec.node = AddNode(s, std::move(node));
   spec.joint = joint_id;
+  const Symbol final_name = module()[joint_id].name;  // AddNode may rename (before 1.8)
   graph().joints.push_back(spec);
 
   // the actuator every actuable SDFormat joint gets unless its effort is 0 (SDF-020)
@@ -285,10 +288,10 @@ void SdfReader::ReadJoint(const xml::XmlElement& e, ModelScope& s) {
   const ir::Joint& j = module()[joint_id];
   if (one_dof && values[0].effort != 0) {
     ir::Actuator a;
-    a.name = joint_name;
+    a.name = final_name;
     a.model = s.model;
     a.loc = e.GetLoc();
-    a.joint = {joint_name, e.GetLoc(), joint_id};
+    a.joint = {final_name, e.GetLoc(), joint_id};
     a.effort_limit = values[0].effort;
     actuator = module().Add(std::move(a));
   } else if ((j.type == ir::JointType::Universal &&
@@ -315,7 +318,7 @@ void SdfReader::ReadJoint(const xml::XmlElement& e, ModelScope& s) {
       spring.model = s.model;
       spring.loc = e.GetLoc();
       spring.type = ir::ForceElementType::JointSpring;
-      spring.joint = {joint_name, e.GetLoc(), joint_id};
+      spring.joint = {final_name, e.GetLoc(), joint_id};
       spring.nominal = v.spring_reference;
       spring.stiffness = v.spring_stiffness;
       module().Add(std::move(spring));

@@ -16,7 +16,7 @@ void SdfReader::ReadLink(const xml::XmlElement& e, ModelScope& s) {
                  "velocity_decay", "pose", "inertial", "collision", "visual", "sensor",
                  "projector", "audio_sink", "audio_source", "battery", "light",
                  "particle_emitter", "frame", "drake:surface_velocity_axis", "drake:visual",
-                 "drake:deformable_properties"},
+                 "drake:deformable_properties", "drake:wall_boundary_condition"},
                 {});
   const Symbol link_name = module().Intern(*name);
 
@@ -80,7 +80,13 @@ void SdfReader::ReadLink(const xml::XmlElement& e, ModelScope& s) {
                                    "unsupported and will be ignored",
                                    tag));
       }
-    } else if (tag == "must_be_base_link" || tag == "velocity_decay" || tag == "projector" ||
+    } else if (tag == "velocity_decay") {
+      // unsupported, but its numbers must still be numbers (COMMON-007)
+      for (auto v = child.FirstChild(); v; v = v.NextSibling()) TextDouble(v);
+      diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
+                     "tag 'velocity_decay' found as a child of 'link' is currently unsupported "
+                     "and will be ignored");
+    } else if (tag == "must_be_base_link" || tag == "projector" ||
                tag == "audio_sink" || tag == "audio_source" || tag == "battery" ||
                tag == "light" || tag == "particle_emitter") {
       diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),

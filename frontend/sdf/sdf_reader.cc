@@ -70,12 +70,26 @@ FrameNodeId SdfReader::AddNode(const ModelScope& s, ir::FrameNode node) {
   auto [it, inserted] =
       defined_.emplace(ScopedKey{ns.value, node.name.value}, Definition{node.loc, node.kind});
   if (!inserted && it->second.kind != node.kind && s.file && s.file->version < 108) {
+    // before SDFormat 1.8 a joint (say) could share its child link's name;
+    // libsdformat renames the newcomer NAME_joint (NAME_frame, ...), and so do we
+    static constexpr const char* kSuffix[] = {"world", "model", "link", "joint", "frame", ""};
+    std::string renamed = fmt::format("{}_{}", module().Text(node.name),
+                                      kSuffix[static_cast<int>(node.kind)]);
     diags()
         .Report(DiagKind::RenamedDuplicate, node.loc,
-                fmt::format("the name '{}' is already used in this model; SDFormat 1.8 and later "
-                            "reject this, and references to the name mean the first",
-                            module().Text(node.name)))
+                fmt::format("the name '{}' is already used in this model; as libsdformat does "
+                            "for files older than SDFormat 1.8, this {} is renamed '{}'",
+                            module().Text(node.name), kSuffix[static_cast<int>(node.kind)],
+                            renamed))
         .Note(it->second.loc, "first defined here");
+    node.name = module().Intern(renamed);
+    switch (node.target) {
+      case ir::FrameTarget::Joint: module().joints[node.target_index].name = node.name; break;
+      case ir::FrameTarget::Frame: module().frames[node.target_index].name = node.name; break;
+      case ir::FrameTarget::Body: module().bodies[node.target_index].name = node.name; break;
+      default: break;
+    }
+    defined_.emplace(ScopedKey{ns.value, node.name.value}, Definition{node.loc, node.kind});
   } else if (!inserted) {
     diags()
         .Report(DiagKind::DuplicateName, node.loc,
@@ -215,6 +229,18 @@ std::optional<ModelId> SdfReader::ReadRootFile(FileId file_id) {
                 "an SDFormat file holds either one <model> or one <world>, not both")
         .Note(world_element.GetLoc(), "the world is here");
     return std::nullopt;
+  }
+  // the root holds one model, light or actor, never two kinds (SDF-002)
+  for (auto child = sdf.FirstChild(); child && model_element; child = child.NextSibling()) {
+    if (child.Name() == "light" || child.Name() == "actor") {
+      diags()
+          .Report(DiagKind::BadValue, child.GetLoc(),
+                  fmt::format("the <sdf> root may hold only one of <model>, <light> or <actor>, "
+                              "but holds a <{}> beside the model",
+                              child.Name()))
+          .Note(model_element.GetLoc(), "the model is here");
+      return std::nullopt;
+    }
   }
   if (world_element) return ReadWorld(world_element, root_file);
   if (!model_element) {
@@ -377,7 +403,10 @@ FrameScopeId SdfReader::OpenScope(const xml::XmlElement& e, const ModelScope& pa
 void SdfReader::ReadModelBody(const xml::XmlElement& e, ModelScope& s) {
   CheckChildren(e,
                 {"static", "self_collide", "allow_auto_disable", "include", "model",
-                 "enable_wind", "frame", "pose", "link", "joint", "plugin"},
+                 "enable_wind", "frame", "pose", "link", "joint", "plugin", "drake:joint",
+                 "drake:collision_filter_group", "drake:linear_bushing_rpy",
+                 "drake:linear_spring_damper", "drake:ball_constraint",
+                 "drake:distance_constraint", "drake:tendon_constraint"},
                 {"gripper"});
   std::vector<xml::XmlElement> joints, drake_elements, nested;
   for (auto child = e.FirstChild(); child; child = child.NextSibling()) {

@@ -912,6 +912,17 @@ struct KnownDisagreement {
   bool values_differ = false;
 };
 constexpr KnownDisagreement kKnownDisagreements[] = {
+    {"drake/multibody/parsing/test/sdf_parser_test/joint_parsing_test.sdf",
+     "EXT-001: a drake:joint whose parent or child is an explicit <frame> is not implemented "
+     "in mdlc yet (a located not-implemented error)"},
+    {"sdformat/test/integration/partially_flattened.sdf",
+     "SDFormat 1.7 flattened names: libsdformat 12 rebuilds nested models from 'M1::__model__' "
+     "frames; mdlc keeps the flattened names in one instance (the bodies' scoped names agree)",
+     true},
+    {"sdformat/test/sdf/flattened_test_nested_model_with_frames.sdf",
+     "SDFormat 1.7 flattened names: libsdformat 12 rebuilds nested models from "
+     "'M::__model__' frames; mdlc keeps the flattened names in one instance",
+     true},
     {"sdformat/test/sdf/joint_complete.sdf",
      "SDF-010: revolute2 and gearbox joints are not supported by Drake"},
     {"sdformat/test/sdf/world_joint_invalid_child_world.sdf",

@@ -148,8 +148,9 @@ TEST(PassManagerTest, StopsAtTheFirstPassThatFails) {
   pm.AddDefaultPipeline();
   passes::PassContext ctx{l.module, l.diags, l.sources};
   EXPECT_FALSE(pm.Run(ctx));
-  ASSERT_EQ(printed.size(), 1u);  // only resolve-names ran
-  EXPECT_NE(printed[0].find("resolve-names"), std::string::npos);
+  ASSERT_EQ(printed.size(), 2u);  // resolve-frames (nothing to do for URDF), then resolve-names
+  EXPECT_NE(printed[0].find("resolve-frames"), std::string::npos);
+  EXPECT_NE(printed[1].find("resolve-names"), std::string::npos);
 }
 
 TEST(PassManagerTest, EveryRegisteredPassCanBeCreatedByName) {
