@@ -93,6 +93,9 @@ struct JointFrameSpec {
   int axis_count = 0;      // 0, 1 or 2 (universal)
   Eigen::Vector3d xyz[2] = {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitY()};
   NameRef expressed_in[2]; // empty: the joint frame
+  /// drake:joint (EXT-001): F is the parent frame itself and M the child
+  /// frame itself (node J stands for the child frame), not one frame J.
+  bool frames_given = false;
 };
 
 /// A link of a static model is welded to the world where it stands (SDF-006);

@@ -303,7 +303,9 @@ void ResolveFramesPass::WriteJoint(const ir::JointFrameSpec& spec) {
     return;
   }
   const Transform& X_WJ = world_[spec.node.index()];
-  Transform X_PJ = body_pose_[P.index()].inverse() * X_WJ;
+  // drake:joint: F is the parent frame, M the child frame (node J is M)
+  const Transform& X_WF = spec.frames_given ? world_[parent->index()] : X_WJ;
+  Transform X_PJ = body_pose_[P.index()].inverse() * X_WF;
   Transform X_CJ = body_pose_[C.index()].inverse() * X_WJ;
   // axes in J (SDF-012)
   Eigen::Vector3d axis_J[2];

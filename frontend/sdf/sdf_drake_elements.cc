@@ -190,13 +190,31 @@ class TextChildReader {
 };
 
 /// The scope whose namespace `id` publishes its names into (merged models).
-FrameScopeId Published(const ir::FrameGraph& g, FrameScopeId id) {
-  while (g[id].merged_into.valid()) id = g[id].merged_into;
-  return id;
-}
 }  // namespace
 
 // --- drake:joint (EXT-001, EXT-003, EXT-004) ---
+
+// F is the drake:parent frame and M the drake:child frame, links or explicit
+// frames alike: the joint's node stands for M, and the pass takes F from the
+// parent frame itself (JointFrameSpec::frames_given).
+void SdfReader::AddDrakeJointFrames(JointId joint, const ModelScope& s,
+                                    const ir::Ref<BodyId>& parent,
+                                    const ir::Ref<BodyId>& child) {
+  ir::FrameNode node;
+  node.kind = ir::FrameNodeKind::Joint;
+  node.name = module()[joint].name;
+  node.loc = module()[joint].loc;
+  node.relative_to = {child.name, child.loc};
+  node.attached_to = {child.name, child.loc};
+  node.target = ir::FrameTarget::Joint;
+  node.target_index = joint.value;
+  ir::JointFrameSpec spec;
+  spec.joint = joint;
+  spec.node = AddNode(s, std::move(node));
+  spec.parent = {parent.name, parent.loc};
+  spec.frames_given = true;
+  graph().joints.push_back(spec);
+}
 
 namespace {
 struct DrakeJointEnd {
@@ -207,7 +225,6 @@ struct DrakeJointEnd {
 
 void SdfReader::ReadDrakeModelElement(const xml::XmlElement& e, ModelScope& s) {
   const std::string_view tag = e.Name();
-  const ir::Module& cm = module();
 
   // -- helpers shared by the element kinds
   // drake:parent / drake:child: a link name (scoped names reach into nested
@@ -217,22 +234,7 @@ void SdfReader::ReadDrakeModelElement(const xml::XmlElement& e, ModelScope& s) {
     DrakeJointEnd end;
     xml::XmlElement child = r.Find(which, xml::Need::Required);
     if (!child || !r.NameOf(child, end.body)) return end;
-    // a frame of this model that is not a link: F (or M) would not be the
-    // body frame, which this lowering cannot express (see the file comment)
-    const FrameScopeId own = Published(graph(), s.scope);
-    for (const ir::FrameNode& n : graph().nodes) {
-      if (n.name != end.body.name || n.kind == ir::FrameNodeKind::Link ||
-          n.kind == ir::FrameNodeKind::Anchor || n.kind == ir::FrameNodeKind::World ||
-          !n.scope.valid() || Published(graph(), n.scope) != own) {
-        continue;
-      }
-      r.Fail(child.GetLoc(),
-             fmt::format("drake:joint '{}': <{}> names '{}', which is not a link; a drake:joint "
-                         "between explicit frames is not implemented yet (name the links)",
-                         joint_name, which, cm.Text(end.body.name)),
-             DiagKind::NotImplemented);
-      return end;
-    }
+    // a link or any frame: the resolve-frames pass binds F and M to them
     end.ok = true;
     return end;
   };
@@ -320,7 +322,7 @@ void SdfReader::ReadDrakeModelElement(const xml::XmlElement& e, ModelScope& s) {
       }
       if (!r.ok()) return;
       joint.damping = {damping->x(), damping->y(), damping->z()};
-      module().Add(std::move(joint));
+      AddDrakeJointFrames(module().Add(std::move(joint)), s, parent.body, child.body);
       return;
     }
 
@@ -453,7 +455,7 @@ void SdfReader::ReadDrakeModelElement(const xml::XmlElement& e, ModelScope& s) {
       joint.limits.lower[0] = 0;
       joint.limits.upper[0] = joint.curvilinear_path.TotalLength();
     }
-    module().Add(std::move(joint));
+    AddDrakeJointFrames(module().Add(std::move(joint)), s, parent.body, child.body);
     return;
   }
 

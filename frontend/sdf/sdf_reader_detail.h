@@ -116,6 +116,8 @@ class SdfReader {
   // --- sdf_drake_elements.cc: model-level drake: elements, read after every
   // link, joint and nested model of the model (EXT-001, EXT-040, EXT-050..054)
   void ReadDrakeModelElement(const xml::XmlElement& e, ModelScope& s);
+  void AddDrakeJointFrames(JointId joint, const ModelScope& s, const ir::Ref<BodyId>& parent,
+                           const ir::Ref<BodyId>& child);
   /// drake: children of a <joint> (drake:mimic, drake:rotor_inertia,
   /// drake:gear_ratio, drake:controller_gains; SDF-021, EXT-010, EXT-012..014).
   /// Called after the joint and its actuator (if any) exist.
