@@ -1,0 +1,242 @@
+// Tests of the resolve-frames pass through the SDFormat frontend: each case
+// compiles a small model and checks the resolved poses against values
+// worked out by hand (SDF-003..006, SDF-011, SDF-012, SDF-031, SDF-032,
+// EXT-001). The corpus-wide comparison with libsdformat lives in
+// tests/oracle/sdformat_oracle_test.cc.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "tests/unit/sdf_test_util.h"
+
+namespace mdlc::testing {
+namespace {
+
+constexpr double kTol = 1e-12;
+
+const ir::Body& BodyNamed(const ir::Module& m, std::string_view model, std::string_view name) {
+  for (const ir::Body& b : m.bodies) {
+    if (m.Text(b.name) == name && m.Text(m[b.model].name) == model) return b;
+  }
+  ADD_FAILURE() << "no body " << model << "::" << name;
+  return m.bodies[0];
+}
+const ir::Frame& FrameNamed(const ir::Module& m, std::string_view model, std::string_view name) {
+  for (const ir::Frame& f : m.frames) {
+    if (m.Text(f.name) == name && m.Text(m[f.model].name) == model) return f;
+  }
+  ADD_FAILURE() << "no frame " << model << "::" << name;
+  return m.frames[0];
+}
+const ir::Joint& JointNamed(const ir::Module& m, std::string_view name) {
+  for (const ir::Joint& j : m.joints) {
+    if (m.Text(j.name) == name) return j;
+  }
+  ADD_FAILURE() << "no joint " << name;
+  return m.joints[0];
+}
+
+TEST(ResolveFrames, RelativeToChainThroughNestedModels) {  // SDF-003, SDF-030, SDF-034
+  SdfCompileResult r(R"(
+  <model name='top'>
+    <pose>1 0 0 0 0 0</pose>
+    <link name='base'><pose>0 1 0 0 0 0</pose></link>
+    <model name='inner'>
+      <pose relative_to='base'>0 0 1 0 0 1.5707963267948966</pose>
+      <link name='L'><pose>1 0 0 0 0 0</pose></link>
+    </model>
+    <frame name='F'><pose relative_to='inner::L'>1 0 0 0 0 0</pose></frame>
+  </model>)");
+  ASSERT_TRUE(r.ok()) << r.Messages();
+  const ir::Module& m = r.compilation().module;
+  // inner's frame at base (1,1,0) + 1 up, turned 90 degrees: L's x offset becomes +y
+  const Transform X_WL = *BodyNamed(m, "top::inner", "L").default_pose;
+  EXPECT_NEAR((X_WL.p - Eigen::Vector3d(1, 2, 1)).norm(), 0, kTol);
+  // F is 1 along L's x, i.e. +y in world; attached to the model frame, whose
+  // canonical link is base
+  const ir::Frame& F = FrameNamed(m, "top", "F");
+  EXPECT_EQ(m.Text(m[F.body.id].name), "base");
+  const Transform X_WB = *BodyNamed(m, "top", "base").default_pose;
+  EXPECT_NEAR(((X_WB * F.X_BF).p - Eigen::Vector3d(1, 3, 1)).norm(), 0, kTol);
+}
+
+TEST(ResolveFrames, PlacementFramePutsTheNamedFrameAtThePose) {  // SDF-005
+  SdfCompileResult r(R"(
+  <model name='top'>
+    <link name='base'/>
+    <model name='tool' placement_frame='tip'>
+      <pose>0 0 2 0 0 0</pose>
+      <link name='body'/>
+      <frame name='tip'><pose>0 0 0.5 0 0 0</pose></frame>
+    </model>
+  </model>)");
+  ASSERT_TRUE(r.ok()) << r.Messages();
+  const ir::Module& m = r.compilation().module;
+  // the tip lands at z = 2, so the tool's body (0.5 below its tip) is at 1.5
+  EXPECT_NEAR(BodyNamed(m, "top::tool", "body").default_pose->p.z(), 1.5, kTol);
+}
+
+TEST(ResolveFrames, JointFrameAxisExpressedInTheModelFrame) {  // SDF-011, SDF-012
+  SdfCompileResult r(R"(
+  <model name='m'>
+    <link name='a'/>
+    <link name='b'><pose>0 0 1 0 0 1.5707963267948966</pose></link>
+    <joint name='j' type='revolute'>
+      <pose>0 0 0.25 0 0 0</pose>
+      <parent>a</parent><child>b</child>
+      <axis><xyz expressed_in='__model__'>1 0 0</xyz></axis>
+    </joint>
+  </model>)");
+  ASSERT_TRUE(r.ok()) << r.Messages();
+  const ir::Joint& j = JointNamed(r.compilation().module, "j");
+  // J is posed in the child: 0.25 above b, which is turned 90 degrees about z
+  EXPECT_NEAR((j.X_CM.p - Eigen::Vector3d(0, 0, 0.25)).norm(), 0, kTol);
+  EXPECT_NEAR((j.X_PF.p - Eigen::Vector3d(0, 0, 1.25)).norm(), 0, kTol);
+  // the model's x is J's -y
+  EXPECT_NEAR((j.axis - Eigen::Vector3d(0, -1, 0)).norm(), 0, kTol);
+}
+
+TEST(ResolveFrames, OldFilesExpressAxesInTheModelFrame) {  // SDF-012 (1.4 conversion)
+  SdfCompileResult r(R"(
+  <model name='m'>
+    <link name='a'/>
+    <link name='b'><pose>0 0 1 0 0 1.5707963267948966</pose></link>
+    <joint name='j' type='revolute'>
+      <parent>a</parent><child>b</child>
+      <axis><xyz>1 0 0</xyz></axis>
+    </joint>
+  </model>)");
+  ASSERT_TRUE(r.ok());
+  EXPECT_NEAR((JointNamed(r.compilation().module, "j").axis - Eigen::Vector3d(1, 0, 0)).norm(), 0,
+              kTol);
+  // the same model as SDFormat 1.4: libsdformat's conversion expresses it in the model
+  Compilation c;
+  const auto dir = std::filesystem::temp_directory_path() / "mdlc_resolve_frames_v14";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "old.sdf") << R"(<?xml version='1.0'?><sdf version='1.4'>
+  <model name='m'>
+    <link name='a'/>
+    <link name='b'><pose>0 0 1 0 0 1.5707963267948966</pose></link>
+    <joint name='j' type='revolute'>
+      <parent>a</parent><child>b</child>
+      <axis><xyz>1 0 0</xyz></axis>
+    </joint>
+  </model></sdf>)";
+  c.options.files = {(dir / "old.sdf").string()};
+  ASSERT_TRUE(c.Run());
+  EXPECT_NEAR((JointNamed(c.module, "j").axis - Eigen::Vector3d(0, -1, 0)).norm(), 0, kTol);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ResolveFrames, UniversalJointBuildsFramesFromBothAxes) {  // SDF-010
+  SdfCompileResult r(R"(
+  <model name='m'>
+    <link name='a'/>
+    <link name='b'/>
+    <joint name='u' type='universal'>
+      <parent>a</parent><child>b</child>
+      <axis><xyz>0 0 1</xyz></axis>
+      <axis2><xyz>1 0 0</xyz></axis2>
+    </joint>
+  </model>)");
+  ASSERT_TRUE(r.ok()) << r.Messages();
+  const ir::Joint& u = JointNamed(r.compilation().module, "u");
+  // F's x is the first axis, its y the second
+  EXPECT_NEAR((u.X_PF.R.col(0) - Eigen::Vector3d(0, 0, 1)).norm(), 0, kTol);
+  EXPECT_NEAR((u.X_PF.R.col(1) - Eigen::Vector3d(1, 0, 0)).norm(), 0, kTol);
+  EXPECT_NEAR((u.X_PF.R - u.X_CM.R).norm(), 0, kTol);
+}
+
+TEST(ResolveFrames, StaticModelsWeldEveryRootLinkWhereItStands) {  // SDF-006
+  SdfCompileResult r(R"(
+  <model name='shelf'>
+    <static>true</static>
+    <link name='frame'><pose>1 2 3 0 0 0</pose></link>
+    <link name='board'><pose>1 2 4 0 0 0</pose></link>
+    <joint name='fix' type='fixed'><parent>frame</parent><child>board</child></joint>
+  </model>)");
+  ASSERT_TRUE(r.ok()) << r.Messages();
+  const ir::Module& m = r.compilation().module;
+  const ir::Joint& weld = JointNamed(m, "sdformat_model_static_world_welds_to_frame");
+  EXPECT_TRUE(weld.unnamed);
+  EXPECT_EQ(weld.parent.id, ir::kWorldBody);
+  EXPECT_NEAR((weld.X_PF.p - Eigen::Vector3d(1, 2, 3)).norm(), 0, kTol);
+  for (const ir::Joint& j : m.joints) {  // board hangs on its fixed joint, not a second weld
+    EXPECT_NE(m.Text(j.name), "sdformat_model_static_world_welds_to_board");
+  }
+}
+
+TEST(ResolveFrames, DrakeJointBindsTheNamedFrames) {  // EXT-001
+  SdfCompileResult r(R"(
+  <model name='m'>
+    <link name='a'/>
+    <link name='b'><pose>5 0 0 0 0 0</pose></link>
+    <frame name='fa' attached_to='a'><pose>0 0 1 0 0 0</pose></frame>
+    <frame name='fb' attached_to='b'><pose relative_to='b'>0 2 0 0 0 0</pose></frame>
+    <drake:joint name='p' type='planar'>
+      <drake:parent>fa</drake:parent>
+      <drake:child>fb</drake:child>
+      <drake:damping>0 0 0</drake:damping>
+    </drake:joint>
+  </model>)");
+  ASSERT_TRUE(r.ok()) << r.Messages();
+  const ir::Joint& p = JointNamed(r.compilation().module, "p");
+  EXPECT_NEAR((p.X_PF.p - Eigen::Vector3d(0, 0, 1)).norm(), 0, kTol);
+  EXPECT_NEAR((p.X_CM.p - Eigen::Vector3d(0, 2, 0)).norm(), 0, kTol);
+}
+
+TEST(ResolveFrames, MergedModelFrameNamesTheMergedModel) {  // SDF-032
+  SdfCompileResult r(R"(
+  <model name='top'>
+    <link name='base'/>
+    <include merge='true'>
+      <uri>part.sdf</uri>
+      <pose>0 0 1 0 0 0</pose>
+    </include>
+    <frame name='above'><pose relative_to='_merged__part__model__'>0 0 1 0 0 0</pose></frame>
+  </model>)",
+                     {{"part.sdf", R"(<?xml version='1.0'?><sdf version='1.9'>
+  <model name='part'><link name='p'><pose>0 0 0.5 0 0 0</pose></link></model></sdf>)"}});
+  ASSERT_TRUE(r.ok()) << r.Messages();
+  const ir::Module& m = r.compilation().module;
+  // merged links join the including instance
+  EXPECT_NEAR(BodyNamed(m, "top", "p").default_pose->p.z(), 1.5, kTol);
+  const ir::Frame& merged = FrameNamed(m, "top", "_merged__part__model__");
+  EXPECT_EQ(m.Text(m[merged.body.id].name), "p");
+  EXPECT_NEAR(merged.X_BF.p.z(), -0.5, kTol);
+}
+
+TEST(ResolveFrames, CyclesAndDanglingNamesAreLocatedErrors) {  // SDF-004
+  SdfCompileResult cycle(R"(
+  <model name='m'>
+    <link name='L'/>
+    <frame name='A'><pose relative_to='B'/></frame>
+    <frame name='B'><pose relative_to='A'/></frame>
+  </model>)");
+  EXPECT_FALSE(cycle.ok());
+  EXPECT_NE(cycle.Messages().find("relative_to cycle: m::A -> m::B -> m::A"), std::string::npos)
+      << cycle.Messages();
+  SdfCompileResult dangling(R"(
+  <model name='m'>
+    <link name='L'><pose relative_to='nowhere'/></link>
+  </model>)");
+  EXPECT_FALSE(dangling.ok());
+  EXPECT_NE(dangling.Messages().find("relative_to name 'nowhere' does not match"),
+            std::string::npos);
+}
+
+TEST(ResolveFrames, DeepChainsNeedNoRecursion) {  // SDF-003: 20,000 frames in one chain
+  std::string body = "<model name='m'><link name='L'/><frame name='f0'/>";
+  for (int i = 1; i < 20000; ++i) {
+    body += fmt::format("<frame name='f{}'><pose relative_to='f{}'>0 0 0.001 0 0 0</pose></frame>",
+                        i, i - 1);
+  }
+  body += "</model>";
+  SdfCompileResult r(body);
+  ASSERT_TRUE(r.ok()) << r.Messages();
+  EXPECT_NEAR(FrameNamed(r.compilation().module, "m", "f19999").X_BF.p.z(), 19.999, 1e-9);
+}
+
+}  // namespace
+}  // namespace mdlc::testing
