@@ -5,7 +5,7 @@
 //   1. parses the URDF with urdf::parseURDFFile (and, only to recover what
 //      urdfdom loses, reads the XML with tinyxml for which <limit> attributes
 //      were written and for <inertial> elements urdfdom left half-parsed),
-//   2. applies the mdlc/Drake conventions from /work/shared/spec/features.md
+//   2. applies the mdlc/Drake conventions from features.md in the shared spec folder
 //      (cited by feature ID next to each rule),
 //   3. computes link poses, joint axes and the joint-space mass matrix
 //      geometrically, and
