@@ -1,0 +1,193 @@
+// drake_proximity.cc - see drake_proximity.h.
+#include "frontend/drake_proximity.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <string_view>
+
+namespace mdlc::frontend {
+
+/// Reports `e` as a repeat of `first` that is ignored.
+void ReportRepeatedElement(DiagnosticEngine& diags, const xml::XmlElement& e,
+                    const xml::XmlElement& first) {
+  diags
+      .Report(DiagKind::UnsupportedElement, e.GetLoc(),
+              fmt::format("<{}> is given more than once in <{}>; only the first one is used, "
+                          "this one is ignored",
+                          e.Name(), e.Parent().Name()))
+      .Note(first.GetLoc(), fmt::format("the first <{}> is here", e.Name()));
+}
+
+namespace {
+constexpr std::string_view kProximityTag = "drake:proximity_properties";
+}  // namespace
+
+
+/// Drake's CoulombFriction rules: both coefficients non-negative, dynamic
+/// at most static. Returns [static, dynamic], or nullopt after reporting.
+std::optional<std::vector<double>> CoulombFriction(DiagnosticEngine& diags, const Located& mu_static,
+                                            const Located& mu_dynamic) {
+  bool ok = true;
+  auto non_negative = [&](const Located& mu, std::string_view name) {
+    if (mu.value >= 0) return;
+    diags.Report(DiagKind::BadValue, mu.loc,
+                 fmt::format("the {} friction coefficient must not be negative, got {}", name,
+                             mu.value));
+    ok = false;
+  };
+  non_negative(mu_static, "static");
+  if (mu_dynamic.loc != mu_static.loc) non_negative(mu_dynamic, "dynamic");
+  if (ok && mu_dynamic.value > mu_static.value) {
+    diags
+        .Report(DiagKind::BadValue, mu_dynamic.loc,
+                fmt::format("the dynamic friction coefficient ({}) is greater than the static "
+                            "one ({}); dynamic friction must be less than or equal to static "
+                            "friction",
+                            mu_dynamic.value, mu_static.value))
+        .Note(mu_static.loc, "the static friction coefficient is given here");
+    ok = false;
+  }
+  if (!ok) return std::nullopt;
+  return std::vector<double>{mu_static.value, mu_dynamic.value};
+}
+
+// <drake:proximity_properties> children that carry a number in @value, with
+// the range each must be in and the property it becomes, in Drake's order
+// of properties.
+enum ValueTag {
+  kResolutionHint,
+  kModulus,
+  kDissipation,
+  kStiffness,
+  kMuDynamic,
+  kMuStatic,
+  kRelaxationTime,
+  kMargin,
+  kValueTagCount
+};
+struct ValueTagInfo {
+  std::string_view tag;
+  bool zero_allowed;      // else the value must be positive; never negative
+  std::string_view what;  // for messages
+  std::string_view key;   // the property; empty for friction (two tags, one key)
+};
+constexpr std::array<ValueTagInfo, kValueTagCount> kValueTags = {{
+    {"drake:mesh_resolution_hint", false, "mesh resolution hint", "hydroelastic/resolution_hint"},
+    {"drake:hydroelastic_modulus", false, "hydroelastic modulus",
+     "hydroelastic/hydroelastic_modulus"},
+    {"drake:hunt_crossley_dissipation", true, "Hunt-Crossley dissipation",
+     "material/hunt_crossley_dissipation"},
+    {"drake:point_contact_stiffness", false, "point contact stiffness",
+     "material/point_contact_stiffness"},
+    {"drake:mu_dynamic", true, "dynamic friction coefficient", ""},
+    {"drake:mu_static", true, "static friction coefficient", ""},
+    {"drake:relaxation_time", true, "relaxation time", "material/relaxation_time"},
+    {"drake:hydroelastic_margin", true, "hydroelastic margin", "hydroelastic/margin"},
+}};
+
+/// EXT-020: the children of one <drake:proximity_properties>. Each problem
+/// is reported in document order; the properties are added in Drake's order.
+void ReadDrakeProximityProperties(const xml::XmlElement& e, ir::Geometry& g,
+                                  xml::AttributeReader& attrs, DiagnosticEngine& diags,
+                                  const ProximityValueReader& read_value) {
+  attrs.WarnUnknownAttributes(e, {});
+  // Drake reads the first of each, wherever it is
+  const xml::XmlElement rigid = e.Child("drake:rigid_hydroelastic");
+  const xml::XmlElement compliant = e.Child("drake:compliant_hydroelastic");
+  std::array<xml::XmlElement, kValueTagCount> elements;
+  std::array<std::optional<Located>, kValueTagCount> values;  // each one in range
+  bool friction_ok = true;
+  bool marker_seen = false;  // a first rigid or compliant marker
+  for (auto c = e.FirstChild(); c; c = c.NextSibling()) {
+    const std::string_view tag = c.Name();
+    if (tag == "drake:soft_hydroelastic") {
+      diags.Report(DiagKind::BadValue, c.GetLoc(),
+                   "<drake:soft_hydroelastic> is no longer supported; use "
+                   "<drake:compliant_hydroelastic>");
+      continue;
+    }
+    if (tag == "drake:rigid_hydroelastic" || tag == "drake:compliant_hydroelastic") {
+      const xml::XmlElement& first = tag == "drake:rigid_hydroelastic" ? rigid : compliant;
+      if (first.raw() != c.raw()) {
+        ReportRepeatedElement(diags, c, first);
+        continue;
+      }
+      attrs.WarnUnknownAttributes(c, {});
+      if (marker_seen) {
+        // the other one came first
+        const xml::XmlElement& other = tag == "drake:rigid_hydroelastic" ? compliant : rigid;
+        diags
+            .Report(DiagKind::BadValue, c.GetLoc(),
+                    "<drake:rigid_hydroelastic> and <drake:compliant_hydroelastic> are mutually "
+                    "exclusive; only one can be given")
+            .Note(other.GetLoc(), fmt::format("<{}> is given here", other.Name()));
+      }
+      marker_seen = true;
+      continue;
+    }
+    const auto* info = std::find_if(kValueTags.begin(), kValueTags.end(),
+                                    [&](const ValueTagInfo& t) { return t.tag == tag; });
+    if (info == kValueTags.end()) {
+      diags.Report(DiagKind::UnknownElement, c.GetLoc(),
+                   fmt::format("unknown element <{}> in <{}> is ignored", tag, kProximityTag));
+      continue;
+    }
+    const auto i = static_cast<size_t>(info - kValueTags.begin());
+    if (elements[i]) {
+      ReportRepeatedElement(diags, c, elements[i]);
+      continue;
+    }
+    elements[i] = c;
+    const std::optional<Located> read = read_value(c);
+    if (!read) {
+      if (i == kMuDynamic || i == kMuStatic) friction_ok = false;
+      continue;
+    }
+    const std::optional<double> v = read->value;
+    const Loc loc = read->loc;
+    if (i == kModulus && rigid && !compliant) {
+      // Drake warns and drops it, whatever the value
+      diags
+          .Report(DiagKind::UnsupportedElement, c.GetLoc(),
+                  fmt::format("<drake:hydroelastic_modulus> is ignored on a rigid hydroelastic "
+                              "geometry (<drake:rigid_hydroelastic>); the value {} is not used",
+                              *v))
+          .Note(rigid.GetLoc(), "the geometry is declared rigid here");
+      continue;
+    }
+    if (info->zero_allowed ? !(*v >= 0) : !(*v > 0)) {
+      diags.Report(DiagKind::BadValue, loc,
+                   info->key.empty()
+                       ? fmt::format("the {} must not be negative, got {}", info->what, *v)
+                       : fmt::format("the {} given by <{}> must be {}, got {}", info->what, tag,
+                                     info->zero_allowed ? "non-negative" : "positive", *v));
+      if (i == kMuDynamic || i == kMuStatic) friction_ok = false;
+      continue;
+    }
+    values[i] = Located{*v, loc};
+  }
+
+  if (rigid && !compliant) {
+    g.properties.push_back({"hydroelastic/compliance_type", std::string("rigid")});
+  } else if (compliant && !rigid) {
+    g.properties.push_back({"hydroelastic/compliance_type", std::string("compliant")});
+  }
+  for (size_t i = 0; i < kValueTagCount; ++i) {
+    if (i == kMuDynamic) {
+      // EXT-021: one coefficient alone gives both; dynamic may not exceed static
+      const auto& mu_static = values[kMuStatic];
+      const auto& mu_dynamic = values[kMuDynamic];
+      if (!friction_ok || !(mu_static || mu_dynamic)) continue;
+      if (auto friction = CoulombFriction(diags, mu_static ? *mu_static : *mu_dynamic,
+                                   mu_dynamic ? *mu_dynamic : *mu_static)) {
+        g.properties.push_back({"material/coulomb_friction", std::move(*friction)});
+      }
+    } else if (values[i] && !kValueTags[i].key.empty()) {
+      g.properties.push_back({std::string(kValueTags[i].key), values[i]->value});
+    }
+  }
+}
+
+}  // namespace mdlc::frontend
