@@ -91,6 +91,11 @@ struct Body {
   /// in the rigid plant; its one collision (and optional visual) geometry
   /// stays registered on it.
   std::optional<DeformableProperties> deformable;
+  /// SDFormat <inertial auto="true"> (SDF-007): the mass properties are
+  /// computed from the body's collision geometry at this density (kg/m^3)
+  std::optional<double> inertia_from_collisions;
+  /// ... and scaled to this total mass, when the <inertial> gives one
+  std::optional<double> inertia_from_collisions_mass;
 };
 
 /// A frame fixed to a body: X_BF.
@@ -201,6 +206,8 @@ struct Geometry {
   Ref<MaterialId> material;  // optional; empty name when none
   std::optional<Eigen::Vector4d> rgba;  // inline color, wins over material
   std::vector<Property> properties;
+  /// kg/m^3, for mass properties computed from collisions (SDFormat <density>)
+  std::optional<double> density;
 };
 
 struct Actuator {

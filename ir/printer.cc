@@ -151,6 +151,9 @@ std::string Printer::Run() {
     }
     if (b.surface_velocity_axis) out_ += " surface_velocity_axis=" + Vec(*b.surface_velocity_axis);
     if (b.default_pose) out_ += " default_pose=" + Pose(*b.default_pose);
+    if (b.inertia_from_collisions) {
+      out_ += " inertia_from_collisions(density=" + Num(*b.inertia_from_collisions) + ")";
+    }
     if (b.deformable) {
       const DeformableProperties& d = *b.deformable;
       out_ += fmt::format(

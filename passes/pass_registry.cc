@@ -16,6 +16,7 @@ const std::vector<PassInfo>& RegisteredPasses() {
       Info<CreateCheckJointsPass>(),
       Info<CreateCheckModelElementsPass>(),
       Info<CreateBuildKinematicTreePass>(),
+      Info<CreateInertiaFromCollisionsPass>(),
       Info<CreateCheckInertiaPass>(),
       Info<CreateResolveAssetsPass>(),
   };

@@ -28,6 +28,7 @@ std::unique_ptr<Pass> CreatePass(std::string_view name);
 std::unique_ptr<Pass> CreateResolveFramesPass();
 std::unique_ptr<Pass> CreateResolveNamesPass();
 std::unique_ptr<Pass> CreateBuildKinematicTreePass();
+std::unique_ptr<Pass> CreateInertiaFromCollisionsPass();
 std::unique_ptr<Pass> CreateCheckInertiaPass();
 std::unique_ptr<Pass> CreateCheckJointsPass();
 std::unique_ptr<Pass> CreateCheckModelElementsPass();

@@ -630,7 +630,9 @@ void SdfReader::ReadCollision(const xml::XmlElement& e, ModelScope& s, BodyId bo
   if (!ClaimName(*this, body, kCollisionNames, symbol, e.GetLoc(), "collision", link_name)) {
     return;
   }
-  CheckChildren(e, {"pose", "geometry", "surface", "laser_retro", kProximityTag},
+  CheckChildren(e,
+                {"pose", "geometry", "surface", "laser_retro", "density", "auto_inertia_params",
+                 kProximityTag},
                 {"max_contacts"});
   if (xml::XmlElement retro = e.Child("laser_retro")) {
     if (auto v = TextDouble(retro); v && *v != 0) {
@@ -670,6 +672,15 @@ void SdfReader::ReadCollision(const xml::XmlElement& e, ModelScope& s, BodyId bo
   if (!shape) return;
 
   g.shape = std::move(shape->shape);
+  // SDFormat 1.11: the collision's own density, for <inertial auto="true">
+  if (auto density = ChildDouble(e, "density")) {
+    if (*density > 0) {
+      g.density = *density;
+    } else {
+      diags().Report(DiagKind::BadValue, e.Child("density").GetLoc(),
+                     fmt::format("<density> must be positive, got {}", *density));
+    }
+  }
   const GeometryId id = module().Add(std::move(g));
   const FrameNodeId node = AddAnchor(s, e.Child("pose"), link_name, e.GetLoc(),
                                      ir::FrameTarget::Geometry, id.value);

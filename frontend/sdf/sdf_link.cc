@@ -104,10 +104,19 @@ void SdfReader::ReadInertial(const xml::XmlElement& e, ir::Body& body) {
   inertial.loc = e.GetLoc();
   inertial.mass = 1;  // libsdformat's default
   inertial.ixx = inertial.iyy = inertial.izz = 1;
-  if (auto a = e.Attribute("auto"); a.present() && a.value == "true") {
-    diags().Report(DiagKind::NotImplemented, a.loc,
-                   "<inertial auto=\"true\"> (mass properties from collision geometry) is not "
-                   "implemented");
+  if (auto a = attrs_.Bool(e, "auto"); a && *a) {
+    // the inertia-from-collisions pass computes it once the collisions are placed
+    double density = 1000;
+    if (auto d = ChildDouble(e, "density")) {
+      if (*d > 0) {
+        density = *d;
+      } else {
+        diags().Report(DiagKind::BadValue, e.Child("density").GetLoc(),
+                       fmt::format("<density> must be positive, got {}", *d));
+      }
+    }
+    body.inertia_from_collisions = density;
+    if (auto mass = ChildDouble(e, "mass")) body.inertia_from_collisions_mass = *mass;
   }
   if (auto mass = ChildDouble(e, "mass")) inertial.mass = *mass;
   if (xml::XmlElement pose = e.Child("pose")) {
