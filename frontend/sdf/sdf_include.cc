@@ -287,7 +287,10 @@ void SdfReader::IncludeUrdf(FileId file, ModelScope parent, const ModelOverrides
     is_child[c->second.index()] = true;
     children_of[joint.parent.name.value].push_back(JointId(j));
   }
+  // X_ML: each link in the model frame; links hanging on the URDF's own
+  // "world" link are fixed in the world instead (X_WL), whatever the include's pose
   std::vector<Transform> X_ML(module().bodies.size(), Transform::Identity());
+  std::vector<bool> in_world(module().bodies.size(), false);
   std::deque<BodyId> queue;
   Symbol root_name;
   for (size_t b = first_body; b < module().bodies.size(); ++b) {
@@ -295,6 +298,21 @@ void SdfReader::IncludeUrdf(FileId file, ModelScope parent, const ModelOverrides
       queue.push_back(BodyId(b));
       if (root_name.empty()) root_name = module().bodies[b].name;
     }
+  }
+  const Symbol world = module().bodies[0].name;
+  if (auto it = children_of.find(world.value); it != children_of.end()) {
+    for (JointId j : it->second) {
+      const ir::Joint& joint = module()[j];
+      const BodyId c = by_name[joint.child.name.value];
+      X_ML[c.index()] = joint.X_PF * joint.X_CM.inverse();
+      in_world[c.index()] = true;
+      queue.push_back(c);
+      if (root_name.empty()) root_name = joint.child.name;
+    }
+    diags().Report(DiagKind::UnsupportedValue, overrides.loc,
+                   fmt::format("the included URDF attaches '{}' to its 'world' link: it stays "
+                               "where the URDF puts it, whatever this include's pose",
+                               module().Text(module()[it->second.front()].child.name)));
   }
   std::vector<bool> placed(module().bodies.size(), false);
   while (!queue.empty()) {
@@ -308,6 +326,7 @@ void SdfReader::IncludeUrdf(FileId file, ModelScope parent, const ModelOverrides
       const ir::Joint& joint = module()[j];
       BodyId c = by_name[joint.child.name.value];
       X_ML[c.index()] = X_ML[b.index()] * joint.X_PF * joint.X_CM.inverse();
+      in_world[c.index()] = in_world[b.index()];
       queue.push_back(c);
     }
   }
@@ -348,7 +367,7 @@ void SdfReader::IncludeUrdf(FileId file, ModelScope parent, const ModelOverrides
     link.kind = ir::FrameNodeKind::Link;
     link.name = module().bodies[b].name;
     link.loc = module().bodies[b].loc;
-    link.relative_to = {s.model_frame_name, overrides.loc};
+    link.relative_to = {in_world[b] ? world : s.model_frame_name, overrides.loc};
     link.X_RN = X_ML[b];
     link.attached_to = {link.name, link.loc};
     link.target = ir::FrameTarget::Body;
