@@ -38,7 +38,7 @@ std::optional<ModelId> AddModelInstance(std::string_view requested, Loc loc,
       }
     }
   }
-  return ctx.module.Add(ir::ModelInstance{ctx.module.Intern(name), loc, format});
+  return ctx.module.Add(ir::ModelInstance{ctx.module.Intern(name), loc, format, {}});
 }
 
 }  // namespace mdlc::frontend

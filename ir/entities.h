@@ -36,10 +36,22 @@ struct Ref {
 
 enum class SourceFormat { Urdf, Sdf, Mjcf, Directives, Internal };
 
+/// Whole-model corrections of mass properties that MuJoCo's compiler applies
+/// after every body's mass properties are known (MJCF compiler attributes,
+/// BEYOND-006), in this order: boundmass/boundinertia, balanceinertia,
+/// settotalmass. Bodies other than the world body only.
+struct MassAdjustments {
+  double bound_mass = 0;      // compiler@boundmass: mass at least this
+  double bound_inertia = 0;   // compiler@boundinertia: principal moments at least this
+  bool balance_inertia = false;  // compiler@balanceinertia: fix triangle-inequality violations
+  std::optional<double> total_mass;  // compiler@settotalmass (> 0): scale all masses and inertias
+};
+
 struct ModelInstance {
   Symbol name;
   Loc loc;
   SourceFormat format = SourceFormat::Internal;
+  std::optional<MassAdjustments> mass_adjustments;  // MJCF only
 };
 
 /// Mass properties exactly as the file gave them: mass, the pose of the
@@ -96,6 +108,10 @@ struct Body {
   std::optional<double> inertia_from_collisions;
   /// ... and scaled to this total mass, when the <inertial> gives one
   std::optional<double> inertia_from_collisions_mass;
+  /// MJCF inertiafromgeom (MJCF-005, MJCF-031): the mass properties are the
+  /// sum of the geometries' MassContribution on this body (none: massless);
+  /// `inertial` is ignored and overwritten by the mass-properties pass.
+  bool mass_from_geometry = false;
 };
 
 /// A frame fixed to a body: X_BF.
@@ -170,6 +186,32 @@ struct Mesh {
   bool convex = false;   // drake:declare_convex / convex hull requested
 };
 using Shape = std::variant<Box, Sphere, Cylinder, Capsule, Ellipsoid, HalfSpace, Mesh>;
+
+/// How a mesh's mass properties are computed (MuJoCo's mesh@inertia):
+/// the solid convex hull, the exact solid (closed mesh, divergence theorem),
+/// MuJoCo's legacy volume rule, or a thin shell on the surface.
+enum class MeshInertia { Convex, Exact, Legacy, Shell };
+
+/// A geometry's share of its body's mass when the body's mass properties come
+/// from geometry (Body::mass_from_geometry; MJCF-031).
+struct MassContribution {
+  std::optional<double> mass;  // geom@mass: total mass of this geometry, wins over density
+  double density = 1000;       // kg/m^3 (kg/m^2 when shell)
+  bool shell = false;          // geom@shellinertia: mass spread over the surface
+  MeshInertia mesh_inertia = MeshInertia::Convex;  // mesh shapes: mesh@inertia
+};
+
+/// A primitive geometry (box, sphere, capsule, cylinder, ellipsoid) whose
+/// size and pose come from a mesh, as MuJoCo fits them (BEYOND-002). The
+/// geometry's shape holds the primitive's type with zero size and X_BG the
+/// geom frame until the fit-to-mesh step sets the size and composes the
+/// mesh's principal frame onto X_BG.
+struct MeshFit {
+  Mesh mesh;           // the mesh asset: uri, resolved path, scale
+  bool aabb = false;   // compiler@fitaabb: fit the bounding box, not the equivalent inertia box
+  double fitscale = 1; // geom@fitscale: scales the fitted size
+  MeshInertia mesh_inertia = MeshInertia::Convex;
+};
 /// Drake's shape type name ("box", ..., "mesh" or "convex" for meshes).
 std::string_view ShapeTypeName(const Shape& shape);
 
@@ -208,6 +250,11 @@ struct Geometry {
   std::vector<Property> properties;
   /// kg/m^3, for mass properties computed from collisions (SDFormat <density>)
   std::optional<double> density;
+  /// MJCF: this geometry's share of its body's mass (Body::mass_from_geometry).
+  /// A geom registered twice (illustration and proximity) carries it once.
+  std::optional<MassContribution> mass_contribution;
+  /// MJCF: a primitive sized from a mesh (BEYOND-002).
+  std::optional<MeshFit> fit_to_mesh;
 };
 
 struct Actuator {

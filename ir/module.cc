@@ -3,8 +3,8 @@
 namespace mdlc::ir {
 
 Module::Module() {
-  models.push_back({Intern("WorldModelInstance"), {}, SourceFormat::Internal});
-  models.push_back({Intern("DefaultModelInstance"), {}, SourceFormat::Internal});
+  models.push_back({Intern("WorldModelInstance"), {}, SourceFormat::Internal, {}});
+  models.push_back({Intern("DefaultModelInstance"), {}, SourceFormat::Internal, {}});
   Body world;
   world.name = Intern("world");
   world.model = kWorldModel;

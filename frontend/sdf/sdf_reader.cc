@@ -339,7 +339,7 @@ std::optional<ModelId> SdfReader::ReadModel(const xml::XmlElement& e, const SdfF
     model = AddModelInstance(local_name, loc, ir::SourceFormat::Sdf, plain);
   } else {
     std::string scoped = module().ScopedName(parent.model, module().Intern(local_name));
-    model = module().Add(ir::ModelInstance{module().Intern(scoped), loc, ir::SourceFormat::Sdf});
+    model = module().Add(ir::ModelInstance{module().Intern(scoped), loc, ir::SourceFormat::Sdf, {}});
   }
   if (!model) return std::nullopt;
   if (!first_model_) first_model_ = model;

@@ -1,9 +1,12 @@
-// bench_compile.cc - load-time benchmarks: how much does compiling a URDF
-// cost on top of merely parsing its XML, and does it stay linear in size?
+// bench_compile.cc - load-time benchmarks: how much does compiling a URDF or
+// an MJCF file cost on top of merely parsing its XML, and does it stay linear
+// in size?
 //
-// For chain and tree models of N = 10, 100, 1000, 10000 links (model_gen.h),
-// each stage is timed on an in-memory buffer; from xml_document down, each
-// stage includes the ones above it:
+// For chain and tree models of N = 10, 100, 1000, 10000 links (mechanism.h,
+// written as URDF by model_gen.h and as MJCF by model_gen_mjcf.h; the MJCF
+// families are named mjcf_chain and mjcf_tree), each stage is timed on an
+// in-memory buffer; from xml_document down, each stage includes the ones
+// above it:
 //
 //   libxml2_parse     xmlReadMemory + xmlFreeDoc with mdlc's options: the floor
 //   xml_document      mdlc's XmlDocument::Parse (the above + source offsets)
@@ -13,6 +16,9 @@
 //   plant_json        EmitPlantJson alone, on a model compiled beforehand, as
 //                     the CLI does it (mass matrix included up to 1000 dofs)
 //   plant_json_no_mm  the same without the mass matrix (the linear part)
+//   mujoco_load       MJCF only, when built with MuJoCo 2.2.2 (libmujoco-dev):
+//                     mj_loadXML + mj_deleteModel on the same text (from a
+//                     file written once, untimed), for comparison
 //
 // Copying the text into a SourceManager is setup and not timed; tearing the
 // results down is timed in every stage, libxml2's included. Every joint's
@@ -22,7 +28,7 @@
 //
 //   mdlc_bench                          run everything
 //   mdlc_bench --benchmark_filter=compile/chain
-//   mdlc_bench --write_models=DIR       write the models as DIR/{chain,tree}_n{N}.urdf
+//   mdlc_bench --write_models=DIR       write the models as DIR/{chain,tree}_n{N}.{urdf,mjcf.xml}
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 #include <libxml/parser.h>
@@ -36,6 +42,11 @@
 #include "backend/compiler.h"
 #include "frontend/xml/xml_document.h"
 #include "model_gen.h"
+#include "model_gen_mjcf.h"
+
+#ifdef MDLC_BENCH_HAVE_MUJOCO
+#include <mujoco/mujoco.h>
+#endif
 
 namespace mdlc::bench {
 namespace {
@@ -48,105 +59,128 @@ constexpr int kMdlcXmlOptions = XML_PARSE_NONET | XML_PARSE_HUGE | XML_PARSE_BIG
                                 XML_PARSE_NOWARNING | XML_PARSE_NOERROR | XML_PARSE_NOBLANKS |
                                 XML_PARSE_COMPACT;
 
-const std::string& Model(Shape shape, int n) {
-  static std::map<std::pair<Shape, int>, std::string> cache;
-  auto [it, inserted] = cache.try_emplace({shape, n});
-  if (inserted) it->second = GenerateUrdf(shape, n);
+// a generated model: the mechanism's shape, written in one format
+struct Family {
+  frontend::Format format;
+  Shape shape;
+  auto operator<=>(const Family&) const = default;
+};
+constexpr Family kFamilies[] = {{frontend::Format::Urdf, Shape::Chain},
+                                {frontend::Format::Urdf, Shape::Tree},
+                                {frontend::Format::Mjcf, Shape::Chain},
+                                {frontend::Format::Mjcf, Shape::Tree}};
+
+// "chain" for URDF (the names the benchmark always had), "mjcf_chain" for MJCF
+std::string FamilyName(Family family) {
+  return family.format == frontend::Format::Urdf ? std::string(ShapeName(family.shape))
+                                                 : fmt::format("mjcf_{}", ShapeName(family.shape));
+}
+
+const std::string& Model(Family family, int n) {
+  static std::map<std::pair<Family, int>, std::string> cache;
+  auto [it, inserted] = cache.try_emplace({family, n});
+  if (inserted) {
+    it->second = family.format == frontend::Format::Urdf ? GenerateUrdf(family.shape, n)
+                                                         : GenerateMjcf(family.shape, n);
+  }
   return it->second;
 }
 
-std::string FileName(Shape shape, int n) { return fmt::format("{}_n{}.urdf", ShapeName(shape), n); }
+std::string FileName(Family family, int n) {
+  return fmt::format("{}_n{}.{}", ShapeName(family.shape), n,
+                     family.format == frontend::Format::Urdf ? "urdf" : "mjcf.xml");
+}
 
 // A Compilation holding the model's text; the copy is setup, not timed.
-std::unique_ptr<Compilation> Prepare(benchmark::State& state, Shape shape, FileId* file) {
+std::unique_ptr<Compilation> Prepare(benchmark::State& state, Family family, FileId* file) {
   state.PauseTiming();
   auto c = std::make_unique<Compilation>();
   const int n = static_cast<int>(state.range(0));
-  *file = c->sources.AddBuffer(FileName(shape, n), Model(shape, n));
+  *file = c->sources.AddBuffer(FileName(family, n), Model(family, n));
   state.ResumeTiming();
   return c;
 }
 
-bool RunFrontend(Compilation& c, FileId file) {
+bool RunFrontend(Compilation& c, FileId file, Family family) {
   frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend};
-  return frontend::ReadModel(file, frontend::Format::Urdf, ctx).has_value() &&
+  return frontend::ReadModel(file, family.format, ctx).has_value() &&
          !c.diags.has_errors();
 }
 
-void Finish(benchmark::State& state, Shape shape) {
+void Finish(benchmark::State& state, Family family) {
   const int n = static_cast<int>(state.range(0));
   state.SetComplexityN(n);
   state.SetBytesProcessed(static_cast<int64_t>(state.iterations()) *
-                          static_cast<int64_t>(Model(shape, n).size()));
+                          static_cast<int64_t>(Model(family, n).size()));
 }
 
 // ---------------------------------------------------------------- stages
 
-void Libxml2Parse(benchmark::State& state, Shape shape, int options) {
-  const std::string& text = Model(shape, static_cast<int>(state.range(0)));
+void Libxml2Parse(benchmark::State& state, Family family, int options) {
+  const std::string& text = Model(family, static_cast<int>(state.range(0)));
   for (auto _ : state) {
-    xmlDocPtr doc = xmlReadMemory(text.data(), static_cast<int>(text.size()), "bench.urdf",
+    xmlDocPtr doc = xmlReadMemory(text.data(), static_cast<int>(text.size()), "bench.xml",
                                   nullptr, options);
     if (!doc) state.SkipWithError("libxml2 rejected the model");
     benchmark::DoNotOptimize(doc);
     xmlFreeDoc(doc);
   }
-  Finish(state, shape);
+  Finish(state, family);
 }
 
-void BM_Libxml2Parse(benchmark::State& state, Shape shape) {
-  Libxml2Parse(state, shape, kMdlcXmlOptions);
+void BM_Libxml2Parse(benchmark::State& state, Family family) {
+  Libxml2Parse(state, family, kMdlcXmlOptions);
 }
 
-void BM_XmlDocument(benchmark::State& state, Shape shape) {
+void BM_XmlDocument(benchmark::State& state, Family family) {
   for (auto _ : state) {
     FileId file;
-    auto c = Prepare(state, shape, &file);
+    auto c = Prepare(state, family, &file);
     auto doc = xml::XmlDocument::Parse(file, c->sources, c->diags);
     if (!doc) state.SkipWithError("XmlDocument::Parse failed");
     benchmark::DoNotOptimize(doc.get());
   }
-  Finish(state, shape);
+  Finish(state, family);
 }
 
-void BM_Frontend(benchmark::State& state, Shape shape) {
+void BM_Frontend(benchmark::State& state, Family family) {
   for (auto _ : state) {
     FileId file;
-    auto c = Prepare(state, shape, &file);
-    if (!RunFrontend(*c, file)) state.SkipWithError("frontend reported errors");
+    auto c = Prepare(state, family, &file);
+    if (!RunFrontend(*c, file, family)) state.SkipWithError("frontend reported errors");
     benchmark::DoNotOptimize(c->module);
   }
-  Finish(state, shape);
+  Finish(state, family);
 }
 
-void BM_FrontendPasses(benchmark::State& state, Shape shape) {
+void BM_FrontendPasses(benchmark::State& state, Family family) {
   for (auto _ : state) {
     FileId file;
-    auto c = Prepare(state, shape, &file);
-    if (!RunFrontend(*c, file) || !c->RunPasses()) state.SkipWithError("passes reported errors");
+    auto c = Prepare(state, family, &file);
+    if (!RunFrontend(*c, file, family) || !c->RunPasses()) state.SkipWithError("passes reported errors");
     benchmark::DoNotOptimize(c->module);
   }
-  Finish(state, shape);
+  Finish(state, family);
 }
 
-void BM_Compile(benchmark::State& state, Shape shape) {
+void BM_Compile(benchmark::State& state, Family family) {
   for (auto _ : state) {
     FileId file;
-    auto c = Prepare(state, shape, &file);
-    if (!RunFrontend(*c, file) || !c->RunPasses() || !c->RunBackend()) {
+    auto c = Prepare(state, family, &file);
+    if (!RunFrontend(*c, file, family) || !c->RunPasses() || !c->RunBackend()) {
       state.SkipWithError("compile reported errors");
     }
     benchmark::DoNotOptimize(c->model);
   }
-  Finish(state, shape);
+  Finish(state, family);
 }
 
-void BM_PlantJson(benchmark::State& state, Shape shape, bool mass_matrix) {
+void BM_PlantJson(benchmark::State& state, Family family, bool mass_matrix) {
   // compile once, untimed
   Compilation c;
   const int n = static_cast<int>(state.range(0));
-  const FileId file = c.sources.AddBuffer(FileName(shape, n), Model(shape, n));
-  if (!RunFrontend(c, file) || !c.RunPasses() || !c.RunBackend()) {
+  const FileId file = c.sources.AddBuffer(FileName(family, n), Model(family, n));
+  if (!RunFrontend(c, file, family) || !c.RunPasses() || !c.RunBackend()) {
     state.SkipWithError("compile reported errors");
     return;
   }
@@ -160,13 +194,32 @@ void BM_PlantJson(benchmark::State& state, Shape shape, bool mass_matrix) {
     benchmark::DoNotOptimize(json);
   }
   state.counters["json_MB"] = static_cast<double>(bytes) / 1e6;
-  Finish(state, shape);
+  Finish(state, family);
 }
+
+#ifdef MDLC_BENCH_HAVE_MUJOCO
+void BM_MujocoLoad(benchmark::State& state, Family family) {
+  const int n = static_cast<int>(state.range(0));
+  // mj_loadXML reads a file: write it once, untimed
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / fmt::format("mdlc_bench_{}", FileName(family, n));
+  std::ofstream(path, std::ios::binary) << Model(family, n);
+  char error[512] = "";
+  for (auto _ : state) {
+    mjModel* m = mj_loadXML(path.c_str(), nullptr, error, sizeof error);
+    if (!m) state.SkipWithError(fmt::format("MuJoCo: {}", error).c_str());
+    benchmark::DoNotOptimize(m);
+    mj_deleteModel(m);
+  }
+  std::filesystem::remove(path);
+  Finish(state, family);
+}
+#endif
 
 void RegisterAll() {
   struct Stage {
     const char* name;
-    void (*fn)(benchmark::State&, Shape);
+    void (*fn)(benchmark::State&, Family);
   };
   static constexpr Stage kStages[] = {
       {"libxml2_parse", BM_Libxml2Parse},
@@ -174,13 +227,19 @@ void RegisterAll() {
       {"frontend", BM_Frontend},
       {"frontend_passes", BM_FrontendPasses},
       {"compile", BM_Compile},
-      {"plant_json", [](benchmark::State& s, Shape shape) { BM_PlantJson(s, shape, true); }},
-      {"plant_json_no_mm", [](benchmark::State& s, Shape shape) { BM_PlantJson(s, shape, false); }},
+      {"plant_json", [](benchmark::State& s, Family family) { BM_PlantJson(s, family, true); }},
+      {"plant_json_no_mm", [](benchmark::State& s, Family family) { BM_PlantJson(s, family, false); }},
+#ifdef MDLC_BENCH_HAVE_MUJOCO
+      {"mujoco_load", BM_MujocoLoad},
+#endif
   };
-  for (Shape shape : {Shape::Chain, Shape::Tree}) {
+  for (Family family : kFamilies) {
     for (const Stage& stage : kStages) {
+#ifdef MDLC_BENCH_HAVE_MUJOCO
+      if (stage.fn == BM_MujocoLoad && family.format != frontend::Format::Mjcf) continue;
+#endif
       auto* b = benchmark::RegisterBenchmark(
-          fmt::format("{}/{}", stage.name, ShapeName(shape)).c_str(), stage.fn, shape);
+          fmt::format("{}/{}", stage.name, FamilyName(family)).c_str(), stage.fn, family);
       for (int n : kSizes) b->Arg(n);
       b->Unit(benchmark::kMillisecond)->Complexity(benchmark::oN);
     }
@@ -190,11 +249,11 @@ void RegisterAll() {
 int WriteModels(const std::filesystem::path& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  for (Shape shape : {Shape::Chain, Shape::Tree}) {
+  for (Family family : kFamilies) {
     for (int n : kSizes) {
-      const std::filesystem::path path = dir / FileName(shape, n);
+      const std::filesystem::path path = dir / FileName(family, n);
       std::ofstream out(path, std::ios::binary);
-      out << Model(shape, n);
+      out << Model(family, n);
       if (!out) {
         fmt::print(stderr, "mdlc_bench: cannot write '{}'\n", path.string());
         return 1;

@@ -18,11 +18,9 @@
 #include <string>
 #include <string_view>
 
+#include "mechanism.h"
+
 namespace mdlc::bench {
-
-enum class Shape { Chain, Tree };
-
-std::string_view ShapeName(Shape shape);
 
 /// The URDF text of the `shape` model with `num_links` links (>= 1), named
 /// "{shape}_n{num_links}" like the script's files.

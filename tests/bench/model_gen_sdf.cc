@@ -4,6 +4,8 @@
 // so that the two files describe the same robot.
 #include "model_gen_sdf.h"
 
+#include "mechanism.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -16,72 +18,6 @@ namespace mdlc::bench {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-using Vec3 = std::array<double, 3>;
-using Mat3 = std::array<Vec3, 3>;
-
-// as model_gen.cc: uniform doubles from a fixed engine
-class Rng {
- public:
-  explicit Rng(uint64_t seed) : engine_(seed) {}
-  double Unit() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
-  double Uniform(double lo, double hi) { return lo + (hi - lo) * Unit(); }
-  int Below(int n) { return static_cast<int>(engine_() % static_cast<uint64_t>(n)); }
-
- private:
-  std::mt19937_64 engine_;
-};
-
-uint64_t Fnv1a(std::string_view text) {
-  uint64_t h = 0xcbf29ce484222325;
-  for (unsigned char c : text) h = (h ^ c) * 0x100000001b3;
-  return h;
-}
-
-// "%.6g", with "-0" written as "0"
-void AppendNumber(std::string& out, double x) {
-  char buf[32];
-  const int n = std::snprintf(buf, sizeof buf, "%.6g", x);
-  if (n == 2 && buf[0] == '-' && buf[1] == '0') {
-    out += '0';
-  } else {
-    out.append(buf, static_cast<size_t>(n));
-  }
-}
-
-void AppendVector(std::string& out, const double* v, int size) {
-  for (int i = 0; i < size; ++i) {
-    if (i > 0) out += ' ';
-    AppendNumber(out, v[i]);
-  }
-}
-
-// R = Rz(yaw) * Ry(pitch) * Rx(roll)
-Mat3 RotationFromRpy(double r, double p, double y) {
-  const double cr = std::cos(r), sr = std::sin(r), cp = std::cos(p), sp = std::sin(p);
-  const double cy = std::cos(y), sy = std::sin(y);
-  return {{{cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr},
-           {sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr},
-           {-sp, cp * sr, cp * cr}}};
-}
-
-Mat3 RotateDiagonal(const Mat3& R, const Vec3& d) {
-  Mat3 out{};
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      for (int k = 0; k < 3; ++k) out[i][j] += R[i][k] * d[k] * R[j][k];
-    }
-  }
-  return out;
-}
-
-// prefix + decimal index (not `"literal" + std::to_string(i)`, which makes
-// GCC 12 warn falsely under -Wrestrict)
-std::string Numbered(std::string_view prefix, int index) {
-  std::string out(prefix);
-  out += std::to_string(index);
-  return out;
-}
-
 // <pose [relative_to="R"]>x y z r p y</pose>
 void AppendPose(std::string& out, std::string_view indent, const Vec3& xyz, const Vec3& rpy,
                 std::string_view relative_to = {}) {
@@ -240,44 +176,18 @@ std::string NestedModels(const std::string& name, int n) {
 
 // ---------------------------------------------------------------- sdf_chain
 
-enum class Kind { Box, Sphere, Cylinder, Capsule };
-
-struct Geom {
-  Kind kind;
-  Vec3 dims;
-  Vec3 xyz, rpy;
-  std::array<double, 4> rgba;
-};
-
-// model_gen.cc's MakeGeom, draw for draw
-Geom MakeGeom(Rng& rng, Kind kind) {
-  Geom g{};
-  g.kind = kind;
-  if (kind == Kind::Box) {
-    g.dims = {rng.Uniform(0.04, 0.3), rng.Uniform(0.04, 0.3), rng.Uniform(0.04, 0.3)};
-  } else if (kind == Kind::Sphere) {
-    g.dims = {rng.Uniform(0.02, 0.15), 0, 0};
-  } else {
-    g.dims = {rng.Uniform(0.02, 0.1), rng.Uniform(0.05, 0.4), 0};
-  }
-  g.xyz = {rng.Uniform(-0.05, 0.05), rng.Uniform(-0.05, 0.05), rng.Uniform(0.0, 0.15)};
-  g.rpy = {rng.Uniform(-kPi, kPi), rng.Uniform(-1.5, 1.5), rng.Uniform(-kPi, kPi)};
-  g.rgba = {rng.Unit(), rng.Unit(), rng.Unit(), 1.0};
-  return g;
-}
-
-void AppendGeometry(std::string& out, const Geom& g, int link, bool visual) {
+void AppendGeometry(std::string& out, const GeomDraw& g, int link, bool visual) {
   const std::string index = std::to_string(link);
   out += visual ? "      <visual name=\"link_" : "      <collision name=\"link_";
   out += index;
   out += visual ? "_visual\">\n" : "_collision\">\n";
   AppendPose(out, "        ", g.xyz, g.rpy);
   out += "        <geometry>";
-  if (g.kind == Kind::Box) {
+  if (g.kind == GeomKind::Box) {
     out += "<box><size>";
     AppendVector(out, g.dims.data(), 3);
     out += "</size></box>";
-  } else if (g.kind == Kind::Sphere) {
+  } else if (g.kind == GeomKind::Sphere) {
     out += "<sphere>";
     AppendElement(out, "radius", g.dims[0]);
     out += "</sphere>";
@@ -299,56 +209,34 @@ void AppendGeometry(std::string& out, const Geom& g, int link, bool visual) {
 }
 
 std::string SdfChain(const std::string& name, int n) {
-  // the URDF chain's seed: the same robot
-  Rng rng(Fnv1a(Numbered("chain_n", n) + "/20240611"));
+  // the URDF chain's draws: the same robot
+  const std::vector<LinkDraw> links = DrawMechanism(Shape::Chain, n);
   std::string out;
   out.reserve(static_cast<size_t>(n) * 1700 + 1024);
   AppendHeader(out, name);
-  static constexpr Kind kKinds[] = {Kind::Box, Kind::Sphere, Kind::Cylinder, Kind::Capsule};
   for (int i = 0; i < n; ++i) {
+    const LinkDraw& L = links[static_cast<size_t>(i)];
     const std::string index = std::to_string(i);
-    const int parent = i - 1;
-    const double mass = rng.Uniform(0.3, 5.0);
-    const Vec3 com = {rng.Uniform(-0.03, 0.03), rng.Uniform(-0.03, 0.03), rng.Uniform(0.0, 0.12)};
-    const Vec3 in_rpy = {rng.Uniform(-kPi, kPi), rng.Uniform(-1.5, 1.5), rng.Uniform(-kPi, kPi)};
-    const double a = rng.Uniform(0.05, 0.3), b = rng.Uniform(0.05, 0.3), c = rng.Uniform(0.05, 0.3);
-    const Vec3 principal = {mass * (b * b + c * c) / 12, mass * (a * a + c * c) / 12,
-                            mass * (a * a + b * b) / 12};
-    const Vec3 q_rpy = {rng.Uniform(-kPi, kPi), rng.Uniform(-1.5, 1.5), rng.Uniform(-kPi, kPi)};
-    const Mat3 I = RotateDiagonal(RotationFromRpy(q_rpy[0], q_rpy[1], q_rpy[2]), principal);
-    const Geom visual = MakeGeom(rng, kKinds[i % 4]);
-    const Geom collision = MakeGeom(rng, kKinds[(i + 1) % 4]);
-    const Vec3 j_xyz = {rng.Uniform(-0.1, 0.1), rng.Uniform(-0.1, 0.1), rng.Uniform(0.05, 0.35)};
-    const Vec3 j_rpy = {rng.Uniform(-0.8, 0.8), rng.Uniform(-0.8, 0.8), rng.Uniform(-kPi, kPi)};
-    Vec3 axis = {0, 0, 0};
-    if (const int k = rng.Below(4); k < 3) {
-      axis[k] = rng.Unit() < 0.7 ? 1.0 : -1.0;
-    } else {
-      axis = {rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1)};
-      double norm = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
-      if (norm == 0) norm = 1;
-      for (double& v : axis) v /= norm;
-    }
-    const double limits[4] = {-rng.Uniform(1.0, 3.0), rng.Uniform(1.0, 3.0),
-                              rng.Uniform(10, 300), rng.Uniform(1, 10)};
-    const double damping = rng.Uniform(0.05, 2.0), friction = rng.Uniform(0.0, 0.5);
+    const int parent = L.parent;
+    const Mat3& I = L.inertia;
+    const double limits[4] = {L.lower, L.upper, L.effort, L.velocity};
 
     if (parent >= 0) {
       // the URDF joint origin: relative to the parent link
       out += "    <joint name=\"joint_" + index + "\" type=\"revolute\">\n";
-      AppendPose(out, "      ", j_xyz, j_rpy, Numbered("link_", parent));
+      AppendPose(out, "      ", L.j_xyz, L.j_rpy, Numbered("link_", parent));
       out += "      <parent>link_" + std::to_string(parent) + "</parent>\n";
       out += "      <child>link_" + index + "</child>\n";
       out += "      <axis>\n        <xyz>";
-      AppendVector(out, axis.data(), 3);
+      AppendVector(out, L.axis.data(), 3);
       out += "</xyz>\n        <limit>";
       AppendElement(out, "lower", limits[0]);
       AppendElement(out, "upper", limits[1]);
       AppendElement(out, "effort", limits[2]);
       AppendElement(out, "velocity", limits[3]);
       out += "</limit>\n        <dynamics>";
-      AppendElement(out, "damping", damping);
-      AppendElement(out, "friction", friction);
+      AppendElement(out, "damping", L.damping);
+      AppendElement(out, "friction", L.friction);
       out += "</dynamics>\n      </axis>\n    </joint>\n";
     }
     out += "    <link name=\"link_" + index + "\">\n";
@@ -356,9 +244,9 @@ std::string SdfChain(const std::string& name, int n) {
       out += "      <pose relative_to=\"joint_" + index + "\">0 0 0 0 0 0</pose>\n";
     }
     const double tensor[6] = {I[0][0], I[0][1], I[0][2], I[1][1], I[1][2], I[2][2]};
-    AppendInertial(out, "      ", mass, com, in_rpy, tensor);
-    AppendGeometry(out, visual, i, /*visual=*/true);
-    AppendGeometry(out, collision, i, /*visual=*/false);
+    AppendInertial(out, "      ", L.mass, L.com, L.in_rpy, tensor);
+    AppendGeometry(out, L.visual, i, /*visual=*/true);
+    AppendGeometry(out, L.collision, i, /*visual=*/false);
     out += "    </link>\n";
   }
   out += "    <joint name=\"world_weld\" type=\"fixed\">\n";
