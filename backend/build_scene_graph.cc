@@ -36,7 +36,11 @@ class SceneBuilder {
   SceneBuilder(const ir::Module& module, DiagnosticEngine& diags) : m_(module), diags_(diags) {}
 
   std::optional<SceneGraph> Build(const Plant& plant) {
-    for (const ir::Geometry& g : m_.geometries) AddGeometry(g);
+    for (const ir::Geometry& g : m_.geometries) {
+      // a geometry with no role (an MJCF geom kept only for its share of the
+      // body's mass) is never registered, as Drake registers nothing for it
+      if (g.roles != 0) AddGeometry(g);
+    }
     for (const ir::Camera& c : m_.cameras) AddCamera(c);
     if (!ok_) return std::nullopt;
     auto filters = ComputeCollisionFilters(m_, plant, scene_.geometries, diags_);

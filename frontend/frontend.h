@@ -65,5 +65,7 @@ std::optional<ModelId> ReadModel(FileId file, Format format, FrontendContext& ct
 std::optional<ModelId> ReadUrdf(FileId file, FrontendContext& ctx);
 /// SDFormat frontend (frontend/sdf/).
 std::optional<ModelId> ReadSdf(FileId file, FrontendContext& ctx);
+/// MJCF (MuJoCo XML) frontend (frontend/mjcf/).
+std::optional<ModelId> ReadMjcf(FileId file, FrontendContext& ctx);
 
 }  // namespace mdlc::frontend

@@ -198,7 +198,7 @@ struct MassContribution {
   std::optional<double> mass;  // geom@mass: total mass of this geometry, wins over density
   double density = 1000;       // kg/m^3 (kg/m^2 when shell)
   bool shell = false;          // geom@shellinertia: mass spread over the surface
-  MeshInertia mesh_inertia = MeshInertia::Convex;  // mesh shapes: mesh@inertia
+  MeshInertia mesh_inertia = MeshInertia::Legacy;  // mesh shapes: mesh@inertia (MuJoCo 3.3 default: legacy)
 };
 
 /// A primitive geometry (box, sphere, capsule, cylinder, ellipsoid) whose
@@ -210,7 +210,7 @@ struct MeshFit {
   Mesh mesh;           // the mesh asset: uri, resolved path, scale
   bool aabb = false;   // compiler@fitaabb: fit the bounding box, not the equivalent inertia box
   double fitscale = 1; // geom@fitscale: scales the fitted size
-  MeshInertia mesh_inertia = MeshInertia::Convex;
+  MeshInertia mesh_inertia = MeshInertia::Legacy;
 };
 /// Drake's shape type name ("box", ..., "mesh" or "convex" for meshes).
 std::string_view ShapeTypeName(const Shape& shape);

@@ -14,6 +14,7 @@
 #include "ir/module.h"
 #include "ir/source_manager.h"
 #include "ir/verifier.h"
+#include "passes/mesh/mesh_cache.h"
 
 namespace mdlc::passes {
 
@@ -23,6 +24,10 @@ struct PassContext {
   const SourceManager& sources;
   /// Packages for resolving package:// URIs (none: only paths resolve).
   const frontend::PackageMap* packages = nullptr;
+  /// Mesh files read during this compile, each once (load-meshes fills it;
+  /// fit-to-mesh, mass-from-geometry and inertia-from-collisions read it).
+  /// An embedder may share one cache between compiles of the same files.
+  std::shared_ptr<mesh::MeshCache> meshes = std::make_shared<mesh::MeshCache>();
 };
 
 class Pass {

@@ -16,9 +16,14 @@ const std::vector<PassInfo>& RegisteredPasses() {
       Info<CreateCheckJointsPass>(),
       Info<CreateCheckModelElementsPass>(),
       Info<CreateBuildKinematicTreePass>(),
+      // meshes: resolved, read (once each), then used for fitted primitives
+      // and mass properties, all before check-inertia validates the result
+      Info<CreateResolveAssetsPass>(),
+      Info<CreateLoadMeshesPass>(),
+      Info<CreateFitToMeshPass>(),
+      Info<CreateMassFromGeometryPass>(),
       Info<CreateInertiaFromCollisionsPass>(),
       Info<CreateCheckInertiaPass>(),
-      Info<CreateResolveAssetsPass>(),
   };
   return passes;
 }

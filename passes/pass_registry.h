@@ -33,5 +33,8 @@ std::unique_ptr<Pass> CreateCheckInertiaPass();
 std::unique_ptr<Pass> CreateCheckJointsPass();
 std::unique_ptr<Pass> CreateCheckModelElementsPass();
 std::unique_ptr<Pass> CreateResolveAssetsPass();
+std::unique_ptr<Pass> CreateLoadMeshesPass();
+std::unique_ptr<Pass> CreateFitToMeshPass();
+std::unique_ptr<Pass> CreateMassFromGeometryPass();
 
 }  // namespace mdlc::passes

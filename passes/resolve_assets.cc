@@ -1,5 +1,6 @@
 // resolve_assets.cc - the resolve-assets pass: finds the file behind every
-// mesh reference (COMMON-010, COMMON-011).
+// mesh reference (COMMON-010, COMMON-011), including the meshes MJCF
+// primitives are fitted to (BEYOND-002).
 //
 // Reads: ir::Mesh::uri and the file each geometry was declared in. Writes:
 // ir::Mesh::resolved, an existing file's path. A reference that cannot be
@@ -29,9 +30,8 @@ bool ResolveAssetsPass::Run(PassContext& ctx) {
   const frontend::PackageMap& packages = ctx.packages ? *ctx.packages : kNoPackages;
   const size_t errors_before = ctx.diags.error_count();
   std::unordered_map<std::string, std::optional<std::string>> resolved;  // "dir\n" + uri
-  for (ir::Geometry& g : ctx.module.geometries) {
-    auto* mesh = std::get_if<ir::Mesh>(&g.shape);
-    if (!mesh || !mesh->resolved.empty()) continue;
+  auto resolve = [&](const ir::Geometry& g, ir::Mesh* mesh) {
+    if (!mesh || !mesh->resolved.empty()) return;
     const Loc loc = mesh->uri_loc.valid() ? mesh->uri_loc : g.loc;
     const std::string base_dir =
         loc.valid() ? std::filesystem::path(ctx.sources.Path(loc.file)).parent_path().string()
@@ -43,6 +43,11 @@ bool ResolveAssetsPass::Run(PassContext& ctx) {
                .first;
     }
     if (it->second) mesh->resolved = *it->second;
+  };
+  for (ir::Geometry& g : ctx.module.geometries) {
+    resolve(g, std::get_if<ir::Mesh>(&g.shape));
+    // the mesh an MJCF primitive is fitted to (BEYOND-002)
+    if (g.fit_to_mesh) resolve(g, &g.fit_to_mesh->mesh);
   }
   return ctx.diags.error_count() == errors_before;
 }

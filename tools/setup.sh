@@ -21,7 +21,7 @@ jobs=${JOBS:-$(nproc)}
 
 # what mdlc needs to build and run
 runtime_packages=(cmake ninja-build g++ pkg-config libeigen3-dev libxml2-dev libyaml-cpp-dev
-                  libfmt-dev libassimp-dev libcli11-dev)
+                  libfmt-dev libassimp-dev libqhull-dev libcli11-dev)
 # what its tests need besides: GoogleTest, Google Benchmark, and the reference
 # implementations the differential tests compare against (test-only)
 test_packages=(libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
@@ -45,6 +45,35 @@ if ((${#missing[@]})); then
   export DEBIAN_FRONTEND=noninteractive
   apt-get update -qq
   apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# The MuJoCo 3.3.8 oracle (tests/oracle/mujoco_js, test-only) runs MuJoCo's
+# official WebAssembly build under Node.js. Debian's nodejs and npm are
+# installed only when no `node` is on the PATH (a newer Node.js may be there
+# already); the npm package is pinned by package-lock.json and installed with
+# `npm ci`. Without either, the MuJoCo oracle tests report themselves skipped.
+if [ "$mode" = test ]; then
+  if ! command -v node >/dev/null 2>&1; then
+    if [ "$(id -u)" -ne 0 ]; then
+      echo "note: no node on the PATH; the MuJoCo 3.3.8 oracle tests will be skipped." >&2
+      echo "  To run them, as root: apt-get update && apt-get install -y --no-install-recommends nodejs npm" >&2
+    else
+      echo "==> installing: nodejs npm"
+      export DEBIAN_FRONTEND=noninteractive
+      apt-get update -qq
+      apt-get install -y -qq --no-install-recommends nodejs npm >/dev/null ||
+        echo "note: could not install nodejs/npm; the MuJoCo 3.3.8 oracle tests will be skipped" >&2
+    fi
+  fi
+  mujoco_js="$root/tests/oracle/mujoco_js"
+  if command -v npm >/dev/null 2>&1; then
+    echo "==> npm ci in tests/oracle/mujoco_js (MuJoCo 3.3.8 oracle)"
+    if ! (cd "$mujoco_js" && timeout 300 npm ci --prefer-offline --fetch-retries=1 --fetch-timeout=60000 --no-audit --no-fund --loglevel=error); then
+      echo "note: npm ci failed (registry unreachable?); the MuJoCo 3.3.8 oracle tests will be skipped" >&2
+    fi
+  else
+    echo "note: npm not found; the MuJoCo 3.3.8 oracle tests will be skipped" >&2
+  fi
 fi
 
 echo "==> configuring and building in $build_dir"

@@ -1,0 +1,164 @@
+// mjcf_document.cc - <include file> (MJCF-001): every include reachable from
+// the main file is loaded up front, and MjcfDocument::Children splices an
+// included file's root children where its <include> stands.
+//
+// Paths follow MuJoCo 3: an absolute path as is; else relative to the MAIN
+// file's directory, and failing that (MuJoCo's newer rule for nested
+// includes) relative to the directory of the file holding the <include>.
+// A file included twice is an error in MuJoCo ("already included"); a file
+// that includes itself, directly or not, is reported as a cycle with the
+// whole include chain as notes. Both walks use explicit stacks.
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <unordered_set>
+
+#include "frontend/mjcf/mjcf_reader_detail.h"
+
+namespace mdlc::frontend::mjcf {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string Canonical(const std::string& path) {
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(path, ec);
+  return ec ? path : p.string();
+}
+
+/// One file on the include chain: its canonical path and the <include>
+/// that brought it in (invalid for the main file).
+struct ChainLink {
+  std::string canonical;
+  Loc include_loc;
+};
+
+}  // namespace
+
+std::vector<xml::XmlElement> MjcfDocument::Children(const xml::XmlElement& e) const {
+  std::vector<xml::XmlElement> out;
+  // a stack of sibling cursors: entering an include pushes the included
+  // root's first child; leaving it resumes after the include
+  std::vector<xml::XmlElement> cursors{e.FirstChild()};
+  while (!cursors.empty()) {
+    xml::XmlElement& cursor = cursors.back();
+    if (!cursor) {
+      cursors.pop_back();
+      continue;
+    }
+    xml::XmlElement current = cursor;
+    cursor = cursor.NextSibling();
+    if (current.Name() == "include") {
+      auto it = includes.find(current.raw());
+      if (it != includes.end()) cursors.push_back(it->second.FirstChild());
+      continue;
+    }
+    out.push_back(current);
+  }
+  return out;
+}
+
+bool LoadIncludes(const xml::XmlElement& root, const std::string& main_dir, FrontendContext& ctx,
+                  MjcfDocument& document) {
+  const size_t errors_before = ctx.diags.error_count();
+  struct Work {
+    xml::XmlElement element;
+    std::string dir;                 // directory of the file holding `element`
+    std::shared_ptr<std::vector<ChainLink>> chain;  // files from the main file to this one
+  };
+  auto main_chain = std::make_shared<std::vector<ChainLink>>();
+  main_chain->push_back({Canonical(ctx.sources.Path(root.GetLoc().file)), {}});
+  std::unordered_set<std::string> included;
+  std::vector<Work> stack{{root, main_dir, main_chain}};
+
+  while (!stack.empty()) {
+    Work work = std::move(stack.back());
+    stack.pop_back();
+    const xml::XmlElement e = work.element;
+    if (e.Name() != "include") {
+      // children in reverse, so they pop in document order
+      std::vector<xml::XmlElement> children;
+      for (auto c = e.FirstChild(); c; c = c.NextSibling()) children.push_back(c);
+      for (auto it = children.rbegin(); it != children.rend(); ++it) {
+        stack.push_back({*it, work.dir, work.chain});
+      }
+      continue;
+    }
+
+    if (e.FirstChild()) {
+      ctx.diags.Report(DiagKind::BadValue, e.GetLoc(), "an <include> element cannot have children");
+    }
+    const xml::XmlAttribute file = e.Attribute("file");
+    if (!file.present()) {
+      ctx.diags.Report(DiagKind::MissingAttribute, e.GetLoc(),
+                       "<include> is missing required attribute 'file'");
+      continue;
+    }
+    const std::string name(file.value);
+    std::string path;
+    if (fs::path(name).is_absolute()) {
+      path = name;
+    } else {
+      std::error_code ec;
+      path = (fs::path(main_dir) / name).string();
+      if (!fs::exists(path, ec) && work.dir != main_dir) {
+        std::string nested = (fs::path(work.dir) / name).string();
+        if (fs::exists(nested, ec)) path = nested;
+      }
+    }
+    const std::string canonical = Canonical(path);
+
+    // a cycle: the file is already on the chain that leads here
+    bool cycle = false;
+    for (const ChainLink& link : *work.chain) cycle |= (link.canonical == canonical);
+    if (cycle) {
+      auto diag = ctx.diags.Report(
+          DiagKind::IncludeCycle, file.loc,
+          fmt::format("include cycle: '{}' includes itself through this include", name));
+      for (const ChainLink& link : *work.chain) {
+        if (link.include_loc.valid()) {
+          diag.Note(link.include_loc, fmt::format("'{}' is included here", link.canonical));
+        }
+      }
+      continue;
+    }
+    if (!included.insert(canonical).second) {
+      ctx.diags.Report(DiagKind::DuplicateInclude, file.loc,
+                       fmt::format("file '{}' is already included; MuJoCo includes each file "
+                                   "at most once",
+                                   name));
+      continue;
+    }
+
+    std::string error;
+    auto id = ctx.sources.LoadFile(path, file.loc, &error);
+    if (!id) {
+      ctx.diags.Report(DiagKind::FileNotFound, file.loc,
+                       fmt::format("cannot read the included file '{}': {}", name, error));
+      continue;
+    }
+    std::shared_ptr<const xml::XmlDocument> doc =
+        xml::XmlDocument::Parse(*id, ctx.sources, ctx.diags);
+    if (!doc) continue;  // reported by the parser, inside the included file
+    if (ctx.retained) ctx.retained->documents.push_back(doc);
+    document.documents.push_back(doc);
+    const xml::XmlElement included_root = doc->Root();
+    if (!included_root.FirstChild()) {
+      ctx.diags.Report(DiagKind::EmptyFile, file.loc,
+                       fmt::format("the included file '{}' has no elements under its root", name));
+    }
+    document.includes.emplace(e.raw(), included_root);
+
+    auto chain = std::make_shared<std::vector<ChainLink>>(*work.chain);
+    chain->push_back({canonical, file.loc});
+    const std::string dir = fs::path(path).parent_path().string();
+    std::vector<xml::XmlElement> children;
+    for (auto c = included_root.FirstChild(); c; c = c.NextSibling()) children.push_back(c);
+    for (auto it = children.rbegin(); it != children.rend(); ++it) {
+      stack.push_back({*it, dir.empty() ? std::string(".") : dir, chain});
+    }
+  }
+  return ctx.diags.error_count() == errors_before;
+}
+
+}  // namespace mdlc::frontend::mjcf

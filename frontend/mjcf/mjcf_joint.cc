@@ -1,0 +1,270 @@
+// mjcf_joint.cc - a body's joints (MJCF-021..024, MJCF-004, BEYOND-007).
+//
+// MuJoCo moves a body about each of its joints in turn, every joint's pos
+// and axis in the body's own frame: at q, X_PB(q) = X_PB0 * prod_k
+// T(p_k) R(a_k, q_k - ref_k) T(-p_k) (slides translate by a_k (q_k - ref_k)).
+// Drake's layout is a chain of massless bodies {body}0, {body}1, ... joined
+// by the joints in order, the last joint ending on the real body. Placing
+// joint k with X_PF = T(p_k) (the first: X_PB0 T(p_1)) and X_CM = T(p_k)
+// R(a_k, ref_k) reproduces MuJoCo's motion exactly, with the XML pose at
+// q = ref (MJCF-023; Drake itself puts non-final joints in the parent frame).
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "frontend/mjcf/mjcf_lowering.h"
+
+namespace mdlc::frontend::mjcf {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+ir::Ref<BodyId> RefTo(const ir::Module& m, BodyId id) { return {m[id].name, m[id].loc, id}; }
+
+/// Attributes the plant cannot hold (MJCF-024), warned once each; the
+/// solver's own (solref..., margin) are silent.
+void WarnJointAttributes(MjcfReader& r, const Element& j) {
+  for (std::string_view a : {"group", "springdamper", "actuatorfrcrange", "actuatorfrclimited",
+                             "actuatorgravcomp", "frictionloss", "user"}) {
+    const Attribute attr = j.Get(a);
+    if (attr.present()) r.WarnOnce(attr.loc, DiagKind::UnsupportedAttribute, "joint", a);
+  }
+}
+
+/// MJCF-004: limited = true | false | auto (limited iff a range is given,
+/// when autolimits; an error without autolimits). MuJoCo reads "a range is
+/// given" as a range other than 0 0.
+std::optional<bool> Limited(MjcfReader& r, const Element& j, const std::vector<double>& range) {
+  const Attribute limited = j.Get("limited");
+  const bool has_range = !(range[0] == 0 && range[1] == 0);
+  std::string_view value = limited.present() ? limited.value : "auto";
+  if (value == "true") return true;
+  if (value == "false") return false;
+  if (value != "auto") {
+    r.diags().Report(DiagKind::BadValue, limited.loc,
+                     fmt::format("joint limited must be true, false or auto, not '{}'", value));
+    return std::nullopt;
+  }
+  if (r.compiler.autolimits) return has_range;
+  if (has_range) {
+    r.diags().Report(DiagKind::BadValue, j.Get("range").loc,
+                     "the joint 'range' is given but 'limited' is not, and compiler autolimits "
+                     "is disabled");
+    return std::nullopt;
+  }
+  return false;
+}
+
+}  // namespace
+
+void LowerJoints(MjcfReader& r, const BodyContext& b, const std::vector<BodyItem>& items,
+                 bool mocap) {
+  ir::Module& m = r.module();
+  if (items.empty()) {
+    // MJCF-021: no joint, welded to the parent at its pose (Drake's WeldFrames name)
+    ir::Joint weld;
+    weld.name = m.Intern(fmt::format("{}_welds_to_{}", m.Text(m[b.parent].name), b.name));
+    weld.model = r.model;
+    weld.loc = b.e.GetLoc();
+    weld.type = ir::JointType::Weld;
+    weld.parent = RefTo(m, b.parent);
+    weld.child = RefTo(m, b.body);
+    weld.X_PF = b.X_PB0;
+    weld.limits = ir::JointLimits::Unbounded(0);
+    weld.unnamed = true;
+    m.Add(std::move(weld));
+    return;
+  }
+  (void)mocap;  // a mocap body with joints was reported by the caller
+
+  // resolve classes once; find a free joint
+  std::vector<Element> joints;
+  std::optional<size_t> free_index;
+  for (size_t k = 0; k < items.size(); ++k) {
+    const BodyItem& item = items[k];
+    if (item.e.Name() == "freejoint") {
+      r.CheckAttributes(item.e, "freejoint");
+      // MuJoCo: <freejoint> takes no defaults
+      static const DefaultClasses kNoDefaults;
+      joints.emplace_back(item.e, "freejoint", "main", kNoDefaults);
+      free_index = k;
+      continue;
+    }
+    r.CheckAttributes(item.e, "joint");
+    joints.push_back(r.Resolve(item.e, "joint", item.childclass));
+    if (joints.back().Get("type").value == "free") free_index = k;
+  }
+
+  if (free_index) {
+    const Element& j = joints[*free_index];
+    if (items.size() > 1) {
+      r.diags().Report(DiagKind::BadValue, j.loc(),
+                       fmt::format("no other joints can be defined in body '{}' with a free joint",
+                                   b.name));
+      return;
+    }
+    if (j.xml().Name() == "joint") {
+      WarnJointAttributes(r, j);
+      if (auto d = r.Number(j, "damping", 0); d && *d != 0) {
+        r.diags().Report(DiagKind::UnsupportedAttribute, j.Get("damping").loc,
+                         fmt::format("damping on the free joint of '{}' is not supported for "
+                                     "free bodies",
+                                     b.name));
+      }
+    }
+    // MJCF-021: a floating body that starts at its world pose; named after
+    // the body once every joint exists (MjcfReader::free_joints)
+    m[b.body].default_pose = b.X_WB0;
+    ir::Joint free;
+    free.name = m[b.body].name;
+    free.model = r.model;
+    free.loc = j.loc();
+    free.type = ir::JointType::QuaternionFloating;
+    free.parent = RefTo(m, ir::kWorldBody);
+    free.child = RefTo(m, b.body);
+    free.limits = ir::JointLimits::Unbounded(6);
+    free.damping.assign(6, 0.0);
+    const Eigen::Quaterniond q = CanonicalQuaternion(b.X_WB0.R);
+    free.default_positions = {q.w(), q.x(), q.y(), q.z(), b.X_WB0.p.x(), b.X_WB0.p.y(),
+                              b.X_WB0.p.z()};
+    free.unnamed = true;
+    const JointId id = m.Add(std::move(free));
+    r.free_joints.push_back(id);
+    r.joint_order.push_back(id);
+    if (auto name = j.xml().Attribute("name"); name.present()) r.joints.emplace(name.value, id);
+    return;
+  }
+
+  BodyId parent = b.parent;
+  for (size_t k = 0; k < joints.size(); ++k) {
+    const Element& j = joints[k];
+    const BodyItem& item = items[k];
+    const bool last = k + 1 == joints.size();
+    const Attribute type_attr = j.Get("type");
+    const std::string_view type = type_attr.present() ? type_attr.value : "hinge";
+    ir::JointType jt;
+    if (type == "hinge") jt = ir::JointType::Revolute;
+    else if (type == "slide") jt = ir::JointType::Prismatic;
+    else if (type == "ball") jt = ir::JointType::Ball;
+    else {
+      r.diags().Report(DiagKind::BadValue, type_attr.loc,
+                       fmt::format("unknown joint type '{}': expected hinge, slide, ball or free",
+                                   type));
+      return;
+    }
+    const bool hinge = jt == ir::JointType::Revolute;
+    const int nv = ir::JointVelocityCount(jt);
+
+    // pos and axis: in the body frame, through any <frame> the joint is in
+    Eigen::Vector3d pos = Eigen::Vector3d::Zero(), axis = Eigen::Vector3d::UnitZ();
+    if (auto v = r.Numbers(j, "pos", 3)) pos = {(*v)[0], (*v)[1], (*v)[2]};
+    if (auto v = r.Numbers(j, "axis", 3)) axis = {(*v)[0], (*v)[1], (*v)[2]};
+    pos = item.X_BF * pos;
+    axis = item.X_BF.R * axis;
+    if (jt != ir::JointType::Ball && axis.norm() < 1e-14) {
+      r.diags().Report(DiagKind::ZeroAxis, j.Get("axis").loc, "joint axis too small");
+      return;
+    }
+    if (jt == ir::JointType::Ball) axis = Eigen::Vector3d::UnitZ();
+    axis.normalize();
+
+    // the child: an intermediate massless body, or the body itself (MJCF-023)
+    BodyId child = b.body;
+    if (!last) {
+      ir::Body dummy;
+      dummy.name = m.Intern(fmt::format("{}{}", b.name, k));
+      dummy.model = r.model;
+      dummy.loc = j.loc();
+      child = m.Add(std::move(dummy));
+    }
+
+    ir::Joint joint;
+    const xml::XmlAttribute name = j.xml().Attribute("name");
+    joint.name = name.present()
+                     ? m.Intern(name.value)
+                     : m.Intern(fmt::format("{}-{}", m.Text(m[parent].name), m.Text(m[child].name)));
+    joint.unnamed = !name.present();
+    joint.model = r.model;
+    joint.loc = j.loc();
+    joint.type = jt;
+    joint.parent = RefTo(m, parent);
+    joint.child = RefTo(m, child);
+    joint.axis = axis;
+    joint.limits = ir::JointLimits::Unbounded(nv);
+
+    double ref = r.Number(j, "ref", 0).value_or(0);
+    if (hinge) ref = r.compiler.Angle(ref);
+    if (jt == ir::JointType::Ball && j.Get("ref").present()) {
+      r.WarnOnce(j.Get("ref").loc, DiagKind::UnsupportedAttribute, "joint", "ref",
+                 "has no effect on ball joints and is ignored");
+      ref = 0;
+    }
+    const Transform T_pos = Transform::FromTranslation(pos);
+    joint.X_PF = (k == 0 ? b.X_PB0 : Transform()) * T_pos;
+    if (hinge) {
+      joint.X_CM = T_pos * Transform::FromRotation(RotationAboutAxis(axis, ref));
+    } else if (jt == ir::JointType::Prismatic) {
+      joint.X_CM = Transform::FromTranslation(pos + ref * axis);
+    } else {
+      joint.X_CM = T_pos;
+    }
+    if (jt != ir::JointType::Ball) joint.default_positions = {ref};
+
+    // range and limited (MJCF-004, MJCF-022)
+    std::vector<double> range{0, 0};
+    if (auto v = r.Numbers(j, "range", 2)) range = *v;
+    if (auto limited = Limited(r, j, range); limited && *limited) {
+      if (jt == ir::JointType::Ball) {
+        r.WarnOnce(j.Get("range").loc, DiagKind::UnsupportedAttribute, "joint", "range",
+                   "on a ball joint is not supported and is ignored");
+      } else if (range[0] >= range[1]) {
+        r.diags().Report(DiagKind::BadLimits, j.Get("range").loc,
+                         "joint range[0] must be smaller than range[1]");
+      } else {
+        joint.limits.lower = {hinge ? r.compiler.Angle(range[0]) : range[0]};
+        joint.limits.upper = {hinge ? r.compiler.Angle(range[1]) : range[1]};
+      }
+    }
+    const double damping = r.Number(j, "damping", 0).value_or(0);
+    joint.damping.assign(static_cast<size_t>(nv), damping);
+    WarnJointAttributes(r, j);
+
+    const JointId id = m.Add(std::move(joint));
+    r.joint_order.push_back(id);
+    if (name.present()) {
+      auto [it, inserted] = r.joints.emplace(std::string(name.value), id);
+      if (!inserted) {
+        r.diags()
+            .Report(DiagKind::DuplicateName, name.loc,
+                    fmt::format("repeated joint name '{}'", name.value))
+            .Note(m[it->second].loc, "the first joint of that name is here");
+      }
+    }
+    // MJCF-024: armature waits for an actuator to become rotor inertia
+    if (j.Get("armature").present()) {
+      r.joint_armature[id.value] = r.Number(j, "armature", 0).value_or(0);
+    }
+    // BEYOND-007: stiffness about springref is a joint spring
+    const double stiffness = r.Number(j, "stiffness", 0).value_or(0);
+    if (stiffness != 0) {
+      if (jt == ir::JointType::Ball) {
+        r.WarnOnce(j.Get("stiffness").loc, DiagKind::UnsupportedAttribute, "joint", "stiffness",
+                   "on a ball joint is not supported and is ignored");
+      } else {
+        ir::ForceElement spring;
+        spring.model = r.model;
+        spring.loc = j.Get("stiffness").loc;
+        spring.type = ir::ForceElementType::JointSpring;
+        spring.joint = {m[id].name, j.loc(), id};
+        spring.stiffness = stiffness;
+        const double springref = r.Number(j, "springref", 0).value_or(0);
+        spring.nominal = hinge ? r.compiler.Angle(springref) : springref;
+        m.Add(std::move(spring));
+      }
+    }
+    parent = child;
+  }
+}
+
+}  // namespace mdlc::frontend::mjcf

@@ -1,0 +1,169 @@
+// mjcf_pose.cc - reading numbers and poses off elements, with default
+// classes applied the way MuJoCo applies them (MJCF-010, MJCF-012).
+//
+// MuJoCo's orientation rule, checked against MuJoCo 3.3: an element starts
+// as a copy of its class (quat and the "alternative" orientation both), then
+// its own attributes overwrite. The alternative (axisangle, xyaxes, zaxis,
+// euler), when any level has one, wins over quat. So an element's own
+// alternative wins; else the nearest class's alternative (even over the
+// element's own quat); else quat, own or inherited.
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+
+#include "frontend/mjcf/mjcf_orientation.h"
+#include "frontend/mjcf/mjcf_reader_detail.h"
+
+namespace mdlc::frontend::mjcf {
+namespace {
+constexpr std::array<std::string_view, 4> kAlternatives = {"axisangle", "xyaxes", "zaxis",
+                                                           "euler"};
+constexpr double kDegree = M_PI / 180.0;
+}  // namespace
+
+double CompilerSettings::Angle(double v) const { return angle_in_degrees ? v * kDegree : v; }
+
+std::optional<std::vector<double>> MjcfReader::Numbers(const Element& e, std::string_view name,
+                                                       size_t n) {
+  const Attribute a = e.Get(name);
+  if (!a.present()) return std::nullopt;
+  auto values = xml::ParseDoubleList(a.value);
+  if (!values) {
+    diags().Report(DiagKind::BadValue, a.loc,
+                   fmt::format("attribute '{}' of <{}>: '{}' is not a list of numbers", name,
+                               e.xml().Name(), a.value));
+    return std::nullopt;
+  }
+  if (values->size() != n) {
+    diags().Report(DiagKind::BadValue, a.loc,
+                   fmt::format("attribute '{}' of <{}> needs {} number{}, found {}", name,
+                               e.xml().Name(), n, n == 1 ? "" : "s", values->size()));
+    return std::nullopt;
+  }
+  for (double v : *values) {
+    if (!std::isfinite(v)) {
+      diags().Report(DiagKind::NonFinite, a.loc,
+                     fmt::format("attribute '{}' of <{}> must be finite", name, e.xml().Name()));
+      return std::nullopt;
+    }
+  }
+  return values;
+}
+
+std::optional<double> MjcfReader::Number(const Element& e, std::string_view name,
+                                         double fallback) {
+  if (!e.Get(name).present()) return fallback;
+  auto v = Numbers(e, name, 1);
+  if (!v) return std::nullopt;
+  return (*v)[0];
+}
+
+std::optional<bool> MjcfReader::Boolean(const Element& e, std::string_view name, bool fallback) {
+  const Attribute a = e.Get(name);
+  if (!a.present()) return fallback;
+  if (a.value == "true") return true;
+  if (a.value == "false") return false;
+  diags().Report(DiagKind::BadValue, a.loc,
+                 fmt::format("attribute '{}' of <{}> must be 'true' or 'false', not '{}'", name,
+                             e.xml().Name(), a.value));
+  return std::nullopt;
+}
+
+std::optional<std::vector<double>> MjcfReader::LayeredVector(const Element& e,
+                                                             std::string_view name, size_t n,
+                                                             std::vector<double> init) {
+  init.resize(n, 0.0);
+  const std::vector<xml::XmlElement> layers = e.Layers();
+  for (auto it = layers.rbegin(); it != layers.rend(); ++it) {
+    const xml::XmlAttribute a = it->Attribute(name);
+    if (!a.present()) continue;
+    auto values = xml::ParseDoubleList(a.value);
+    if (!values || values->size() > n) {
+      diags().Report(DiagKind::BadValue, a.loc,
+                     values ? fmt::format("attribute '{}' of <{}> has too much data: at most {} "
+                                          "numbers",
+                                          name, it->Name(), n)
+                            : fmt::format("attribute '{}' of <{}>: '{}' is not a list of numbers",
+                                          name, it->Name(), a.value));
+      return std::nullopt;
+    }
+    // MuJoCo overwrites only the values given; the rest keep the class's
+    std::copy(values->begin(), values->end(), init.begin());
+  }
+  return init;
+}
+
+std::optional<Transform> MjcfReader::ReadPose(const Element& e) {
+  Transform X;
+  bool ok = true;
+  if (e.Get("pos").present()) {
+    auto pos = Numbers(e, "pos", 3);
+    if (pos) X.p = Eigen::Vector3d((*pos)[0], (*pos)[1], (*pos)[2]);
+    ok &= pos.has_value();
+  }
+
+  // more than one orientation written on the element itself: MJCF-010
+  std::vector<xml::XmlAttribute> own;
+  if (e.HasOwn("quat")) own.push_back(e.xml().Attribute("quat"));
+  for (std::string_view alt : kAlternatives) {
+    if (e.HasOwn(alt)) own.push_back(e.xml().Attribute(alt));
+  }
+  if (own.size() > 1) {
+    auto diag = diags().Report(DiagKind::BadValue, own[1].loc,
+                               fmt::format("<{}> has more than one orientation: at most one of "
+                                           "quat, axisangle, xyaxes, zaxis, euler",
+                                           e.xml().Name()));
+    diag.Note(own[0].loc, fmt::format("'{}' is given here", own[0].name));
+    return std::nullopt;
+  }
+
+  // the nearest level (element, then classes) with an alternative wins
+  std::string_view alt_name;
+  for (const xml::XmlElement& layer : e.Layers()) {
+    for (std::string_view alt : kAlternatives) {
+      if (layer.Attribute(alt).present()) {
+        alt_name = alt;
+        break;
+      }
+    }
+    if (!alt_name.empty()) break;
+  }
+
+  RotationOrError R = Eigen::Matrix3d(Eigen::Matrix3d::Identity());
+  std::string_view used = alt_name;
+  if (alt_name == "axisangle") {
+    auto v = Numbers(e, "axisangle", 4);
+    if (!v) return std::nullopt;
+    R = RotationFromAxisAngle({(*v)[0], (*v)[1], (*v)[2]}, compiler.Angle((*v)[3]));
+  } else if (alt_name == "xyaxes") {
+    auto v = Numbers(e, "xyaxes", 6);
+    if (!v) return std::nullopt;
+    R = RotationFromXYAxes({(*v)[0], (*v)[1], (*v)[2]}, {(*v)[3], (*v)[4], (*v)[5]});
+  } else if (alt_name == "zaxis") {
+    auto v = Numbers(e, "zaxis", 3);
+    if (!v) return std::nullopt;
+    R = RotationFromZAxis({(*v)[0], (*v)[1], (*v)[2]});
+  } else if (alt_name == "euler") {
+    auto v = Numbers(e, "euler", 3);
+    if (!v) return std::nullopt;
+    R = RotationFromEuler({compiler.Angle((*v)[0]), compiler.Angle((*v)[1]),
+                           compiler.Angle((*v)[2])},
+                          compiler.eulerseq);
+  } else if (e.Get("quat").present()) {
+    used = "quat";
+    auto v = Numbers(e, "quat", 4);
+    if (!v) return std::nullopt;
+    R = RotationFromQuat((*v)[0], (*v)[1], (*v)[2], (*v)[3]);
+  }
+  if (auto* error = std::get_if<std::string>(&R)) {
+    diags().Report(DiagKind::BadValue, e.Get(used).loc,
+                   fmt::format("attribute '{}' of <{}>: {}", used, e.xml().Name(), *error));
+    return std::nullopt;
+  }
+  X.R = std::get<Eigen::Matrix3d>(R);
+  if (!ok) return std::nullopt;
+  return X;
+}
+
+}  // namespace mdlc::frontend::mjcf

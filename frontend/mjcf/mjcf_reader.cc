@@ -1,0 +1,117 @@
+// mjcf_reader.cc - the MJCF frontend's entry point and its phases (MJCF-001,
+// MJCF-008, COMMON-021): document and includes, settings and assets from
+// anywhere in the file, then the worldbody and the model elements.
+#include <fmt/format.h>
+
+#include <filesystem>
+
+#include "frontend/mjcf/mjcf_reader_detail.h"
+#include "frontend/model_naming.h"
+
+namespace mdlc::frontend::mjcf {
+namespace {
+
+std::optional<ModelId> Read(FileId file, FrontendContext& ctx) {
+  std::shared_ptr<const xml::XmlDocument> doc = xml::XmlDocument::Parse(file, ctx.sources, ctx.diags);
+  if (!doc) return std::nullopt;
+  if (ctx.retained) ctx.retained->documents.push_back(doc);
+  const xml::XmlElement root = doc->Root();
+  if (root.Name() != "mujoco") {
+    ctx.diags.Report(DiagKind::WrongRoot, root.GetLoc(),
+                     fmt::format("an MJCF file must have a <mujoco> root element, found <{}>",
+                                 root.Name()));
+    return std::nullopt;
+  }
+  const std::string path = ctx.sources.Path(file);
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  const std::string main_dir = parent.empty() ? std::string(1, '.') : parent.string();
+
+  MjcfReader r(ctx, main_dir);
+  r.document.documents.push_back(doc);
+  // phase 1: every include, before anything is read (MJCF-001)
+  if (!LoadIncludes(root, main_dir, ctx, r.document)) return std::nullopt;
+
+  // the model instance (COMMON-021): MuJoCo loads a file without a name,
+  // so mdlc names it after the file, with a warning
+  r.CheckAttributes(root, "mujoco");
+  const xml::XmlAttribute model_attr = root.Attribute("model");
+  std::string name;
+  if (model_attr.present() && !model_attr.value.empty()) {
+    name = std::string(model_attr.value);
+  } else {
+    name = std::filesystem::path(path).stem().string();
+    if (!ctx.options.model_name) {
+      ctx.diags.Report(DiagKind::MissingModelName, root.GetLoc(),
+                       fmt::format("<mujoco> has no 'model' name; the model instance is named "
+                                   "'{}' after the file",
+                                   name));
+    }
+  }
+  auto model = AddModelInstance(name, root.GetLoc(), ir::SourceFormat::Mjcf, ctx);
+  if (!model) return std::nullopt;
+  r.model = *model;
+  r.model_name = std::string(ctx.module.Text(ctx.module[*model].name));
+
+  const std::vector<xml::XmlElement> top = r.Children(root);
+  // phase 2: settings, defaults and assets, wherever they stand
+  for (const auto& e : top) {
+    if (e.Name() == "compiler") r.ReadCompiler(e);
+  }
+  for (const auto& e : top) {
+    if (e.Name() == "option") r.ReadOption(e);
+  }
+  for (const auto& e : top) {
+    if (e.Name() == "default") r.defaults.Read(e, ctx.diags, &r.document);
+  }
+  for (const auto& e : top) {
+    if (e.Name() == "asset") r.ReadAsset(e);
+  }
+  ctx.module[r.model].mass_adjustments = r.compiler.mass_adjustments;
+
+  // phase 3: the body tree, then what refers to it
+  r.body_order.push_back(ir::kWorldBody);
+  r.bodies.emplace("world", ir::kWorldBody);
+  for (const auto& e : top) {
+    if (e.Name() == "worldbody") r.LowerWorldBody(e);
+  }
+  // Drake names a floating joint after its body, prefixing '_' while the
+  // name is taken by another joint of the model
+  ir::Module& m = ctx.module;
+  for (JointId id : r.free_joints) {
+    std::string joint_name(m.Text(m[m[id].child.id].name));
+    auto taken = [&](const std::string& n) {
+      Symbol s = m.symbols.Find(n);
+      if (s.empty()) return false;
+      for (size_t j = 0; j < m.joints.size(); ++j) {
+        if (j != id.index() && m.joints[j].model == r.model && m.joints[j].name == s) return true;
+      }
+      return false;
+    };
+    while (taken(joint_name)) joint_name = "_" + joint_name;
+    m[id].name = m.Intern(joint_name);
+  }
+  LowerModelElements(r, top);
+
+  for (const auto& e : top) {
+    const std::string_view tag = e.Name();
+    if (tag == "compiler" || tag == "option" || tag == "default" || tag == "asset" ||
+        tag == "worldbody" || tag == "equality" || tag == "tendon" || tag == "actuator" ||
+        tag == "contact" || tag == "keyframe") {
+      continue;
+    }
+    r.ReadOtherTopLevel(e);
+  }
+  if (ctx.diags.has_errors()) return std::nullopt;
+  return r.model;
+}
+
+}  // namespace
+}  // namespace mdlc::frontend::mjcf
+
+namespace mdlc::frontend {
+
+std::optional<ModelId> ReadMjcf(FileId file, FrontendContext& ctx) {
+  return mjcf::Read(file, ctx);
+}
+
+}  // namespace mdlc::frontend

@@ -1,0 +1,265 @@
+// mjcf_reader_detail.h - what the MJCF frontend's files share (not a public API).
+//
+// The MJCF frontend reads MuJoCo XML as MuJoCo 3.3's compiler interprets it
+// and lowers it into the IR the way Drake's MuJoCo parser lays a model out
+// (MJCF-xxx, BEYOND-xxx in features.md). It works in three phases:
+//
+//   1. Document: the main file and every <include> (expanded lexically, in
+//      place, with cycle detection) are parsed; the reader walks the merged
+//      element sequence with an explicit stack, never recursing per level.
+//   2. Settings and assets: <compiler>, <option>, <size>, <default> classes,
+//      <asset> (meshes, materials, textures) from anywhere in the document.
+//   3. Lowering: <worldbody> (bodies, joints, geoms, sites, cameras), then the
+//      model elements that refer to it: <equality>, <tendon>, <actuator>,
+//      <contact>, <keyframe> (mjcf_elements.cc), plus warnings for the
+//      elements the plant cannot hold.
+//
+// Files: mjcf_reader.cc (entry, phases), mjcf_document.cc (includes),
+// mjcf_defaults.cc (classes, attribute lookup, warnings), mjcf_settings.cc
+// (compiler, option, other top-level sections), mjcf_orientation.{h,cc}
+// (rotation conversions, pure), mjcf_pose.cc (pose attributes of elements),
+// mjcf_schema.cc (known attributes per element), mjcf_assets.cc,
+// mjcf_body.cc (the worldbody walk, bodies, inertial), mjcf_joint.cc
+// (joints and their placement), mjcf_geom.cc (geoms, sites, cameras),
+// mjcf_elements*.cc (equality, tendon, actuator, contact, keyframe).
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <set>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "frontend/frontend.h"
+#include "frontend/xml/attribute_reader.h"
+#include "frontend/xml/xml_document.h"
+#include "ir/module.h"
+
+namespace mdlc::frontend::mjcf {
+
+// ---------------------------------------------------------------------------
+// Compiler and option settings (MJCF-002..007, BEYOND-006)
+// ---------------------------------------------------------------------------
+
+enum class InertiaFromGeom { False, True, Auto };
+
+struct CompilerSettings {
+  bool angle_in_degrees = true;  // compiler@angle: degree is MuJoCo's default
+  std::string eulerseq = "xyz";  // compiler@eulerseq: 3 of xyzXYZ
+  bool autolimits = true;
+  InertiaFromGeom inertia_from_geom = InertiaFromGeom::Auto;
+  int inertia_group_min = 0, inertia_group_max = 5;  // compiler@inertiagrouprange
+  std::string meshdir, texturedir, assetdir;          // as written (relative to the main file)
+  bool fitaabb = false;
+  bool discard_visual = false;
+  bool fusestatic = false;
+  ir::MassAdjustments mass_adjustments;  // boundmass, boundinertia, balanceinertia, settotalmass
+
+  /// Radians from a value in the compiler's angle unit.
+  double Angle(double v) const;
+};
+
+struct MjcfDocument;
+
+// ---------------------------------------------------------------------------
+// Default classes (MJCF-011, MJCF-012)
+// ---------------------------------------------------------------------------
+
+/// An attribute as an element sees it after defaults: written on the element
+/// itself, or inherited from a default class (then `loc` is where the
+/// default class element wrote it, so diagnostics point at the real text).
+using Attribute = xml::XmlAttribute;
+
+/// The default-class tree: class name -> per element kind ("geom", "joint",
+/// "motor", ...), the default element of that kind in that class, with the
+/// parent chain for inheritance.
+class DefaultClasses {
+ public:
+  /// Reads one top-level <default> tree (nested classes by a work list);
+  /// `document` expands includes inside it when given.
+  void Read(const xml::XmlElement& default_element, DiagnosticEngine& diags,
+            const MjcfDocument* document = nullptr);
+  bool Has(std::string_view class_name) const;
+  /// The attribute `name` for an element of `kind` in class `class_name`:
+  /// searched in the class's <kind> element, then its ancestors'. Not
+  /// present (`!present()`) when no class in the chain gives it.
+  Attribute Lookup(std::string_view class_name, std::string_view kind,
+                   std::string_view name) const;
+  /// The <kind> default elements of `class_name` and its ancestors, nearest
+  /// first (attributes that MuJoCo overwrites element-wise, like geom@size,
+  /// are layered from the back).
+  std::vector<xml::XmlElement> Chain(std::string_view class_name, std::string_view kind) const;
+
+ private:
+  struct ClassNode {
+    std::string name;
+    int parent = -1;  // index into classes_, -1 for the root ("main")
+    std::unordered_map<std::string, xml::XmlElement> kinds;  // "geom" -> <geom ...>
+  };
+  std::vector<ClassNode> classes_;
+  std::unordered_map<std::string, int> by_name_;
+};
+
+/// An element with the default class it uses resolved once: `Get` returns
+/// the element's own attribute, else the class chain's. MuJoCo applies the
+/// class to elements of the same kind; actuator shortcuts (motor, position,
+/// ...) read their own kind.
+class Element {
+ public:
+  Element(xml::XmlElement e, std::string_view kind, std::string class_name,
+          const DefaultClasses& defaults)
+      : e_(e), kind_(kind), class_(std::move(class_name)), defaults_(&defaults) {}
+
+  const xml::XmlElement& xml() const { return e_; }
+  Loc loc() const { return e_.GetLoc(); }
+  std::string_view class_name() const { return class_; }
+  Attribute Get(std::string_view name) const;
+  /// True if the element itself writes the attribute (not a default).
+  bool HasOwn(std::string_view name) const { return e_.Attribute(name).present(); }
+  /// The element, then its class chain's <kind> defaults, nearest first.
+  std::vector<xml::XmlElement> Layers() const;
+  std::string_view kind() const { return kind_; }
+
+ private:
+  xml::XmlElement e_;
+  std::string_view kind_;
+  std::string class_;
+  const DefaultClasses* defaults_;
+};
+
+// ---------------------------------------------------------------------------
+// The reader's state, shared by every phase
+// ---------------------------------------------------------------------------
+
+struct MeshAsset {
+  std::string name;
+  Loc loc;
+  ir::Mesh mesh;  // uri as written, resolved path (meshdir rules, MJCF-006), scale
+  ir::MeshInertia inertia = ir::MeshInertia::Legacy;  // mesh@inertia (MuJoCo 3.3: legacy)
+  /// The file is missing (already reported): geoms naming the mesh are
+  /// dropped quietly instead of being reported as naming an unknown mesh.
+  bool missing_file = false;
+};
+
+/// The main file and every file its <include>s name (MJCF-001). Documents
+/// are never edited: an <include> element stays in its DOM and `Children`
+/// splices the included root's children in its place.
+struct MjcfDocument {
+  std::vector<std::shared_ptr<const xml::XmlDocument>> documents;
+  /// <include> node -> root element of the document it names
+  std::unordered_map<const void*, xml::XmlElement> includes;
+
+  /// Children of `e` in document order with every <include> expanded in place
+  /// (nested includes too; an include that failed to load contributes nothing).
+  std::vector<xml::XmlElement> Children(const xml::XmlElement& e) const;
+};
+
+/// Loads every include reachable from `root` (explicit stack). Reports
+/// missing files, unparsable files, cycles and repeated includes at the
+/// <include>; returns false after an error.
+bool LoadIncludes(const xml::XmlElement& root, const std::string& main_dir, FrontendContext& ctx,
+                  MjcfDocument& document);
+
+struct MjcfReader {
+  MjcfReader(FrontendContext& context, std::string main_directory)
+      : ctx(context), attrs(context.diags), main_dir(std::move(main_directory)) {}
+
+  FrontendContext& ctx;
+  xml::AttributeReader attrs;
+  ModelId model;
+  std::string main_dir;  // directory of the main file: includes and assets resolve from here
+  MjcfDocument document;
+  std::string model_name;  // the instance's name (camera names use it)
+
+  CompilerSettings compiler;
+  DefaultClasses defaults;
+  std::unordered_map<std::string, MeshAsset> meshes;
+  std::unordered_map<std::string, MaterialId> materials;
+
+  // Entities by their MJCF name, as elements refer to them. "world" is the
+  // world body. Unnamed entities are not here.
+  std::unordered_map<std::string, BodyId> bodies;
+  std::unordered_map<std::string, JointId> joints;
+  std::unordered_map<std::string, GeometryId> geoms;  // the proximity registration when there is one
+  std::unordered_map<std::string, FrameId> sites;
+  /// Every body in document order, world first (keyframe and equality
+  /// lookups by index), and each body's MJCF joints in document order.
+  std::vector<BodyId> body_order;
+  /// Per MJCF joint (1-dof: hinge, slide): armature, so an actuator can turn
+  /// it into rotor inertia (MJCF-024); ref, the joint's qpos0.
+  std::unordered_map<uint32_t, double> joint_armature;  // by JointId index
+  /// Every MJCF joint in document order (the qpos layout of keyframes).
+  std::vector<JointId> joint_order;
+
+  /// The default class an element uses: its own `class`, else the nearest
+  /// enclosing childclass (passed by the caller), else "main". An unknown
+  /// class is an error at the attribute.
+  std::string ClassFor(const xml::XmlElement& e, std::string_view childclass);
+  Element Resolve(const xml::XmlElement& e, std::string_view kind, std::string_view childclass) {
+    return Element(e, kind, ClassFor(e, childclass), defaults);
+  }
+
+  /// One warning per (element kind, attribute) the plant cannot hold, as
+  /// Drake's parser gives them; unknown attributes get a distinct warning.
+  void WarnUnsupported(const xml::XmlElement& e, std::string_view what);
+
+  DiagnosticEngine& diags() { return ctx.diags; }
+  ir::Module& module() { return ctx.module; }
+
+  /// Children of `e` with includes expanded (MjcfDocument::Children).
+  std::vector<xml::XmlElement> Children(const xml::XmlElement& e) const {
+    return document.Children(e);
+  }
+
+  // --- mjcf_defaults.cc ---
+  /// One warning per (element kind, name): an attribute or child element
+  /// MuJoCo knows that the plant cannot hold (`why` says what happens).
+  void WarnOnce(Loc loc, DiagKind kind, std::string_view element, std::string_view name,
+                std::string_view why = "is not supported and is ignored");
+  /// Warns about attributes of `e` outside MuJoCo's schema for it (a
+  /// misspelling, most likely; MuJoCo itself rejects them).
+  void CheckAttributes(const xml::XmlElement& e, std::string_view schema_kind);
+  std::set<std::string> warned;  // "element\nname" already warned about
+
+  // --- mjcf_pose.cc ---
+  /// pos + orientation of an element (MJCF-010) with MuJoCo's default rule:
+  /// the element's own alternative orientation (axisangle, xyaxes, zaxis,
+  /// euler) wins, then the nearest class's, then quat (own, then class).
+  /// Reports bad values and more than one orientation on the element.
+  std::optional<Transform> ReadPose(const Element& e);
+  /// A vector attribute of up to `n` values that MuJoCo overwrites element
+  /// by element (geom@size, geom@friction): start from `init`, then apply
+  /// each layer from the root class to the element. nullopt after an error.
+  std::optional<std::vector<double>> LayeredVector(const Element& e, std::string_view name,
+                                                   size_t n, std::vector<double> init);
+  /// A number (own or default); `fallback` when absent; nullopt after an error.
+  std::optional<double> Number(const Element& e, std::string_view name, double fallback);
+  /// Exactly `n` numbers (own or default); nullopt when absent or bad.
+  std::optional<std::vector<double>> Numbers(const Element& e, std::string_view name, size_t n);
+  /// MuJoCo's booleans: "true"/"false" only.
+  std::optional<bool> Boolean(const Element& e, std::string_view name, bool fallback);
+
+  // --- mjcf_settings.cc ---
+  void ReadCompiler(const xml::XmlElement& e);
+  void ReadOption(const xml::XmlElement& e);
+  void ReadOtherTopLevel(const xml::XmlElement& e);
+
+  // --- mjcf_assets.cc ---
+  void ReadAsset(const xml::XmlElement& e);
+
+  // --- mjcf_body.cc ---
+  void LowerWorldBody(const xml::XmlElement& worldbody);
+  /// Free joints are named after their body once every joint exists (Drake
+  /// names floating joints at Finalize, prefixing '_' on a clash).
+  std::vector<JointId> free_joints;
+  int num_cameras = 0;
+};
+
+/// Phase 3b: <equality>, <tendon>, <actuator>, <contact>, <keyframe> under
+/// `root` (the merged document's top-level elements, in order).
+void LowerModelElements(MjcfReader& reader, const std::vector<xml::XmlElement>& top_level);
+
+}  // namespace mdlc::frontend::mjcf

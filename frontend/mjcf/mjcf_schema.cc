@@ -1,0 +1,99 @@
+// mjcf_schema.cc - the attributes MuJoCo 3.3's schema allows on the
+// elements this frontend reads. MuJoCo rejects any other attribute; mdlc
+// warns (UnknownAttribute: most likely a misspelling) and goes on.
+#include <fmt/format.h>
+
+#include <initializer_list>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "frontend/mjcf/mjcf_reader_detail.h"
+
+namespace mdlc::frontend::mjcf {
+namespace {
+
+using List = std::vector<std::string_view>;
+
+const std::unordered_map<std::string_view, List>& Schema() {
+  static const std::unordered_map<std::string_view, List> schema = {
+      {"mujoco", {"model"}},
+      {"compiler",
+       {"autolimits", "boundmass", "boundinertia", "settotalmass", "balanceinertia", "strippath",
+        "coordinate", "angle", "fitaabb", "eulerseq", "meshdir", "texturedir", "discardvisual",
+        "usethread", "fusestatic", "inertiafromgeom", "inertiagrouprange", "saveinertial",
+        "assetdir", "alignfree"}},
+      {"option",
+       {"timestep", "impratio", "tolerance", "ls_tolerance", "noslip_tolerance", "ccd_tolerance",
+        "gravity", "wind", "magnetic", "density", "viscosity", "o_margin", "o_solref",
+        "o_solimp", "o_friction", "integrator", "cone", "jacobian", "solver", "iterations",
+        "ls_iterations", "noslip_iterations", "ccd_iterations", "sdf_iterations",
+        "sdf_initpoints", "actuatorgroupdisable", "apirate", "collision", "mpr_iterations",
+        "mpr_tolerance"}},
+      {"size",
+       {"memory", "njmax", "nconmax", "nstack", "nuserdata", "nkey", "nuser_body", "nuser_jnt",
+        "nuser_geom", "nuser_site", "nuser_cam", "nuser_tendon", "nuser_actuator",
+        "nuser_sensor"}},
+      {"statistic", {"meaninertia", "meanmass", "meansize", "extent", "center"}},
+      {"default", {"class"}},
+      {"body",
+       {"name", "childclass", "pos", "quat", "mocap", "axisangle", "xyaxes", "zaxis", "euler",
+        "gravcomp", "user"}},
+      {"frame", {"name", "childclass", "pos", "quat", "axisangle", "xyaxes", "zaxis", "euler"}},
+      {"inertial",
+       {"pos", "quat", "mass", "diaginertia", "axisangle", "xyaxes", "zaxis", "euler",
+        "fullinertia"}},
+      {"joint",
+       {"name", "class", "type", "group", "pos", "axis", "springdamper", "limited",
+        "actuatorfrclimited", "solreflimit", "solimplimit", "solreffriction", "solimpfriction",
+        "stiffness", "range", "actuatorfrcrange", "actuatorgravcomp", "margin", "ref",
+        "springref", "armature", "damping", "frictionloss", "user"}},
+      {"freejoint", {"name", "group", "align"}},
+      {"geom",
+       {"name", "class", "type", "contype", "conaffinity", "condim", "group", "priority", "size",
+        "material", "friction", "mass", "density", "shellinertia", "solmix", "solref", "solimp",
+        "margin", "gap", "fromto", "pos", "quat", "axisangle", "xyaxes", "zaxis", "euler",
+        "hfield", "mesh", "fitscale", "rgba", "fluidshape", "fluidcoef", "user"}},
+      {"site",
+       {"name", "class", "type", "group", "pos", "quat", "material", "size", "fromto",
+        "axisangle", "xyaxes", "zaxis", "euler", "rgba", "user"}},
+      {"camera",
+       {"name", "class", "orthographic", "fovy", "ipd", "resolution", "pos", "quat",
+        "axisangle", "xyaxes", "zaxis", "euler", "mode", "target", "focal", "focalpixel",
+        "principal", "principalpixel", "sensorsize", "user"}},
+      {"mesh",
+       {"name", "class", "content_type", "file", "vertex", "normal", "texcoord", "face",
+        "refpos", "refquat", "scale", "smoothnormal", "maxhullvert", "inertia", "builtin",
+        "params", "material"}},
+      {"material",
+       {"name", "class", "texture", "texrepeat", "texuniform", "emission", "specular",
+        "shininess", "reflectance", "metallic", "roughness", "rgba"}},
+  };
+  return schema;
+}
+
+}  // namespace
+
+void MjcfReader::CheckAttributes(const xml::XmlElement& e, std::string_view schema_kind) {
+  const auto& schema = Schema();
+  auto it = schema.find(schema_kind);
+  if (it == schema.end()) return;
+  const List& known = it->second;
+  // attribute locations: look each name up again (names are few)
+  std::vector<std::string_view> unknown;
+  e.ForEachAttributeName([&](std::string_view name) {
+    if (name.find(':') != std::string_view::npos) return;  // other tools' namespaces
+    for (std::string_view k : known) {
+      if (k == name) return;
+    }
+    unknown.push_back(name);
+  });
+  for (std::string_view name : unknown) {
+    diags().Report(DiagKind::UnknownAttribute, e.Attribute(name).loc,
+                   fmt::format("'{}' is not an attribute of <{}> in MuJoCo's schema and is "
+                               "ignored (MuJoCo rejects it)",
+                               name, e.Name()));
+  }
+}
+
+}  // namespace mdlc::frontend::mjcf

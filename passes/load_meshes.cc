@@ -1,0 +1,77 @@
+// load-meshes pass: reads the mesh files the compiler computes with into the
+// PassContext's mesh cache, in parallel, each file once (BEYOND-001).
+//
+// Which meshes: those whose geometry is needed, namely a mesh a primitive
+// is fitted to (MJCF, BEYOND-002), a mesh geometry that contributes to a
+// body's mass (MJCF mass_contribution on a mass_from_geometry body), and a
+// proximity mesh of a body whose inertia comes from its collisions
+// (SDFormat <inertial auto="true">). Other meshes (visuals, deformable .vtk
+// volume meshes, ...) are not read, as Drake's parser does not read them:
+// a placeholder or unreadable visual mesh is no error.
+//
+// Reads: ir::Mesh::resolved (set by resolve-assets). Writes:
+// PassContext::meshes. A file that cannot be read, or holds no triangles,
+// is an error at the attribute naming it.
+#include <fmt/format.h>
+
+#include <set>
+
+#include "passes/pass_registry.h"
+
+namespace mdlc::passes {
+namespace {
+
+class LoadMeshesPass : public Pass {
+ public:
+  std::string_view name() const override { return "load-meshes"; }
+  std::string_view description() const override {
+    return "Read the mesh files that mass properties and fitted primitives need (each once, in "
+           "parallel)";
+  }
+  ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Tree; }
+  bool Run(PassContext& ctx) override {
+    struct Use {
+      std::string path;
+      Loc loc;
+    };
+    std::vector<Use> uses;
+    for (const ir::Geometry& g : ctx.module.geometries) {
+      auto add = [&](const ir::Mesh& mesh) {
+        // an unresolved mesh was reported by resolve-assets
+        if (!mesh.resolved.empty()) {
+          uses.push_back({mesh.resolved, mesh.uri_loc.valid() ? mesh.uri_loc : g.loc});
+        }
+      };
+      if (g.fit_to_mesh) add(g.fit_to_mesh->mesh);
+      const auto* mesh = std::get_if<ir::Mesh>(&g.shape);
+      if (!mesh || !g.body.resolved()) continue;
+      const ir::Body& b = ctx.module[g.body.id];
+      const bool for_mass = (b.mass_from_geometry && g.mass_contribution) ||
+                            (b.inertia_from_collisions && (g.roles & ir::kProximityRole));
+      if (for_mass) add(*mesh);
+    }
+    if (uses.empty()) return true;
+    std::vector<std::string> paths;
+    for (const Use& u : uses) paths.push_back(u.path);
+    ctx.meshes->Prefetch(paths);
+
+    const size_t errors_before = ctx.diags.error_count();
+    // one report per place that names a bad file (MJCF geoms share their asset's)
+    std::set<std::tuple<std::string, uint32_t, uint32_t, uint32_t>> reported;
+    for (const Use& u : uses) {
+      const mesh::MeshOrError m = ctx.meshes->Get(u.path);
+      if (m.ok()) continue;
+      if (!reported.emplace(u.path, u.loc.file.value, u.loc.line, u.loc.column).second) {
+        continue;
+      }
+      ctx.diags.Report(DiagKind::BadMesh, u.loc, m.error);
+    }
+    return ctx.diags.error_count() == errors_before;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Pass> CreateLoadMeshesPass() { return std::make_unique<LoadMeshesPass>(); }
+
+}  // namespace mdlc::passes

@@ -1,0 +1,217 @@
+// mass-from-geometry pass: MJCF bodies whose mass properties come from their
+// geoms (compiler@inertiafromgeom; MJCF-031), then MuJoCo's whole-model
+// corrections (compiler boundmass, boundinertia, balanceinertia,
+// settotalmass; BEYOND-006), as MuJoCo 3.3.8 computes them.
+//
+// Per geometry with a MassContribution on a body with mass_from_geometry:
+// * measure: the primitive's volume (its surface area with shellinertia,
+//   shape_mass.h), or the mesh's per mesh@inertia (mesh/mass_properties.h);
+//   half spaces have none; shellinertia on a mesh is an error (MuJoCo: the
+//   mesh asset's inertia says it);
+// * mass: geom@mass when given (0 stays 0; a measure of at most 1e-14 gives
+//   nothing), else density * measure;
+// * geometries of mass at most 1e-14 are left out; a body left with none is
+//   massless (no Inertial), as in MuJoCo.
+// The sum's inertia about the center of mass must have eigenvalues of at
+// least 1e-14 when several geometries add up (MuJoCo's check).
+//
+// Then, per model instance with MassAdjustments, for each of its bodies
+// that has mass properties from the file or from geometry: mass raised to
+// boundmass, principal moments raised to boundinertia, moments violating
+// A + B >= C replaced by their mean when balanceinertia; finally every
+// mass and inertia of the model scaled so that the masses sum to
+// settotalmass. (MuJoCo applies the first three to each body as it compiles
+// it and the scaling after the whole model; bodies the frontend adds itself,
+// without mass properties, are left alone.)
+//
+// Reads: Body::mass_from_geometry, Geometry::mass_contribution, shapes and
+// X_BG (after fit-to-mesh), meshes from PassContext::meshes,
+// ModelInstance::mass_adjustments. Writes: Body::inertial.
+#include <fmt/format.h>
+
+#include <Eigen/Eigenvalues>
+
+#include "passes/mesh/mass_properties.h"
+#include "passes/pass_registry.h"
+#include "passes/shape_mass.h"
+
+namespace mdlc::passes {
+namespace {
+
+constexpr double kEps = 1e-14;  // MuJoCo's mjEPS
+
+class MassFromGeometryPass : public Pass {
+ public:
+  std::string_view name() const override { return "mass-from-geometry"; }
+  std::string_view description() const override {
+    return "Compute MJCF bodies' mass properties from their geoms and apply the compiler's mass "
+           "corrections";
+  }
+  ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Tree; }
+  bool Run(PassContext& ctx) override {
+    const size_t errors_before = ctx.diags.error_count();
+    FromGeometry(ctx);
+    for (size_t i = 0; i < ctx.module.models.size(); ++i) {
+      if (ctx.module.models[i].mass_adjustments) Adjust(ctx, ModelId(i));
+    }
+    return ctx.diags.error_count() == errors_before;
+  }
+
+ private:
+  struct Part {
+    double mass = 0;
+    Eigen::Vector3d com = Eigen::Vector3d::Zero();      // in G
+    Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  // about com, G axes
+  };
+  std::optional<Part> PartOf(PassContext& ctx, const ir::Geometry& g);
+  void FromGeometry(PassContext& ctx);
+  void Adjust(PassContext& ctx, ModelId model);
+};
+
+std::optional<MassFromGeometryPass::Part> MassFromGeometryPass::PartOf(PassContext& ctx,
+                                                                        const ir::Geometry& g) {
+  const ir::MassContribution& c = *g.mass_contribution;
+  double measure = 0;
+  Eigen::Vector3d com = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d unit = Eigen::Matrix3d::Zero();
+  if (const auto* mesh = std::get_if<ir::Mesh>(&g.shape)) {
+    if (c.shell) {
+      ctx.diags.Report(DiagKind::BadMassProperties, g.loc,
+                       fmt::format("geom '{}': shellinertia does not apply to a mesh; a mesh's "
+                                   "inertia is set on the mesh asset (inertia=\"shell\")",
+                                   ctx.module.Text(g.name)));
+      return std::nullopt;
+    }
+    if (mesh->resolved.empty()) return std::nullopt;  // resolve-assets reported it
+    const mesh::MeshOrError loaded = ctx.meshes->Get(mesh->resolved);
+    if (!loaded.ok()) return std::nullopt;  // load-meshes reported it
+    std::string why;
+    auto props = mesh::MujocoMeshMassProperties(mesh::Scaled(*loaded.mesh, mesh->scale),
+                                                c.mesh_inertia, &why);
+    if (!props) {
+      ctx.diags
+          .Report(DiagKind::BadMassProperties, g.loc,
+                  fmt::format("geom '{}': no mass properties from mesh '{}': {}",
+                              ctx.module.Text(g.name), mesh->uri, why))
+          .Note(mesh->uri_loc, "the mesh is named here");
+      return std::nullopt;
+    }
+    measure = props->mass.measure;
+    com = props->mass.com;
+    unit = props->mass.inertia;
+  } else {
+    auto u = c.shell ? MujocoShellOf(g.shape) : SolidOf(g.shape);
+    if (!u) return Part{};  // half space: nothing
+    measure = u->measure;
+    unit = u->inertia;
+  }
+  Part p;
+  if (c.mass) {
+    if (*c.mass != 0 && measure > kEps) p.mass = *c.mass;
+  } else if (c.density != 0) {
+    p.mass = c.density * measure;
+  }
+  if (p.mass < 0 || measure < 0) {
+    ctx.diags.Report(DiagKind::BadMassProperties, g.loc,
+                     fmt::format("geom '{}': mass or density is negative", ctx.module.Text(g.name)));
+    return std::nullopt;
+  }
+  p.com = com;
+  if (p.mass > 0) p.inertia = unit * (p.mass / measure);
+  return p;
+}
+
+void MassFromGeometryPass::FromGeometry(PassContext& ctx) {
+  ir::Module& m = ctx.module;
+  bool any = false;
+  for (const ir::Body& b : m.bodies) any |= b.mass_from_geometry && !b.is_world;
+  if (!any) return;
+  std::vector<MassSum> sums(m.bodies.size());
+  for (const ir::Geometry& g : m.geometries) {
+    if (!g.mass_contribution || !g.body.resolved()) continue;
+    const ir::Body& b = m[g.body.id];
+    if (!b.mass_from_geometry || b.is_world) continue;
+    auto part = PartOf(ctx, g);
+    if (!part || part->mass <= kEps) continue;
+    sums[g.body.id.index()].Add(part->mass, g.X_BG, part->com, part->inertia);
+  }
+  for (size_t i = 0; i < m.bodies.size(); ++i) {
+    ir::Body& b = m.bodies[i];
+    if (!b.mass_from_geometry || b.is_world) continue;
+    const MassSum& s = sums[i];
+    if (s.parts() == 0) {
+      b.inertial.reset();  // massless, as MuJoCo leaves it
+      continue;
+    }
+    ir::Inertial in = s.ToInertial(b.loc);
+    if (s.parts() > 1) {
+      const double smallest =
+          Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(s.inertia_about_com()).eigenvalues()[0];
+      if (smallest < kEps) {
+        ctx.diags.Report(DiagKind::BadMassProperties, b.loc,
+                         fmt::format("body '{}': the inertia its geoms add up to has a principal "
+                                     "moment below 1e-14",
+                                     m.Text(b.name)));
+        continue;
+      }
+    }
+    b.inertial = in;
+  }
+}
+
+void MassFromGeometryPass::Adjust(PassContext& ctx, ModelId model) {
+  ir::Module& m = ctx.module;
+  const ir::MassAdjustments& adj = *m[model].mass_adjustments;
+  auto adjusted = [&](const ir::Body& b) {
+    return b.model == model && !b.is_world && (b.inertial || b.mass_from_geometry);
+  };
+  for (ir::Body& b : m.bodies) {
+    if (!adjusted(b)) continue;
+    if (!b.inertial) {
+      if (adj.bound_mass <= 0 && adj.bound_inertia <= 0) continue;
+      b.inertial.emplace();  // massless until bounded, at the body origin
+      b.inertial->loc = b.loc;
+    }
+    ir::Inertial& in = *b.inertial;
+    in.mass = std::max(in.mass, adj.bound_mass);
+    Eigen::Vector3d moments;
+    Eigen::Matrix3d axes;
+    mesh::PrincipalAxes(InertiaMatrix(in), &moments, &axes);
+    bool changed = false;
+    for (int k = 0; k < 3; ++k) {
+      if (moments[k] < adj.bound_inertia) {
+        moments[k] = adj.bound_inertia;
+        changed = true;
+      }
+    }
+    // MuJoCo's test is exact, no tolerance
+    const double a = moments[0], b2 = moments[1], c = moments[2];
+    if (adj.balance_inertia && (a + b2 < c || a + c < b2 || b2 + c < a)) {
+      moments.setConstant(moments.sum() / 3);
+      changed = true;
+    }
+    if (changed) SetInertiaMatrix(in, axes * moments.asDiagonal() * axes.transpose());
+  }
+  if (adj.total_mass && *adj.total_mass > 0) {
+    double total = 0;
+    for (const ir::Body& b : m.bodies) {
+      if (adjusted(b) && b.inertial) total += b.inertial->mass;
+    }
+    constexpr double kMinVal = 1e-15;  // MuJoCo's mjMINVAL: no division by zero
+    const double scale = std::max(kMinVal, *adj.total_mass / std::max(kMinVal, total));
+    for (ir::Body& b : m.bodies) {
+      if (!adjusted(b) || !b.inertial) continue;
+      ir::Inertial& in = *b.inertial;
+      in.mass *= scale;
+      SetInertiaMatrix(in, InertiaMatrix(in) * scale);
+    }
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<Pass> CreateMassFromGeometryPass() {
+  return std::make_unique<MassFromGeometryPass>();
+}
+
+}  // namespace mdlc::passes

@@ -1,0 +1,71 @@
+#include "passes/mesh/mesh_loader.h"
+
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <assimp/Importer.hpp>
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <map>
+#include <tuple>
+
+namespace mdlc::mesh {
+namespace {
+
+/// Appends the triangles of `node` and its children, placed by the
+/// accumulated node transform, welding vertices by exact position.
+void Collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent,
+             std::map<std::tuple<double, double, double>, int>& index, TriangleMesh& out) {
+  const aiMatrix4x4 world = parent * node.mTransformation;
+  for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+    const aiMesh& m = *scene.mMeshes[node.mMeshes[i]];
+    std::vector<int> ids(m.mNumVertices);
+    for (unsigned v = 0; v < m.mNumVertices; ++v) {
+      const aiVector3D p = world * m.mVertices[v];
+      const std::tuple<double, double, double> key{p.x, p.y, p.z};
+      auto [it, inserted] = index.emplace(key, static_cast<int>(out.vertices.size()));
+      if (inserted) out.vertices.emplace_back(p.x, p.y, p.z);
+      ids[v] = it->second;
+    }
+    for (unsigned f = 0; f < m.mNumFaces; ++f) {
+      const aiFace& face = m.mFaces[f];
+      if (face.mNumIndices != 3) continue;  // points and lines have no area
+      out.triangles.emplace_back(ids[face.mIndices[0]], ids[face.mIndices[1]],
+                                 ids[face.mIndices[2]]);
+    }
+  }
+  for (unsigned c = 0; c < node.mNumChildren; ++c) {
+    Collect(scene, *node.mChildren[c], world, index, out);
+  }
+}
+
+}  // namespace
+
+MeshOrError LoadMesh(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    return {nullptr, fmt::format("cannot read mesh file '{}'", path)};
+  }
+  Assimp::Importer importer;
+  // assimp turns a Collada file's Z_UP into Y_UP by rotating the scene;
+  // robot meshes mean their coordinates as written (as ROS tools read them)
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+  // Triangulate polygons (quads, n-gons); no other processing: normals,
+  // texture coordinates and materials do not matter for geometry.
+  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
+  if (!scene || !scene->mRootNode) {
+    return {nullptr,
+            fmt::format("cannot read mesh file '{}': {}", path, importer.GetErrorString())};
+  }
+  auto mesh = std::make_shared<TriangleMesh>();
+  std::map<std::tuple<double, double, double>, int> index;
+  Collect(*scene, *scene->mRootNode, aiMatrix4x4(), index, *mesh);
+  if (mesh->triangles.empty()) {
+    return {nullptr, fmt::format("mesh file '{}' holds no triangles", path)};
+  }
+  return {std::move(mesh), {}};
+}
+
+}  // namespace mdlc::mesh

@@ -1,0 +1,22 @@
+// mesh_loader.h - reads a mesh file into one TriangleMesh through assimp
+// (BEYOND-001): OBJ (a missing .mtl is fine), STL (ASCII and binary), DAE,
+// glTF/GLB, PLY, and whatever else assimp reads.
+//
+// Every mesh of the file's scene is merged, each placed by its node's
+// transform. Vertices at exactly the same position are merged, so that
+// formats that store triangle soups (STL) or split vertices by normal still
+// give a connected surface whose closedness can be checked. The result is
+// unscaled: consumers apply the geometry's scale (Scaled()).
+#pragma once
+
+#include <string>
+
+#include "passes/mesh/triangle_mesh.h"
+
+namespace mdlc::mesh {
+
+/// The mesh in `path`; an error when the file cannot be read or parsed, or
+/// holds no triangles.
+MeshOrError LoadMesh(const std::string& path);
+
+}  // namespace mdlc::mesh

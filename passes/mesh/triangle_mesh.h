@@ -1,0 +1,47 @@
+// triangle_mesh.h - an indexed triangle mesh, the one mesh type the mesh
+// library computes with.
+//
+// Vertices are in the mesh file's frame (meters once scaled); each triangle
+// names three vertices, counter-clockwise seen from outside for a properly
+// oriented closed surface.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mdlc::mesh {
+
+struct TriangleMesh {
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<Eigen::Vector3i> triangles;
+
+  bool empty() const { return triangles.empty(); }
+  /// The three corners of triangle `t`.
+  const Eigen::Vector3d& corner(size_t t, int k) const { return vertices[triangles[t][k]]; }
+};
+
+/// A loaded mesh, or why there is none. Shared: the cache hands the same
+/// immutable mesh to every geometry that names the file.
+struct MeshOrError {
+  std::shared_ptr<const TriangleMesh> mesh;
+  std::string error;  // set when `mesh` is null
+  bool ok() const { return mesh != nullptr; }
+};
+
+/// `mesh` with every vertex scaled component-wise by `scale`. A mirroring
+/// scale (negative product) reverses the triangles' winding so that a closed
+/// mesh stays outward-oriented, as MuJoCo and Drake both do.
+TriangleMesh Scaled(const TriangleMesh& mesh, const Eigen::Vector3d& scale);
+
+/// Whether each edge is shared by exactly two triangles (closed) and those
+/// two traverse it in opposite directions (consistently oriented).
+struct MeshTopology {
+  bool closed = false;
+  bool consistently_oriented = false;
+};
+MeshTopology AnalyzeTopology(const TriangleMesh& mesh);
+
+}  // namespace mdlc::mesh

@@ -1,0 +1,1368 @@
+// Differential test: mdlc's plant-json dump of MJCF models against MuJoCo
+// itself, the reference MJCF compiler.
+//
+// Nothing here uses mdlc library code. For every model
+//   1. MuJoCo 3.3.8 (the official WebAssembly build, npm mujoco-js 0.0.7, run
+//      by Node.js: tests/oracle/mujoco_js/mujoco_dump.mjs) loads the file and
+//      dumps its compiled model: bodies, joints, geoms, and at qpos0 plus
+//      seeded random configurations of the hinge and slide joints the world
+//      poses and the joint-space inertia matrix (mj_forward, qM / mj_fullM);
+//      files MuJoCo 3.3.8 rejects go to MuJoCo 2.2.2 (Debian libmujoco-dev:
+//      tests/oracle/mujoco222/mujoco222_dump.cc), a second opinion only;
+//   2. the MuJoCo entities get the names Drake's parser gives them (below);
+//   3. `mdlc compile FILE --emit=plant-json [--q JOINT=VALUE ...]` runs as a
+//      subprocess at each of those configurations and every quantity is
+//      compared by name, never by position.
+//
+// Naming (MJCF-020/022/023/040, Drake's detail_mujoco_parser.cc): a body
+// MuJoCo leaves unnamed is `body<N>`, N the plant's body count when the body
+// is created (the world, every earlier body, and the massless intermediate
+// bodies of earlier bodies); a body with k > 1 joints gets k-1 intermediate
+// bodies `<body>0`, `<body>1`, ... between its parent and itself, joint i
+// joining the (i-1)th to the ith; an unnamed joint is `<parent>-<child>` of
+// those plant bodies; a free joint is the body's `quaternion_floating` joint
+// (its MJCF name is not used); an unnamed geom is `geom<N>`, N its index among
+// its body's geoms (hfield and sdf geoms are not registered and not counted).
+//
+// What is compared, and how closely:
+//   MJCF-010/020/021/022/023  X_WB of every body at every configuration (p,
+//       and the rotation matrix: quaternion sign is a convention), to 1e-9;
+//   MJCF-022/023  joint type, parent and child body, axis_W at every
+//       configuration (hinge, slide), limits (MuJoCo's jnt_range when
+//       jnt_limited, else unbounded) and default position (qpos0, or the
+//       key's qpos, MJCF-008 below), to 1e-9; ball and free joints' default
+//       positions when a key sets them;
+//   MJCF-030/031, BEYOND-001/006  mass, COM (MuJoCo's ipos; none for a massless
+//       body) and inertia about
+//       the COM in the body frame (rebuilt from iquat and the principal
+//       moments), to 1e-6 relative: MuJoCo re-diagonalises every inertia and
+//       keeps mesh vertices in single precision. Inertia entries are scaled by
+//       the body's largest principal moment;
+//   MJCF-040/041/043  every geom: one registration per role set (proximity
+//       unless contype = conaffinity = 0; illustration unless group > 2; a geom
+//       with neither is not registered at all), its
+//       shape in Drake's conventions (box full sizes = 2 x MuJoCo's half
+//       sizes, capsule/cylinder length = 2 x half-length, plane = half space)
+//       to 1e-6 relative, and X_WG at every configuration to 1e-9. Only what
+//       the shape makes observable is compared: a sphere's centre, a capsule's
+//       or cylinder's centre and axis, a half space's normal and offset, the
+//       full pose of boxes, ellipsoids and meshes;
+//   MJCF-050, BEYOND-001  mesh geoms: MuJoCo moves a mesh geom's frame to the
+//       mesh's inertial frame (and records the move as mesh_pos/mesh_quat);
+//       mdlc keeps the frame of the mesh file. The oracle undoes MuJoCo's move
+//       (X_WG_file = X_WG_mujoco * X_mesh^-1) and compares full poses to 1e-6
+//       (mesh_pos comes from single-precision vertices), and the scale. MuJoCo
+//       2.2.2 records no mesh offset: there mesh poses are not compared;
+//   MJCF-022/024  the mass matrix restricted to the hinge and slide dofs at
+//       every configuration, to 1e-6 relative (entry (i,j) scaled by
+//       sqrt(M_ii M_jj)). MuJoCo's qM includes dof_armature on the diagonal
+//       and plant-json's mass_matrix excludes reflected inertia, so the
+//       oracle subtracts the armature; mdlc's reflected_inertia must be 0 (no
+//       actuator) or the armature (MJCF-024).
+// Configuration 0 is mdlc's default configuration and MuJoCo's base state.
+// Keyframes (MJCF-008, the issue's "keyframe (default positions)" item): the
+// key named "home" if there is one, else the first <key>, sets the default
+// configuration: its qpos in MuJoCo's layout over the joints in document
+// order (hinge/slide 1 value, ball 4 (w x y z), free 7 (x y z, w x y z))
+// becomes each joint's default_positions (ball: roll-pitch-yaw; free:
+// [w x y z x y z]). Both dumpers start from that key (mj_resetDataKeyframe's
+// qpos) for configuration 0 and use it as the base of every other
+// configuration (random values overwrite the hinge and slide joints only);
+// without keys the base is qpos0 (every hinge and slide at its ref, MJCF-022).
+//
+// Configuration (all optional):
+//   --mdlc=PATH or env MDLC_BINARY        (default: compiled-in path)
+//   env MDLC_NODE                         Node.js (default: found by CMake)
+//   env MDLC_ORACLE_CONFIGS=N             random configurations (default 3)
+//   env MDLC_ORACLE_MAX_MESSAGES=N        discrepancies printed per test (60)
+//   env MDLC_ORACLE_EXTRA_MODELS=a.xml:dir  extra models (Extra/...) to compare
+//
+// Test layout (value-parameterized, one test per model):
+//   Corpus/MujocoOracle.CompiledModelMatches/<path>   every corpus MJCF
+//   HandMade/MujocoOracle.CompiledModelMatches/<stem> tests/models/mjcf/oracle
+// Corpus files where mdlc legitimately disagrees with MuJoCo are listed in
+// kKnownDisagreements: skipped with the reason when mdlc rejects them or
+// disagrees, a failure ("stale entry") when mdlc compiles them and agrees.
+// Without Node.js or the installed mujoco-js package (tools/setup.sh test runs
+// `npm ci` in tests/oracle/mujoco_js) every case reports itself skipped.
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "oracle_util.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace mdlc::oracle;
+using Eigen::Isometry3d;
+using Eigen::Matrix3d;
+using Eigen::Quaterniond;
+using Eigen::Vector3d;
+using json = nlohmann::json;
+
+#ifndef MDLC_BINARY
+#define MDLC_BINARY ""
+#endif
+#ifndef MDLC_SHARED_DIR
+#define MDLC_SHARED_DIR ""
+#endif
+#ifndef MDLC_TEST_MODELS
+#define MDLC_TEST_MODELS ""
+#endif
+#ifndef MDLC_NODE
+#define MDLC_NODE ""
+#endif
+#ifndef MDLC_MUJOCO_JS_DIR
+#define MDLC_MUJOCO_JS_DIR ""
+#endif
+#ifndef MDLC_MUJOCO222_DUMP
+#define MDLC_MUJOCO222_DUMP ""
+#endif
+
+constexpr double kKinTol = 1e-9;   // poses, axes, limits, default positions
+constexpr double kMassTol = 1e-6;  // mass properties, M(q), geometry sizes, mesh poses
+
+std::string g_mdlc_binary;  // set in main()
+
+std::string MdlcBinary() {
+  if (!g_mdlc_binary.empty()) return g_mdlc_binary;
+  if (const char* env = std::getenv("MDLC_BINARY"); env && *env) return env;
+  return MDLC_BINARY;
+}
+
+// CMake leaves "<VAR>-NOTFOUND" when it finds no program.
+std::string Found(const std::string& s) {
+  return s.size() >= 9 && s.compare(s.size() - 9, 9, "-NOTFOUND") == 0 ? "" : s;
+}
+
+std::string NodeBinary() {
+  if (const char* env = std::getenv("MDLC_NODE"); env && *env) return env;
+  return Found(MDLC_NODE);
+}
+
+fs::path DumpScript() { return fs::path(MDLC_MUJOCO_JS_DIR) / "mujoco_dump.mjs"; }
+
+// Empty when MuJoCo 3.3.8 can run; else why not (the tests skip).
+std::string MujocoJsUnavailable() {
+  if (NodeBinary().empty()) return "Node.js not found at configure time (install nodejs)";
+  if (std::string(MDLC_MUJOCO_JS_DIR).empty()) return "MDLC_MUJOCO_JS_DIR not set";
+  const fs::path pkg = fs::path(MDLC_MUJOCO_JS_DIR) / "node_modules" / "mujoco-js" / "package.json";
+  std::error_code ec;
+  if (!fs::exists(pkg, ec)) {
+    return "mujoco-js is not installed: run `npm ci` in tests/oracle/mujoco_js "
+           "(tools/setup.sh test does)";
+  }
+  return "";
+}
+
+// ---------------------------------------------------------------------------
+// Known disagreements
+// ---------------------------------------------------------------------------
+
+struct KnownDisagreement {
+  const char* path;    // relative to corpus/, or tests/models/mjcf/oracle/<file>
+  const char* reason;  // feature ID and what differs
+};
+
+// Files where mdlc, following Drake or the spec, legitimately differs from
+// MuJoCo. A listed file is
+// skipped with the reason and the discrepancies found; an entry whose file mdlc
+// compiles and that then agrees with MuJoCo in every compared quantity fails
+// as stale.
+const std::vector<KnownDisagreement> kKnownDisagreements = {
+    {"mujoco/model/adhesion/active_adhesion.xml",
+     "MJCF-091: a MuJoCo 2 <composite> (MuJoCo 3 rejects its attributes; the oracle is MuJoCo "
+     "2.2.2): Drake and mdlc warn that composite is unsupported and drop the bodies, joints and "
+     "geoms it generates, which MuJoCo 2.2.2 builds"},
+    {"mujoco/model/composite/cloth.xml",
+     "MJCF-091: a MuJoCo 2 <composite> (MuJoCo 3 rejects its attributes; the oracle is MuJoCo "
+     "2.2.2): Drake and mdlc warn that composite is unsupported and drop the bodies, joints and "
+     "geoms it generates, which MuJoCo 2.2.2 builds"},
+    {"mujoco/model/composite/grid2pin.xml",
+     "MJCF-091: a MuJoCo 2 <composite> (MuJoCo 3 rejects its attributes; the oracle is MuJoCo "
+     "2.2.2): Drake and mdlc warn that composite is unsupported and drop the bodies, joints and "
+     "geoms it generates, which MuJoCo 2.2.2 builds"},
+    {"mujoco/model/composite/loop.xml",
+     "MJCF-091: a MuJoCo 2 <composite> (MuJoCo 3 rejects its attributes; the oracle is MuJoCo "
+     "2.2.2): Drake and mdlc warn that composite is unsupported and drop the bodies, joints and "
+     "geoms it generates, which MuJoCo 2.2.2 builds"},
+    {"mujoco/model/composite/particle.xml",
+     "MJCF-091: a MuJoCo 2 <composite> (MuJoCo 3 rejects its attributes; the oracle is MuJoCo "
+     "2.2.2): Drake and mdlc warn that composite is unsupported and drop the bodies, joints and "
+     "geoms it generates, which MuJoCo 2.2.2 builds"},
+    {"mujoco/model/composite/rope.xml",
+     "MJCF-091: a MuJoCo 2 <composite> (MuJoCo 3 rejects its attributes; the oracle is MuJoCo "
+     "2.2.2): Drake and mdlc warn that composite is unsupported and drop the bodies, joints and "
+     "geoms it generates, which MuJoCo 2.2.2 builds"},
+    {"mujoco/model/composite/softbox.xml",
+     "MJCF-091: a MuJoCo 2 <composite> (MuJoCo 3 rejects its attributes; the oracle is MuJoCo "
+     "2.2.2): Drake and mdlc warn that composite is unsupported and drop the bodies, joints and "
+     "geoms it generates, which MuJoCo 2.2.2 builds"},
+    {"mujoco/model/flag/flag.xml",
+     "MJCF-091: a MuJoCo 2 <composite> (MuJoCo 3 rejects its attributes; the oracle is MuJoCo "
+     "2.2.2): Drake and mdlc warn that composite is unsupported and drop the bodies, joints and "
+     "geoms it generates, which MuJoCo 2.2.2 builds"},
+    {"mujoco/model/hammock/hammock.xml",
+     "MJCF-091: a MuJoCo 2 <composite> (MuJoCo 3 rejects its attributes; the oracle is MuJoCo "
+     "2.2.2): Drake and mdlc warn that composite is unsupported and drop the bodies, joints and "
+     "geoms it generates, which MuJoCo 2.2.2 builds"},
+    {"mujoco_menagerie/iit_softfoot/scene.xml",
+     "MJCF-091: <attach> (MuJoCo 3 model composition: softfoot.xml's bodies attached with prefix "
+     "sf_) is warned about and ignored, as in Drake; MuJoCo builds the attached bodies"},
+};
+
+// Files where MuJoCo's own mass properties are less accurate than the
+// tolerance, for a reason its source shows (MJCF-031, BEYOND-001): MuJoCo
+// diagonalises each mesh's unit-density inertia with mjuu_eig3
+// (user_util.cc), which stops once the largest off-diagonal entry is below
+// 1e-12 in absolute terms. Scaled by density 1000 that leaves MuJoCo's body
+// inertia entries, and the mass matrix entries built from them, up to about
+// 1e-9 kg m^2 off per mesh (robotiq 2f85 base_mount Iyz: mdlc 1.275e-9,
+// MuJoCo -6.0e-12; allegro th_medial Ixy: mdlc 2.08e-10, MuJoCo 0, with
+// moments near 7e-6). These files are compared in full like every other,
+// with kMujocoEigenResidual as an absolute floor on inertia and M entries.
+const char* const kMujocoEigenResidualFiles[] = {
+    "mujoco_menagerie/robotiq_2f85/2f85.xml",     "mujoco_menagerie/robotiq_2f85/scene.xml",
+    "mujoco_menagerie/wonik_allegro/left_hand.xml", "mujoco_menagerie/wonik_allegro/right_hand.xml",
+    "mujoco_menagerie/wonik_allegro/scene_left.xml", "mujoco_menagerie/wonik_allegro/scene_right.xml",
+};
+constexpr double kMujocoEigenResidual = 5e-9;  // kg m^2: a few meshes' residual
+
+double InertiaFloorFor(const std::string& corpus_path) {
+  for (const char* f : kMujocoEigenResidualFiles) {
+    if (corpus_path == f) return kMujocoEigenResidual;
+  }
+  return 0;
+}
+
+const char* KnownReason(const std::string& key) {
+  for (const auto& k : kKnownDisagreements) {
+    if (key == k.path) return k.reason;
+  }
+  return nullptr;
+}
+
+// ---------------------------------------------------------------------------
+// Cases
+// ---------------------------------------------------------------------------
+
+struct ModelCase {
+  std::string id;       // gtest parameter name
+  std::string path;     // absolute
+  std::string display;  // corpus/<path>, tests/models/mjcf/oracle/<file>
+  std::string known;    // kKnownDisagreements reason, if listed
+  std::string skip_reason;
+  double inertia_floor = 0;  // kg m^2: see kMujocoEigenResidualFiles
+};
+
+void PrintTo(const ModelCase& c, std::ostream* os) { *os << c.display; }
+
+std::string Sanitize(const std::string& s) {
+  std::string out;
+  for (char c : s) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return out;
+}
+
+void Uniquify(std::vector<ModelCase>* cases) {
+  std::map<std::string, int> seen;
+  for (auto& c : *cases) {
+    const int n = seen[c.id]++;
+    if (n > 0) c.id += "_" + std::to_string(n + 1);
+  }
+}
+
+std::vector<ModelCase> CorpusCases() {
+  std::vector<ModelCase> cases;
+  const fs::path corpus = fs::path(MDLC_SHARED_DIR) / "corpus";
+  const fs::path manifest = corpus / "manifest.tsv";
+  std::ifstream in(manifest);
+  if (std::string(MDLC_SHARED_DIR).empty() || !in) {
+    ModelCase c;
+    c.id = "shared_corpus_unavailable";
+    c.skip_reason = "shared corpus not found (" + manifest.string() +
+                    "); the corpus differential test needs ../shared";
+    cases.push_back(c);
+    return cases;
+  }
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cols;
+    std::stringstream ss(line);
+    for (std::string col; std::getline(ss, col, '\t');) cols.push_back(col);
+    if (cols.size() < 2 || cols[0] != "mjcf") continue;
+    ModelCase c;
+    std::string stem = cols[1];
+    if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".xml") stem.resize(stem.size() - 4);
+    c.id = Sanitize(stem);
+    c.path = (corpus / cols[1]).string();
+    c.display = "corpus/" + cols[1];
+    if (const char* r = KnownReason(cols[1])) c.known = r;
+    c.inertia_floor = InertiaFloorFor(cols[1]);
+    cases.push_back(c);
+  }
+  Uniquify(&cases);
+  return cases;
+}
+
+std::vector<fs::path> XmlFilesIn(const fs::path& dir) {
+  std::error_code ec;
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    if (e.path().extension() == ".xml") files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::vector<ModelCase> HandMadeCases() {
+  std::vector<ModelCase> cases;
+  const fs::path dir = fs::path(MDLC_TEST_MODELS) / "mjcf" / "oracle";
+  for (const auto& f : XmlFilesIn(dir)) {
+    ModelCase c;
+    c.id = Sanitize(f.stem().string());
+    c.path = f.string();
+    c.display = "tests/models/mjcf/oracle/" + f.filename().string();
+    if (const char* r = KnownReason(c.display)) c.known = r;
+    cases.push_back(c);
+  }
+  if (cases.empty()) {
+    ModelCase c;
+    c.id = "no_models";
+    c.skip_reason = "no MJCF models in " + dir.string();
+    cases.push_back(c);
+  }
+  Uniquify(&cases);
+  return cases;
+}
+
+// Ad-hoc models for investigating a discrepancy: MDLC_ORACLE_EXTRA_MODELS is
+// a ':'-separated list of .xml files or directories of them.
+std::vector<ModelCase> ExtraCases() {
+  std::vector<ModelCase> cases;
+  const char* env = std::getenv("MDLC_ORACLE_EXTRA_MODELS");
+  std::stringstream ss(env ? env : "");
+  for (std::string item; std::getline(ss, item, ':');) {
+    if (item.empty()) continue;
+    std::vector<fs::path> files;
+    if (fs::is_directory(item)) files = XmlFilesIn(item);
+    else files.push_back(item);
+    for (const auto& f : files) {
+      ModelCase c;
+      c.id = Sanitize(f.stem().string());
+      c.path = fs::absolute(f).string();
+      c.display = f.string();
+      cases.push_back(c);
+    }
+  }
+  Uniquify(&cases);
+  return cases;
+}
+
+// ---------------------------------------------------------------------------
+// The reference model, from a MuJoCo dump, with Drake's names
+// ---------------------------------------------------------------------------
+
+struct RBody {
+  std::string name;                  // Drake's plant name
+  int parent = 0;
+  std::vector<int> joints;           // MuJoCo joint ids, in order
+  std::vector<std::string> dummies;  // intermediate bodies before it
+  double mass = 0;
+  Vector3d ipos = Vector3d::Zero();
+  Matrix3d I = Matrix3d::Zero();     // about the COM, in the body frame
+  double max_moment = 0;
+};
+
+struct RJoint {
+  std::string name, type;  // MuJoCo type: free ball slide hinge
+  int body = 0, dof = 0;
+  std::string parent, child;  // plant body names
+  bool limited = false;
+  double lo = 0, hi = 0, armature = 0;
+  /// the default position: the applied key's qpos (MJCF-008) when the dump
+  /// has a key, else qpos0; all of the joint's values (free 7, ball 4, else 1)
+  double qpos0 = 0;
+  std::vector<double> q_default;
+  bool keyed = false;
+  bool Moving() const { return type == "hinge" || type == "slide"; }
+};
+
+struct RGeom {
+  std::string name, body, type;  // type: MuJoCo's
+  Vector3d size = Vector3d::Zero();
+  int contype = 1, conaffinity = 1, group = 0;
+  bool has_mesh_offset = false;
+  Isometry3d X_mesh = Isometry3d::Identity();  // mesh_pos/mesh_quat
+  std::optional<Vector3d> mesh_scale;
+  bool Registered() const { return type != "hfield" && type != "sdf"; }
+};
+
+struct RConfig {
+  std::vector<std::pair<int, double>> q;  // MuJoCo joint id -> value
+  std::vector<Isometry3d> X_WB;
+  std::vector<Vector3d> xaxis;
+  std::vector<Isometry3d> X_WG;
+  std::map<std::pair<int, int>, double> M;  // (dof_i, dof_j), i >= j, with armature
+};
+
+struct Reference {
+  std::string version;
+  std::vector<RBody> bodies;
+  std::vector<RJoint> joints;
+  std::vector<RGeom> geoms;
+  std::vector<RConfig> configs;
+  /// kg m^2: inertia and M entries this close agree (MuJoCo's own residual;
+  /// 0 for all but kMujocoEigenResidualFiles)
+  double inertia_floor = 0;
+};
+
+Vector3d V3(const json& a) { return Vector3d(a.at(0).get<double>(), a.at(1).get<double>(), a.at(2).get<double>()); }
+
+Quaterniond Q4(const json& a) {
+  return Quaterniond(a.at(0).get<double>(), a.at(1).get<double>(), a.at(2).get<double>(),
+                     a.at(3).get<double>())
+      .normalized();
+}
+
+Isometry3d Pose(const Vector3d& p, const Quaterniond& q) {
+  Isometry3d X = Isometry3d::Identity();
+  X.linear() = q.toRotationMatrix();
+  X.translation() = p;
+  return X;
+}
+
+// Builds the reference from one dump line (ok == true).
+Reference BuildReference(const json& d) {
+  Reference r;
+  r.version = d.value("version", "");
+  const json& bodies = d.at("bodies");
+  r.bodies.resize(bodies.size());
+  for (const auto& j : d.at("joints")) {
+    RJoint J;
+    J.name = j.at("name").get<std::string>();
+    J.type = j.at("type").get<std::string>();
+    J.body = j.at("body").get<int>();
+    J.dof = j.at("dof").get<int>();
+    J.limited = j.at("limited").get<int>() != 0;
+    J.lo = j.at("range").at(0).get<double>();
+    J.hi = j.at("range").at(1).get<double>();
+    J.armature = j.at("armature").empty() ? 0 : j.at("armature").at(0).get<double>();
+    const json& q_default = j.contains("key_qpos") ? j.at("key_qpos") : j.at("qpos0");
+    J.keyed = j.contains("key_qpos");
+    for (const auto& v : q_default) J.q_default.push_back(v.get<double>());
+    J.qpos0 = J.q_default.at(0);
+    r.bodies.at(J.body).joints.push_back(static_cast<int>(r.joints.size()));
+    r.joints.push_back(J);
+  }
+  // Names in creation order: MuJoCo's body ids are the document's pre-order,
+  // the order Drake's parser creates the bodies in.
+  int plant_bodies = 1;  // the world
+  for (size_t b = 0; b < bodies.size(); ++b) {
+    const json& jb = bodies[b];
+    RBody& B = r.bodies[b];
+    B.parent = jb.at("parent").get<int>();
+    B.mass = jb.at("mass").get<double>();
+    B.ipos = V3(jb.at("ipos"));
+    const Matrix3d R = Q4(jb.at("iquat")).toRotationMatrix();
+    const Vector3d moments = V3(jb.at("inertia"));
+    B.I = R * moments.asDiagonal() * R.transpose();
+    B.max_moment = moments.cwiseAbs().maxCoeff();
+    if (b == 0) {
+      B.name = "world";
+      continue;
+    }
+    const std::string mj_name = jb.at("name").get<std::string>();
+    B.name = mj_name.empty() ? "body" + std::to_string(plant_bodies) : mj_name;
+    ++plant_bodies;
+    for (size_t k = 0; k + 1 < B.joints.size(); ++k) {
+      B.dummies.push_back(B.name + std::to_string(k));
+      ++plant_bodies;
+    }
+  }
+  for (size_t b = 1; b < r.bodies.size(); ++b) {
+    RBody& B = r.bodies[b];
+    const std::string parent = r.bodies.at(B.parent).name;
+    for (size_t k = 0; k < B.joints.size(); ++k) {
+      RJoint& J = r.joints[B.joints[k]];
+      J.parent = k == 0 ? parent : B.dummies[k - 1];
+      J.child = k + 1 == B.joints.size() ? B.name : B.dummies[k];
+      if (J.type == "free") J.name = B.name;  // the plant's floating joint
+      else if (J.name.empty()) J.name = J.parent + "-" + J.child;
+    }
+  }
+  std::map<int, int> per_body;  // registered geoms so far
+  for (const auto& g : d.at("geoms")) {
+    RGeom G;
+    const int body = g.at("body").get<int>();
+    G.body = r.bodies.at(body).name;
+    G.type = g.at("type").get<std::string>();
+    G.size = V3(g.at("size"));
+    G.contype = g.at("contype").get<int>();
+    G.conaffinity = g.at("conaffinity").get<int>();
+    G.group = g.at("group").get<int>();
+    G.name = g.at("name").get<std::string>();
+    if (G.Registered()) {
+      if (G.name.empty()) G.name = "geom" + std::to_string(per_body[body]);
+      ++per_body[body];
+    }
+    if (g.contains("mesh_pos")) {
+      G.has_mesh_offset = true;
+      G.X_mesh = Pose(V3(g.at("mesh_pos")), Q4(g.at("mesh_quat")));
+    }
+    if (g.contains("mesh_scale")) G.mesh_scale = V3(g.at("mesh_scale"));
+    r.geoms.push_back(G);
+  }
+  for (const auto& c : d.at("configs")) {
+    RConfig C;
+    for (const auto& q : c.at("q")) C.q.emplace_back(q.at(0).get<int>(), q.at(1).get<double>());
+    for (size_t b = 0; b < c.at("xpos").size(); ++b) {
+      C.X_WB.push_back(Pose(V3(c.at("xpos")[b]), Q4(c.at("xquat")[b])));
+    }
+    for (const auto& a : c.at("xaxis")) C.xaxis.push_back(V3(a));
+    for (size_t g = 0; g < c.at("geom_xpos").size(); ++g) {
+      C.X_WG.push_back(Pose(V3(c.at("geom_xpos")[g]), Q4(c.at("geom_xquat")[g])));
+    }
+    for (const auto& e : c.at("M")) {
+      C.M[{e.at(0).get<int>(), e.at(1).get<int>()}] = e.at(2).get<double>();
+    }
+    r.configs.push_back(std::move(C));
+  }
+  return r;
+}
+
+// Runs a dump tool on one file; the parsed line, or an error in *problem.
+json RunDump(const std::vector<std::string>& argv, std::string* problem) {
+  const RunResult r = RunProcess(argv, 600.0);
+  if (!r.spawn_error.empty()) {
+    *problem = r.spawn_error;
+    return json();
+  }
+  if (r.timed_out || r.exit_code != 0) {
+    *problem = std::string(r.timed_out ? "timed out" : "exit status " + std::to_string(r.exit_code)) +
+               ": " + r.err.substr(0, 2000);
+    return json();
+  }
+  try {
+    return json::parse(r.out.substr(0, r.out.find('\n')));
+  } catch (const std::exception& e) {
+    *problem = std::string("unreadable dump (") + e.what() + "): " + r.out.substr(0, 300);
+    return json();
+  }
+}
+
+int NumConfigs() { return std::max(0, EnvInt("MDLC_ORACLE_CONFIGS", 3)); }
+
+json DumpMujoco3(const std::string& file, std::string* problem) {
+  return RunDump({NodeBinary(), DumpScript().string(), "--configs", std::to_string(NumConfigs()),
+                  "--seed", "1", file},
+                 problem);
+}
+
+json DumpMujoco2(const std::string& file, std::string* problem) {
+  const std::string tool = Found(MDLC_MUJOCO222_DUMP);
+  if (tool.empty()) {
+    *problem = "mujoco222_dump not built (libmujoco-dev missing)";
+    return json();
+  }
+  return RunDump({tool, "--configs", std::to_string(NumConfigs()), "--seed", "1", file}, problem);
+}
+
+// ---------------------------------------------------------------------------
+// mdlc's dump
+// ---------------------------------------------------------------------------
+
+class Report {
+ public:
+  Report(std::string model, std::string oracle) : model_(std::move(model)), oracle_(std::move(oracle)) {}
+  void SetContext(std::string ctx) { ctx_ = std::move(ctx); }
+  void Add(const std::string& what) {
+    msgs_.push_back("[" + model_ + (ctx_.empty() ? "" : " | " + ctx_) + "] " + what);
+  }
+  // |mdlc - ref| <= tol * max(scale, |mdlc|, |ref|)
+  void Num(const std::string& feature, const std::string& entity, const std::string& quantity,
+           double mdlc, double ref, double tol, double scale = 1.0) {
+    const double bound = tol * std::max({scale, std::abs(mdlc), std::abs(ref)});
+    if (std::isfinite(mdlc) && std::isfinite(ref) && std::abs(mdlc - ref) <= bound) return;
+    if (std::isinf(mdlc) && mdlc == ref) return;
+    Add(feature + " " + entity + " " + quantity + ": mdlc=" + Fmt(mdlc) + " " + oracle_ + "=" +
+        Fmt(ref) + " (|diff|=" + Fmt(std::abs(mdlc - ref)) + ")");
+  }
+  size_t size() const { return msgs_.size(); }
+  std::string Text() const {
+    const size_t limit = static_cast<size_t>(EnvInt("MDLC_ORACLE_MAX_MESSAGES", 60));
+    std::string text = std::to_string(msgs_.size()) + " discrepancies for " + model_ + ":\n";
+    for (size_t i = 0; i < msgs_.size() && i < limit; ++i) text += "  " + msgs_[i] + "\n";
+    if (msgs_.size() > limit) text += "  ... and " + std::to_string(msgs_.size() - limit) + " more\n";
+    return text;
+  }
+
+ private:
+  std::string model_, oracle_, ctx_;
+  std::vector<std::string> msgs_;
+};
+
+struct Plant {
+  json root;
+  std::map<std::string, const json*> bodies;  // local name (world: "world")
+  std::map<std::string, const json*> joints;  // local name
+  std::multimap<std::string, const json*> geoms;  // "body|name", body scoped -> local
+  std::map<std::string, int> dof_index;       // local joint name -> row of mass_matrix
+  std::set<std::string> duplicate_names;
+  std::string cmdline;
+};
+
+std::string LocalOf(const std::string& scoped) {
+  const size_t at = scoped.rfind("::");
+  return at == std::string::npos ? scoped : scoped.substr(at + 2);
+}
+
+std::string Quote(const std::vector<std::string>& argv) {
+  std::string s;
+  for (const auto& a : argv) s += (s.empty() ? "" : " ") + a;
+  return s;
+}
+
+std::string ErrorExcerpt(const std::string& err) {
+  std::stringstream ss(err);
+  std::vector<std::string> lines;
+  for (std::string l; std::getline(ss, l);) lines.push_back(l);
+  std::string out;
+  for (size_t i = 0; i < lines.size() && out.size() < 3000; ++i) {
+    if (lines[i].find("error") == std::string::npos) continue;
+    for (size_t k = i; k < lines.size() && k < i + 3; ++k) out += "\n      " + lines[k];
+  }
+  return out.empty() ? "\n      " + err.substr(0, 2000) : out;
+}
+
+struct MdlcRun {
+  RunResult result;
+  bool ok = false;  // exit 0 and a readable dump
+  std::string problem;
+};
+
+MdlcRun RunMdlc(const std::string& file, const std::vector<std::pair<std::string, double>>& q,
+                Plant* plant) {
+  MdlcRun run;
+  std::vector<std::string> argv = {MdlcBinary(), "compile", file, "--emit=plant-json"};
+  for (const auto& [name, v] : q) {
+    argv.push_back("--q");
+    argv.push_back(name + "=" + Fmt(v));
+  }
+  plant->cmdline = Quote(argv);
+  run.result = RunProcess(argv, 120.0);
+  const RunResult& r = run.result;
+  if (!r.spawn_error.empty()) {
+    run.problem = "could not run mdlc: " + r.spawn_error;
+    return run;
+  }
+  if (r.timed_out || r.exit_code != 0) {
+    run.problem = std::string("mdlc ") +
+                  (r.timed_out ? "timed out" : "exited with status " + std::to_string(r.exit_code)) +
+                  "\n    command: " + plant->cmdline + "\n    stderr (errors):" + ErrorExcerpt(r.err);
+    return run;
+  }
+  try {
+    plant->root = json::parse(r.out);
+  } catch (const std::exception& e) {
+    run.problem = std::string("mdlc output is not JSON (") + e.what() + ")";
+    return run;
+  }
+  const json& root = plant->root;
+  if (root.value("schema", "") != "mdlc-plant/1") {
+    run.problem = "plant-json schema is not mdlc-plant/1";
+    return run;
+  }
+  for (const char* section : {"bodies", "joints", "geometries"}) {
+    if (!root.contains(section) || !root[section].is_array()) {
+      run.problem = std::string("plant-json has no '") + section + "' array";
+      return run;
+    }
+  }
+  for (const auto& b : root["bodies"]) {
+    const std::string name = b.value("name", "");
+    if (!plant->bodies.emplace(name, &b).second) plant->duplicate_names.insert("body " + name);
+  }
+  for (const auto& j : root["joints"]) {
+    const std::string name = j.value("name", "");
+    if (!plant->joints.emplace(name, &j).second) plant->duplicate_names.insert("joint " + name);
+  }
+  for (const auto& g : root["geometries"]) {
+    plant->geoms.emplace(LocalOf(g.value("body", "")) + "|" + g.value("name", ""), &g);
+  }
+  if (root.contains("dofs") && root["dofs"].is_array()) {
+    for (size_t i = 0; i < root["dofs"].size(); ++i) {
+      plant->dof_index[LocalOf(root["dofs"][i].get<std::string>())] = static_cast<int>(i);
+    }
+  }
+  run.ok = true;
+  return run;
+}
+
+bool ReadPose(const json& X, Isometry3d* out) {
+  if (!X.is_object() || !X.contains("p") || !X.contains("q")) return false;
+  try {
+    *out = Pose(V3(X["p"]), Q4(X["q"]));
+  } catch (const json::exception&) {
+    return false;
+  }
+  return true;
+}
+
+double Num(const json& v) {
+  return v.is_number() ? v.get<double>() : std::numeric_limits<double>::quiet_NaN();
+}
+
+// ---------------------------------------------------------------------------
+// Comparison
+// ---------------------------------------------------------------------------
+
+void ComparePose(Report* rep, const std::string& feature, const std::string& ent,
+                 const std::string& what, const Isometry3d& mdlc, const Isometry3d& ref,
+                 double tol, bool rotation = true) {
+  for (int i = 0; i < 3; ++i) {
+    rep->Num(feature, ent, what + ".p[" + std::to_string(i) + "]", mdlc.translation()(i),
+             ref.translation()(i), tol);
+  }
+  if (!rotation) return;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      rep->Num(feature, ent, "R" + what.substr(1) + "(" + std::to_string(r) + "," + std::to_string(c) + ")",
+               mdlc.linear()(r, c), ref.linear()(r, c), tol);
+    }
+  }
+}
+
+void CompareVec(Report* rep, const std::string& feature, const std::string& ent,
+                const std::string& what, const Vector3d& mdlc, const Vector3d& ref, double tol) {
+  for (int i = 0; i < 3; ++i) {
+    rep->Num(feature, ent, what + "[" + std::to_string(i) + "]", mdlc(i), ref(i), tol);
+  }
+}
+
+// MJCF-008 (keyframe (default positions)): a ball or free joint's
+// default_positions against the applied key's qpos slice. A ball's key
+// quaternion w x y z is the plant's roll-pitch-yaw R = Rz(y) Ry(p) Rx(r); a
+// free joint's x y z, w x y z is the plant's [w x y z x y z]. Rotations are
+// compared as matrices (a quaternion's sign is a convention), after MuJoCo's
+// normalization.
+void CompareKeyedDefault(const json& jj, const RJoint& J, const std::string& ent, Report* rep) {
+  const json dp = jj.value("default_positions", json::array());
+  auto quat = [](const double* wxyz) {
+    const Quaterniond q(wxyz[0], wxyz[1], wxyz[2], wxyz[3]);
+    return q.norm() < 1e-15 ? Quaterniond::Identity() : q.normalized();
+  };
+  Isometry3d mdlc = Isometry3d::Identity(), ref = Isometry3d::Identity();
+  if (J.type == "free" && J.q_default.size() == 7) {
+    if (!dp.is_array() || dp.size() != 7) {
+      rep->Add("MJCF-008 " + ent + " default_positions: expected 7 values, got " + dp.dump());
+      return;
+    }
+    const double w[4] = {Num(dp[0]), Num(dp[1]), Num(dp[2]), Num(dp[3])};
+    mdlc = Pose(Vector3d(Num(dp[4]), Num(dp[5]), Num(dp[6])), quat(w));
+    ref = Pose(Vector3d(J.q_default[0], J.q_default[1], J.q_default[2]),
+               quat(J.q_default.data() + 3));
+  } else if (J.type == "ball" && J.q_default.size() == 4) {
+    if (!dp.is_array() || dp.size() != 3) {
+      rep->Add("MJCF-008 " + ent + " default_positions: expected 3 values (rpy), got " + dp.dump());
+      return;
+    }
+    mdlc.linear() = (Eigen::AngleAxisd(Num(dp[2]), Vector3d::UnitZ()) *
+                     Eigen::AngleAxisd(Num(dp[1]), Vector3d::UnitY()) *
+                     Eigen::AngleAxisd(Num(dp[0]), Vector3d::UnitX()))
+                        .toRotationMatrix();
+    ref.linear() = quat(J.q_default.data()).toRotationMatrix();
+  } else {
+    return;
+  }
+  ComparePose(rep, "MJCF-008", ent, "X_default (key qpos)", mdlc, ref, kKinTol);
+}
+
+// Mass properties, joints' static data and geometry shapes: configuration 0.
+void CompareStatic(const Reference& ref, const Plant& p, Report* rep) {
+  for (const auto& dup : p.duplicate_names) rep->Add("plant-json names two entities " + dup);
+  for (size_t b = 1; b < ref.bodies.size(); ++b) {
+    const RBody& B = ref.bodies[b];
+    const std::string ent = "body '" + B.name + "'";
+    const auto it = p.bodies.find(B.name);
+    if (it == p.bodies.end()) {
+      rep->Add("MJCF-020 " + ent + " is missing from mdlc's plant");
+      continue;
+    }
+    const json& jb = *it->second;
+    for (const auto& dummy : B.dummies) {
+      const auto d = p.bodies.find(dummy);
+      if (d == p.bodies.end()) {
+        rep->Add("MJCF-023 intermediate body '" + dummy + "' (before '" + B.name +
+                 "') is missing from mdlc's plant");
+      } else {
+        rep->Num("MJCF-023", "intermediate body '" + dummy + "'", "mass",
+                 Num(d->second->value("mass", json())), 0.0, kMassTol, 1e-12);
+      }
+    }
+    rep->Num("MJCF-030/031", ent, "mass", Num(jb.value("mass", json())), B.mass, kMassTol, 1e-12);
+    // A massless body (no geoms, no inertial) has no centre of mass; MuJoCo
+    // then reports its body position as ipos.
+    if (B.mass == 0) continue;
+    Vector3d com = Vector3d::Constant(std::nan(""));
+    if (jb.contains("com") && jb["com"].is_array() && jb["com"].size() == 3) com = V3(jb["com"]);
+    CompareVec(rep, "MJCF-030/031", ent, "com", com, B.ipos, kMassTol);
+    const json I = jb.value("inertia", json::array());
+    if (!I.is_array() || I.size() != 6) {
+      rep->Add("MJCF-030 " + ent + " has no 6-entry inertia");
+    } else {
+      const double scale = std::max({B.max_moment, 1e-12, ref.inertia_floor / kMassTol});
+      const int rows[6] = {0, 1, 2, 0, 0, 1}, cols[6] = {0, 1, 2, 1, 2, 2};
+      const char* names[6] = {"Ixx", "Iyy", "Izz", "Ixy", "Ixz", "Iyz"};
+      for (int k = 0; k < 6; ++k) {
+        rep->Num("MJCF-030/031", ent, std::string("inertia.") + names[k], Num(I[k]),
+                 B.I(rows[k], cols[k]), kMassTol, scale);
+      }
+    }
+  }
+
+  // every plant body is a MuJoCo body or an intermediate body of one
+  std::set<std::string> known_bodies;
+  for (const RBody& B : ref.bodies) {
+    known_bodies.insert(B.name);
+    known_bodies.insert(B.dummies.begin(), B.dummies.end());
+  }
+  for (const auto& [name, body] : p.bodies) {
+    if (!known_bodies.count(name)) {
+      rep->Add("MJCF-020/023 mdlc's plant has a body '" + name + "' that MuJoCo's model lacks");
+    }
+  }
+
+  for (const RJoint& J : ref.joints) {
+    const std::string ent = "joint '" + J.name + "' (" + J.type + ")";
+    const json* jj = nullptr;
+    if (J.type == "free") {
+      for (const auto& j : p.root["joints"]) {
+        if (LocalOf(j.value("child", "")) == J.child && j.value("type", "") == "quaternion_floating") {
+          jj = &j;
+        }
+      }
+      if (!jj) {
+        rep->Add("MJCF-021 free body '" + J.child + "' has no quaternion_floating joint in mdlc's plant");
+      } else if (J.keyed) {
+        // MJCF-008: the key's x y z, w x y z as plant-json's [w x y z x y z]
+        CompareKeyedDefault(*jj, J, ent, rep);
+      }
+      continue;
+    }
+    const auto it = p.joints.find(J.name);
+    if (it == p.joints.end()) {
+      rep->Add("MJCF-022 " + ent + " is missing from mdlc's plant");
+      continue;
+    }
+    jj = it->second;
+    const std::string want = J.type == "hinge" ? "revolute" : J.type == "slide" ? "prismatic" : "ball";
+    if (jj->value("type", "") != want) {
+      rep->Add("MJCF-022 " + ent + " type: mdlc=" + jj->value("type", "?") + " expected=" + want);
+    }
+    if (LocalOf(jj->value("parent", "")) != J.parent || LocalOf(jj->value("child", "")) != J.child) {
+      rep->Add("MJCF-022/023 " + ent + " joins " + jj->value("parent", "?") + " -> " +
+               jj->value("child", "?") + " in mdlc, expected " + J.parent + " -> " + J.child);
+    }
+    if (!J.Moving()) {
+      if (J.keyed) CompareKeyedDefault(*jj, J, ent, rep);  // MJCF-008: a ball's key
+      continue;
+    }
+    const json lower = jj->value("lower", json::array()), upper = jj->value("upper", json::array());
+    const json dp = jj->value("default_positions", json::array());
+    auto limit = [](const json& a, double inf) {
+      if (!a.is_array() || a.size() != 1) return std::nan("");
+      return a[0].is_null() ? inf : Num(a[0]);
+    };
+    const double inf = std::numeric_limits<double>::infinity();
+    rep->Num("MJCF-004/022", ent, "lower", limit(lower, -inf), J.limited ? J.lo : -inf, kKinTol);
+    rep->Num("MJCF-004/022", ent, "upper", limit(upper, inf), J.limited ? J.hi : inf, kKinTol);
+    rep->Num(J.keyed ? "MJCF-008/022" : "MJCF-022", ent,
+             J.keyed ? "default_positions[0] (key qpos)" : "default_positions[0] (qpos0)",
+             dp.is_array() && dp.size() == 1 ? Num(dp[0]) : std::nan(""), J.qpos0, kKinTol);
+    // MJCF-024: reflected inertia is the armature when an actuator drives the
+    // joint, else 0.
+    const auto di = p.dof_index.find(J.name);
+    if (di == p.dof_index.end()) {
+      rep->Add("MJCF-022 " + ent + " is not in plant-json's dofs");
+    } else if (p.root.contains("reflected_inertia") && p.root["reflected_inertia"].is_array() &&
+               di->second < static_cast<int>(p.root["reflected_inertia"].size())) {
+      const double ri = Num(p.root["reflected_inertia"][di->second]);
+      if (ri != 0) rep->Num("MJCF-024", ent, "reflected_inertia (0 or armature)", ri, J.armature, kMassTol, 1e-12);
+    }
+  }
+}
+
+// Shape and roles of every geom (configuration independent); returns the
+// registrations found per reference geom for the pose checks.
+struct GeomMatch {
+  const RGeom* ref = nullptr;
+  int ref_index = 0;
+  std::vector<const json*> regs;
+};
+
+std::vector<GeomMatch> CompareGeometry(const Reference& ref, const Plant& p, Report* rep) {
+  std::vector<GeomMatch> matches;
+  std::set<const json*> used;
+  for (size_t g = 0; g < ref.geoms.size(); ++g) {
+    const RGeom& G = ref.geoms[g];
+    if (!G.Registered()) continue;
+    const std::string ent = "geom '" + G.name + "' on '" + G.body + "' (" + G.type + ")";
+    GeomMatch m{&G, static_cast<int>(g), {}};
+    const auto [lo, hi] = p.geoms.equal_range(G.body + "|" + G.name);
+    bool proximity = false, illustration = false;
+    for (auto it = lo; it != hi; ++it) {
+      if (!used.insert(it->second).second) continue;
+      m.regs.push_back(it->second);
+      for (const auto& role : it->second->value("roles", json::array())) {
+        if (role == "proximity") proximity = true;
+        if (role == "illustration") illustration = true;
+      }
+    }
+    const bool want_proximity = !(G.contype == 0 && G.conaffinity == 0);
+    const bool want_illustration = G.group <= 2;
+    if (!want_proximity && !want_illustration) {
+      // MJCF-043: neither a collision nor a visual role: not registered
+      if (!m.regs.empty()) {
+        rep->Add("MJCF-043 " + ent + " is registered by mdlc although contype = conaffinity = 0 "
+                 "and group = " + std::to_string(G.group) + " > 2 leave it no role");
+      }
+      continue;
+    }
+    if (m.regs.empty()) {
+      rep->Add("MJCF-040 " + ent + " is missing from mdlc's scene graph");
+      continue;
+    }
+    if (proximity != want_proximity || illustration != want_illustration) {
+      rep->Add("MJCF-043 " + ent + " roles: mdlc proximity=" + std::to_string(proximity) +
+               " illustration=" + std::to_string(illustration) + ", expected proximity=" +
+               std::to_string(want_proximity) + " illustration=" + std::to_string(want_illustration) +
+               " (contype=" + std::to_string(G.contype) + " conaffinity=" +
+               std::to_string(G.conaffinity) + " group=" + std::to_string(G.group) + ")");
+    }
+    for (const json* reg : m.regs) {
+      const json shape = reg->value("shape", json::object());
+      const std::string type = shape.value("type", "");
+      auto want_type = [&](std::initializer_list<const char*> ok) {
+        for (const char* t : ok) {
+          if (type == t) return true;
+        }
+        rep->Add("MJCF-040 " + ent + " shape: mdlc=" + (type.empty() ? "?" : type) +
+                 " expected " + *ok.begin());
+        return false;
+      };
+      const Vector3d& s = G.size;
+      if (G.type == "sphere") {
+        if (want_type({"sphere"})) rep->Num("MJCF-040", ent, "radius", Num(shape.value("radius", json())), s[0], kMassTol, 0);
+      } else if (G.type == "capsule" || G.type == "cylinder") {
+        if (want_type({G.type.c_str()})) {
+          rep->Num("MJCF-040/041", ent, "radius", Num(shape.value("radius", json())), s[0], kMassTol, 0);
+          rep->Num("MJCF-040/041", ent, "length", Num(shape.value("length", json())), 2 * s[1], kMassTol, 0);
+        }
+      } else if (G.type == "ellipsoid") {
+        if (want_type({"ellipsoid"})) {
+          rep->Num("MJCF-040", ent, "a", Num(shape.value("a", json())), s[0], kMassTol, 0);
+          rep->Num("MJCF-040", ent, "b", Num(shape.value("b", json())), s[1], kMassTol, 0);
+          rep->Num("MJCF-040", ent, "c", Num(shape.value("c", json())), s[2], kMassTol, 0);
+        }
+      } else if (G.type == "box") {
+        if (want_type({"box"})) {
+          const json sz = shape.value("size", json::array());
+          for (int i = 0; i < 3; ++i) {
+            rep->Num("MJCF-040", ent, "size[" + std::to_string(i) + "]",
+                     sz.is_array() && sz.size() == 3 ? Num(sz[i]) : std::nan(""), 2 * s[i], kMassTol, 0);
+          }
+        }
+      } else if (G.type == "plane") {
+        want_type({"half_space"});
+      } else if (G.type == "mesh") {
+        if (want_type({"mesh", "convex"}) && G.mesh_scale) {
+          const json sc = shape.value("scale", json());
+          Vector3d scale = Vector3d::Constant(std::nan(""));
+          if (sc.is_number()) scale = Vector3d::Constant(sc.get<double>());
+          else if (sc.is_array() && sc.size() == 3) scale = V3(sc);
+          CompareVec(rep, "MJCF-050", ent, "scale", scale, *G.mesh_scale, kKinTol);
+        }
+      }
+    }
+    matches.push_back(std::move(m));
+  }
+  return matches;
+}
+
+// World poses at one configuration: bodies, joint axes, geometry, M(q).
+void CompareConfiguration(const Reference& ref, const RConfig& C, const Plant& p,
+                          const std::vector<GeomMatch>& geoms, Report* rep) {
+  for (size_t b = 1; b < ref.bodies.size() && b < C.X_WB.size(); ++b) {
+    const auto it = p.bodies.find(ref.bodies[b].name);
+    if (it == p.bodies.end()) continue;  // reported once already
+    Isometry3d X;
+    if (!ReadPose(it->second->value("X_WB", json()), &X)) {
+      rep->Add("body '" + ref.bodies[b].name + "' has no readable X_WB");
+      continue;
+    }
+    ComparePose(rep, "MJCF-010/020/023", "body '" + ref.bodies[b].name + "'", "X_WB", X, C.X_WB[b], kKinTol);
+  }
+  for (size_t j = 0; j < ref.joints.size() && j < C.xaxis.size(); ++j) {
+    const RJoint& J = ref.joints[j];
+    if (!J.Moving()) continue;
+    const auto it = p.joints.find(J.name);
+    if (it == p.joints.end()) continue;
+    const json a = it->second->value("axis_W", json());
+    Vector3d axis = Vector3d::Constant(std::nan(""));
+    if (a.is_array() && a.size() == 3) axis = V3(a);
+    CompareVec(rep, "MJCF-022", "joint '" + J.name + "'", "axis_W", axis, C.xaxis[j], kKinTol);
+  }
+  for (const GeomMatch& m : geoms) {
+    const RGeom& G = *m.ref;
+    if (m.ref_index >= static_cast<int>(C.X_WG.size())) continue;
+    const std::string ent = "geom '" + G.name + "' on '" + G.body + "' (" + G.type + ")";
+    Isometry3d X_ref = C.X_WG[m.ref_index];
+    double tol = kKinTol;
+    if (G.type == "mesh") {
+      if (!G.has_mesh_offset) continue;  // MuJoCo 2.2.2: the offset is unknown
+      X_ref = X_ref * G.X_mesh.inverse();
+      tol = kMassTol;
+    }
+    for (const json* reg : m.regs) {
+      Isometry3d X;
+      if (!ReadPose(reg->value("X_WG", json()), &X)) {
+        rep->Add(ent + " has no readable X_WG");
+        continue;
+      }
+      if (G.type == "sphere") {
+        ComparePose(rep, "MJCF-040", ent, "X_WG", X, X_ref, tol, /*rotation=*/false);
+      } else if (G.type == "capsule" || G.type == "cylinder") {
+        ComparePose(rep, "MJCF-040/041", ent, "X_WG", X, X_ref, tol, false);
+        CompareVec(rep, "MJCF-040/041", ent, "X_WG z axis", X.linear().col(2), X_ref.linear().col(2), tol);
+      } else if (G.type == "plane") {
+        const Vector3d n = X.linear().col(2), n_ref = X_ref.linear().col(2);
+        CompareVec(rep, "MJCF-040", ent, "half-space normal", n, n_ref, tol);
+        rep->Num("MJCF-040", ent, "half-space offset", n.dot(X.translation()),
+                 n_ref.dot(X_ref.translation()), tol);
+      } else {
+        ComparePose(rep, G.type == "mesh" ? "MJCF-050" : "MJCF-040", ent, "X_WG", X, X_ref, tol);
+      }
+    }
+  }
+  // M(q) on hinge and slide dofs, armature removed.
+  std::vector<const RJoint*> moving;
+  for (const RJoint& J : ref.joints) {
+    if (J.Moving()) moving.push_back(&J);
+  }
+  if (moving.empty()) return;
+  if (!p.root.contains("mass_matrix") || !p.root["mass_matrix"].is_array()) {
+    rep->Add("plant-json has no mass_matrix (" + std::to_string(moving.size()) + " dofs)");
+    return;
+  }
+  const json& M = p.root["mass_matrix"];
+  auto ref_entry = [&](const RJoint* a, const RJoint* b) {
+    const int i = std::max(a->dof, b->dof), j = std::min(a->dof, b->dof);
+    const auto it = C.M.find({i, j});
+    double v = it == C.M.end() ? 0.0 : it->second;
+    if (a == b) v -= a->armature;
+    return v;
+  };
+  auto mdlc_entry = [&](const RJoint* a, const RJoint* b) {
+    const auto ia = p.dof_index.find(a->name), ib = p.dof_index.find(b->name);
+    if (ia == p.dof_index.end() || ib == p.dof_index.end()) return std::nan("");
+    if (ia->second >= static_cast<int>(M.size()) || !M[ia->second].is_array() ||
+        ib->second >= static_cast<int>(M[ia->second].size())) {
+      return std::nan("");
+    }
+    return Num(M[ia->second][ib->second]);
+  };
+  std::vector<double> diag;
+  for (const RJoint* a : moving) diag.push_back(std::abs(ref_entry(a, a)));
+  for (size_t x = 0; x < moving.size(); ++x) {
+    if (!p.dof_index.count(moving[x]->name)) continue;  // reported as missing
+    for (size_t y = 0; y <= x; ++y) {
+      if (!p.dof_index.count(moving[y]->name)) continue;
+      const double scale = std::sqrt(diag[x] * diag[y]);
+      rep->Num("MJCF-022/023/031", "M", "(" + moving[x]->name + ", " + moving[y]->name + ")",
+               mdlc_entry(moving[x], moving[y]), ref_entry(moving[x], moving[y]), kMassTol,
+               std::max({scale, 1e-300, ref.inertia_floor / kMassTol}));
+    }
+  }
+}
+
+std::string DescribeQ(const std::vector<std::pair<std::string, double>>& q) {
+  if (q.empty()) return "default configuration (key 'home' or first key, else qpos0)";
+  std::string s = "q:";
+  for (size_t i = 0; i < q.size(); ++i) {
+    if (i == 6) {
+      s += " ...(" + std::to_string(q.size()) + " joints)";
+      break;
+    }
+    s += " " + q[i].first + "=" + Fmt(q[i].second);
+  }
+  return s;
+}
+
+// A located error (file:line:col: error:) among mdlc's diagnostics.
+bool HasLocatedError(const std::string& err) {
+  std::stringstream ss(err);
+  for (std::string line; std::getline(ss, line);) {
+    const size_t at = line.find(": error: ");
+    if (at == std::string::npos) continue;
+    const std::string head = line.substr(0, at);
+    // ...:LINE:COL
+    const size_t c2 = head.rfind(':');
+    const size_t c1 = c2 == std::string::npos ? std::string::npos : head.rfind(':', c2 - 1);
+    if (c1 == std::string::npos) continue;
+    const std::string l = head.substr(c1 + 1, c2 - c1 - 1), c = head.substr(c2 + 1);
+    auto digits = [](const std::string& s) {
+      return !s.empty() && std::all_of(s.begin(), s.end(), [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); });
+    };
+    if (digits(l) && digits(c)) return true;
+  }
+  return false;
+}
+
+// ---------------------------------------------------------------------------
+// The test
+// ---------------------------------------------------------------------------
+
+class MujocoOracle : public ::testing::TestWithParam<ModelCase> {};
+
+TEST_P(MujocoOracle, CompiledModelMatches) {
+  const ModelCase& mc = GetParam();
+  if (!mc.skip_reason.empty()) GTEST_SKIP() << mc.skip_reason;
+  if (const std::string why = MujocoJsUnavailable(); !why.empty()) GTEST_SKIP() << why;
+
+  std::string problem;
+  json dump = DumpMujoco3(mc.path, &problem);
+  ASSERT_TRUE(problem.empty()) << "[" << mc.display << "] MuJoCo 3.3.8 dump failed: " << problem;
+  std::string oracle = "mujoco3.3.8";
+  bool mujoco2 = false;
+  if (!dump.value("ok", false)) {
+    // MuJoCo 3.3.8 rejects the file: MuJoCo 2.2.2's opinion decides.
+    const std::string err3 = dump.value("error", std::string("?"));
+    std::string problem2;
+    json dump2 = DumpMujoco2(mc.path, &problem2);
+    if (!problem2.empty() || !dump2.value("ok", false)) {
+      GTEST_SKIP() << "MuJoCo 3.3.8 rejects " << mc.display << " (" << err3 << "); MuJoCo 2.2.2 "
+                   << (problem2.empty() ? "rejects it too (" + dump2.value("error", std::string("?")) + ")"
+                                        : "unavailable: " + problem2)
+                   << "; tests/corpus/mjcf_reference_rejects_test.cc covers it";
+    }
+    dump = std::move(dump2);
+    oracle = "mujoco2.2.2";
+    mujoco2 = true;
+  }
+  Reference ref;
+  try {
+    ref = BuildReference(dump);
+  } catch (const json::exception& e) {
+    FAIL() << "[" << mc.display << "] unexpected dump layout: " << e.what();
+  }
+  ref.inertia_floor = mc.inertia_floor;
+
+  Report rep(mc.display, oracle);
+  std::map<std::string, std::string> scoped;  // joint local name -> name for --q
+  bool compiled = false;
+  for (size_t c = 0; c < ref.configs.size(); ++c) {
+    const RConfig& C = ref.configs[c];
+    std::vector<std::pair<std::string, double>> q;
+    for (const auto& [j, v] : C.q) {
+      const std::string& name = ref.joints.at(j).name;
+      q.emplace_back(scoped.count(name) ? scoped[name] : name, v);
+    }
+    rep.SetContext("config " + std::to_string(c) + ", " + DescribeQ(q));
+    Plant plant;
+    const MdlcRun run = RunMdlc(mc.path, q, &plant);
+    if (!run.ok) {
+      if (c == 0 && mujoco2 && run.result.exit_code == 1 && HasLocatedError(run.result.err)) {
+        // MuJoCo 3 rejects it and mdlc rejects it with a located diagnostic:
+        // the outcome the MuJoCo 2-only files may have.
+        std::printf("[ note ] %s: MuJoCo 3.3.8 rejects it, MuJoCo 2.2.2 loads it, mdlc rejects it:%s\n",
+                    mc.display.c_str(), ErrorExcerpt(run.result.err).c_str());
+        return;
+      }
+      if (c == 0 && !mc.known.empty() && run.result.exit_code == 1) {
+        GTEST_SKIP() << "known disagreement (mdlc rejects it): " << mc.known;
+      }
+      rep.Add(run.problem + (mujoco2 ? "\n    (MuJoCo 3.3.8 rejects this file, MuJoCo 2.2.2 loads "
+                                       "it: mdlc must compile it as 2.2.2 does or reject it with "
+                                       "a located error)"
+                                     : ""));
+      break;
+    }
+    compiled = true;
+    const size_t before = rep.size();
+    try {
+      if (c == 0) {
+        for (const auto& j : plant.root["joints"]) {
+          scoped[j.value("name", "")] = j.value("model_instance", "") + "::" + j.value("name", "");
+        }
+        CompareStatic(ref, plant, &rep);
+      }
+      // shapes and roles are reported at configuration 0 only
+      Report quiet(mc.display, oracle);
+      const std::vector<GeomMatch> geoms = CompareGeometry(ref, plant, c == 0 ? &rep : &quiet);
+      CompareConfiguration(ref, C, plant, geoms, &rep);
+    } catch (const json::exception& e) {
+      rep.Add(std::string("malformed plant-json (") + e.what() + ")");
+    }
+    if (rep.size() > before) rep.Add("reproduce with: " + plant.cmdline);
+  }
+  if (!mc.known.empty()) {
+    if (compiled && rep.size() == 0) {
+      ADD_FAILURE() << "[" << mc.display << "] stale kKnownDisagreements entry: mdlc now agrees "
+                    << "with " << oracle << " (listed because: " << mc.known << ")";
+      return;
+    }
+    GTEST_SKIP() << "known disagreement: " << mc.known << "\n" << rep.Text();
+  }
+  if (rep.size() > 0) ADD_FAILURE() << rep.Text();
+}
+
+struct CaseName {
+  std::string operator()(const ::testing::TestParamInfo<ModelCase>& info) const {
+    return info.param.id;
+  }
+};
+
+INSTANTIATE_TEST_SUITE_P(Corpus, MujocoOracle, ::testing::ValuesIn(CorpusCases()), CaseName());
+INSTANTIATE_TEST_SUITE_P(HandMade, MujocoOracle, ::testing::ValuesIn(HandMadeCases()), CaseName());
+INSTANTIATE_TEST_SUITE_P(Extra, MujocoOracle, ::testing::ValuesIn(ExtraCases()), CaseName());
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(MujocoOracle);
+
+// ---------------------------------------------------------------------------
+// Self-checks of the oracle (no mdlc involved)
+// ---------------------------------------------------------------------------
+
+std::string HandModel(const std::string& file) {
+  return (fs::path(MDLC_TEST_MODELS) / "mjcf" / "oracle" / file).string();
+}
+
+// Every kKnownDisagreements entry names a model the test runs.
+TEST(MujocoOracleSelfCheck, KnownDisagreementsNameModels) {
+  std::set<std::string> keys;
+  for (const auto& c : CorpusCases()) {
+    if (c.display.rfind("corpus/", 0) == 0) keys.insert(c.display.substr(7));
+  }
+  for (const auto& c : HandMadeCases()) keys.insert(c.display);
+  if (keys.size() <= 1) GTEST_SKIP() << "shared corpus not found";
+  for (const auto& k : kKnownDisagreements) EXPECT_TRUE(keys.count(k.path)) << k.path;
+}
+
+// MuJoCo 3.3.8 is the version the tests claim.
+TEST(MujocoOracleSelfCheck, VersionIs338) {
+  if (const std::string why = MujocoJsUnavailable(); !why.empty()) GTEST_SKIP() << why;
+  const RunResult r = RunProcess({NodeBinary(), DumpScript().string(), "--version"}, 120.0);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(json::parse(r.out).value("version", ""), "3.3.8");
+}
+
+// MJCF-020/022/023/040: Drake's names for unnamed bodies (counting the
+// intermediate bodies of stacked joints), joints and geoms.
+TEST(MujocoOracleSelfCheck, MJCF020_MJCF023_DrakeNames) {
+  if (const std::string why = MujocoJsUnavailable(); !why.empty()) GTEST_SKIP() << why;
+  std::string problem;
+  const json d = DumpMujoco3(HandModel("stacked_joints_ref.xml"), &problem);
+  ASSERT_EQ(problem, "");
+  ASSERT_TRUE(d.value("ok", false)) << d.dump();
+  const Reference r = BuildReference(d);
+  std::vector<std::string> bodies;
+  for (const auto& b : r.bodies) bodies.push_back(b.name);
+  // world(0) base(1) hip(2) hip0(3) hip1(4) body5(5) body50(6) body7(7)
+  // body8(8) after_weld(9) after_weld0(10)
+  EXPECT_EQ(bodies, (std::vector<std::string>{"world", "base", "hip", "body5", "body7", "body8",
+                                              "after_weld"}));
+  EXPECT_EQ(r.bodies[2].dummies, (std::vector<std::string>{"hip0", "hip1"}));
+  EXPECT_EQ(r.bodies[3].dummies, (std::vector<std::string>{"body50"}));
+  std::vector<std::string> joints;
+  for (const auto& j : r.joints) joints.push_back(j.name + ":" + j.parent + ">" + j.child);
+  EXPECT_EQ(joints, (std::vector<std::string>{
+                        "base_yaw:world>base", "hip_x:base>hip0", "hip_slide:hip0>hip1",
+                        "hip_z:hip1>hip", "hip-body50:hip>body50", "body50-body5:body50>body5",
+                        "body5-body7:body5>body7", "body8-after_weld0:body8>after_weld0",
+                        "after_weld0-after_weld:after_weld0>after_weld"}));
+  std::vector<std::string> geoms;
+  for (const auto& g : r.geoms) geoms.push_back(g.body + "/" + g.name);
+  EXPECT_EQ(geoms, (std::vector<std::string>{"base/geom0", "hip/geom0", "body5/geom0",
+                                             "body7/geom0", "body8/geom0", "after_weld/geom0"}));
+  // qpos0 is the ref (degrees converted), the default configuration.
+  EXPECT_NEAR(r.joints[0].qpos0, 15 * M_PI / 180, 1e-15);
+  EXPECT_NEAR(r.joints[2].qpos0, 0.03, 1e-15);
+}
+
+// The dump's mass matrix: a single hinge at distance l from a point mass m
+// has M = m l^2 + armature; the oracle removes the armature.
+TEST(MujocoOracleSelfCheck, MassMatrixAndArmature) {
+  if (const std::string why = MujocoJsUnavailable(); !why.empty()) GTEST_SKIP() << why;
+  std::string problem;
+  const json d = DumpMujoco3(HandModel("defaults_childclass.xml"), &problem);
+  ASSERT_EQ(problem, "");
+  ASSERT_TRUE(d.value("ok", false)) << d.dump();
+  const Reference r = BuildReference(d);
+  // shoulder's class "arm" sets armature 0.01; root_hinge has none.
+  for (const auto& J : r.joints) {
+    if (J.name == "shoulder") {
+      EXPECT_DOUBLE_EQ(J.armature, 0.01);
+    }
+    if (J.name == "root_hinge") {
+      EXPECT_DOUBLE_EQ(J.armature, 0.0);
+    }
+  }
+  ASSERT_GE(r.configs.size(), 2u);
+  for (const auto& C : r.configs) {
+    // M is symmetric positive definite on the moving dofs, and the diagonal
+    // entry of a joint with armature is at least the armature.
+    for (const auto& [ij, v] : C.M) {
+      if (ij.first == ij.second) {
+        EXPECT_GT(v, 0);
+      }
+    }
+  }
+}
+
+// Geometry poses: MuJoCo's mesh offset undone puts the mesh back in the
+// frame the file gives it (the wedge's first vertex is at (0.1, 0, 0) in its
+// file; the world_wedge geom is at (1, 0, 0) yawed 90 degrees).
+TEST(MujocoOracleSelfCheck, MJCF050_MeshOffsetUndone) {
+  if (const std::string why = MujocoJsUnavailable(); !why.empty()) GTEST_SKIP() << why;
+  std::string problem;
+  const json d = DumpMujoco3(HandModel("mesh_geoms.xml"), &problem);
+  ASSERT_EQ(problem, "");
+  ASSERT_TRUE(d.value("ok", false)) << d.dump();
+  const Reference r = BuildReference(d);
+  ASSERT_EQ(r.geoms[0].name, "world_wedge");
+  ASSERT_TRUE(r.geoms[0].has_mesh_offset);
+  const Isometry3d X = r.configs[0].X_WG[0] * r.geoms[0].X_mesh.inverse();
+  EXPECT_TRUE(X.translation().isApprox(Vector3d(1, 0, 0), 1e-6)) << X.translation().transpose();
+  const Matrix3d Rz = Eigen::AngleAxisd(M_PI / 2, Vector3d::UnitZ()).toRotationMatrix();
+  EXPECT_TRUE(X.linear().isApprox(Rz, 1e-6)) << X.linear();
+  // the wedge's volume is 0.2 * 0.05 / 2 * 0.12 = 6e-4 m^3 at density 1000,
+  // and the scaled one (2 x 1 x 1.5) 1.8e-3 m^3 at density 500.
+  EXPECT_NEAR(r.bodies[1].mass, 0.6 + 0.9, 1e-6);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.rfind("--mdlc=", 0) == 0) g_mdlc_binary = a.substr(7);
+  }
+  return RUN_ALL_TESTS();
+}

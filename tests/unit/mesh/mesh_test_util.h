@@ -1,0 +1,129 @@
+// mesh_test_util.h - test meshes (tests/models/meshes, made by generate.py)
+// and a small IR fixture for running the mesh and mass passes on geometry
+// built by hand, without a frontend.
+#pragma once
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "ir/module.h"
+#include "passes/pass.h"
+#include "passes/pass_registry.h"
+
+namespace mdlc::testing {
+
+inline std::string MeshPath(std::string_view name) {
+  return fmt::format("{}/meshes/{}", MDLC_TEST_MODELS, name);
+}
+
+/// EXPECT that two matrices agree entry by entry within `tol`.
+inline void ExpectNear(const Eigen::MatrixXd& actual, const Eigen::MatrixXd& expected, double tol,
+                       std::string_view what = "") {
+  ASSERT_EQ(actual.rows(), expected.rows()) << what;
+  ASSERT_EQ(actual.cols(), expected.cols()) << what;
+  EXPECT_TRUE((actual - expected).cwiseAbs().maxCoeff() <= tol)
+      << what << "\nactual:\n" << actual << "\nexpected:\n" << expected;
+}
+
+/// Rotation from MuJoCo's quaternion (w x y z).
+inline Eigen::Matrix3d Quat(double w, double x, double y, double z) {
+  return Eigen::Quaterniond(w, x, y, z).normalized().toRotationMatrix();
+}
+
+/// A module with one MJCF-like model; geometries placed by hand; passes run
+/// by name. Every entity is located on its own line of a dummy source.
+struct MassFixture {
+  SourceManager sources;
+  DiagnosticEngine diags;
+  ir::Module module;
+  FileId file;
+  ModelId model;
+  uint32_t next_line = 1;
+  std::shared_ptr<mesh::MeshCache> meshes = std::make_shared<mesh::MeshCache>();
+
+  MassFixture() {
+    file = sources.AddBuffer("model.xml", std::string(200, '\n'));
+    ir::ModelInstance mi;
+    mi.name = module.Intern("m");
+    mi.format = ir::SourceFormat::Mjcf;
+    mi.loc = NextLoc();
+    model = module.Add(mi);
+  }
+  Loc NextLoc() { return Loc{file, next_line++, 1}; }
+
+  BodyId AddBody(std::string_view name, bool from_geometry = true) {
+    ir::Body b;
+    b.name = module.Intern(name);
+    b.model = model;
+    b.loc = NextLoc();
+    b.mass_from_geometry = from_geometry;
+    return module.Add(b);
+  }
+  /// A geometry of `shape` on `body` at X_BG contributing with `c`.
+  GeometryId AddGeom(BodyId body, ir::Shape shape, const Transform& X_BG = {},
+                     std::optional<ir::MassContribution> c = ir::MassContribution{}) {
+    ir::Geometry g;
+    g.name = module.Intern(fmt::format("g{}", module.geometries.size()));
+    g.model = model;
+    g.loc = NextLoc();
+    g.body = {module[body].name, g.loc, body};
+    g.X_BG = X_BG;
+    g.shape = std::move(shape);
+    g.roles = ir::kProximityRole | ir::kIllustrationRole;
+    g.mass_contribution = c;
+    return module.Add(g);
+  }
+  /// A mesh shape for a file of tests/models/meshes, already resolved.
+  ir::Mesh Mesh(std::string_view file_name, Eigen::Vector3d scale = Eigen::Vector3d::Ones()) {
+    ir::Mesh m;
+    m.uri = std::string(file_name);
+    m.uri_loc = NextLoc();
+    m.resolved = MeshPath(file_name);
+    m.scale = scale;
+    return m;
+  }
+
+  /// Runs the named passes in order; false when one reported an error.
+  bool Run(std::vector<std::string_view> names) {
+    passes::PassContext ctx{module, diags, sources};
+    ctx.meshes = meshes;
+    for (std::string_view n : names) {
+      auto pass = passes::CreatePass(n);
+      EXPECT_TRUE(pass) << n;
+      if (!pass || !pass->Run(ctx)) return false;
+    }
+    return !diags.has_errors();
+  }
+  /// The mesh and mass passes, in pipeline order.
+  bool RunMassPipeline() { return Run({"load-meshes", "fit-to-mesh", "mass-from-geometry"}); }
+
+  std::string Messages() const {
+    std::string out;
+    for (const auto& d : diags.diagnostics()) {
+      out += fmt::format("{}:{}: [{}] {}\n", d.loc.line, d.loc.column, InfoFor(d.kind).name,
+                         d.message);
+    }
+    return out;
+  }
+  const Diagnostic* Find(DiagKind kind) const {
+    for (const auto& d : diags.diagnostics()) {
+      if (d.kind == kind) return &d;
+    }
+    return nullptr;
+  }
+
+  /// The body's inertia about its center of mass, in the body frame.
+  Eigen::Matrix3d InertiaB(BodyId body) const {
+    const ir::Inertial& in = *module[body].inertial;
+    Eigen::Matrix3d I;
+    I << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
+    return in.X_BI.R * I * in.X_BI.R.transpose();
+  }
+  Eigen::Vector3d Com(BodyId body) const { return module[body].inertial->X_BI.p; }
+};
+
+}  // namespace mdlc::testing
