@@ -172,7 +172,7 @@ struct Joint {
   bool unnamed = false;                   // synthesized by the compiler
 };
 
-struct Box { Eigen::Vector3d size; };
+struct Box { Eigen::Vector3d size = Eigen::Vector3d::Zero(); };
 struct Sphere { double radius = 0; };
 struct Cylinder { double radius = 0, length = 0; };
 struct Capsule { double radius = 0, length = 0; };

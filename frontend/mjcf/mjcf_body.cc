@@ -9,6 +9,7 @@
 // (mjcf_geom.cc). Child bodies go back on the stack.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 
 #include "frontend/mjcf/mjcf_lowering.h"
@@ -20,6 +21,39 @@ namespace {
 struct BodyItems {
   std::vector<BodyItem> inertials, joints, geoms, sites, cameras, bodies;
 };
+
+/// <composite>, <attach> and <replicate> generate bodies, joints and geoms
+/// that mdlc does not create: every one gets its own warning saying what is
+/// missing from the plant (MJCF-091), not one warning per kind.
+void WarnModelGenerator(MjcfReader& r, const xml::XmlElement& e, std::string_view tag) {
+  auto attr = [&](std::string_view name) {
+    const xml::XmlAttribute a = e.Attribute(name);
+    return a.present() ? std::string(a.value) : std::string("?");
+  };
+  std::string what;
+  if (tag == "composite") {
+    long bodies = 1;
+    if (auto counts = xml::ParseDoubleList(e.Attribute("count").value)) {
+      for (double c : *counts) bodies *= std::max(1L, static_cast<long>(c));
+    }
+    what = fmt::format(
+        "<composite type=\"{}\"> is MuJoCo 2's body-generating macro (MuJoCo 3 replaced it with "
+        "<flexcomp> and <replicate>); mdlc does not expand it, so the up to {} bodies it would "
+        "generate, with their joints, geoms, tendons and equalities, are missing from the plant",
+        attr("type"), bodies);
+  } else if (tag == "attach") {
+    what = fmt::format(
+        "<attach model=\"{}\" body=\"{}\"> is not expanded: body '{}' of model '{}' and "
+        "everything below it are missing from the plant",
+        attr("model"), attr("body"), attr("body"), attr("model"));
+  } else {
+    what = fmt::format(
+        "<replicate count=\"{}\"> is not expanded: the {} copies of its contents are missing from "
+        "the plant",
+        attr("count"), attr("count"));
+  }
+  r.diags().Report(DiagKind::UnsupportedElement, e.GetLoc(), what);
+}
 
 BodyItems Collect(MjcfReader& r, const xml::XmlElement& body, const std::string& childclass,
                   bool is_world) {
@@ -69,8 +103,9 @@ BodyItems Collect(MjcfReader& r, const xml::XmlElement& body, const std::string&
       items.cameras.push_back(std::move(item));
     } else if (tag == "body") {
       items.bodies.push_back(std::move(item));
-    } else if (tag == "light" || tag == "composite" || tag == "flexcomp" || tag == "plugin" ||
-               tag == "attach" || tag == "replicate") {
+    } else if (tag == "composite" || tag == "attach" || tag == "replicate") {
+      WarnModelGenerator(r, e, tag);
+    } else if (tag == "light" || tag == "flexcomp" || tag == "plugin") {
       r.WarnOnce(e.GetLoc(), DiagKind::UnsupportedElement, is_world ? "worldbody" : "body", tag);
     } else {
       r.WarnOnce(e.GetLoc(), DiagKind::UnknownElement, is_world ? "worldbody" : "body", tag,

@@ -11,12 +11,18 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -44,6 +50,51 @@ inline bool Near(double a, double b, double tol = kRelTol) {
   if (std::isinf(a) || std::isinf(b)) return a == b;
   if (std::isnan(a) || std::isnan(b)) return false;
   return std::abs(a - b) <= tol * std::max({1.0, std::abs(a), std::abs(b)});
+}
+
+// ---------------------------------------------------------------------------
+// Parameterized cases
+// ---------------------------------------------------------------------------
+
+/// A gtest parameter name from a path: every character that is not a letter
+/// or a digit becomes '_'.
+inline std::string Sanitize(const std::string& s) {
+  std::string out;
+  for (char c : s) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return out;
+}
+
+/// Makes the cases' `id`s unique (gtest needs them so): the second of a name
+/// gets "_2", the third "_3", ...
+template <typename Case>
+void Uniquify(std::vector<Case>* cases) {
+  std::map<std::string, int> seen;
+  for (auto& c : *cases) {
+    const int n = seen[c.id]++;
+    if (n > 0) c.id += "_" + std::to_string(n + 1);
+  }
+}
+
+/// The rows of the shared corpus's manifest.tsv, split at tabs, header left
+/// out; nullopt when the file cannot be read.
+inline std::optional<std::vector<std::vector<std::string>>> ReadManifest(
+    const std::filesystem::path& manifest) {
+  std::ifstream in(manifest);
+  if (!in) return std::nullopt;
+  std::vector<std::vector<std::string>> rows;
+  std::string line;
+  bool header = true;
+  while (std::getline(in, line)) {
+    if (header) {
+      header = false;
+      continue;
+    }
+    std::vector<std::string> cols;
+    std::stringstream ss(line);
+    for (std::string col; std::getline(ss, col, '\t');) cols.push_back(col);
+    rows.push_back(std::move(cols));
+  }
+  return rows;
 }
 
 // ---------------------------------------------------------------------------

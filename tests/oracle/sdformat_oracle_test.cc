@@ -902,26 +902,12 @@ constexpr KnownDisagreement kKnownDisagreements[] = {
 // Keeps gtest from dumping the struct's bytes in test listings.
 void PrintTo(const ModelCase& c, std::ostream* os) { *os << c.display; }
 
-std::string Sanitize(const std::string& s) {
-  std::string out;
-  for (char c : s) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-  return out;
-}
-
-void Uniquify(std::vector<ModelCase>* cases) {
-  std::map<std::string, int> seen;
-  for (auto& c : *cases) {
-    const int n = seen[c.id]++;
-    if (n > 0) c.id += "_" + std::to_string(n + 1);
-  }
-}
-
 std::vector<ModelCase> CorpusCases() {
   std::vector<ModelCase> cases;
   const fs::path corpus = fs::path(MDLC_SHARED_DIR) / "corpus";
   const fs::path manifest = corpus / "manifest.tsv";
-  std::ifstream in(manifest);
-  if (std::string(MDLC_SHARED_DIR).empty() || !in) {
+  const auto rows = ReadManifest(manifest);
+  if (std::string(MDLC_SHARED_DIR).empty() || !rows) {
     ModelCase c;
     c.id = "shared_corpus_unavailable";
     c.skip_reason = "shared corpus not found (" + manifest.string() +
@@ -929,17 +915,7 @@ std::vector<ModelCase> CorpusCases() {
     cases.push_back(c);
     return cases;
   }
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::vector<std::string> cols;
-    std::stringstream ss(line);
-    std::string col;
-    while (std::getline(ss, col, '\t')) cols.push_back(col);
+  for (const std::vector<std::string>& cols : *rows) {
     if (cols.size() < 7 || cols[0] != "sdf" || cols[6].rfind("yes", 0) != 0) continue;
     ModelCase c;
     std::string stem = cols[1];

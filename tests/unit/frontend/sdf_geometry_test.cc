@@ -77,11 +77,11 @@ TEST(SdfGeometry, EveryShapeLowers) {  // SDF-040, EXT-035
   EXPECT_EQ(std::get<ir::Cylinder>(shape("cylinder")).length, 2);
   EXPECT_EQ(std::get<ir::Capsule>(shape("capsule")).radius, 0.2);
   EXPECT_EQ(std::get<ir::Capsule>(shape("capsule")).length, 3);
-  const auto& e = std::get<ir::Ellipsoid>(shape("ellipsoid"));
+  const ir::Ellipsoid e = std::get<ir::Ellipsoid>(shape("ellipsoid"));  // a copy: shape() returns a temporary
   EXPECT_EQ(Eigen::Vector3d(e.a, e.b, e.c), Eigen::Vector3d(1, 2, 3));
   EXPECT_EQ(std::get<ir::Capsule>(shape("dcapsule")).radius, 0.3);
   EXPECT_EQ(std::get<ir::Capsule>(shape("dcapsule")).length, 4);
-  const auto& de = std::get<ir::Ellipsoid>(shape("dellipsoid"));
+  const ir::Ellipsoid de = std::get<ir::Ellipsoid>(shape("dellipsoid"));
   EXPECT_EQ(Eigen::Vector3d(de.a, de.b, de.c), Eigen::Vector3d(4, 5, 6));
   EXPECT_TRUE(std::holds_alternative<ir::HalfSpace>(shape("plane")));
   // the geometry is the link's, by name and by id
