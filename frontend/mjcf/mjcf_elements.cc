@@ -49,18 +49,8 @@ std::optional<double> ElementsLowering::Double(const Attribute& a) {
 
 std::optional<std::vector<double>> ElementsLowering::Doubles(const Attribute& a, size_t n,
                                                              bool at_most) {
-  if (!a.present()) return std::nullopt;
-  std::optional<std::vector<double>> v = xml::ParseDoubleList(a.value);
-  bool finite = v.has_value();
-  if (v) {
-    for (double x : *v) finite = finite && std::isfinite(x);
-  }
-  if (!finite) {
-    diags().Report(DiagKind::BadValue, a.loc,
-                   fmt::format("attribute '{}' must be a list of finite numbers, not '{}'",
-                               a.name, a.value));
-    return std::nullopt;
-  }
+  std::optional<std::vector<double>> v = AnyDoubles(a);
+  if (!v) return std::nullopt;
   const bool count_ok = at_most ? (!v->empty() && v->size() <= n) : v->size() == n;
   if (!count_ok) {
     diags().Report(DiagKind::BadValue, a.loc,
@@ -80,7 +70,8 @@ std::optional<std::vector<double>> ElementsLowering::AnyDoubles(const Attribute&
   }
   if (!finite) {
     diags().Report(DiagKind::BadValue, a.loc,
-                   fmt::format("attribute '{}' must be a list of finite numbers", a.name));
+                   fmt::format("attribute '{}' must be a list of finite numbers, not '{}'",
+                               a.name, a.value));
     return std::nullopt;
   }
   return v;
