@@ -304,20 +304,10 @@ std::vector<ModelCase> CorpusCases() {
   return cases;
 }
 
-std::vector<fs::path> XmlFilesIn(const fs::path& dir) {
-  std::error_code ec;
-  std::vector<fs::path> files;
-  for (const auto& e : fs::directory_iterator(dir, ec)) {
-    if (e.path().extension() == ".xml") files.push_back(e.path());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 std::vector<ModelCase> HandMadeCases() {
   std::vector<ModelCase> cases;
   const fs::path dir = fs::path(MDLC_TEST_MODELS) / "mjcf" / "oracle";
-  for (const auto& f : XmlFilesIn(dir)) {
+  for (const auto& f : FilesWithExtension(dir, ".xml")) {
     ModelCase c;
     c.id = Sanitize(f.stem().string());
     c.path = f.string();
@@ -344,7 +334,7 @@ std::vector<ModelCase> ExtraCases() {
   for (std::string item; std::getline(ss, item, ':');) {
     if (item.empty()) continue;
     std::vector<fs::path> files;
-    if (fs::is_directory(item)) files = XmlFilesIn(item);
+    if (fs::is_directory(item)) files = FilesWithExtension(item, ".xml");
     else files.push_back(item);
     for (const auto& f : files) {
       ModelCase c;

@@ -75,6 +75,19 @@ void Uniquify(std::vector<Case>* cases) {
   }
 }
 
+/// The files in `dir` (not below it) whose extension is `ext` (".xml"),
+/// sorted; none when the folder cannot be read.
+inline std::vector<std::filesystem::path> FilesWithExtension(const std::filesystem::path& dir,
+                                                             const std::string& ext) {
+  std::error_code ec;
+  std::vector<std::filesystem::path> files;
+  for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+    if (e.path().extension() == ext) files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
 /// The rows of the shared corpus's manifest.tsv, split at tabs, header left
 /// out; nullopt when the file cannot be read.
 inline std::optional<std::vector<std::vector<std::string>>> ReadManifest(

@@ -940,20 +940,10 @@ std::vector<ModelCase> CorpusCases() {
   return cases;
 }
 
-std::vector<fs::path> SdfFilesIn(const fs::path& dir) {
-  std::error_code ec;
-  std::vector<fs::path> files;
-  for (const auto& e : fs::directory_iterator(dir, ec)) {
-    if (e.path().extension() == ".sdf") files.push_back(e.path());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 std::vector<ModelCase> HandMadeCases() {
   std::vector<ModelCase> cases;
   const fs::path dir = fs::path(MDLC_TEST_MODELS) / "sdf";
-  for (const auto& f : SdfFilesIn(dir)) {
+  for (const auto& f : FilesWithExtension(dir, ".sdf")) {
     ModelCase c;
     c.id = Sanitize(f.stem().string());
     c.path = f.string();
@@ -1508,7 +1498,7 @@ std::vector<ModelCase> ExtraCases() {
   for (std::string item; std::getline(ss, item, ':');) {
     if (item.empty()) continue;
     std::vector<fs::path> files;
-    if (fs::is_directory(item)) files = SdfFilesIn(item);
+    if (fs::is_directory(item)) files = FilesWithExtension(item, ".sdf");
     else files.push_back(item);
     for (const auto& f : files) {
       ModelCase c;

@@ -530,20 +530,10 @@ std::vector<ModelCase> CorpusCases() {
   return cases;
 }
 
-std::vector<fs::path> UrdfFilesIn(const fs::path& dir) {
-  std::error_code ec;
-  std::vector<fs::path> files;
-  for (const auto& e : fs::directory_iterator(dir, ec)) {
-    if (e.path().extension() == ".urdf") files.push_back(e.path());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 std::vector<ModelCase> HandMadeCases() {
   std::vector<ModelCase> cases;
   const fs::path dir = fs::path(MDLC_TEST_MODELS) / "urdf";
-  for (const auto& f : UrdfFilesIn(dir)) {
+  for (const auto& f : FilesWithExtension(dir, ".urdf")) {
     ModelCase c;
     c.id = Sanitize(f.stem().string());
     c.path = f.string();
@@ -1062,7 +1052,7 @@ std::vector<ModelCase> ExtraCases() {
   for (std::string item; std::getline(ss, item, ':');) {
     if (item.empty()) continue;
     std::vector<fs::path> files;
-    if (fs::is_directory(item)) files = UrdfFilesIn(item);
+    if (fs::is_directory(item)) files = FilesWithExtension(item, ".urdf");
     else files.push_back(item);
     for (const auto& f : files) {
       ModelCase c;
