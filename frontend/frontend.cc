@@ -52,10 +52,7 @@ std::optional<ModelId> ReadModel(FileId file, Format format, FrontendContext& ct
     case Format::Urdf: return ReadUrdf(file, ctx);
     case Format::Sdf: return ReadSdf(file, ctx);
     case Format::Mjcf: return ReadMjcf(file, ctx);
-    case Format::Directives:
-      ctx.diags.Report(DiagKind::NotImplemented, Loc{file, 1, 1},
-                       fmt::format("the {} frontend is not implemented yet", FormatName(format)));
-      return std::nullopt;
+    case Format::Directives: return ReadDirectives(file, ctx);
   }
   return std::nullopt;
 }

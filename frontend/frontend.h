@@ -67,5 +67,9 @@ std::optional<ModelId> ReadUrdf(FileId file, FrontendContext& ctx);
 std::optional<ModelId> ReadSdf(FileId file, FrontendContext& ctx);
 /// MJCF (MuJoCo XML) frontend (frontend/mjcf/).
 std::optional<ModelId> ReadMjcf(FileId file, FrontendContext& ctx);
+/// Model Directives frontend (frontend/directives/): loads every model the
+/// file adds; returns the default instance, which holds its global filter
+/// groups.
+std::optional<ModelId> ReadDirectives(FileId file, FrontendContext& ctx);
 
 }  // namespace mdlc::frontend

@@ -13,6 +13,7 @@
 
 #include "ir/entities.h"
 #include "ir/frame_graph.h"
+#include "ir/scene_directives.h"
 #include "ir/symbol.h"
 
 namespace mdlc::ir {
@@ -38,6 +39,9 @@ struct Module {
   std::vector<Camera> cameras;
   /// SDFormat poses and attachments awaiting the resolve-frames pass.
   FrameGraph frame_graph;
+  /// Model Directives' frames, welds and default poses awaiting the
+  /// apply-directives pass, in directive order.
+  std::vector<SceneEdit> scene_edits;
 
   /// Plant-wide settings a model may give (MJCF <option>); unset: Drake's defaults.
   std::optional<Eigen::Vector3d> gravity;  // m/s^2, in world

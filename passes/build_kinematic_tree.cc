@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <unordered_set>
 
+#include "passes/floating_joint.h"
 #include "passes/pass_registry.h"
 
 namespace mdlc::passes {
@@ -125,33 +126,15 @@ void BuildKinematicTreePass::ReportLoop(PassContext& ctx, const std::vector<Join
 void BuildKinematicTreePass::AddFloatingJoint(PassContext& ctx, BodyId body) {
   ir::Module& m = ctx.module;
   const ir::Body& b = m[body];
-  // Drake names a free body's joint after the body, prefixing '_' on a clash
-  std::string name(m.Text(b.name));
-  auto taken = [&](const std::string& n) {
+  const std::string name = FloatingJointName(m.Text(b.name), [&](const std::string& n) {
     Symbol s = m.symbols.Find(n);
     if (s.empty()) return false;
     for (const ir::Joint& j : m.joints) {
       if (j.model == b.model && j.name == s) return true;
     }
     return false;
-  };
-  while (taken(name)) name = "_" + name;
-  ir::Joint j;
-  j.name = m.Intern(name);
-  j.model = b.model;
-  j.loc = b.loc;
-  j.type = ir::JointType::QuaternionFloating;
-  j.parent = {m.bodies[0].name, {}, ir::kWorldBody};
-  j.child = {b.name, b.loc, body};
-  j.limits = ir::JointLimits::Unbounded(6);
-  j.damping.assign(6, 0.0);
-  if (b.default_pose) {
-    const Eigen::Quaterniond q = CanonicalQuaternion(b.default_pose->R);
-    const Eigen::Vector3d& p = b.default_pose->p;
-    j.default_positions = {q.w(), q.x(), q.y(), q.z(), p.x(), p.y(), p.z()};
-  }
-  j.unnamed = true;
-  m.Add(std::move(j));
+  });
+  m.Add(MakeFloatingJoint(m, m.Intern(name), b.loc, ir::kWorldBody, {}, body, {}, b.default_pose));
 }
 
 }  // namespace

@@ -10,16 +10,13 @@
 #include <vector>
 
 #include "ir/module.h"
+#include "ir/scoped_name.h"
 
 namespace mdlc::passes {
 
-/// Splits "a::b::c" into scope "a::b" and element "c" (scope empty when
-/// unscoped). Returns nullopt for malformed names ("::x", "x::", "a::::b").
-struct SplitName {
-  std::string_view scope;
-  std::string_view element;
-};
-std::optional<SplitName> SplitScopedName(std::string_view name);
+using ir::ClosestName;
+using ir::SplitName;
+using ir::SplitScopedName;
 
 template <typename IdT>
 class NameIndex {
@@ -47,10 +44,5 @@ class ModelIndex {
  private:
   std::unordered_map<std::string, ModelId> map_;
 };
-
-/// The closest of `candidates` to `wanted` by edit distance, when close
-/// enough to be a plausible typo ("did you mean ...").
-std::optional<std::string> ClosestName(std::string_view wanted,
-                                       const std::vector<std::string_view>& candidates);
 
 }  // namespace mdlc::passes

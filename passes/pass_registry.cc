@@ -13,6 +13,9 @@ const std::vector<PassInfo>& RegisteredPasses() {
   static const std::vector<PassInfo> passes = {
       Info<CreateResolveFramesPass>(),
       Info<CreateResolveNamesPass>(),
+      // scene directives need every model's frames, and add joints the
+      // checks below must see
+      Info<CreateApplyDirectivesPass>(),
       Info<CreateCheckJointsPass>(),
       Info<CreateCheckModelElementsPass>(),
       Info<CreateBuildKinematicTreePass>(),

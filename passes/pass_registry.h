@@ -27,6 +27,7 @@ std::unique_ptr<Pass> CreatePass(std::string_view name);
 // factories, one per pass file
 std::unique_ptr<Pass> CreateResolveFramesPass();
 std::unique_ptr<Pass> CreateResolveNamesPass();
+std::unique_ptr<Pass> CreateApplyDirectivesPass();
 std::unique_ptr<Pass> CreateBuildKinematicTreePass();
 std::unique_ptr<Pass> CreateInertiaFromCollisionsPass();
 std::unique_ptr<Pass> CreateCheckInertiaPass();

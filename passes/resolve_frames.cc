@@ -509,6 +509,7 @@ bool ResolveFramesPass::Run(PassContext& ctx) {
   // scope frames top-down (each scope's frame lives in its parent scope)
   for (size_t i = 1; i < n_scopes; ++i) {
     const FrameScope& s = g().scopes[i];
+    if (s.is_world) continue;  // each SDFormat file of a compile has its own world scope
     const FrameNodeId f = s.frame;
     world_[f.index()] = world_[g()[s.parent].frame.index()] * local_[f.index()];
   }

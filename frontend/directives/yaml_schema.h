@@ -1,0 +1,86 @@
+// yaml_schema.h - strict, located reading of YAML for schema-defined formats
+// (Model Directives).
+//
+// yaml-cpp builds the node tree; this reader checks it against the schema the
+// caller states field by field, the way Drake's YAML archive does: a map may
+// hold only the keys the schema names (each once), a field has one type, and
+// every problem is reported at the node's line and column. Each read reports
+// its own problem and returns nullopt, so callers skip what they could not
+// read and go on to report the next problem.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <Eigen/Core>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ir/diagnostics.h"
+#include "ir/source_manager.h"
+
+namespace mdlc::frontend {
+
+/// A scalar string with where it was written.
+struct LocatedString {
+  std::string text;
+  Loc loc;
+};
+
+class YamlSchemaReader {
+ public:
+  YamlSchemaReader(FileId file, DiagnosticEngine& diags) : file_(file), diags_(diags) {}
+
+  /// Parses a whole buffer. A syntax error (including nesting beyond
+  /// yaml-cpp's depth guard) is reported at its position; nullopt then.
+  std::optional<YAML::Node> Parse(std::string_view contents);
+
+  /// Where `node` starts; `fallback` for nodes yaml-cpp has no mark for
+  /// (an absent value).
+  Loc LocOf(const YAML::Node& node, Loc fallback = {}) const;
+
+  /// Checks that `node` is a map whose keys are all among `allowed`, each
+  /// once. Unknown keys (with a suggestion) and repeated keys are errors.
+  /// Returns false when `node` is not a map at all.
+  bool CheckMap(const YAML::Node& node, std::string_view what,
+                std::initializer_list<std::string_view> allowed, Loc fallback = {});
+
+  /// The value of `key` in map `node`, with the key's location; an undefined
+  /// node when absent.
+  struct Field {
+    YAML::Node value;
+    Loc key_loc;
+    bool present() const { return value.IsDefined(); }
+  };
+  Field Get(const YAML::Node& map, std::string_view key) const;
+
+  /// A scalar (null reads as ""). `what` names the field in messages.
+  std::optional<LocatedString> String(const YAML::Node& node, std::string_view what, Loc fallback);
+  /// A finite number.
+  std::optional<double> Number(const YAML::Node& node, std::string_view what, Loc fallback);
+  /// A sequence of finite numbers; exactly `count` of them when given.
+  std::optional<std::vector<double>> Numbers(const YAML::Node& node, std::string_view what,
+                                             Loc fallback, std::optional<size_t> count = {});
+  std::optional<Eigen::Vector3d> Vector3(const YAML::Node& node, std::string_view what,
+                                         Loc fallback);
+  /// A sequence of scalars (null reads as an empty list).
+  std::optional<std::vector<LocatedString>> Strings(const YAML::Node& node, std::string_view what,
+                                                    Loc fallback);
+
+  /// The node's tag when the author wrote one ("!Rpy"); empty otherwise.
+  static std::string_view ExplicitTag(const YAML::Node& node);
+
+  DiagnosticEngine& diags() { return diags_; }
+  FileId file() const { return file_; }
+
+ private:
+  void ReportType(const YAML::Node& node, std::string_view what, std::string_view expected,
+                  Loc fallback);
+
+  FileId file_;
+  DiagnosticEngine& diags_;
+};
+
+}  // namespace mdlc::frontend
