@@ -115,7 +115,11 @@ bool DirectivesReader::Open(FileId file, std::string ns) {
     diags().Report(DiagKind::EmptyFile, start, "the model directives file is empty");
     return false;
   }
-  if (!r.CheckMap(*doc, "a model directives file", {"directives"}, start)) return false;
+  const size_t errors_before = diags().error_count();
+  if (!r.CheckMap(*doc, "a model directives file", {"directives"}, start) ||
+      diags().error_count() != errors_before) {
+    return false;
+  }
   auto directives = r.Get(*doc, "directives");
   if (!directives.present() || directives.value.IsNull()) {
     diags().Report(DiagKind::MissingElement, directives.present() ? directives.key_loc : start,
@@ -157,13 +161,14 @@ void DirectivesReader::RunDirective(YamlSchemaReader& r, const YAML::Node& direc
   const auto entry = directive.begin();
   const std::string& kind = entry->first.Scalar();
   const YAML::Node& body = entry->second;
-  const Loc body_loc = r.LocOf(body, r.LocOf(entry->first, loc));
-  if (kind == "add_model") AddModel(r, body, body_loc, ns);
-  else if (kind == "add_model_instance") AddModelInstanceDirective(r, body, body_loc, ns);
-  else if (kind == "add_frame") AddFrame(r, body, body_loc, ns);
-  else if (kind == "add_weld") AddWeld(r, body, body_loc, ns);
-  else if (kind == "add_collision_filter_group") AddCollisionFilterGroup(r, body, body_loc, ns);
-  else if (kind == "add_directives") AddDirectives(r, body, body_loc, ns);
+  // what a directive lacks is reported at its kind ("add_model:")
+  const Loc kind_loc = r.LocOf(entry->first, loc);
+  if (kind == "add_model") AddModel(r, body, kind_loc, ns);
+  else if (kind == "add_model_instance") AddModelInstanceDirective(r, body, kind_loc, ns);
+  else if (kind == "add_frame") AddFrame(r, body, kind_loc, ns);
+  else if (kind == "add_weld") AddWeld(r, body, kind_loc, ns);
+  else if (kind == "add_collision_filter_group") AddCollisionFilterGroup(r, body, kind_loc, ns);
+  else if (kind == "add_directives") AddDirectives(r, body, kind_loc, ns);
   // anything else was reported by CheckMap
 }
 
@@ -325,7 +330,7 @@ void DirectivesReader::AddFrame(YamlSchemaReader& r, const YAML::Node& node, Loc
   } else {
     pose = ReadDirectiveTransform(r, x_pf.value, "add_frame 'X_PF'", x_pf.key_loc);
     if (pose && (!pose->base_frame || pose->base_frame->text.empty())) {
-      diags().Report(DiagKind::MissingAttribute, pose->loc,
+      diags().Report(DiagKind::MissingAttribute, x_pf.key_loc,
                      "add_frame 'X_PF' needs a 'base_frame': the frame the pose is given in");
       pose.reset();
     }

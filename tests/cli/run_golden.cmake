@@ -1,7 +1,12 @@
 # Runs `mdlc compile INPUT --emit=ir` and compares the output with EXPECTED.
 # With the environment variable MDLC_UPDATE_GOLDEN=1 it rewrites EXPECTED.
+# PACKAGE_PATH, when given, is a folder of packages for package:// URIs.
 get_filename_component(dir ${INPUT} DIRECTORY)
-execute_process(COMMAND ${MDLC} compile ${INPUT} --emit=ir
+set(packages "")
+if(PACKAGE_PATH)
+  set(packages --package-path ${PACKAGE_PATH})
+endif()
+execute_process(COMMAND ${MDLC} compile ${INPUT} --emit=ir ${packages}
   WORKING_DIRECTORY ${dir}
   OUTPUT_VARIABLE actual ERROR_VARIABLE errors RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
