@@ -1,6 +1,7 @@
 #include "frontend/directives/yaml_schema.h"
 
 #include <fmt/format.h>
+#include <yaml-cpp/depthguard.h>
 
 #include <cmath>
 
@@ -19,7 +20,11 @@ std::optional<YAML::Node> YamlSchemaReader::Parse(std::string_view contents) {
       loc = Loc{file_, static_cast<uint32_t>(e.mark.line + 1),
                 static_cast<uint32_t>(e.mark.column + 1)};
     }
-    diags_.Report(DiagKind::YamlSyntax, loc, fmt::format("malformed YAML: {}", e.msg));
+    // yaml-cpp's depth guard says only "bad file"
+    const bool too_deep = dynamic_cast<const YAML::DeepRecursion*>(&e) != nullptr;
+    diags_.Report(DiagKind::YamlSyntax, loc,
+                  too_deep ? std::string("malformed YAML: nested too deeply")
+                           : fmt::format("malformed YAML: {}", e.msg));
     return std::nullopt;
   }
 }

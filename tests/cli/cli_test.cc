@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <fmt/format.h>
+
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -275,9 +278,84 @@ TEST_F(CliTest, EveryDiagnosticFileVerifies) {
   // the same files ctest runs one by one, here also checked for a clean exit
   for (const auto& entry : fs::recursive_directory_iterator(MDLC_DIAG_DIR)) {
     if (!entry.is_regular_file()) continue;
-    Result r = Run("compile --verify-diagnostics " + entry.path().string());
+    // directives name their models in the test models' package
+    const std::string packages = entry.path().extension() == ".yaml"
+                                     ? " --package-path " + std::string(MDLC_TEST_MODELS) + "/dmd"
+                                     : "";
+    Result r = Run("compile --verify-diagnostics " + entry.path().string() + packages);
     EXPECT_EQ(r.status, 0) << entry.path() << "\n" << r.err;
   }
+}
+
+// One compile may load files of every format into one plant; a directives
+// file among them welds and frames the instances the files before it added
+// (DMD-040, COMMON-033).
+TEST_F(CliTest, CompositeSceneOfUrdfSdfAndDirectives) {
+  fs::path arm = Write("arm.urdf", kPendulum);
+  fs::path box = Write("box.sdf", R"(<sdf version="1.9"><model name="box">
+  <link name="body">
+    <inertial><mass>1</mass><inertia><ixx>1</ixx><iyy>1</iyy><izz>1</izz></inertia></inertial>
+    <collision name="c"><geometry><box><size>0.1 0.1 0.1</size></box></geometry></collision>
+  </link>
+</model></sdf>
+)");
+  fs::path scene = Write("scene.dmd.yaml", R"(directives:
+- add_frame:
+    name: tip
+    X_PF: {base_frame: pendulum::arm, translation: [0, 0, -1]}
+- add_weld:
+    parent: tip
+    child: box::body
+    X_PC: {rotation: !Rpy {deg: [0, 0, 90]}}
+)");
+  Result r = Run("compile " + arm.string() + " " + box.string() + " " + scene.string() +
+                 " --emit=plant-json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto plant = nlohmann::json::parse(r.out);
+  EXPECT_EQ(plant["model_instances"],
+            nlohmann::json({"WorldModelInstance", "DefaultModelInstance", "pendulum", "box"}));
+  bool welded = false;
+  for (const auto& j : plant["joints"]) {
+    if (j["name"] == "tip_welds_to_body") {
+      welded = true;
+      EXPECT_EQ(j["model_instance"], "box");
+      EXPECT_EQ(j["type"], "weld");
+      EXPECT_EQ(j["parent"], "pendulum::arm");
+    }
+  }
+  EXPECT_TRUE(welded) << r.out;
+  for (const auto& b : plant["bodies"]) {
+    if (b["name"] != "body") continue;
+    EXPECT_NEAR(b["X_WB"]["p"][2].get<double>(), -1.0, 1e-12);
+    // a quarter turn about z: q = [cos 45deg, 0, 0, sin 45deg]
+    EXPECT_NEAR(b["X_WB"]["q"][3].get<double>(), std::sqrt(0.5), 1e-12);
+  }
+  // the directives see only what came before them
+  Result order = Run("compile --emit=none " + scene.string() + " " + arm.string() + " " +
+                     box.string());
+  EXPECT_EQ(order.status, 1);
+  EXPECT_NE(order.err.find("scene.dmd.yaml:4:24: error: frame 'pendulum::arm'"), std::string::npos) << order.err;
+}
+
+// YAML nesting beyond yaml-cpp's depth guard, and aliases that would expand
+// exponentially, are located errors, never a crash or a hang.
+TEST_F(CliTest, YamlBombsAreLocatedErrors) {
+  fs::path deep = Write("deep.dmd.yaml", "directives: " + std::string(100000, '[') + "\n");
+  Result d = Run("compile --emit=none " + deep.string());
+  EXPECT_EQ(d.status, 1);
+  EXPECT_NE(d.err.find("deep.dmd.yaml:"), std::string::npos) << d.err;
+  EXPECT_NE(d.err.find("malformed YAML"), std::string::npos) << d.err;
+
+  std::string laughs = "l0: &l0 [a, a, a, a, a, a, a, a, a, a]\n";
+  for (int i = 1; i < 10; ++i) {
+    laughs += fmt::format("l{0}: &l{0} [*l{1}, *l{1}, *l{1}, *l{1}, *l{1}, *l{1}, *l{1}, *l{1}]\n",
+                          i, i - 1);
+  }
+  laughs += "directives: *l9\n";
+  fs::path bomb = Write("laughs.dmd.yaml", laughs);
+  Result b = Run("compile --emit=none " + bomb.string());
+  EXPECT_EQ(b.status, 1);
+  EXPECT_NE(b.err.find("laughs.dmd.yaml:1:1: error: unknown key 'l0'"), std::string::npos) << b.err;
 }
 
 }  // namespace
