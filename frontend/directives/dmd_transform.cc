@@ -119,6 +119,7 @@ std::optional<DirectiveTransform> ReadDirectiveTransform(YamlSchemaReader& r,
   DirectiveTransform out;
   out.loc = r.LocOf(node, fallback);
   if (node.IsNull()) return out;  // written but empty: the identity
+  const size_t errors_before = r.diags().error_count();
   if (!r.CheckMap(node, what, {"base_frame", "translation", "rotation"}, fallback)) {
     return std::nullopt;
   }
@@ -139,7 +140,7 @@ std::optional<DirectiveTransform> ReadDirectiveTransform(YamlSchemaReader& r,
     ok = ok && R.has_value();
     if (R) out.X.R = *R;
   }
-  if (!ok) return std::nullopt;
+  if (!ok || r.diags().error_count() != errors_before) return std::nullopt;  // e.g. unknown keys
   return out;
 }
 
