@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <type_traits>
+#include <variant>
 
 namespace mdlc::ir {
 namespace {
@@ -15,6 +17,7 @@ class Printer {
 
   std::string Run();
   void PrintFrameGraph();
+  void PrintSceneEdits();
 
  private:
   std::string Num(double v) const {
@@ -91,6 +94,36 @@ std::string Printer::Shape(const ir::Shape& shape) const {
     }
   };
   return std::visit(V{*this}, shape);
+}
+
+// Model Directives' edits awaiting apply-directives (names, not results);
+// `seen` is how many instances the directive's lookups may see
+void Printer::PrintSceneEdits() {
+  for (size_t i = 0; i < m_.scene_edits.size(); ++i) {
+    const SceneEdit& edit = m_.scene_edits[i];
+    out_ += fmt::format("  scene_edit #{} seen={} ", i, edit.visible_models);
+    std::visit(
+        [&](const auto& e) {
+          using E = std::decay_t<decltype(e)>;
+          if constexpr (std::is_same_v<E, AddFrameEdit>) {
+            out_ += fmt::format("add_frame {} instance={} base={} X_PF={}", Name(e.name),
+                                e.instance.empty() ? "-" : Name(e.instance),
+                                Name(e.base_frame.name), Pose(e.X_PF));
+          } else if constexpr (std::is_same_v<E, AddWeldEdit>) {
+            out_ += fmt::format("add_weld parent={} child={} X_PC={}", Name(e.parent.name),
+                                Name(e.child.name), Pose(e.X_PC));
+          } else if constexpr (std::is_same_v<E, DefaultJointPositionsEdit>) {
+            out_ += fmt::format("default_joint_positions model={} joint={} positions={}",
+                                Model(e.model), Name(e.joint), List(e.positions));
+          } else {
+            out_ += fmt::format("default_free_body_pose model={} frame={} base={} X={}",
+                                Model(e.model), Name(e.frame),
+                                e.base_frame ? Name(e.base_frame->name) : "world", Pose(e.X_PC));
+          }
+          out_ += Where(e.loc) + "\n";
+        },
+        edit.edit);
+  }
 }
 
 // SDFormat's frame graph as the frontend recorded it (names, not results)
@@ -314,6 +347,7 @@ std::string Printer::Run() {
     out_ += Where(f.loc) + "\n";
   }
   PrintFrameGraph();
+  PrintSceneEdits();
   out_ += "}\n";
   return std::move(out_);
 }
