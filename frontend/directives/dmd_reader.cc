@@ -74,6 +74,8 @@ class DirectivesReader {
                                             Loc loc);
   // A file reference: a URI or an absolute path (DMD-002), resolved.
   std::optional<std::string> ResolveFile(const LocatedString& file);
+  // Reads a resolved file, noting where it was named (for "included from").
+  std::optional<FileId> Load(const std::string& path, Loc referenced_at);
   std::optional<ModelId> FindModel(std::string_view name) const;
   ir::DirectiveFrameName FrameName(const std::string& ns, const LocatedString& name) {
     return {module().Intern(InNamespace(ns, name.text)), name.loc};
@@ -207,6 +209,16 @@ std::optional<std::string> DirectivesReader::ResolveFile(const LocatedString& fi
   return ResolveUri(file.text, "", packages(), file.loc, diags());
 }
 
+std::optional<FileId> DirectivesReader::Load(const std::string& path, Loc referenced_at) {
+  std::string error;
+  auto file = ctx_.sources.LoadFile(path, referenced_at, &error);
+  if (!file) {
+    diags().Report(DiagKind::FileNotFound, referenced_at,
+                   fmt::format("cannot read '{}': {}", path, error));
+  }
+  return file;
+}
+
 std::optional<ModelId> DirectivesReader::FindModel(std::string_view name) const {
   Symbol s = ctx_.module.symbols.Find(name);
   if (s.empty()) return std::nullopt;
@@ -282,13 +294,8 @@ void DirectivesReader::AddModel(YamlSchemaReader& r, const YAML::Node& node, Loc
                                file->text));
     return;
   }
-  std::string error;
-  auto model_file = ctx_.sources.LoadFile(*path, file->loc, &error);
-  if (!model_file) {
-    diags().Report(DiagKind::FileNotFound, file->loc,
-                   fmt::format("cannot read '{}': {}", *path, error));
-    return;
-  }
+  auto model_file = Load(*path, file->loc);
+  if (!model_file) return;
   // the model is named `name` inside the current namespace (DMD-010)
   FrontendContext sub = ctx_;
   sub.options.model_name = name->text;
@@ -475,14 +482,7 @@ void DirectivesReader::AddDirectives(YamlSchemaReader& r, const YAML::Node& node
     }
     return;
   }
-  std::string error;
-  auto sub_file = ctx_.sources.LoadFile(*path, file->loc, &error);
-  if (!sub_file) {
-    diags().Report(DiagKind::FileNotFound, file->loc,
-                   fmt::format("cannot read '{}': {}", *path, error));
-    return;
-  }
-  Open(*sub_file, std::move(new_ns));
+  if (auto sub_file = Load(*path, file->loc)) Open(*sub_file, std::move(new_ns));
 }
 
 }  // namespace

@@ -24,37 +24,36 @@ bool RejectRandom(YamlSchemaReader& r, const YAML::Node& node, std::string_view 
   return true;
 }
 
-// A vector field: a plain list, or Drake's !DeterministicVector {value: [...]}
+// Drake's deterministic wrappers (!Deterministic {value: x} and
+// !DeterministicVector {value: [...]}) hold the plain value under `value`.
+// Returns the node to read the plain value from, or nullopt after an error.
+std::optional<std::pair<YAML::Node, Loc>> Unwrap(YamlSchemaReader& r, const YAML::Node& node,
+                                                 std::string_view wrapper, std::string_view what,
+                                                 Loc fallback) {
+  if (RejectRandom(r, node, what, fallback)) return std::nullopt;
+  if (YamlSchemaReader::ExplicitTag(node) != wrapper) return std::pair{node, fallback};
+  if (!r.CheckMap(node, what, {"value"}, fallback)) return std::nullopt;
+  auto value = r.Get(node, "value");
+  if (!value.present()) {
+    r.diags().Report(DiagKind::MissingElement, r.LocOf(node, fallback),
+                     fmt::format("{} needs 'value'", what));
+    return std::nullopt;
+  }
+  return std::pair{value.value, value.key_loc};
+}
+
 std::optional<Eigen::Vector3d> ReadVector(YamlSchemaReader& r, const YAML::Node& node,
                                           std::string_view what, Loc fallback) {
-  if (RejectRandom(r, node, what, fallback)) return std::nullopt;
-  if (YamlSchemaReader::ExplicitTag(node) == "!DeterministicVector") {
-    if (!r.CheckMap(node, what, {"value"}, fallback)) return std::nullopt;
-    auto value = r.Get(node, "value");
-    if (!value.present()) {
-      r.diags().Report(DiagKind::MissingElement, r.LocOf(node, fallback),
-                       fmt::format("{} needs 'value'", what));
-      return std::nullopt;
-    }
-    return r.Vector3(value.value, what, value.key_loc);
-  }
-  return r.Vector3(node, what, fallback);
+  auto plain = Unwrap(r, node, "!DeterministicVector", what, fallback);
+  if (!plain) return std::nullopt;
+  return r.Vector3(plain->first, what, plain->second);
 }
 
 std::optional<double> ReadScalar(YamlSchemaReader& r, const YAML::Node& node,
                                  std::string_view what, Loc fallback) {
-  if (RejectRandom(r, node, what, fallback)) return std::nullopt;
-  if (YamlSchemaReader::ExplicitTag(node) == "!Deterministic") {
-    if (!r.CheckMap(node, what, {"value"}, fallback)) return std::nullopt;
-    auto value = r.Get(node, "value");
-    if (!value.present()) {
-      r.diags().Report(DiagKind::MissingElement, r.LocOf(node, fallback),
-                       fmt::format("{} needs 'value'", what));
-      return std::nullopt;
-    }
-    return r.Number(value.value, what, value.key_loc);
-  }
-  return r.Number(node, what, fallback);
+  auto plain = Unwrap(r, node, "!Deterministic", what, fallback);
+  if (!plain) return std::nullopt;
+  return r.Number(plain->first, what, plain->second);
 }
 
 std::optional<Eigen::Matrix3d> ReadRotation(YamlSchemaReader& r, const YAML::Node& node,
