@@ -330,6 +330,15 @@ TEST_F(CliTest, CompositeSceneOfUrdfSdfAndDirectives) {
     // a quarter turn about z: q = [cos 45deg, 0, 0, sin 45deg]
     EXPECT_NEAR(b["X_WB"]["q"][3].get<double>(), std::sqrt(0.5), 1e-12);
   }
+  // two SDFormat files in one compile: each keeps its own world scope
+  fs::path shelf = Write("shelf.sdf", R"(<sdf version="1.9"><model name="shelf">
+  <static>true</static>
+  <link name="board"><pose>0 0 0.5 0 0 0</pose></link>
+</model></sdf>
+)");
+  Result two = Run("compile " + box.string() + " " + shelf.string() + " --emit=plant-json");
+  ASSERT_EQ(two.status, 0) << two.err;
+  EXPECT_EQ(nlohmann::json::parse(two.out)["model_instances"].size(), 4u);
   // the directives see only what came before them
   Result order = Run("compile --emit=none " + scene.string() + " " + arm.string() + " " +
                      box.string());
