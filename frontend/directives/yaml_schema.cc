@@ -43,6 +43,28 @@ void YamlSchemaReader::ReportType(const YAML::Node& node, std::string_view what,
                 fmt::format("{} must be {}, not {}", what, expected, found));
 }
 
+// A map and the maps its merge keys ("<<: *defaults", YAML's merge key,
+// which Drake's YAML reader honors) bring in, nearest first: a key of an
+// earlier map hides the same key of a later one. Breadth-first, with no
+// recursion, and bounded, so aliases cannot make it blow up.
+std::vector<YAML::Node> YamlSchemaReader::MergedMaps(const YAML::Node& map) const {
+  constexpr size_t kMaxMaps = 64;
+  std::vector<YAML::Node> maps = {map};
+  for (size_t i = 0; i < maps.size() && maps.size() < kMaxMaps; ++i) {
+    for (auto it = maps[i].begin(); it != maps[i].end(); ++it) {
+      if (!it->first.IsScalar() || it->first.Scalar() != "<<") continue;
+      const YAML::Node& merged = it->second;
+      if (merged.IsMap()) maps.push_back(merged);
+      if (merged.IsSequence()) {
+        for (const YAML::Node& m : merged) {
+          if (m.IsMap() && maps.size() < kMaxMaps) maps.push_back(m);
+        }
+      }
+    }
+  }
+  return maps;
+}
+
 bool YamlSchemaReader::CheckMap(const YAML::Node& node, std::string_view what,
                                 std::initializer_list<std::string_view> allowed, Loc fallback) {
   if (!node.IsMap()) {
@@ -54,42 +76,62 @@ bool YamlSchemaReader::CheckMap(const YAML::Node& node, std::string_view what,
     }
     return false;
   }
-  std::vector<std::string_view> seen;
-  for (auto it = node.begin(); it != node.end(); ++it) {
-    const YAML::Node& key = it->first;
-    const Loc key_loc = LocOf(key, LocOf(node, fallback));
-    if (!key.IsScalar()) {
-      diags_.Report(DiagKind::BadValue, key_loc, fmt::format("{} has a key that is not a name", what));
-      continue;
-    }
-    const std::string& name = key.Scalar();
-    bool known = false;
-    for (std::string_view a : allowed) known = known || a == name;
-    if (!known) {
-      auto diag = diags_.Report(DiagKind::UnknownKey, key_loc,
-                                fmt::format("unknown key '{}' in {}", name, what));
-      std::vector<std::string_view> candidates(allowed);
-      if (auto best = ir::ClosestName(name, candidates)) {
-        diag.Note(key_loc, fmt::format("did you mean '{}'?", *best));
-      }
-      continue;
-    }
-    for (std::string_view s : seen) {
-      if (s == name) {
+  const std::vector<YAML::Node> maps = MergedMaps(node);
+  for (size_t m = 0; m < maps.size(); ++m) {
+    std::vector<std::string_view> seen;
+    for (auto it = maps[m].begin(); it != maps[m].end(); ++it) {
+      const YAML::Node& key = it->first;
+      const Loc key_loc = LocOf(key, LocOf(maps[m], fallback));
+      if (!key.IsScalar()) {
         diags_.Report(DiagKind::BadValue, key_loc,
-                      fmt::format("key '{}' appears twice in {}", name, what));
-        break;
+                      fmt::format("{} has a key that is not a name", what));
+        continue;
       }
+      const std::string& name = key.Scalar();
+      if (name == "<<") {
+        const YAML::Node& merged = it->second;
+        bool maps_only = merged.IsMap() || merged.IsSequence();
+        if (merged.IsSequence()) {
+          for (const YAML::Node& item : merged) maps_only = maps_only && item.IsMap();
+        }
+        if (!maps_only) {
+          diags_.Report(DiagKind::BadValue, LocOf(merged, key_loc),
+                        "a merge key ('<<') must name a map or a list of maps");
+        }
+        continue;
+      }
+      bool known = false;
+      for (std::string_view a : allowed) known = known || a == name;
+      if (!known) {
+        auto diag = diags_.Report(DiagKind::UnknownKey, key_loc,
+                                  fmt::format("unknown key '{}' in {}", name, what));
+        std::vector<std::string_view> candidates(allowed);
+        if (auto best = ir::ClosestName(name, candidates)) {
+          diag.Note(key_loc, fmt::format("did you mean '{}'?", *best));
+        }
+        continue;
+      }
+      // within one map a key is written once; a merged map's key may be
+      // overridden by the map merging it
+      for (std::string_view s : seen) {
+        if (s == name) {
+          diags_.Report(DiagKind::BadValue, key_loc,
+                        fmt::format("key '{}' appears twice in {}", name, what));
+          break;
+        }
+      }
+      seen.push_back(key.Scalar());
     }
-    seen.push_back(key.Scalar());
   }
   return true;
 }
 
 YamlSchemaReader::Field YamlSchemaReader::Get(const YAML::Node& map, std::string_view key) const {
-  for (auto it = map.begin(); it != map.end(); ++it) {
-    if (it->first.IsScalar() && it->first.Scalar() == key) {
-      return Field{it->second, LocOf(it->first)};
+  for (const YAML::Node& m : MergedMaps(map)) {
+    for (auto it = m.begin(); it != m.end(); ++it) {
+      if (it->first.IsScalar() && it->first.Scalar() == key) {
+        return Field{it->second, LocOf(it->first)};
+      }
     }
   }
   return Field{YAML::Node(YAML::NodeType::Undefined), {}};

@@ -43,12 +43,13 @@ class YamlSchemaReader {
 
   /// Checks that `node` is a map whose keys are all among `allowed`, each
   /// once. Unknown keys (with a suggestion) and repeated keys are errors.
-  /// Returns false when `node` is not a map at all.
+  /// YAML merge keys (`<<: *anchor`) bring in the keys of other maps, which
+  /// are checked too. Returns false when `node` is not a map at all.
   bool CheckMap(const YAML::Node& node, std::string_view what,
                 std::initializer_list<std::string_view> allowed, Loc fallback = {});
 
-  /// The value of `key` in map `node`, with the key's location; an undefined
-  /// node when absent.
+  /// The value of `key` in map `node` (or in a map it merges), with the
+  /// key's location; an undefined node when absent.
   struct Field {
     YAML::Node value;
     Loc key_loc;
@@ -76,6 +77,7 @@ class YamlSchemaReader {
   FileId file() const { return file_; }
 
  private:
+  std::vector<YAML::Node> MergedMaps(const YAML::Node& map) const;
   void ReportType(const YAML::Node& node, std::string_view what, std::string_view expected,
                   Loc fallback);
 

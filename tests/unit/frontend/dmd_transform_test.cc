@@ -104,6 +104,20 @@ TEST_F(DmdTransformTest, RepeatedKeysAndUntaggedRotationsAreErrors) {
   EXPECT_TRUE(repeated);
 }
 
+// YAML merge keys, as Drake's YAML reader takes them: the merging map's own
+// keys win over the merged ones, and merged keys are checked too.
+TEST_F(DmdTransformTest, MergeKeysBringInDefaults) {
+  auto t = Read("base: &base {translation: [1, 2, 3], rotation: !Rpy {deg: [0, 0, 90]}}\n"
+                "X: {<<: *base, translation: [4, 5, 6]}\n");
+  ASSERT_TRUE(t) << FirstError();
+  EXPECT_EQ(t->X.p, Eigen::Vector3d(4, 5, 6));
+  EXPECT_TRUE(t->X.R.isApprox(
+      Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix(), 1e-15));
+  EXPECT_FALSE(Read("bad: &bad {translaton: [1, 2, 3]}\nX: {<<: *bad}\n"));
+  EXPECT_EQ(FirstError(), "1:12: unknown key 'translaton' in X");
+  EXPECT_FALSE(Read("X: {<<: [0, 1]}\n"));
+}
+
 TEST_F(DmdTransformTest, NonFiniteNumbersAreErrors) {
   for (const char* yaml : {"X: {translation: [0, .inf, 0]}", "X: {translation: [0, 0, -.Inf]}",
                            "X: {translation: [1e999, 0, 0]}", "X: {translation: [.NaN, 0, 0]}"}) {
