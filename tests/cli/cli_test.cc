@@ -330,6 +330,11 @@ TEST_F(CliTest, CompositeSceneOfUrdfSdfAndDirectives) {
     // a quarter turn about z: q = [cos 45deg, 0, 0, sin 45deg]
     EXPECT_NEAR(b["X_WB"]["q"][3].get<double>(), std::sqrt(0.5), 1e-12);
   }
+  // a repeatable option takes one value per use, never the files after it
+  Result options_first = Run("compile --q theta=0.5 --package-path " + dir_.string() + " " +
+                             arm.string() + " " + box.string() + " " + scene.string() +
+                             " --emit=none");
+  EXPECT_EQ(options_first.status, 0) << options_first.err;
   // two SDFormat files in one compile: each keeps its own world scope
   fs::path shelf = Write("shelf.sdf", R"(<sdf version="1.9"><model name="shelf">
   <static>true</static>

@@ -191,14 +191,17 @@ int main(int argc, char** argv) {
   compile->add_option("--emit", cli.emit, "What to print: summary, ir, plant-json or none")
       ->check(CLI::IsMember({"summary", "ir", "plant-json", "none"}));
   compile->add_option("-o,--output", cli.output, "Write the output here instead of stdout");
-  compile->add_option("--q", cli.q, "Set a 1-dof joint's position: JOINT=VALUE (repeatable)");
+  compile->add_option("--q", cli.q, "Set a 1-dof joint's position: JOINT=VALUE (repeatable)")
+      ->allow_extra_args(false);
   compile->add_option("--diagnostics-format", cli.diagnostics_format, "text or json")
       ->check(CLI::IsMember({"text", "json"}));
   compile->add_option("-W", cli.warning_flags,
-                      "-Werror: warnings are errors; -Werror=GROUP; -Wno-GROUP silences a group");
+                      "-Werror: warnings are errors; -Werror=GROUP; -Wno-GROUP silences a group")
+      ->allow_extra_args(false);
   compile->add_flag("--strict", cli.strict, "Warnings are errors (Drake's strict parsing)");
   compile->add_option("--max-errors", cli.max_errors, "Stop reporting after N errors (0: no limit)");
-  compile->add_option("--print-after", cli.print_after, "Print the IR after this pass (repeatable)");
+  compile->add_option("--print-after", cli.print_after, "Print the IR after this pass (repeatable)")
+      ->allow_extra_args(false);
   compile->add_flag("--print-after-all", cli.print_after_all, "Print the IR after every pass");
   compile->add_flag("--time-passes", cli.time_passes, "Report the time each pass takes");
   compile->add_flag("--verify-each", cli.verify_each, "Run the IR verifier after every pass");
@@ -212,8 +215,10 @@ int main(int argc, char** argv) {
   compile->add_flag("--verify-diagnostics", cli.verify_diagnostics,
                     "Check diagnostics against expected-error comments in the input");
   compile->add_flag("--no-locations", cli.no_locations, "Leave source locations out of --emit=ir");
-  compile->add_option("--package-path", cli.package_paths, "Search DIR for package.xml files");
-  compile->add_option("--package", cli.packages, "Define package NAME=DIR");
+  compile->add_option("--package-path", cli.package_paths, "Search DIR for package.xml files")
+      ->allow_extra_args(false);
+  compile->add_option("--package", cli.packages, "Define package NAME=DIR")
+      ->allow_extra_args(false);
   compile->add_option("--color", cli.color, "Color diagnostics: auto, always or never")
       ->check(CLI::IsMember({"auto", "always", "never"}));
 
