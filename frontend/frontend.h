@@ -33,6 +33,9 @@ struct FrontendOptions {
   /// Prepended to the instance name ("outer::" for a model an SDFormat file
   /// includes): the instance is scoped by its includer (COMMON-022).
   std::string name_prefix;
+  /// Drake's Parser::AddModel (a directive's add_model): the file must hold
+  /// exactly one model, so an SDFormat <world> is an error.
+  bool single_model = false;
 };
 
 /// Parsed documents kept alive until the compile ends. Freeing a large DOM

@@ -300,6 +300,7 @@ void DirectivesReader::AddModel(YamlSchemaReader& r, const YAML::Node& node, Loc
   FrontendContext sub = ctx_;
   sub.options.model_name = name->text;
   sub.options.name_prefix = ns.empty() ? "" : ns + "::";
+  sub.options.single_model = true;
   std::optional<ModelId> model = ReadModel(*model_file, *format, sub);
   if (!model || !defaults_ok) return;
   for (JointDefault& d : joint_defaults) {

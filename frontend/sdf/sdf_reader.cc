@@ -223,6 +223,12 @@ std::optional<ModelId> SdfReader::ReadRootFile(FileId file_id) {
       break;
     }
   }
+  if (world_element && ctx_.options.single_model) {
+    diags().Report(DiagKind::BadValue, world_element.GetLoc(),
+                   "this file holds a <world>, but one model is expected here (add_model loads "
+                   "exactly one <model>)");
+    return std::nullopt;
+  }
   if (model_element && world_element) {
     diags()
         .Report(DiagKind::BadValue, model_element.GetLoc(),
