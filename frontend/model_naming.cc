@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 
 namespace mdlc::frontend {
-namespace {
-std::optional<ModelId> FindModel(const ir::Module& module, std::string_view name) {
+
+std::optional<ModelId> FindModelInstance(const ir::Module& module, std::string_view name) {
   Symbol s = module.symbols.Find(name);
   if (s.empty()) return std::nullopt;
   for (size_t i = 0; i < module.models.size(); ++i) {
@@ -12,14 +12,13 @@ std::optional<ModelId> FindModel(const ir::Module& module, std::string_view name
   }
   return std::nullopt;
 }
-}  // namespace
 
 std::optional<ModelId> AddModelInstance(std::string_view requested, Loc loc,
                                         ir::SourceFormat format, FrontendContext& ctx) {
   std::string name = ctx.options.name_prefix +
                      std::string(ctx.options.model_name ? std::string_view(*ctx.options.model_name)
                                                         : requested);
-  if (auto existing = FindModel(ctx.module, name)) {
+  if (auto existing = FindModelInstance(ctx.module, name)) {
     if (!ctx.options.auto_rename) {
       auto diag = ctx.diags.Report(
           DiagKind::DuplicateName, loc,
@@ -32,7 +31,7 @@ std::optional<ModelId> AddModelInstance(std::string_view requested, Loc loc,
     }
     for (int n = 1;; ++n) {
       std::string candidate = fmt::format("{}_{}", name, n);
-      if (!FindModel(ctx.module, candidate)) {
+      if (!FindModelInstance(ctx.module, candidate)) {
         name = std::move(candidate);
         break;
       }

@@ -8,6 +8,9 @@
 
 namespace mdlc::frontend {
 
+/// The model instance named exactly `name`, if any.
+std::optional<ModelId> FindModelInstance(const ir::Module& module, std::string_view name);
+
 /// Adds a model instance named `requested` (or the caller's override), after
 /// checking it is free. On a collision: NAME_1, NAME_2, ... with auto-rename,
 /// otherwise an error at `loc` (and nullopt).

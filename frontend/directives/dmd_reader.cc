@@ -76,7 +76,9 @@ class DirectivesReader {
   std::optional<std::string> ResolveFile(const LocatedString& file);
   // Reads a resolved file, noting where it was named (for "included from").
   std::optional<FileId> Load(const std::string& path, Loc referenced_at);
-  std::optional<ModelId> FindModel(std::string_view name) const;
+  std::optional<ModelId> FindModel(std::string_view name) const {
+    return FindModelInstance(ctx_.module, name);
+  }
   ir::DirectiveFrameName FrameName(const std::string& ns, const LocatedString& name) {
     return {module().Intern(InNamespace(ns, name.text)), name.loc};
   }
@@ -217,15 +219,6 @@ std::optional<FileId> DirectivesReader::Load(const std::string& path, Loc refere
                    fmt::format("cannot read '{}': {}", path, error));
   }
   return file;
-}
-
-std::optional<ModelId> DirectivesReader::FindModel(std::string_view name) const {
-  Symbol s = ctx_.module.symbols.Find(name);
-  if (s.empty()) return std::nullopt;
-  for (size_t i = 0; i < ctx_.module.models.size(); ++i) {
-    if (ctx_.module.models[i].name == s) return ModelId(i);
-  }
-  return std::nullopt;
 }
 
 void DirectivesReader::AddModel(YamlSchemaReader& r, const YAML::Node& node, Loc loc,
