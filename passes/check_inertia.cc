@@ -9,7 +9,9 @@
 #include <fmt/format.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "passes/pass_registry.h"
@@ -23,24 +25,47 @@ class CheckInertiaPass : public Pass {
   std::string_view description() const override {
     return "Check mass properties are physical; substitute a plausible inertia where not";
   }
-  ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Tree; }
+  ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Named; }
   bool Run(PassContext& ctx) override;
 };
 
-/// Why an inertia is not physical, or empty when it is.
+/// The principal moments of a central inertia, ascending. As Drake's
+/// RotationalInertia::CalcPrincipalMomentsOfInertia: when every product is
+/// within 4 machine epsilons of the largest possible moment (half the trace),
+/// the moments are the diagonal itself, so that products such as 1e-35 from
+/// CAD exports leave the moments exact.
+Eigen::Vector3d PrincipalMoments(const Eigen::Matrix3d& I) {
+  const double product_tolerance =
+      4 * std::numeric_limits<double>::epsilon() * 0.5 * std::abs(I.trace());
+  if (std::abs(I(0, 1)) <= product_tolerance && std::abs(I(0, 2)) <= product_tolerance &&
+      std::abs(I(1, 2)) <= product_tolerance) {
+    Eigen::Vector3d d = I.diagonal();
+    std::sort(d.data(), d.data() + 3);
+    return d;
+  }
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I, Eigen::EigenvaluesOnly).eigenvalues();
+}
+
+/// Why a central inertia is not physical, or empty when it could be: the
+/// test of Drake's RotationalInertia::CouldBePhysicallyValid (which
+/// SpatialInertia::IsPhysicallyValid applies about the center of mass).
+/// Principal moments p0 <= p1 <= p2 must satisfy p0 >= -eps and
+/// p0 + p1 >= p2 - eps, with eps = 16 machine epsilons times max(1, trace/2):
+/// relative for large inertias and absolute (about 3.6e-15 kg m^2) for small
+/// ones, so that round-off never replaces a real link's inertia.
 std::string Violation(const ir::Inertial& in) {
   Eigen::Matrix3d I;
   I << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(I, Eigen::EigenvaluesOnly);
-  const Eigen::Vector3d d = solver.eigenvalues();  // ascending
-  const double scale = std::max({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])});
-  const double tol = 16 * std::numeric_limits<double>::epsilon() * scale;
-  if (d[0] < -tol) {
+  if (!I.allFinite()) return "a moment or product of inertia is not finite";
+  const Eigen::Vector3d d = PrincipalMoments(I);
+  const double eps =
+      16 * std::numeric_limits<double>::epsilon() * std::max(1.0, 0.5 * std::abs(I.trace()));
+  if (d[0] + eps < 0) {
     return fmt::format("principal moment {:.17g} is negative (principal moments {:.17g}, {:.17g}, "
                        "{:.17g})",
                        d[0], d[0], d[1], d[2]);
   }
-  if (d[0] + d[1] < d[2] - tol) {
+  if (d[0] + d[1] + eps < d[2]) {
     return fmt::format("principal moments violate the triangle inequality: {:.17g} + {:.17g} < "
                        "{:.17g}",
                        d[0], d[1], d[2]);

@@ -1,9 +1,11 @@
 // The default passes: name resolution, the kinematic tree, inertia checks,
 // and the pass manager's contract (URDF-010, URDF-017, COMMON-030..033,
 // COMMON-040, COMMON-041).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "ir/printer.h"
@@ -132,6 +134,46 @@ TEST(CheckInertiaTest, MassRules) {  // COMMON-041
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::NonPhysicalInertia, "principal moment -1 is negative"));
   EXPECT_EQ(l.Body("fine")->inertial->izz, 2);  // a flat disk is exactly on the boundary
   EXPECT_EQ(l.diags.warning_count(), 3u) << l.Messages();
+}
+
+// COMMON-040 at the boundary, from both sides. Drake's test
+// (RotationalInertia::CouldBePhysicallyValid) allows eps = 16 machine
+// epsilons times max(1, trace/2): absolute for a small link (3.5527e-15
+// kg m^2), relative for a large one. Each case sits at 0.85 eps (kept) or
+// 1.15 eps (replaced) from the violated bound.
+TEST(CheckInertiaTest, DrakesToleranceAtTheBoundary) {  // COMMON-040
+  const double eps_small = 16 * std::numeric_limits<double>::epsilon();
+  const double eps_large = eps_small * 100;  // trace/2 = 100
+  const std::string small_kept = fmt::format("{:.17g}", 2e-4 + 0.85 * eps_small);
+  const std::string small_replaced = fmt::format("{:.17g}", 2e-4 + 1.15 * eps_small);
+  const std::string large_kept = fmt::format("{:.17g}", 100 + 0.85 * eps_large);
+  const std::string large_replaced = fmt::format("{:.17g}", 100 + 1.15 * eps_large);
+  const std::string negative_kept = fmt::format("{:.17g}", -0.85 * eps_small);
+  const std::string negative_replaced = fmt::format("{:.17g}", -1.15 * eps_small);
+  const std::vector<std::pair<std::string, bool>> cases = {
+      // triangle inequality, small link: 1e-4 + 1e-4 < izz by ~3e-15
+      {fmt::format("ixx='1e-4' iyy='1e-4' izz='{}'", small_kept), true},
+      {fmt::format("ixx='1e-4' iyy='1e-4' izz='{}'", small_replaced), false},
+      // triangle inequality, large body: relative allowance
+      {fmt::format("ixx='50' iyy='50' izz='{}'", large_kept), true},
+      {fmt::format("ixx='50' iyy='50' izz='{}'", large_replaced), false},
+      // a principal moment just below zero
+      {fmt::format("ixx='{}' iyy='1e-4' izz='1e-4'", negative_kept), true},
+      {fmt::format("ixx='{}' iyy='1e-4' izz='1e-4'", negative_replaced), false},
+      // products that are round-off from a CAD export
+      {"ixx='1e-3' iyy='2e-3' izz='2.5e-3' ixy='2.4e-35' ixz='-1.7e-36' iyz='3e-37'", true},
+  };
+  for (const auto& [moments, kept] : cases) {
+    Lowered l;
+    ASSERT_TRUE(l.Read(fmt::format(R"(<robot name='r'><link name='a'><inertial><mass value='3'/>
+        <inertia {}/></inertial></link></robot>)",
+                                   moments)));
+    ASSERT_TRUE(l.RunPasses()) << l.Messages();
+    const ir::Inertial& in = *l.Body("a")->inertial;
+    const bool sphere = in.ixx == in.iyy && in.iyy == in.izz && in.ixy == 0;
+    EXPECT_EQ(l.diags.warning_count(), kept ? 0u : 1u) << moments << "\n" << l.Messages();
+    EXPECT_EQ(!sphere, kept) << moments;
+  }
 }
 
 TEST(PassManagerTest, StopsAtTheFirstPassThatFails) {
