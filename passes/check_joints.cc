@@ -31,23 +31,24 @@ bool CheckJointsPass::Run(PassContext& ctx) {
       kept.push_back(std::move(c));
       continue;
     }
-    const ir::Joint& leader = m[c.joint0.id];
-    const ir::Joint& follower = m[c.joint1.id];
-    const int n0 = ir::JointVelocityCount(leader.type), n1 = ir::JointVelocityCount(follower.type);
+    const ir::Joint& follower = m[c.joint0.id];
+    const ir::Joint& leader = m[c.joint1.id];
+    const int n_follower = ir::JointVelocityCount(follower.type);
+    const int n_leader = ir::JointVelocityCount(leader.type);
     // Drake ignores mimic on a joint that is not single-dof, then requires
     // both joints to have the same number of dofs
-    if (n1 != 1) {
+    if (n_follower != 1) {
       ctx.diags.Report(DiagKind::JointWarning, c.loc,
                        fmt::format("mimic on joint '{}' is ignored: only single-dof joints can "
                                    "mimic another joint ('{}' has {} dofs)",
-                                   m.Text(follower.name), m.Text(follower.name), n1));
+                                   m.Text(follower.name), m.Text(follower.name), n_follower));
       continue;
     }
-    if (n0 != n1) {
+    if (n_follower != n_leader) {
       ctx.diags.Report(DiagKind::BadValue, c.loc,
                        fmt::format("joint '{}' cannot mimic joint '{}': they have different "
                                    "numbers of degrees of freedom ({} and {})",
-                                   m.Text(follower.name), m.Text(leader.name), n1, n0));
+                                   m.Text(follower.name), m.Text(leader.name), n_follower, n_leader));
       continue;
     }
     kept.push_back(std::move(c));

@@ -13,7 +13,8 @@
 //               the two site frames coincide.
 //   joint    -> coupler: MuJoCo holds q1 - ref1 = c0 + c1 (q2 - ref2) + ...
 //               so joint1 follows joint2 with gear c1 and offset
-//               c0 + ref1 - c1 ref2. Without joint2, joint1 is held at
+//               c0 + ref1 - c1 ref2: Drake's joint0 is MJCF's joint1, its
+//               joint1 MJCF's joint2. Without joint2, joint1 is held at
 //               ref1 + c0: a tendon constraint with equal bounds on it alone.
 //   distance -> (MuJoCo 2.x, removed in 2.2.2) distance constraint between
 //               the geoms' centers; sphere radii are added to the distance.
@@ -267,8 +268,9 @@ class EqualityLowering {
     if (joint2) {
       const double ref2 = L_.JointQpos0(*joint2);
       ir::Constraint c = Start(ir::ConstraintType::Coupler);
-      c.joint0 = L_.JointRef(*joint2, j2.loc);
-      c.joint1 = L_.JointRef(*joint1, j1.loc);
+      // Drake's coupler orientation: joint0 (MJCF's joint1) follows joint1
+      c.joint0 = L_.JointRef(*joint1, j1.loc);
+      c.joint1 = L_.JointRef(*joint2, j2.loc);
       c.gear_ratio = poly[1];
       c.offset = poly[0] + ref1 - poly[1] * ref2;
       L_.module().Add(std::move(c));

@@ -781,8 +781,8 @@ void SdfReader::ReadJointDrakeChildren(const xml::XmlElement& joint_element, Mod
       c.type = ir::ConstraintType::Coupler;
       c.model = s.model;
       c.loc = child.GetLoc();
-      c.joint0 = {module().Intern(other.value), other.loc, {}};
-      c.joint1 = {joint.name, joint.loc, {}};
+      c.joint0 = {joint.name, joint.loc, {}};  // the follower, as in Drake
+      c.joint1 = {module().Intern(other.value), other.loc, {}};
       c.gear_ratio = *multiplier;
       c.offset = *offset;
       module().Add(std::move(c));

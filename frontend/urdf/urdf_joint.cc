@@ -321,7 +321,9 @@ void UrdfReader::ReadLimits(const xml::XmlElement& e, ir::Joint& joint, bool con
 }
 
 void UrdfReader::ReadMimic(const xml::XmlElement& e, const ir::Joint& joint) {
-  // q_joint = multiplier * q_other + offset, as a coupler constraint (URDF-018)
+  // q_joint = multiplier * q_other + offset, as a coupler constraint (URDF-018).
+  // Drake's convention: joint0 is the joint that follows (the one holding
+  // <mimic>), joint1 the joint it follows.
   auto other = attrs_.String(e, "joint", xml::Need::Required);
   if (!other) return;
   attrs_.WarnUnknownAttributes(e, {"joint", "multiplier", "offset"});
@@ -334,8 +336,8 @@ void UrdfReader::ReadMimic(const xml::XmlElement& e, const ir::Joint& joint) {
   c.type = ir::ConstraintType::Coupler;
   c.model = model_;
   c.loc = e.GetLoc();
-  c.joint0 = {module().Intern(*other), e.Attribute("joint").loc, {}};
-  c.joint1 = {joint.name, joint.loc, {}};
+  c.joint0 = {joint.name, joint.loc, {}};
+  c.joint1 = {module().Intern(*other), e.Attribute("joint").loc, {}};
   c.gear_ratio = attrs_.Double(e, "multiplier").value_or(1.0);
   c.offset = attrs_.Double(e, "offset").value_or(0.0);
   module().Add(std::move(c));

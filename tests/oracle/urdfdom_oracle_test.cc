@@ -83,6 +83,7 @@ using Eigen::Vector3d;
 using json = nlohmann::json;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 #ifndef MDLC_BINARY
 #define MDLC_BINARY ""
@@ -158,6 +159,9 @@ struct OJoint {
   bool lower_given = false, upper_given = false;  // attribute written in the file
   double lower = -kInf, upper = kInf, velocity = kInf, effort = kInf;
   double damping = 0;
+  // URDF-018: <mimic joint multiplier offset>, empty name when absent
+  std::string mimicked;
+  double mimic_multiplier = 1, mimic_offset = 0;
 };
 
 struct Oracle {
@@ -185,17 +189,26 @@ Isometry3d PoseToIso(const urdf::Pose& p) {
   return X;
 }
 
-// COMMON-040: physical validity of a rotational inertia about the COM.
-// Principal moments must be non-negative and satisfy the triangle inequality,
-// with a round-off allowance scaled by the largest moment.
+// COMMON-040: physical validity of a rotational inertia about the COM, as
+// Drake's RotationalInertia::CouldBePhysicallyValid states it: principal
+// moments non-negative and satisfying the triangle inequality, both to within
+// 16 machine epsilons times max(1, trace / 2): an allowance relative to the
+// inertia's size and never below an absolute 16 epsilons.
 bool RotationalInertiaValid(const Matrix3d& I) {
   if (!I.allFinite()) return false;
-  Eigen::SelfAdjointEigenSolver<Matrix3d> es(I, Eigen::EigenvaluesOnly);
-  Vector3d p = es.eigenvalues();  // ascending
-  const double scale = std::max({std::abs(p(0)), std::abs(p(1)), std::abs(p(2))});
-  const double eps = 16 * std::numeric_limits<double>::epsilon() * scale;
-  if (p(0) < -eps) return false;
-  return p(0) + p(1) + eps >= p(2);
+  const double allowance =
+      16 * std::numeric_limits<double>::epsilon() * std::max(1.0, I.trace() / 2);
+  // exactly-diagonal moments when the products are round-off, else eigenvalues
+  Vector3d p;
+  const double products = std::max({std::abs(I(0, 1)), std::abs(I(0, 2)), std::abs(I(1, 2))});
+  if (products <= 2 * std::numeric_limits<double>::epsilon() * std::abs(I.trace())) {
+    p = I.diagonal();
+    std::sort(p.data(), p.data() + 3);
+  } else {
+    p = Eigen::SelfAdjointEigenSolver<Matrix3d>(I, Eigen::EigenvaluesOnly).eigenvalues();
+  }
+  if (p(0) < -allowance) return false;
+  return p(0) + p(1) + allowance >= p(2);
 }
 
 // Mass properties per URDF-004 plus COMMON-040/041 replacement.
@@ -361,6 +374,11 @@ std::string BuildOracle(const std::string& path, Oracle* o) {
     }
     // URDF-014: dynamics@damping, default 0.
     if (j->dynamics) J.damping = j->dynamics->damping;
+    if (j->mimic) {
+      J.mimicked = j->mimic->joint_name;
+      J.mimic_multiplier = j->mimic->multiplier;
+      J.mimic_offset = j->mimic->offset;
+    }
     if (IsOneDof(J.type)) o->dofs.push_back(name);
     o->joints[name] = J;
   }
@@ -724,6 +742,45 @@ void CheckLimitArray(Report* rep, const std::string& feature, const std::string&
 
 // Static checks at the default configuration: entity sets, mass properties,
 // joint types, topology, limits, damping.
+// URDF-018: a <mimic> on a 1-dof joint of a 1-dof joint is one coupler in
+// Drake's orientation, q(joint0) = gear_ratio * q(joint1) + offset, with
+// joint0 the joint that holds <mimic>. Every coupler must come from a mimic.
+void CheckCouplers(const Oracle& o, const Dump& d, Report* rep) {
+  std::map<std::string, const OJoint*> expected;  // scoped follower -> joint
+  for (const auto& [name, J] : o.joints) {
+    if (J.mimicked.empty() || !IsOneDof(J.type)) continue;
+    const auto leader = o.joints.find(J.mimicked);
+    if (leader == o.joints.end() || !IsOneDof(leader->second.type)) continue;
+    expected[o.robot + "::" + name] = &J;
+  }
+  std::set<std::string> seen;
+  for (const json& c : d.root.value("constraints", json::array())) {
+    if (c.value("type", "") != "coupler") continue;
+    const std::string joint0 = c.value("joint0", ""), joint1 = c.value("joint1", "");
+    const auto it = expected.find(joint0);
+    if (it == expected.end()) {
+      rep->Add("URDF-018 coupler joint0='" + joint0 + "' joint1='" + joint1 +
+               "' matches no <mimic> (joint0 must be the joint holding <mimic>)");
+      continue;
+    }
+    seen.insert(joint0);
+    const OJoint& J = *it->second;
+    const std::string ent = "coupler of '" + joint0 + "'";
+    if (joint1 != o.robot + "::" + J.mimicked) {
+      rep->Add("URDF-018 " + ent + " joint1: mdlc='" + joint1 + "' urdfdom='" + o.robot +
+               "::" + J.mimicked + "'");
+    }
+    rep->Num("URDF-018", ent, "gear_ratio", c.value("gear_ratio", kNaN), J.mimic_multiplier);
+    rep->Num("URDF-018", ent, "offset", c.value("offset", kNaN), J.mimic_offset);
+  }
+  for (const auto& [follower, J] : expected) {
+    if (!seen.count(follower)) {
+      rep->Add("URDF-018 joint '" + follower + "' mimics '" + J->mimicked +
+               "' but mdlc has no coupler with it as joint0");
+    }
+  }
+}
+
 void CheckStatic(const Oracle& o, const Dump& d, Report* rep) {
   // --- Bodies (URDF-003, URDF-004, URDF-005, COMMON-040/041/042).
   for (const auto& [name, L] : o.links) {
@@ -855,6 +912,7 @@ void CheckStatic(const Oracle& o, const Dump& d, Report* rep) {
       rep->Add("URDF-017 " + ent + " is not marked \"unnamed\": true");
     }
   }
+  CheckCouplers(o, d, rep);
   for (const auto& [key, j] : d.joints) {
     if (j->value("model_instance", "") != o.robot) continue;
     if (!expected_joint_keys.count(key)) {

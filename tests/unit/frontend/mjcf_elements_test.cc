@@ -204,8 +204,9 @@ TEST(MjcfEquality, JointBecomesCouplerWithRefs) {
   ASSERT_TRUE(m.ok()) << m.Messages();
   const nlohmann::json c = m.Json()["constraints"][0];
   EXPECT_EQ(c["type"], "coupler");
-  EXPECT_EQ(c["joint0"], "m::jb");
-  EXPECT_EQ(c["joint1"], "m::ja");
+  // Drake's orientation: joint0 (MJCF joint1) = gear * joint1 (MJCF joint2) + offset
+  EXPECT_EQ(c["joint0"], "m::ja");
+  EXPECT_EQ(c["joint1"], "m::jb");
   EXPECT_NEAR(c["gear_ratio"].get<double>(), 2, kTol);
   EXPECT_NEAR(c["offset"].get<double>(), 0.1 + M_PI / 6 - 0.5, 1e-12);
 }

@@ -580,8 +580,8 @@ TEST(SdfJointDrakeChildrenTest, MimicIsACouplerConstraint) {  // EXT-010
   ASSERT_EQ(l.module.constraints.size(), 1u);
   const ir::Constraint& c = l.module.constraints[0];
   EXPECT_EQ(c.type, ir::ConstraintType::Coupler);
-  EXPECT_EQ(l.module.Text(c.joint0.name), "j2");  // the mimicked joint
-  EXPECT_EQ(l.module.Text(c.joint1.name), "j1");  // the mimicking joint
+  EXPECT_EQ(l.module.Text(c.joint0.name), "j1");  // the mimicking joint follows
+  EXPECT_EQ(l.module.Text(c.joint1.name), "j2");  // the mimicked joint
   EXPECT_EQ(c.gear_ratio, 2);
   EXPECT_EQ(c.offset, 0.5);
 
@@ -590,8 +590,8 @@ TEST(SdfJointDrakeChildrenTest, MimicIsACouplerConstraint) {  // EXT-010
   const nlohmann::json json = compiled.PlantJson();
   ASSERT_EQ(json["constraints"].size(), 1u);
   EXPECT_EQ(json["constraints"][0]["type"], "coupler");
-  EXPECT_EQ(json["constraints"][0]["joint0"], "m::j2");
-  EXPECT_EQ(json["constraints"][0]["joint1"], "m::j1");
+  EXPECT_EQ(json["constraints"][0]["joint0"], "m::j1");
+  EXPECT_EQ(json["constraints"][0]["joint1"], "m::j2");
 }
 
 TEST(SdfJointDrakeChildrenTest, MimicErrors) {  // EXT-010

@@ -192,7 +192,9 @@ TEST(UrdfDrakeJointTest, JointsAreMadeInDocumentOrderAcrossBothElements) {  // U
   // Drake reads no effort for a screw joint: the actuator is unbounded
   EXPECT_EQ(l.module.actuators[0].effort_limit, kInf);
   ASSERT_EQ(l.module.constraints.size(), 1u);
-  EXPECT_EQ(l.module.Text(l.module[l.module.constraints[0].joint0.id].name), "s");
+  // r1 follows the drake:joint s (Drake's orientation: joint0 follows joint1)
+  EXPECT_EQ(l.module.Text(l.module[l.module.constraints[0].joint0.id].name), "r1");
+  EXPECT_EQ(l.module.Text(l.module[l.module.constraints[0].joint1.id].name), "s");
 
   Lowered dup;
   EXPECT_FALSE(dup.Read(Robot(R"(
@@ -213,7 +215,8 @@ TEST(UrdfDrakeJointTest, DrakeJointHonoursDrakeIgnoreAndMimic) {  // EXT-001, UR
   EXPECT_EQ(l.Joint("gone"), nullptr);
   ASSERT_TRUE(l.RunPasses()) << l.Messages();
   ASSERT_EQ(l.module.constraints.size(), 1u);
-  EXPECT_EQ(l.module.Text(l.module[l.module.constraints[0].joint1.id].name), "follow");
+  EXPECT_EQ(l.module.Text(l.module[l.module.constraints[0].joint0.id].name), "follow");
+  EXPECT_EQ(l.module.Text(l.module[l.module.constraints[0].joint1.id].name), "lead");
   EXPECT_EQ(l.module.constraints[0].offset, 1);
 }
 

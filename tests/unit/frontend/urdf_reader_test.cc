@@ -261,8 +261,10 @@ TEST(UrdfReaderTest, MimicBecomesACouplerConstraint) {  // URDF-018
   ASSERT_EQ(l.module.constraints.size(), 1u);
   const ir::Constraint& c = l.module.constraints[0];
   EXPECT_EQ(c.type, ir::ConstraintType::Coupler);
-  EXPECT_EQ(l.module.Text(l.module[c.joint0.id].name), "leader");
-  EXPECT_EQ(l.module.Text(l.module[c.joint1.id].name), "follower");
+  // Drake's AddCouplerConstraint(joint0, joint1): q0 = gear * q1 + offset, and
+  // Drake passes the joint holding <mimic> as joint0
+  EXPECT_EQ(l.module.Text(l.module[c.joint0.id].name), "follower");
+  EXPECT_EQ(l.module.Text(l.module[c.joint1.id].name), "leader");
   EXPECT_EQ(c.gear_ratio, 2);
   EXPECT_EQ(c.offset, 0.5);
 }
