@@ -88,6 +88,7 @@ class PlantBuilder {
       body.is_world = src.is_world;
       body.surface_velocity_axis = src.surface_velocity_axis;
       body.deformable = src.deformable;
+      body.unnamed = src.unnamed;
       if (src.inertial) SetMassProperties(*src.inertial, body);
     }
   }
@@ -139,7 +140,8 @@ class PlantBuilder {
   void AddFrame(const ir::Frame& src) {
     CheckEntityModel(src.model, src.loc);
     plant_.frames.push_back(
-        {std::string(m_.Text(src.name)), src.model, ResolveBody(src.body, src.loc), src.X_BF});
+        {std::string(m_.Text(src.name)), src.model, ResolveBody(src.body, src.loc), src.X_BF,
+         src.unnamed});
   }
 
   void AddJoint(const ir::Joint& src) {
@@ -222,7 +224,8 @@ class PlantBuilder {
     CheckEntityModel(src.model, src.loc);
     plant_.actuators.push_back({std::string(m_.Text(src.name)), src.model,
                                 ResolveJoint(src.joint, src.loc), src.effort_limit,
-                                src.gear_ratio, src.rotor_inertia, src.kp, src.kd});
+                                src.gear_ratio, src.rotor_inertia, src.kp, src.kd,
+                                src.unnamed});
   }
 
   void AddConstraint(const ir::Constraint& src) {

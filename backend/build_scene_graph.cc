@@ -67,6 +67,7 @@ class SceneBuilder {
     g.X_BG = src.X_BG;
     g.shape = src.shape;
     g.roles = src.roles;
+    g.unnamed = src.unnamed;
     g.properties = Canonical(WithAppearance(src));
   }
 
@@ -97,7 +98,7 @@ class SceneBuilder {
     CheckEntityModel(src.model, src.loc);
     scene_.cameras.push_back({std::string(m_.Text(src.name)), src.model,
                               ResolveBody(src.body, src.loc), src.X_BC, src.width, src.height,
-                              src.fov_y});
+                              src.fov_y, src.unnamed});
   }
 
   const ir::Module& m_;

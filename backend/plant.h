@@ -39,6 +39,7 @@ struct PlantBody {
   /// A deformable link (EXT-070): outside the rigid plant's dynamics; it is
   /// kept as a massless body so its geometry and properties stay reachable.
   std::optional<ir::DeformableProperties> deformable;
+  bool unnamed = false;  // named by the compiler
   // topology: the joint whose child this body is, its parent body and its
   // depth in the tree (world: invalid ids, level 0)
   JointId inbound_joint;
@@ -51,6 +52,7 @@ struct PlantFrame {
   ModelId model;
   BodyId body;
   Transform X_BF;
+  bool unnamed = false;  // named by the compiler
 };
 
 /// A joint, with every per-coordinate vector normalized to its full length:
@@ -86,6 +88,7 @@ struct PlantActuator {
   double gear_ratio = 1;
   double rotor_inertia = 0;
   std::optional<double> kp, kd;
+  bool unnamed = false;  // named by the compiler
 };
 
 /// The IR constraint with its references resolved to ids. Which fields are
@@ -93,7 +96,7 @@ struct PlantActuator {
 struct PlantConstraint {
   ModelId model;
   ir::ConstraintType type = ir::ConstraintType::Coupler;
-  JointId joint0, joint1;  // coupler: q1 = gear_ratio * q0 + offset
+  JointId joint0, joint1;  // coupler: q0 = gear_ratio * q1 + offset (joint0 follows)
   double gear_ratio = 1, offset = 0;
   BodyId body_A, body_B;  // ball, distance, weld
   Transform X_AP, X_BQ;

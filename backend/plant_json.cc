@@ -124,19 +124,18 @@ class PlantJsonEmitter {
       w_.Key("surface_velocity_axis");
       Vector(*body.surface_velocity_axis);
     }
-    DeformableOf(body);
+    if (body.deformable) Deformable(*body.deformable);
+    UnnamedFlag(body.unnamed);
     w_.EndObject();
   }
 
-  // `bodies[].deformable` (EXT-070). A template so that it compiles before
-  // PlantBody carries `std::optional<ir::DeformableProperties> deformable`
-  // (copied from ir::Body by BuildPlant); until then nothing is printed.
-  template <typename PlantBodyT>
-  void DeformableOf(const PlantBodyT& body) {
-    if constexpr (requires { body.deformable; }) {
-      if (body.deformable) Deformable(*body.deformable);
-    }
+  // `"unnamed": true` on what the compiler named (plant-json.md); absent
+  // otherwise, so that named entities print as before
+  void UnnamedFlag(bool unnamed) {
+    if (unnamed) w_.Key("unnamed").Bool(true);
   }
+
+  // `bodies[].deformable` (EXT-070)
   void Deformable(const ir::DeformableProperties& d) {
     w_.Key("deformable").BeginObject();
     w_.Key("youngs_modulus").Number(d.youngs_modulus);
@@ -196,7 +195,7 @@ class PlantJsonEmitter {
     if (joint.type == ir::JointType::Screw) {
       w_.Key("screw_thread_pitch").Number(joint.screw_thread_pitch);
     }
-    if (joint.unnamed) w_.Key("unnamed").Bool(true);
+    UnnamedFlag(joint.unnamed);
     w_.EndObject();
   }
 
@@ -206,6 +205,7 @@ class PlantJsonEmitter {
     w_.Key("body").String(BodyName(frame.body));
     w_.Key("X_BF");
     Pose(frame.X_BF);
+    UnnamedFlag(frame.unnamed);
     w_.EndObject();
   }
 
@@ -228,6 +228,7 @@ class PlantJsonEmitter {
       PropertyValue(p.value);
     }
     w_.EndObject();
+    UnnamedFlag(g.unnamed);
     w_.EndObject();
   }
 
@@ -291,6 +292,7 @@ class PlantJsonEmitter {
     OptionalNumber(a.kp);
     w_.Key("kd");
     OptionalNumber(a.kd);
+    UnnamedFlag(a.unnamed);
     w_.EndObject();
   }
 
@@ -353,6 +355,7 @@ class PlantJsonEmitter {
     w_.Key("width").Int(c.width);
     w_.Key("height").Int(c.height);
     w_.Key("fov_y").Number(c.fov_y);
+    UnnamedFlag(c.unnamed);
     w_.EndObject();
   }
 

@@ -27,6 +27,7 @@ struct SceneGeometry {
   ir::Shape shape;
   uint8_t roles = 0;  // ir::GeometryRole bits
   std::vector<ir::Property> properties;  // sorted by key, keys unique
+  bool unnamed = false;  // named by the compiler
 };
 
 struct SceneCamera {
@@ -36,6 +37,7 @@ struct SceneCamera {
   Transform X_BC;  // Drake camera frame: +z forward, +x right, +y down
   int width = 640, height = 480;
   double fov_y = 0;
+  bool unnamed = false;  // named by the compiler
 };
 
 struct SceneGraph {

@@ -76,9 +76,13 @@ std::string FormatDiagnosticText(const Diagnostic& diag, const SourceManager& so
   const auto& info = InfoFor(diag.kind);
   std::string out;
   AppendIncludeChain(out, diag.loc, sources);
-  const char* sev_color = diag.severity == Severity::Error ? "\033[1;31m" : "\033[1;35m";
+  const char* sev_color = diag.severity == Severity::Error     ? "\033[1;31m"
+                          : diag.severity == Severity::Warning ? "\033[1;35m"
+                                                               : "\033[1;36m";
+  // the group that -W selects: on every warning and note, and on an error
+  // that a warning became (-Werror)
   std::string flag;
-  if (diag.severity == Severity::Warning || info.default_severity == Severity::Warning) {
+  if (diag.severity != Severity::Error || info.default_severity != Severity::Error) {
     flag = fmt::format(" [-W{}]", info.group);
   }
   if (color) {

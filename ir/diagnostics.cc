@@ -30,9 +30,9 @@ InFlightDiagnostic::~InFlightDiagnostic() {
 
 void DiagnosticEngine::Deliver(Diagnostic diag) {
   const std::string group(InfoFor(diag.kind).group);
-  // apply the policy: only warnings can be silenced or promoted
+  // apply the policy: warnings and notes can be silenced, only warnings promoted
+  if (diag.severity != Severity::Error && policy_.disabled_groups.count(group)) return;
   if (diag.severity == Severity::Warning) {
-    if (policy_.disabled_groups.count(group)) return;
     if (policy_.warnings_as_errors || policy_.error_groups.count(group)) {
       diag.severity = Severity::Error;
     }

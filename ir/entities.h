@@ -112,6 +112,7 @@ struct Body {
   /// sum of the geometries' MassContribution on this body (none: massless);
   /// `inertial` is ignored and overwritten by the mass-properties pass.
   bool mass_from_geometry = false;
+  bool unnamed = false;  // named by the compiler (MJCF-020, MJCF-023)
 };
 
 /// A frame fixed to a body: X_BF.
@@ -121,6 +122,7 @@ struct Frame {
   Loc loc;
   Ref<BodyId> body;
   Transform X_BF;
+  bool unnamed = false;  // named by the compiler
 };
 
 enum class JointType {
@@ -255,6 +257,7 @@ struct Geometry {
   std::optional<MassContribution> mass_contribution;
   /// MJCF: a primitive sized from a mesh (BEYOND-002).
   std::optional<MeshFit> fit_to_mesh;
+  bool unnamed = false;  // named by the compiler
 };
 
 struct Actuator {
@@ -266,6 +269,7 @@ struct Actuator {
   double gear_ratio = 1;
   double rotor_inertia = 0;
   std::optional<double> kp, kd;
+  bool unnamed = false;  // named by the compiler
 };
 
 enum class ConstraintType { Coupler, Ball, Distance, Weld, Tendon };
@@ -275,7 +279,9 @@ struct Constraint {
   ModelId model;
   Loc loc;
   ConstraintType type = ConstraintType::Coupler;
-  // coupler: q1 = gear_ratio * q0 + offset, joint1 being the mimicking joint
+  // coupler, as Drake's AddCouplerConstraint: q0 = gear_ratio * q1 + offset,
+  // joint0 being the joint that follows (the mimicking joint) and joint1 the
+  // joint it follows
   Ref<JointId> joint0, joint1;
   double gear_ratio = 1, offset = 0;
   // ball / distance / weld
@@ -338,6 +344,7 @@ struct Camera {
   Transform X_BC;  // Drake camera frame: +z forward, +x right, +y down
   int width = 640, height = 480;
   double fov_y = 0.785398163397448;
+  bool unnamed = false;  // named by the compiler (`camera<i>`)
 };
 
 }  // namespace mdlc::ir

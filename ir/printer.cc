@@ -201,12 +201,14 @@ std::string Printer::Run() {
       }
       out_ += "}";
     }
+    if (b.unnamed) out_ += " unnamed";
     out_ += Where(b.loc) + "\n";
   }
   for (size_t i = 0; i < m_.frames.size(); ++i) {
     const Frame& f = m_.frames[i];
-    out_ += fmt::format("  frame #{} {} model={} body={} X_BF={}{}\n", i, Name(f.name),
-                        Model(f.model), BodyRef(f.body), Pose(f.X_BF), Where(f.loc));
+    out_ += fmt::format("  frame #{} {} model={} body={} X_BF={}{}{}\n", i, Name(f.name),
+                        Model(f.model), BodyRef(f.body), Pose(f.X_BF),
+                        f.unnamed ? " unnamed" : "", Where(f.loc));
   }
   for (size_t i = 0; i < m_.joints.size(); ++i) {
     const Joint& j = m_.joints[i];
@@ -263,6 +265,7 @@ std::string Printer::Run() {
         else return fmt::format("[{}]", fmt::join(v, " "));
       }, p.value);
     }
+    if (g.unnamed) out_ += " unnamed";
     out_ += Where(g.loc) + "\n";
   }
   for (size_t i = 0; i < m_.actuators.size(); ++i) {
@@ -272,6 +275,7 @@ std::string Printer::Run() {
                         Num(a.gear_ratio), Num(a.rotor_inertia));
     if (a.kp) out_ += " kp=" + Num(*a.kp);
     if (a.kd) out_ += " kd=" + Num(*a.kd);
+    if (a.unnamed) out_ += " unnamed";
     out_ += Where(a.loc) + "\n";
   }
   for (size_t i = 0; i < m_.constraints.size(); ++i) {

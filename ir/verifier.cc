@@ -2,6 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <set>
+#include <type_traits>
+#include <utility>
+
 namespace mdlc::ir {
 namespace {
 
@@ -74,6 +78,7 @@ class Verifier {
       }
     }
     if (level_ >= VerifyLevel::Tree) CheckTree();
+    if (level_ >= VerifyLevel::Named) CheckNamesUnique();
     return ok_;
   }
 
@@ -117,6 +122,40 @@ class Verifier {
       }
     }
     if (inboard[0] != 0) Fail({}, "the world body is the child of a joint");
+  }
+
+  // plant-json never holds two entities of a kind with one (instance, name),
+  // nor two geometries of one name on a body in one role
+  void CheckNamesUnique() {
+    CheckUnique(m_.bodies, "body", [](const Body& b) { return Scopes{b.model.value}; });
+    CheckUnique(m_.frames, "frame", [](const Frame& f) { return Scopes{f.model.value}; });
+    CheckUnique(m_.joints, "joint", [](const Joint& j) { return Scopes{j.model.value}; });
+    CheckUnique(m_.actuators, "actuator", [](const Actuator& a) { return Scopes{a.model.value}; });
+    CheckUnique(m_.cameras, "camera", [](const Camera& c) { return Scopes{c.model.value}; });
+    CheckUnique(m_.geometries, "geometry", [](const Geometry& g) {
+      Scopes scopes;
+      for (uint8_t role : {kProximityRole, kIllustrationRole, kPerceptionRole}) {
+        if (g.roles & role) scopes.push_back(uint64_t{g.body.id.value} << 8 | role);
+      }
+      return scopes;
+    });
+  }
+  using Scopes = std::vector<uint64_t>;
+  template <typename Entity, typename ScopesOf>
+  void CheckUnique(const std::vector<Entity>& table, const char* what, ScopesOf scopes_of) {
+    std::set<std::pair<uint64_t, uint32_t>> seen;
+    for (const Entity& e : table) {
+      if constexpr (std::is_same_v<Entity, Body>) {
+        if (e.is_world) continue;
+      }
+      for (uint64_t scope : scopes_of(e)) {
+        if (!seen.insert({scope, e.name.value}).second) {
+          Fail(e.loc, fmt::format("two {} entities are named '{}' in model instance '{}'", what,
+                                  m_.Text(e.name), m_.Text(m_.models[e.model.index()].name)));
+          break;
+        }
+      }
+    }
   }
 
   const Module& m_;

@@ -14,6 +14,9 @@ enum class VerifyLevel {
   Raw,       // after frontends: ids in range, names present
   Resolved,  // + every reference resolved to an id
   Tree,      // + every non-world body has exactly one inboard joint
+  Named,     // + names unique where Drake needs them: bodies, frames, joints,
+             //   actuators and cameras in their model instance, geometries
+             //   in their body and role
 };
 
 /// Returns true when every invariant of `level` holds.

@@ -21,7 +21,7 @@ class FitToMeshPass : public Pass {
     return "Size and place primitives fitted to meshes (MJCF geoms with a primitive type and a "
            "mesh)";
   }
-  ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Tree; }
+  ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Named; }
   bool Run(PassContext& ctx) override {
     const size_t errors_before = ctx.diags.error_count();
     for (ir::Geometry& g : ctx.module.geometries) {

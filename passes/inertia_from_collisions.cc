@@ -30,6 +30,7 @@ class InertiaFromCollisionsPass : public Pass {
     return "Compute mass properties from collision geometry where the file asks (SDFormat "
            "<inertial auto=\"true\">)";
   }
+  ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Named; }
   bool Run(PassContext& ctx) override;
 
  private:

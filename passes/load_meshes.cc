@@ -28,7 +28,7 @@ class LoadMeshesPass : public Pass {
     return "Read the mesh files that mass properties and fitted primitives need (each once, in "
            "parallel)";
   }
-  ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Tree; }
+  ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Named; }
   bool Run(PassContext& ctx) override {
     struct Use {
       std::string path;

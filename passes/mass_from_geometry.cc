@@ -47,7 +47,7 @@ class MassFromGeometryPass : public Pass {
     return "Compute MJCF bodies' mass properties from their geoms and apply the compiler's mass "
            "corrections";
   }
-  ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Tree; }
+  ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Named; }
   bool Run(PassContext& ctx) override {
     const size_t errors_before = ctx.diags.error_count();
     FromGeometry(ctx);

@@ -19,6 +19,8 @@ const std::vector<PassInfo>& RegisteredPasses() {
       Info<CreateCheckJointsPass>(),
       Info<CreateCheckModelElementsPass>(),
       Info<CreateBuildKinematicTreePass>(),
+      // after the last pass that adds entities
+      Info<CreateUniqueNamesPass>(),
       // meshes: resolved, read (once each), then used for fitted primitives
       // and mass properties, all before check-inertia validates the result
       Info<CreateResolveAssetsPass>(),

@@ -29,6 +29,7 @@ std::unique_ptr<Pass> CreateResolveFramesPass();
 std::unique_ptr<Pass> CreateResolveNamesPass();
 std::unique_ptr<Pass> CreateApplyDirectivesPass();
 std::unique_ptr<Pass> CreateBuildKinematicTreePass();
+std::unique_ptr<Pass> CreateUniqueNamesPass();
 std::unique_ptr<Pass> CreateInertiaFromCollisionsPass();
 std::unique_ptr<Pass> CreateCheckInertiaPass();
 std::unique_ptr<Pass> CreateCheckJointsPass();

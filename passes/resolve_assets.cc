@@ -21,7 +21,7 @@ class ResolveAssetsPass : public Pass {
   std::string_view description() const override {
     return "Resolve mesh URIs (package://, model://, file://, paths) to existing files";
   }
-  ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Tree; }
+  ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Named; }
   bool Run(PassContext& ctx) override;
 };
 

@@ -259,6 +259,7 @@ void MjcfReader::LowerWorldBody(const xml::XmlElement& worldbody) {
 
     ir::Body body;
     body.name = m.Intern(b.name);
+    body.unnamed = !name_attr.present();
     body.model = model;
     body.loc = e.GetLoc();
     std::optional<ir::Inertial> inertial;

@@ -72,6 +72,7 @@ class ActuatorLowering {
 
     ir::Actuator a;
     a.name = L_.module().Intern(name_);
+    a.unnamed = !e_.HasOwn("name");
     a.model = L_.r.model;
     a.loc = e_.loc();
     a.joint = L_.JointRef(*joint, e_.Get("joint").loc);

@@ -124,6 +124,7 @@ bool LowerGeom(MjcfReader& r, const BodyItem& item, BodyId body, bool is_world,
 
   ir::Geometry geom;
   geom.name = m.Intern(name);
+  geom.unnamed = !name_attr.present();
   geom.model = r.model;
   geom.loc = item.e.GetLoc();
   geom.body = RefTo(m, body);
@@ -325,6 +326,7 @@ void LowerCamera(MjcfReader& r, const BodyItem& item, BodyId body) {
   if (!X) return;
   ir::Camera cam;
   cam.name = m.Intern(fmt::format("{}/{}", r.model_name, local));
+  cam.unnamed = !name_attr.present();
   cam.model = r.model;
   cam.loc = item.e.GetLoc();
   cam.body = RefTo(m, body);

@@ -174,6 +174,7 @@ void LowerJoints(MjcfReader& r, const BodyContext& b, const std::vector<BodyItem
     if (!last) {
       ir::Body dummy;
       dummy.name = m.Intern(fmt::format("{}{}", b.name, k));
+      dummy.unnamed = true;
       dummy.model = r.model;
       dummy.loc = j.loc();
       child = m.Add(std::move(dummy));

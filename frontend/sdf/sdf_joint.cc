@@ -289,6 +289,7 @@ void SdfReader::ReadJoint(const xml::XmlElement& e, ModelScope& s) {
   if (one_dof && values[0].effort != 0) {
     ir::Actuator a;
     a.name = final_name;
+    a.unnamed = true;  // made by the compiler, named after its joint
     a.model = s.model;
     a.loc = e.GetLoc();
     a.joint = {final_name, e.GetLoc(), joint_id};

@@ -167,6 +167,7 @@ void UrdfReader::ReadGeometryElement(const xml::XmlElement& e, BodyId body, Symb
   std::string default_name(ir::ShapeTypeName(g.shape));
   default_name[0] = static_cast<char>(std::toupper(default_name[0]));
   if (default_name == "Half_space") default_name = "HalfSpace";
+  g.unnamed = !name_attr.present() || name_attr.value.empty();
   g.name = UniqueGeometryName(body, g.roles,
                               name_attr.present() && !name_attr.value.empty() ? name_attr.value
                                                                               : default_name,

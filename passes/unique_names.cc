@@ -1,0 +1,136 @@
+// unique_names.cc - the unique-names pass: every name the compiler made is
+// unique where Drake requires names to be unique.
+//
+// Frontends and passes name what the file leaves unnamed or what they insert
+// (MJCF's `body<N>`, the bodies between stacked joints `NAME<k>`, `geom<i>`,
+// `camera<i>`, `motor<N>`, welds `P_welds_to_C`, floating joints named after
+// their body) the way Drake's parsers do. Such a name can already belong to
+// an entity the file named: a body `vertebra_C1` with two joints makes
+// `vertebra_C10`, which the file may also have. Drake would fail on the
+// duplicate; mdlc keeps the file's name and gives the made one the first free
+// `NAME_<n>` (n = 1, 2, ...), with a note at the entity.
+//
+// Scopes, as Drake's: bodies, frames, joints, actuators and cameras are
+// unique within their model instance; a geometry within its body and role.
+// Names the file gives are never changed here (duplicates among them are the
+// frontends' errors). Runs after the last pass that adds entities
+// (build-kinematic-tree); afterwards the verifier's Named level holds.
+#include <fmt/format.h>
+
+#include <unordered_set>
+
+#include "passes/pass_registry.h"
+
+namespace mdlc::passes {
+namespace {
+
+// one name in one scope (a model instance, or a body and role)
+struct ScopedSymbol {
+  uint64_t scope;
+  uint32_t symbol;
+  bool operator==(const ScopedSymbol&) const = default;
+};
+struct ScopedSymbolHash {
+  size_t operator()(const ScopedSymbol& s) const {
+    return std::hash<uint64_t>()(s.scope * 0x9e3779b97f4a7c15ULL ^ s.symbol);
+  }
+};
+using TakenNames = std::unordered_set<ScopedSymbol, ScopedSymbolHash>;
+
+// The scopes an entity's name must be unique in: its model instance; for a
+// geometry, its body once per role it has.
+template <typename Entity>
+std::vector<uint64_t> ScopesOf(const Entity& e) {
+  return {e.model.value};
+}
+template <>
+std::vector<uint64_t> ScopesOf(const ir::Geometry& g) {
+  std::vector<uint64_t> scopes;
+  for (uint8_t role : {ir::kProximityRole, ir::kIllustrationRole, ir::kPerceptionRole}) {
+    if (g.roles & role) scopes.push_back(uint64_t{g.body.id.value} << 8 | role);
+  }
+  return scopes;
+}
+
+class UniqueNamesPass : public Pass {
+ public:
+  std::string_view name() const override { return "unique-names"; }
+  std::string_view description() const override {
+    return "Give every compiler-made name that is taken the next free name";
+  }
+  ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Named; }
+  bool Run(PassContext& ctx) override {
+    ir::Module& m = ctx.module;
+    const std::vector<Symbol> body_names_before = BodyNames(m);
+    Uniquify(ctx, m.bodies, "body");
+    FollowRenamedBodies(m, body_names_before);
+    Uniquify(ctx, m.frames, "frame");
+    Uniquify(ctx, m.joints, "joint");
+    Uniquify(ctx, m.actuators, "actuator");
+    Uniquify(ctx, m.cameras, "camera");
+    Uniquify(ctx, m.geometries, "geometry");
+    return true;
+  }
+
+ private:
+  static std::vector<Symbol> BodyNames(const ir::Module& m) {
+    std::vector<Symbol> names;
+    names.reserve(m.bodies.size());
+    for (const ir::Body& b : m.bodies) names.push_back(b.name);
+    return names;
+  }
+  // A floating joint the compiler added is named after its body (Drake's
+  // rule): when the body was renamed, so is the joint
+  static void FollowRenamedBodies(ir::Module& m, const std::vector<Symbol>& before) {
+    for (ir::Joint& j : m.joints) {
+      if (!j.unnamed || j.type != ir::JointType::QuaternionFloating || !j.child.resolved()) continue;
+      const size_t child = j.child.id.index();
+      if (m.bodies[child].name != before[child] && j.name == before[child]) {
+        j.name = m.bodies[child].name;
+      }
+    }
+  }
+
+  template <typename Entity>
+  void Uniquify(PassContext& ctx, std::vector<Entity>& table, std::string_view what) {
+    ir::Module& m = ctx.module;
+    TakenNames taken;
+    auto is_free = [&](const Entity& e, Symbol name) {
+      for (uint64_t scope : ScopesOf(e)) {
+        if (taken.count({scope, name.value})) return false;
+      }
+      return true;
+    };
+    auto take = [&](const Entity& e) {
+      for (uint64_t scope : ScopesOf(e)) taken.insert({scope, e.name.value});
+    };
+    // the file's names first, whatever their order: they never change
+    for (const Entity& e : table) {
+      if (!e.unnamed) take(e);
+    }
+    for (Entity& e : table) {
+      if (!e.unnamed) continue;
+      if (!is_free(e, e.name)) {
+        const std::string made(m.Text(e.name));
+        Symbol renamed;
+        for (int n = 1;; ++n) {
+          renamed = m.Intern(fmt::format("{}_{}", made, n));
+          if (is_free(e, renamed)) break;
+        }
+        ctx.diags.Report(DiagKind::SynthesizedNameTaken, e.loc,
+                         fmt::format("the {} name '{}' that mdlc made is already used in model "
+                                     "instance '{}'; this {} is named '{}'",
+                                     what, made, m.Text(m.models[e.model.index()].name), what,
+                                     m.Text(renamed)));
+        e.name = renamed;
+      }
+      take(e);
+    }
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Pass> CreateUniqueNamesPass() { return std::make_unique<UniqueNamesPass>(); }
+
+}  // namespace mdlc::passes
