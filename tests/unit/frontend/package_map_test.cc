@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <string>
 
 namespace mdlc::frontend {
 namespace {
@@ -27,6 +29,12 @@ class PackageMapTest : public ::testing::Test {
     Write(dir / "package.xml", "<package><name>" + name + "</name>" + extra + "</package>");
   }
   std::string Canonical(const fs::path& rel) { return fs::weakly_canonical(root_ / rel).string(); }
+  // paths are compared canonical: the temporary folder may be reached
+  // through a symbolic link
+  static std::optional<std::string> Canon(const std::optional<std::string>& path) {
+    if (!path) return std::nullopt;
+    return fs::weakly_canonical(*path).string();
+  }
 
   fs::path root_;
   SourceManager sources_;
@@ -114,16 +122,16 @@ TEST_F(PackageMapTest, ResolvesEveryUriForm) {  // COMMON-010
   PackageMap map;
   map.PopulateFromFolder(root_.string(), sources_, diags_);
   const std::string base = (root_ / "models").string();
-  EXPECT_EQ(ResolveUri("package://pkg/meshes/a.obj", base, map, {}, diags_),
+  EXPECT_EQ(Canon(ResolveUri("package://pkg/meshes/a.obj", base, map, {}, diags_)),
             Canonical("pkg/meshes/a.obj"));
-  EXPECT_EQ(ResolveUri("model://pkg/meshes/a.obj", base, map, {}, diags_),
+  EXPECT_EQ(Canon(ResolveUri("model://pkg/meshes/a.obj", base, map, {}, diags_)),
             Canonical("pkg/meshes/a.obj"));
-  EXPECT_EQ(ResolveUri("b.obj", base, map, {}, diags_), (root_ / "models/b.obj").string());
-  EXPECT_EQ(ResolveUri("../models/b.obj", base, map, {}, diags_), (root_ / "models/b.obj").string());
-  EXPECT_EQ(ResolveUri("file://" + (root_ / "models/b.obj").string(), base, map, {}, diags_),
-            (root_ / "models/b.obj").string());
-  EXPECT_EQ(ResolveUri((root_ / "models/b.obj").string(), "/elsewhere", map, {}, diags_),
-            (root_ / "models/b.obj").string());
+  EXPECT_EQ(Canon(ResolveUri("b.obj", base, map, {}, diags_)), Canonical("models/b.obj"));
+  EXPECT_EQ(Canon(ResolveUri("../models/b.obj", base, map, {}, diags_)), Canonical("models/b.obj"));
+  EXPECT_EQ(Canon(ResolveUri("file://" + (root_ / "models/b.obj").string(), base, map, {}, diags_)),
+            Canonical("models/b.obj"));
+  EXPECT_EQ(Canon(ResolveUri((root_ / "models/b.obj").string(), "/elsewhere", map, {}, diags_)),
+            Canonical("models/b.obj"));
   EXPECT_EQ(diags_.diagnostics().size(), 0u);
 }
 
