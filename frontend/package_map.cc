@@ -183,6 +183,15 @@ std::optional<std::string> UriToPath(std::string_view uri, const std::string& ba
       fs::path p(rest);
       path = p.is_absolute() ? p.string() : (fs::path(base_dir) / p).string();
     } else if (scheme == "package" || scheme == "model") {
+      if (scheme == "package" && rest.starts_with('/') && rest.size() > 1 && rest[1] != '/') {
+        // package:///NAME/path: an empty authority before the package name,
+        // common in older URDFs; read as package://NAME/path
+        rest.remove_prefix(1);
+        diags.Report(DiagKind::MalformedUri, loc,
+                     fmt::format("'{}' has an empty authority (three slashes after 'package:'); "
+                                 "read as 'package://{}'",
+                                 uri, rest));
+      }
       const size_t slash = rest.find('/');
       const std::string_view name = rest.substr(0, slash);
       const PackageMap::Package* package = packages.Find(name);

@@ -60,7 +60,9 @@ class PackageMap {
 /// `package://PKG/rel`, `model://PKG/rel`, `file:///abs`, an absolute path,
 /// or a path relative to `base_dir` (the referring file's folder). Whether
 /// the file exists is not checked. Reports an error at `loc` and returns
-/// nullopt when the scheme is unsupported or the package unknown.
+/// nullopt when the scheme is unsupported or the package unknown. The
+/// non-standard `package:///PKG/rel` (an empty authority, as older URDFs
+/// write it) is read as `package://PKG/rel`, with a warning.
 std::optional<std::string> UriToPath(std::string_view uri, const std::string& base_dir,
                                      const PackageMap& packages, Loc loc,
                                      DiagnosticEngine& diags);

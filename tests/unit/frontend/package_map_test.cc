@@ -135,6 +135,35 @@ TEST_F(PackageMapTest, ResolvesEveryUriForm) {  // COMMON-010
   EXPECT_EQ(diags_.diagnostics().size(), 0u);
 }
 
+// package:///NAME/path (an empty authority, as Pinocchio-era URDFs write
+// it) is read as package://NAME/path, with a warning that says so
+TEST_F(PackageMapTest, PackageUriWithThreeSlashesIsReadAsTwoWithAWarning) {  // COMMON-010
+  Package("pkg", "pkg");
+  Write("pkg/meshes/a.obj", "");
+  PackageMap map;
+  map.PopulateFromFolder(root_.string(), sources_, diags_);
+  const FileId file = sources_.AddBuffer("robot.urdf", "\n\n<mesh/>\n");
+  const Loc at{file, 3, 1};
+  EXPECT_EQ(Canon(ResolveUri("package:///pkg/meshes/a.obj", "/", map, at, diags_)),
+            Canonical("pkg/meshes/a.obj"));
+  ASSERT_EQ(diags_.diagnostics().size(), 1u);
+  const Diagnostic& d = diags_.diagnostics()[0];
+  EXPECT_EQ(d.kind, DiagKind::MalformedUri);
+  EXPECT_EQ(d.severity, Severity::Warning);
+  EXPECT_EQ(d.loc, at);
+  EXPECT_NE(d.message.find("'package:///pkg/meshes/a.obj' has an empty authority"),
+            std::string::npos)
+      << d.message;
+  EXPECT_NE(d.message.find("read as 'package://pkg/meshes/a.obj'"), std::string::npos)
+      << d.message;
+  EXPECT_EQ(InfoFor(d.kind).group, "uri");
+  EXPECT_EQ(diags_.error_count(), 0u);
+  // the tolerance is for package:// only; four slashes still name no package
+  EXPECT_FALSE(ResolveUri("package:////pkg/meshes/a.obj", "/", map, at, diags_));
+  EXPECT_FALSE(ResolveUri("model:///pkg/meshes/a.obj", "/", map, at, diags_));
+  EXPECT_EQ(diags_.error_count(), 2u);
+}
+
 TEST_F(PackageMapTest, UnresolvableUrisAreErrors) {  // COMMON-010, COMMON-011
   PackageMap map;
   EXPECT_FALSE(ResolveUri("http://example.com/a.obj", "/", map, {}, diags_));

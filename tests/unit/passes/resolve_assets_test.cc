@@ -174,6 +174,42 @@ TEST(ResolveAssetsTest, StrictTurnsTheMissingVisualIntoAnError) {  // COMMON-002
   fs::remove_all(dir);
 }
 
+// package:///NAME/path, as Pinocchio-era URDFs write their meshes: read as
+// package://NAME/path, with a warning at the URI
+TEST(ResolveAssetsTest, UrdfPackageUriWithThreeSlashesResolvesWithAWarning) {  // COMMON-010
+  const fs::path dir =
+      fs::temp_directory_path() / fmt::format("mdlc_assets_three_slashes_{}", ::getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir / "robot_description/meshes");
+  std::ofstream(dir / "robot_description/package.xml")
+      << "<package><name>robot_description</name></package>";
+  std::ofstream(dir / "robot_description/meshes/base.stl") << "";
+  std::ofstream(dir / "robot_description/robot.urdf") << R"(<robot name="r">
+  <link name="base">
+    <inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>
+    <visual>
+      <geometry><mesh filename="package:///robot_description/meshes/base.stl"/></geometry>
+    </visual>
+  </link>
+</robot>
+)";
+  Compilation c;
+  c.packages.PopulateFromFolder(dir.string(), c.sources, c.diags);
+  c.options.files = {(dir / "robot_description/robot.urdf").string()};
+  EXPECT_TRUE(c.Run());
+  ASSERT_EQ(c.diags.diagnostics().size(), 1u);
+  const Diagnostic& d = c.diags.diagnostics()[0];
+  EXPECT_EQ(d.kind, DiagKind::MalformedUri);
+  EXPECT_EQ(d.loc.line, 5u);
+  EXPECT_NE(d.message.find("read as 'package://robot_description/meshes/base.stl'"),
+            std::string::npos)
+      << d.message;
+  const auto& mesh = std::get<ir::Mesh>(c.module.geometries.at(0).shape);
+  EXPECT_EQ(fs::weakly_canonical(mesh.resolved),
+            fs::weakly_canonical(dir / "robot_description/meshes/base.stl"));
+  fs::remove_all(dir);
+}
+
 // --- SDFormat ---
 
 TEST(ResolveAssetsTest, SdfVisualMeshMissingIsAWarning) {  // COMMON-011, SDF-041
