@@ -166,9 +166,9 @@ std::optional<fs::path> GazeboModelFolder(std::string_view name, const std::stri
 }
 }  // namespace
 
-std::optional<std::string> ResolveUri(std::string_view uri, const std::string& base_dir,
-                                      const PackageMap& packages, Loc loc,
-                                      DiagnosticEngine& diags) {
+std::optional<std::string> UriToPath(std::string_view uri, const std::string& base_dir,
+                                     const PackageMap& packages, Loc loc,
+                                     DiagnosticEngine& diags) {
   std::string path;
   const size_t scheme_end = uri.find("://");
   if (scheme_end == std::string_view::npos) {
@@ -183,6 +183,15 @@ std::optional<std::string> ResolveUri(std::string_view uri, const std::string& b
       fs::path p(rest);
       path = p.is_absolute() ? p.string() : (fs::path(base_dir) / p).string();
     } else if (scheme == "package" || scheme == "model") {
+      if (scheme == "package" && rest.starts_with('/') && rest.size() > 1 && rest[1] != '/') {
+        // package:///NAME/path: an empty authority before the package name,
+        // common in older URDFs; read as package://NAME/path
+        rest.remove_prefix(1);
+        diags.Report(DiagKind::MalformedUri, loc,
+                     fmt::format("'{}' has an empty authority (three slashes after 'package:'); "
+                                 "read as 'package://{}'",
+                                 uri, rest));
+      }
       const size_t slash = rest.find('/');
       const std::string_view name = rest.substr(0, slash);
       const PackageMap::Package* package = packages.Find(name);
@@ -220,13 +229,21 @@ std::optional<std::string> ResolveUri(std::string_view uri, const std::string& b
       return std::nullopt;
     }
   }
+  return path;
+}
+
+std::optional<std::string> ResolveUri(std::string_view uri, const std::string& base_dir,
+                                      const PackageMap& packages, Loc loc,
+                                      DiagnosticEngine& diags) {
+  std::optional<std::string> path = UriToPath(uri, base_dir, packages, loc, diags);
+  if (!path) return std::nullopt;
   std::error_code ec;
-  if (!fs::exists(path, ec)) {
+  if (!fs::exists(*path, ec)) {
     diags.Report(DiagKind::FileNotFound, loc,
-                 fmt::format("'{}' resolves to '{}', which does not exist", uri, path));
+                 fmt::format("'{}' resolves to '{}', which does not exist", uri, *path));
     return std::nullopt;
   }
-  return fs::path(path).lexically_normal().string();
+  return fs::path(*path).lexically_normal().string();
 }
 
 }  // namespace mdlc::frontend

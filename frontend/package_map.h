@@ -56,11 +56,19 @@ class PackageMap {
   std::vector<std::string> searched_;
 };
 
-/// Resolves a file reference written in a model (COMMON-010, COMMON-011):
+/// The path a file reference written in a model names (COMMON-010):
 /// `package://PKG/rel`, `model://PKG/rel`, `file:///abs`, an absolute path,
-/// or a path relative to `base_dir` (the referring file's folder). Reports
-/// an error at `loc` and returns nullopt when the scheme is unsupported, the
-/// package unknown, or the file does not exist.
+/// or a path relative to `base_dir` (the referring file's folder). Whether
+/// the file exists is not checked. Reports an error at `loc` and returns
+/// nullopt when the scheme is unsupported or the package unknown. The
+/// non-standard `package:///PKG/rel` (an empty authority, as older URDFs
+/// write it) is read as `package://PKG/rel`, with a warning.
+std::optional<std::string> UriToPath(std::string_view uri, const std::string& base_dir,
+                                     const PackageMap& packages, Loc loc,
+                                     DiagnosticEngine& diags);
+
+/// UriToPath, and the file must exist (COMMON-011): returns the path,
+/// lexically normal, or reports an error at `loc` and returns nullopt.
 std::optional<std::string> ResolveUri(std::string_view uri, const std::string& base_dir,
                                       const PackageMap& packages, Loc loc,
                                       DiagnosticEngine& diags);

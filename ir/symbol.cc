@@ -7,6 +7,24 @@ SymbolTable::SymbolTable() {
   index_.emplace(std::string_view(strings_.back()), 0);
 }
 
+SymbolTable::SymbolTable(const SymbolTable& other) : strings_(other.strings_) { Reindex(); }
+
+SymbolTable& SymbolTable::operator=(const SymbolTable& other) {
+  if (this != &other) {
+    strings_ = other.strings_;
+    Reindex();
+  }
+  return *this;
+}
+
+void SymbolTable::Reindex() {
+  index_.clear();
+  index_.reserve(strings_.size());
+  for (size_t i = 0; i < strings_.size(); ++i) {
+    index_.emplace(std::string_view(strings_[i]), static_cast<uint32_t>(i));
+  }
+}
+
 Symbol SymbolTable::Intern(std::string_view text) {
   if (auto it = index_.find(text); it != index_.end()) return Symbol{it->second};
   strings_.emplace_back(text);

@@ -2,10 +2,21 @@
 // mesh reference (COMMON-010, COMMON-011), including the meshes MJCF
 // primitives are fitted to (BEYOND-002).
 //
-// Reads: ir::Mesh::uri and the file each geometry was declared in. Writes:
-// ir::Mesh::resolved, an existing file's path. A reference that cannot be
-// resolved is an error at the attribute that wrote it, saying where it looked.
-// Each distinct (folder, uri) is resolved once, however many geometries use it.
+// Reads: ir::Mesh::uri and the file each geometry was declared in, or
+// ir::Mesh::resolved where the frontend already computed the path by its
+// format's own rule (MJCF meshdir, MJCF-006). Writes: ir::Mesh::resolved, an
+// existing file's path, or empty when there is none.
+//
+// A reference that cannot be resolved (unknown package, unsupported scheme)
+// is an error at the attribute that wrote it, saying where it looked. A file
+// that does not exist is an error when the plant needs it: for a collision
+// geometry, a geometry with mass whose mass properties come from it, or a
+// primitive sized from it. A mesh only visual geometries use is never read for the
+// plant: its missing file is a warning (-Wmissing-asset) and the geometry is
+// kept. Each distinct (folder, uri) is resolved once and reported at most
+// once, however many geometries use it.
+#include <fmt/format.h>
+
 #include <filesystem>
 #include <unordered_map>
 
@@ -14,6 +25,7 @@
 
 namespace mdlc::passes {
 namespace {
+namespace fs = std::filesystem;
 
 class ResolveAssetsPass : public Pass {
  public:
@@ -25,29 +37,116 @@ class ResolveAssetsPass : public Pass {
   bool Run(PassContext& ctx) override;
 };
 
+const ir::Body* BodyOf(const ir::Module& m, const ir::Geometry& g) {
+  if (!g.body.resolved() || g.body.id.index() >= m.bodies.size()) return nullptr;
+  return &m[g.body.id];
+}
+
+/// "geometry 'g' of body 'b'", as diagnostics name it.
+std::string Describe(const ir::Module& m, const ir::Geometry& g, std::string_view kind) {
+  std::string s = fmt::format("{}geometry '{}'", kind, m.Text(g.name));
+  if (!g.body.name.empty()) s += fmt::format(" of body '{}'", m.Text(g.body.name));
+  return s;
+}
+
+/// Why the plant reads the file of `g`'s mesh shape, or nullopt when it
+/// never does (a mesh only drawn: illustration and perception roles).
+std::optional<std::string> WhyShapeMeshIsNeeded(const ir::Module& m, const ir::Geometry& g) {
+  if (g.roles & ir::kProximityRole) {
+    return fmt::format("it is the shape of {}", Describe(m, g, "collision "));
+  }
+  // MJCF: a geom with mass (MJCF-031); a zero mass or density (Menagerie's
+  // visual classes) makes the mesh's volume irrelevant
+  const ir::Body* body = BodyOf(m, g);
+  if (body && body->mass_from_geometry && !body->is_world && g.mass_contribution) {
+    const ir::MassContribution& c = *g.mass_contribution;
+    if (c.mass ? *c.mass != 0 : c.density != 0) {
+      return fmt::format("the mass properties of {} come from it", Describe(m, g, ""));
+    }
+  }
+  return std::nullopt;
+}
+
+/// One distinct file reference and every mesh that makes it.
+struct Reference {
+  std::string uri;
+  Loc loc;               // where the first use writes it
+  std::string base_dir;  // the referring file's folder
+  std::string path;      // computed by the frontend, or empty
+  std::vector<ir::Mesh*> meshes;
+  // the first use the plant needs the file for: why, and where
+  std::optional<std::string> needed_by;
+  Loc needed_loc, needed_geometry_loc;
+  // the first use, and how many geometries use the file
+  const ir::Geometry* first_user = nullptr;
+  size_t users = 0;
+};
+
 bool ResolveAssetsPass::Run(PassContext& ctx) {
   static const frontend::PackageMap kNoPackages;
   const frontend::PackageMap& packages = ctx.packages ? *ctx.packages : kNoPackages;
   const size_t errors_before = ctx.diags.error_count();
-  std::unordered_map<std::string, std::optional<std::string>> resolved;  // "dir\n" + uri
-  auto resolve = [&](const ir::Geometry& g, ir::Mesh* mesh) {
-    if (!mesh || !mesh->resolved.empty()) return;
+  const ir::Module& m = ctx.module;
+
+  std::vector<Reference> refs;
+  std::unordered_map<std::string, size_t> by_key;  // "dir\n" + uri, or "\n" + path
+  auto add = [&](const ir::Geometry& g, ir::Mesh* mesh, std::optional<std::string> why) {
     const Loc loc = mesh->uri_loc.valid() ? mesh->uri_loc : g.loc;
     const std::string base_dir =
-        loc.valid() ? std::filesystem::path(ctx.sources.Path(loc.file)).parent_path().string()
+        loc.valid() ? fs::path(ctx.sources.Path(loc.file)).parent_path().string()
                     : std::string(".");
-    const std::string key = base_dir + "\n" + mesh->uri;
-    auto it = resolved.find(key);
-    if (it == resolved.end()) {
-      it = resolved.emplace(key, frontend::ResolveUri(mesh->uri, base_dir, packages, loc, ctx.diags))
-               .first;
+    const std::string key = mesh->resolved.empty() ? base_dir + "\n" + mesh->uri
+                                                   : "\n" + mesh->resolved;
+    auto [it, inserted] = by_key.emplace(key, refs.size());
+    if (inserted) refs.push_back({mesh->uri, loc, base_dir, mesh->resolved, {}, {}, {}, {}, &g, 0});
+    Reference& ref = refs[it->second];
+    ref.meshes.push_back(mesh);
+    ++ref.users;
+    if (why && !ref.needed_by) {
+      ref.needed_by = std::move(why);
+      ref.needed_loc = loc;
+      ref.needed_geometry_loc = g.loc;
     }
-    if (it->second) mesh->resolved = *it->second;
   };
   for (ir::Geometry& g : ctx.module.geometries) {
-    resolve(g, std::get_if<ir::Mesh>(&g.shape));
+    if (auto* mesh = std::get_if<ir::Mesh>(&g.shape)) add(g, mesh, WhyShapeMeshIsNeeded(m, g));
     // the mesh an MJCF primitive is fitted to (BEYOND-002)
-    if (g.fit_to_mesh) resolve(g, &g.fit_to_mesh->mesh);
+    if (g.fit_to_mesh) {
+      add(g, &g.fit_to_mesh->mesh,
+          fmt::format("{} takes its size from it", Describe(m, g, "")));
+    }
+  }
+
+  for (Reference& ref : refs) {
+    std::optional<std::string> path;
+    if (!ref.path.empty()) {
+      path = ref.path;
+    } else {
+      // an unknown package or unsupported scheme is an error whatever uses it
+      path = frontend::UriToPath(ref.uri, ref.base_dir, packages,
+                                 ref.needed_by ? ref.needed_loc : ref.loc, ctx.diags);
+    }
+    std::error_code ec;
+    std::string resolved;
+    if (path && fs::exists(*path, ec)) {
+      resolved = fs::path(*path).lexically_normal().string();
+    } else if (path && ref.needed_by) {
+      ctx.diags
+          .Report(DiagKind::FileNotFound, ref.needed_loc,
+                  fmt::format("'{}' resolves to '{}', which does not exist", ref.uri, *path))
+          .Note(ref.needed_geometry_loc, fmt::format("the plant reads this file: {}", *ref.needed_by));
+    } else if (path) {
+      // COMMON-011, relaxed: nothing in the plant reads a visual mesh
+      const ir::Geometry& g = *ref.first_user;
+      const bool drawn = g.roles & (ir::kIllustrationRole | ir::kPerceptionRole);
+      std::string users = Describe(m, g, drawn ? "visual " : "");
+      if (ref.users > 1) users += fmt::format(" (and {} more)", ref.users - 1);
+      ctx.diags.Report(DiagKind::MissingAsset, ref.loc,
+                       fmt::format("'{}' resolves to '{}', which does not exist; {} is kept "
+                                   "without its mesh file, which the plant never reads",
+                                   ref.uri, *path, users));
+    }
+    for (ir::Mesh* mesh : ref.meshes) mesh->resolved = resolved;
   }
   return ctx.diags.error_count() == errors_before;
 }

@@ -3,7 +3,8 @@
 //
 // A mesh may be any format assimp reads (BEYOND-001); the mesh passes load
 // it later. Here it only gets its name (default: the file's stem), its
-// path by MuJoCo's rule, its scale and its inertia mode.
+// path by MuJoCo's rule, its scale and its inertia mode; the resolve-assets
+// pass checks that the file exists where the plant needs it.
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -45,16 +46,8 @@ void ReadMesh(MjcfReader& r, const xml::XmlElement& e) {
     fs::path d(dir);
     path = d.is_absolute() ? d / path : fs::path(r.main_dir) / d / path;
   }
-  std::error_code ec;
-  if (!fs::exists(path, ec)) {
-    r.diags().Report(DiagKind::FileNotFound, file.loc,
-                     fmt::format("mesh file '{}' not found (looked for '{}')", asset.mesh.uri,
-                                 path.lexically_normal().string()));
-    asset.missing_file = true;
-    std::string key = asset.name;
-    r.meshes.try_emplace(std::move(key), std::move(asset));
-    return;
-  }
+  // whether the file exists, and whether that matters, is the
+  // resolve-assets pass's to say: a mesh only visual geoms use is never read
   asset.mesh.resolved = path.lexically_normal().string();
   if (m.Get("scale").present()) {
     if (auto s = r.Numbers(m, "scale", 3)) asset.mesh.scale = {(*s)[0], (*s)[1], (*s)[2]};

@@ -141,8 +141,8 @@ bool LowerGeom(MjcfReader& r, const BodyItem& item, BodyId body, bool is_world,
                                    mesh_attr.value));
       return false;
     }
+    it->second.used = true;
     asset = &it->second;
-    if (asset->missing_file) return false;  // reported at the <mesh> asset
   }
   if (type == "plane") {
     geom.shape = ir::HalfSpace{};

@@ -3,7 +3,9 @@
 // anywhere in the file, then the worldbody and the model elements.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <tuple>
 
 #include "frontend/mjcf/mjcf_reader_detail.h"
 #include "frontend/model_naming.h"
@@ -73,6 +75,23 @@ std::optional<ModelId> Read(FileId file, FrontendContext& ctx) {
   r.bodies.emplace("world", ir::kWorldBody);
   for (const auto& e : top) {
     if (e.Name() == "worldbody") r.LowerWorldBody(e);
+  }
+  // a mesh no geom uses is never read (resolve-assets checks the others'
+  // files); MuJoCo would fail to open a missing one, so say so
+  std::vector<const MeshAsset*> unused;
+  for (const auto& [name, asset] : r.meshes) {
+    std::error_code ec;
+    if (!asset.used && !std::filesystem::exists(asset.mesh.resolved, ec)) unused.push_back(&asset);
+  }
+  std::sort(unused.begin(), unused.end(), [](const MeshAsset* a, const MeshAsset* b) {
+    const Loc &x = a->mesh.uri_loc, &y = b->mesh.uri_loc;
+    return std::tie(x.file.value, x.line, x.column) < std::tie(y.file.value, y.line, y.column);
+  });
+  for (const MeshAsset* asset : unused) {
+    ctx.diags.Report(DiagKind::MissingAsset, asset->mesh.uri_loc,
+                     fmt::format("'{}' resolves to '{}', which does not exist; mesh '{}' is "
+                                 "kept without its file, which no geom uses",
+                                 asset->mesh.uri, asset->mesh.resolved, asset->name));
   }
   // Drake names a floating joint after its body, prefixing '_' while the
   // name is taken by another joint of the model

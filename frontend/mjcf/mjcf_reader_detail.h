@@ -139,9 +139,7 @@ struct MeshAsset {
   Loc loc;
   ir::Mesh mesh;  // uri as written, resolved path (meshdir rules, MJCF-006), scale
   ir::MeshInertia inertia = ir::MeshInertia::Legacy;  // mesh@inertia (MuJoCo 3.3: legacy)
-  /// The file is missing (already reported): geoms naming the mesh are
-  /// dropped quietly instead of being reported as naming an unknown mesh.
-  bool missing_file = false;
+  bool used = false;  // a geom names it (resolve-assets checks its file then)
 };
 
 /// The main file and every file its <include>s name (MJCF-001). Documents

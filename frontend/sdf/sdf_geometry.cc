@@ -349,20 +349,36 @@ std::optional<Eigen::Vector4d> ReadColor(SdfReader& r, const xml::XmlElement& e)
 /// renderer's defaults apply (as in Drake).
 void ReadMaterial(SdfReader& r, const xml::XmlElement& material, const Spelling& sp,
                   ir::Geometry& g) {
-  CheckVisualChildren(r, material, sp,
-                      {"ambient", "diffuse", "specular", "emissive", kDiffuseMapTag},
-                      {"script", "shader", "render_order", "lighting", "double_sided", "pbr"});
-  // SDFormat's material rules, though Drake draws neither scripts nor shaders
-  if (xml::XmlElement script = material.Child("script")) {
-    for (std::string_view needed : {"uri", "name"}) {
-      xml::XmlElement c = script.Child(needed);
-      if (!c || Trim(c.Text()).empty() || Trim(c.Text()) == "__default__") {
-        r.diags().Report(DiagKind::MissingElement, script.GetLoc(),
-                         fmt::format("a <script> element is missing a child <{}> element, or "
-                                     "it is empty",
-                                     needed));
-      }
+  // SDFormat's material rules, though Drake draws neither scripts nor
+  // shaders. libsdformat rejects a <script> without a <uri> or a <name>, as
+  // Gazebo-classic models write it (<script><name>Gazebo/Red</name></script>,
+  // or the name as text); a script cannot affect the plant, so mdlc warns
+  // and ignores it (a complete one is merely unsupported).
+  xml::XmlElement script = material.Child("script");
+  std::vector<std::string> script_lacks;
+  for (std::string_view needed : {"uri", "name"}) {
+    xml::XmlElement c = script ? script.Child(needed) : xml::XmlElement();
+    if (script && (!c || Trim(c.Text()).empty() || Trim(c.Text()) == "__default__")) {
+      script_lacks.push_back(fmt::format("<{}>", needed));
     }
+  }
+  if (script_lacks.empty()) {
+    CheckVisualChildren(r, material, sp,
+                        {"ambient", "diffuse", "specular", "emissive", kDiffuseMapTag},
+                        {"script", "shader", "render_order", "lighting", "double_sided", "pbr"});
+  } else {
+    CheckVisualChildren(r, material, sp,
+                        {"ambient", "diffuse", "specular", "emissive", kDiffuseMapTag, "script"},
+                        {"shader", "render_order", "lighting", "double_sided", "pbr"});
+    const xml::XmlElement owner = material.Parent();
+    const xml::XmlAttribute owner_name = owner.Attribute("name");
+    r.diags().Report(DiagKind::IncompleteMaterialScript, script.GetLoc(),
+                     fmt::format("<script> in the material of {} '{}' has no {} (or {} empty), "
+                                 "which libsdformat rejects; it is ignored, as a material "
+                                 "script does not affect the plant",
+                                 owner.Name(), owner_name.present() ? owner_name.value : "",
+                                 fmt::join(script_lacks, " and "),
+                                 script_lacks.size() > 1 ? "they are" : "it is"));
   }
   if (xml::XmlElement shader = material.Child("shader")) {
     auto type = shader.Attribute("type");

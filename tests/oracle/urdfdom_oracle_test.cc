@@ -28,7 +28,8 @@
 //     KinematicsAndMassMatrix  URDF-005/011/012/017 (X_WB, axis_W, M(q))
 //   plus OracleSelfCheck.* (the oracle against closed forms; no mdlc needed).
 // Corpus models that the spec requires mdlc to reject (kExpectedRejections)
-// are skipped when mdlc rejects them with the expected message.
+// are skipped when mdlc rejects them with the expected message, and fail
+// ("stale entry") when mdlc accepts them, or rejects them for another reason.
 
 #include <fcntl.h>
 #include <poll.h>
@@ -490,7 +491,8 @@ struct ModelCase {
   std::string package_path;  // passed as --package-path when non-empty
   std::string skip_reason;
   // Set when the spec requires mdlc to reject a model urdfdom accepts: mdlc
-  // failing with `reject_keyword` in its stderr then skips the case.
+  // failing with `reject_keyword` in its stderr then skips the case; mdlc
+  // accepting the model fails it (the entry is stale).
   std::string reject_keyword, reject_why;
 };
 
@@ -590,6 +592,7 @@ class Report {
   }
   bool empty() const { return msgs_.empty(); }
   size_t size() const { return msgs_.size(); }
+  const std::vector<std::string>& messages() const { return msgs_; }
   void Flush() {
     if (msgs_.empty()) return;
     const size_t limit = static_cast<size_t>(EnvInt("MDLC_ORACLE_MAX_MESSAGES", 60));
@@ -664,10 +667,16 @@ bool RunMdlc(const ModelCase& mc, const std::vector<std::pair<std::string, doubl
     rep->Add("could not run mdlc: " + r.spawn_error);
     return false;
   }
-  if (r.exit_code == 1 && !mc.reject_keyword.empty() &&
-      r.err.find(mc.reject_keyword) != std::string::npos) {
-    d->rejected_as_expected = true;
-    return false;
+  if (!mc.reject_keyword.empty()) {
+    if (r.exit_code == 1 && r.err.find(mc.reject_keyword) != std::string::npos) {
+      d->rejected_as_expected = true;
+      return false;
+    }
+    if (r.exit_code == 0) {
+      rep->Add("stale kExpectedRejections entry: mdlc now accepts this file (listed because: " +
+               mc.reject_why + ")");
+    }
+    // a rejection for another reason fails below, with mdlc's errors
   }
   if (r.timed_out || r.exit_code != 0) {
     rep->Add(std::string("mdlc ") +
@@ -1302,6 +1311,70 @@ TEST(OracleSelfCheck, AllModelsBuildWithSaneMassMatrix) {
       }
     }
   }
+}
+
+// kExpectedRejections entries as RunMdlc judges them, on small models of
+// its own: a model mdlc rejects for the listed reason is skipped; one mdlc
+// accepts is a stale entry, and one it rejects for another reason is a
+// failure, both reported instead of skipped (as the SDFormat and MuJoCo
+// oracles treat their kKnownDisagreements).
+class ExpectedRejectionTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("mdlc_urdfdom_expected_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  // Runs mdlc on `urdf` as a case listed with `keyword`.
+  Dump Run(const std::string& urdf, const std::string& keyword, Report* rep) {
+    const fs::path path = dir_ / "listed.urdf";
+    std::ofstream(path) << urdf;
+    ModelCase mc;
+    mc.path = path.string();
+    mc.display = "listed.urdf";
+    mc.reject_keyword = keyword;
+    mc.reject_why = "listed by this test";
+    Dump d;
+    RunMdlc(mc, {}, rep, &d);
+    return d;
+  }
+  fs::path dir_;
+};
+
+// URDF-032: a <visual> without <geometry>, as atlas_with_fixed_joints.urdf
+constexpr const char* kVisualWithoutGeometry = R"(<robot name="r">
+  <link name="a"><visual><origin xyz="0 0 0"/></visual></link>
+</robot>)";
+constexpr const char* kFine = R"(<robot name="r">
+  <link name="a"><visual><geometry><box size="1 1 1"/></geometry></visual></link>
+</robot>)";
+
+TEST_F(ExpectedRejectionTest, RejectedForTheListedReasonIsSkipped) {  // URDF-032
+  Report rep("listed.urdf");
+  const Dump d = Run(kVisualWithoutGeometry, "no <geometry>", &rep);
+  EXPECT_TRUE(d.rejected_as_expected);
+  EXPECT_TRUE(rep.empty());
+}
+
+TEST_F(ExpectedRejectionTest, AcceptedIsAStaleEntry) {  // URDF-032
+  Report rep("listed.urdf");
+  const Dump d = Run(kFine, "no <geometry>", &rep);
+  EXPECT_FALSE(d.rejected_as_expected);
+  ASSERT_EQ(rep.size(), 1u);
+  EXPECT_NE(rep.messages()[0].find("stale kExpectedRejections entry: mdlc now accepts this file"),
+            std::string::npos)
+      << rep.messages()[0];
+}
+
+TEST_F(ExpectedRejectionTest, RejectedForAnotherReasonFails) {  // URDF-032
+  Report rep("listed.urdf");
+  const Dump d = Run(kVisualWithoutGeometry, "unknown joint", &rep);
+  EXPECT_FALSE(d.rejected_as_expected);
+  ASSERT_EQ(rep.size(), 1u);
+  EXPECT_NE(rep.messages()[0].find("exited with status 1"), std::string::npos)
+      << rep.messages()[0];
 }
 
 }  // namespace

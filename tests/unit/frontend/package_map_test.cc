@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <string>
 
 namespace mdlc::frontend {
 namespace {
@@ -27,6 +29,12 @@ class PackageMapTest : public ::testing::Test {
     Write(dir / "package.xml", "<package><name>" + name + "</name>" + extra + "</package>");
   }
   std::string Canonical(const fs::path& rel) { return fs::weakly_canonical(root_ / rel).string(); }
+  // paths are compared canonical: the temporary folder may be reached
+  // through a symbolic link
+  static std::optional<std::string> Canon(const std::optional<std::string>& path) {
+    if (!path) return std::nullopt;
+    return fs::weakly_canonical(*path).string();
+  }
 
   fs::path root_;
   SourceManager sources_;
@@ -114,17 +122,46 @@ TEST_F(PackageMapTest, ResolvesEveryUriForm) {  // COMMON-010
   PackageMap map;
   map.PopulateFromFolder(root_.string(), sources_, diags_);
   const std::string base = (root_ / "models").string();
-  EXPECT_EQ(ResolveUri("package://pkg/meshes/a.obj", base, map, {}, diags_),
+  EXPECT_EQ(Canon(ResolveUri("package://pkg/meshes/a.obj", base, map, {}, diags_)),
             Canonical("pkg/meshes/a.obj"));
-  EXPECT_EQ(ResolveUri("model://pkg/meshes/a.obj", base, map, {}, diags_),
+  EXPECT_EQ(Canon(ResolveUri("model://pkg/meshes/a.obj", base, map, {}, diags_)),
             Canonical("pkg/meshes/a.obj"));
-  EXPECT_EQ(ResolveUri("b.obj", base, map, {}, diags_), (root_ / "models/b.obj").string());
-  EXPECT_EQ(ResolveUri("../models/b.obj", base, map, {}, diags_), (root_ / "models/b.obj").string());
-  EXPECT_EQ(ResolveUri("file://" + (root_ / "models/b.obj").string(), base, map, {}, diags_),
-            (root_ / "models/b.obj").string());
-  EXPECT_EQ(ResolveUri((root_ / "models/b.obj").string(), "/elsewhere", map, {}, diags_),
-            (root_ / "models/b.obj").string());
+  EXPECT_EQ(Canon(ResolveUri("b.obj", base, map, {}, diags_)), Canonical("models/b.obj"));
+  EXPECT_EQ(Canon(ResolveUri("../models/b.obj", base, map, {}, diags_)), Canonical("models/b.obj"));
+  EXPECT_EQ(Canon(ResolveUri("file://" + (root_ / "models/b.obj").string(), base, map, {}, diags_)),
+            Canonical("models/b.obj"));
+  EXPECT_EQ(Canon(ResolveUri((root_ / "models/b.obj").string(), "/elsewhere", map, {}, diags_)),
+            Canonical("models/b.obj"));
   EXPECT_EQ(diags_.diagnostics().size(), 0u);
+}
+
+// package:///NAME/path (an empty authority, as Pinocchio-era URDFs write
+// it) is read as package://NAME/path, with a warning that says so
+TEST_F(PackageMapTest, PackageUriWithThreeSlashesIsReadAsTwoWithAWarning) {  // COMMON-010
+  Package("pkg", "pkg");
+  Write("pkg/meshes/a.obj", "");
+  PackageMap map;
+  map.PopulateFromFolder(root_.string(), sources_, diags_);
+  const FileId file = sources_.AddBuffer("robot.urdf", "\n\n<mesh/>\n");
+  const Loc at{file, 3, 1};
+  EXPECT_EQ(Canon(ResolveUri("package:///pkg/meshes/a.obj", "/", map, at, diags_)),
+            Canonical("pkg/meshes/a.obj"));
+  ASSERT_EQ(diags_.diagnostics().size(), 1u);
+  const Diagnostic& d = diags_.diagnostics()[0];
+  EXPECT_EQ(d.kind, DiagKind::MalformedUri);
+  EXPECT_EQ(d.severity, Severity::Warning);
+  EXPECT_EQ(d.loc, at);
+  EXPECT_NE(d.message.find("'package:///pkg/meshes/a.obj' has an empty authority"),
+            std::string::npos)
+      << d.message;
+  EXPECT_NE(d.message.find("read as 'package://pkg/meshes/a.obj'"), std::string::npos)
+      << d.message;
+  EXPECT_EQ(InfoFor(d.kind).group, "uri");
+  EXPECT_EQ(diags_.error_count(), 0u);
+  // the tolerance is for package:// only; four slashes still name no package
+  EXPECT_FALSE(ResolveUri("package:////pkg/meshes/a.obj", "/", map, at, diags_));
+  EXPECT_FALSE(ResolveUri("model:///pkg/meshes/a.obj", "/", map, at, diags_));
+  EXPECT_EQ(diags_.error_count(), 2u);
 }
 
 TEST_F(PackageMapTest, UnresolvableUrisAreErrors) {  // COMMON-010, COMMON-011

@@ -334,9 +334,40 @@ TEST(SdfGeometry, BadColorsAndTransparencyAreErrors) {  // SDF-041
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "<diffuse> must hold a color"));
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "<ambient> color values must be within [0, 1]"));
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "<drake:diffuse_map> is empty"));
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedElement,
-                              "tag 'script' found as a child of 'material' is currently "
-                              "unsupported"));
+  // an empty <script> is no error: it is ignored, with a warning
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::IncompleteMaterialScript,
+                              "<script> in the material of visual 'v' has no <uri> and <name>"))
+      << l.Messages();
+  EXPECT_EQ(l.Count(DiagKind::UnsupportedElement), 0u) << l.Messages();
+}
+
+// Gazebo-classic materials: libsdformat (and so Drake) rejects a <script>
+// without <uri> or <name>; it cannot affect the plant, so mdlc warns once
+// and ignores it (a complete script is merely unsupported)
+TEST(SdfGeometry, MaterialScriptWithoutUriIsAWarning) {  // SDF-041
+  SdfFrontendResult l;
+  ASSERT_TRUE(l.Read(Visual("<box/>", R"(
+      <material><script><name>Gazebo/Red</name></script><diffuse>1 0 0</diffuse></material>)")))
+      << l.Messages();
+  ASSERT_EQ(l.diags.diagnostics().size(), 1u) << l.Messages();
+  const Diagnostic& d = l.diags.diagnostics()[0];
+  EXPECT_EQ(d.kind, DiagKind::IncompleteMaterialScript);
+  EXPECT_EQ(d.severity, Severity::Warning);
+  EXPECT_EQ(InfoFor(d.kind).group, "material");
+  EXPECT_NE(d.message.find("has no <uri> (or it is empty), which libsdformat rejects; it is "
+                           "ignored"),
+            std::string::npos)
+      << d.message;
+  // the rest of the material still counts
+  EXPECT_EQ(*l.module.geometries.at(0).rgba, Eigen::Vector4d(1, 0, 0, 1));
+
+  SdfFrontendResult complete;
+  ASSERT_TRUE(complete.Read(Visual("<box/>", R"(
+      <material><script><uri>file://media/materials/scripts/gazebo.material</uri>
+        <name>Gazebo/Red</name></script></material>)")))
+      << complete.Messages();
+  EXPECT_EQ(complete.Count(DiagKind::IncompleteMaterialScript), 0u);
+  EXPECT_EQ(complete.Count(DiagKind::UnsupportedElement), 1u) << complete.Messages();
 }
 
 TEST(SdfGeometry, UnsupportedVisualChildrenWarn) {  // SDF-041, SDF-043
