@@ -72,12 +72,26 @@ class ModelGains {
     return it == start_.end() ? -1 : it->second;
   }
 
+  // Cholesky pivots, relative to M's diagonal, at least this (else M is
+  // singular up to rounding: MuJoCo's own factorization then divides by ~0)
+  static constexpr double kMinRelativePivot = 1e-12;
+
+  bool PositiveDefinite(const Eigen::LLT<Eigen::MatrixXd>& llt) const {
+    if (llt.info() != Eigen::Success) return false;
+    const Eigen::MatrixXd& L = llt.matrixLLT();
+    for (int k = 0; k < size_; ++k) {
+      if (!(L(k, k) * L(k, k) > kMinRelativePivot * M_(k, k))) return false;
+    }
+    return true;
+  }
+
   bool SpringDampers() {
     const Eigen::LLT<Eigen::MatrixXd> llt(M_);
-    if (llt.info() != Eigen::Success) {
+    if (!PositiveDefinite(llt)) {
       diags_.Report(DiagKind::BadMassProperties, g_.spring_dampers.front().loc,
-                    fmt::format("the joint-space inertia of model '{}' at qpos0 is not positive "
-                                "definite: springdamper cannot be computed",
+                    fmt::format("the joint-space inertia of model '{}' at qpos0 is singular "
+                                "(two joints move it alike, or a moving body has no mass): "
+                                "springdamper cannot be computed",
                                 m_.Text(m_[g_.model].name)));
       return false;
     }

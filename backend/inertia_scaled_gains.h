@@ -29,7 +29,8 @@ namespace mdlc::backend {
 
 /// Applies every request of module.inertia_scaled_gains to `plant`, built
 /// from `module`: joint damping, joint springs and actuator kd. A model whose
-/// M at qpos0 is not positive definite is an error at its first
+/// M at qpos0 is singular (a Cholesky pivot below 1e-12 of its diagonal
+/// entry; MuJoCo would divide by about 0) is an error at its first
 /// springdamper (its springdampers are not applied); false after an error.
 bool ApplyInertiaScaledGains(const ir::Module& module, Plant& plant, DiagnosticEngine& diags);
 

@@ -315,6 +315,23 @@ TEST(InertiaScaledGains, Beyond007ZeroNegativeAndOverriddenValues) {
   }
 }
 
+// Two hinges that move a body alike make M singular: MuJoCo's factorization
+// divides by about 0 (its jnt_stiffness is 4e15 here); mdlc reports it at
+// the springdamper.
+TEST(InertiaScaledGains, Beyond007SingularInertiaIsLocatedError) {
+  Mjcf m(R"(<mujoco model="s">
+ <worldbody><body name="a">
+  <joint name="h1" springdamper="0.5 1"/><joint name="h2"/>
+  <geom size="0.1" pos="0.2 0 0"/></body></worldbody>
+</mujoco>)");
+  EXPECT_FALSE(m.ok());
+  const Diagnostic* d = m.First(DiagKind::BadMassProperties);
+  ASSERT_NE(d, nullptr) << m.Messages();
+  EXPECT_NE(d->message.find("model 's' at qpos0 is singular"), std::string::npos) << d->message;
+  EXPECT_EQ(d->loc.line, 3u);
+  EXPECT_EQ(d->loc.column, 20u);
+}
+
 // BEYOND-008: a position's dampratio is read from its default class and
 // turned into kd (M_kk of a single hinge: 0.6 as above, kd = 2 * 0.7 *
 // sqrt(20 * 0.6)); kp 0 leaves no gains (MuJoCo: 2 dampratio sqrt(0) = 0);
