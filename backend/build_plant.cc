@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "backend/inertia_scaled_gains.h"
 #include "backend/ref_check.h"
 #include "backend/topology.h"
 
@@ -41,6 +42,8 @@ class PlantBuilder {
     for (const ir::Constraint& constraint : m_.constraints) AddConstraint(constraint);
     for (const ir::ForceElement& element : m_.force_elements) AddForceElement(element);
     if (!ok_) return std::nullopt;
+    // MJCF gains from the mass matrix at qpos0 (BEYOND-007, BEYOND-008)
+    if (!ApplyInertiaScaledGains(m_, plant_, diags_)) return std::nullopt;
     return std::move(plant_);
   }
 

@@ -11,7 +11,9 @@
 //
 // Mass properties are re-expressed about the COM in the body frame:
 // com = X_BI.p and I_B = R_BI * I_I * R_BI^T; a body without an inertial is
-// massless. Joint vectors are normalized as PlantJoint describes.
+// massless. Joint vectors are normalized as PlantJoint describes. Last, the
+// MJCF gains that need the finished plant's mass matrix at qpos0 are applied
+// (inertia_scaled_gains.h).
 #pragma once
 
 #include <optional>

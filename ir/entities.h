@@ -336,6 +336,53 @@ struct ForceElement {
   double nominal = 0;
 };
 
+/// Gains that MuJoCo's compiler derives from an MJCF model's joint-space
+/// inertia M at its reference configuration qpos0 (BEYOND-007, BEYOND-008).
+/// The frontend records what the file asks for, with what the plant does not
+/// keep (each joint's qpos0 and armature); the backend computes the gains
+/// once the plant, and so M(qpos0), exists. M holds the model's joints only
+/// (other models' joints stay locked at their default positions) and the
+/// armature on its diagonal, as MuJoCo's does.
+///   springdamper = timeconst dampratio (both > 0): the joint's damping
+///       2 I / timeconst on every dof and, for hinges and slides, a joint
+///       spring of stiffness I / (timeconst dampratio)^2 about springref,
+///       where I = n / sum of (M^-1)_kk over the joint's n dofs, except a
+///       slide on a MuJoCo "simple" body, where (M^-1)_kk is 1 / the body's
+///       mass (MuJoCo's dof_invweight0);
+///   dampratio (position actuators, general ones' biasprm[2] > 0): the
+///       actuator's kd = 2 dampratio sqrt(kp m), m = M_kk / gear^2 of its
+///       joint's dof (MuJoCo's dof_M0, through the transmission).
+struct InertiaScaledGains {
+  ModelId model;
+  Loc loc;  // the model's root element
+  /// Every joint of the model in document order (MuJoCo's dof order).
+  struct JointState {
+    JointId joint;
+    double qpos0 = 0;    // hinge, slide: `ref`; ball joints are at identity, free ones anywhere
+    double armature = 0;  // on each of the joint's dofs
+  };
+  std::vector<JointState> joints;
+  struct SpringDamper {
+    JointId joint;
+    Loc loc;  // the springdamper attribute
+    double timeconst = 0, dampratio = 0;
+    double springref = 0;  // hinge, slide: the spring's nominal position
+    /// A slide-only MuJoCo "simple" body by its structure (a leaf whose
+    /// parent is the world or a joint-less child of it, moved only by
+    /// slides at its origin along its own axes): MuJoCo's dof_invweight0 is
+    /// 1 / its mass when, moreover, its inertia frame is the body frame.
+    BodyId simple_body;
+  };
+  std::vector<SpringDamper> spring_dampers;
+  struct DampRatio {
+    ActuatorId actuator;
+    Loc loc;  // dampratio, or the general actuator's biasprm
+    double dampratio = 0;
+  };
+  std::vector<DampRatio> damp_ratios;
+  bool empty() const { return spring_dampers.empty() && damp_ratios.empty(); }
+};
+
 struct Camera {
   Symbol name;
   ModelId model;

@@ -42,6 +42,9 @@ struct Module {
   /// Model Directives' frames, welds and default poses awaiting the
   /// apply-directives pass, in directive order.
   std::vector<SceneEdit> scene_edits;
+  /// MJCF gains that need the plant's mass matrix at qpos0 (the backend
+  /// computes them), one entry per model that asks for any.
+  std::vector<InertiaScaledGains> inertia_scaled_gains;
 
   /// Plant-wide settings a model may give (MJCF <option>); unset: Drake's defaults.
   std::optional<Eigen::Vector3d> gravity;  // m/s^2, in world

@@ -18,6 +18,7 @@ class Printer {
   std::string Run();
   void PrintFrameGraph();
   void PrintSceneEdits();
+  void PrintInertiaScaledGains();
 
  private:
   std::string Num(double v) const {
@@ -123,6 +124,39 @@ void Printer::PrintSceneEdits() {
           out_ += Where(e.loc) + "\n";
         },
         edit.edit);
+  }
+}
+
+// MJCF gains awaiting the backend's mass matrix at qpos0 (requests, not results)
+void Printer::PrintInertiaScaledGains() {
+  auto joint = [&](JointId id) {
+    return id.index() < m_.joints.size() ? m_.ScopedName(id) : std::string("<invalid>");
+  };
+  for (const InertiaScaledGains& g : m_.inertia_scaled_gains) {
+    std::string joints;
+    for (const auto& j : g.joints) {
+      joints += fmt::format("{}{}", joints.empty() ? "" : " ", joint(j.joint));
+      if (j.qpos0 != 0) joints += "@" + Num(j.qpos0);
+      if (j.armature != 0) joints += "+armature=" + Num(j.armature);
+    }
+    out_ += fmt::format("  inertia_scaled_gains model={} joints=[{}]{}\n", Model(g.model), joints,
+                        Where(g.loc));
+    for (const auto& s : g.spring_dampers) {
+      out_ += fmt::format("    springdamper joint={} timeconst={} dampratio={} springref={}",
+                          joint(s.joint), Num(s.timeconst), Num(s.dampratio),
+                          Num(s.springref));
+      if (s.simple_body.valid() && s.simple_body.index() < m_.bodies.size()) {
+        out_ += " simple_body=" + m_.ScopedName(s.simple_body);
+      }
+      out_ += Where(s.loc) + "\n";
+    }
+    for (const auto& d : g.damp_ratios) {
+      out_ += fmt::format("    dampratio actuator={} dampratio={}{}\n",
+                          d.actuator.index() < m_.actuators.size()
+                              ? Name(m_[d.actuator].name)
+                              : std::string("<invalid>"),
+                          Num(d.dampratio), Where(d.loc));
+    }
   }
 }
 
@@ -350,6 +384,7 @@ std::string Printer::Run() {
     }
     out_ += Where(f.loc) + "\n";
   }
+  PrintInertiaScaledGains();
   PrintFrameGraph();
   PrintSceneEdits();
   out_ += "}\n";

@@ -77,6 +77,22 @@ class Verifier {
           break;
       }
     }
+    for (const InertiaScaledGains& g : m_.inertia_scaled_gains) {
+      CheckModel(g.model, g.loc, "inertia-scaled gains");
+      for (const auto& j : g.joints) CheckId(j.joint, m_.joints.size(), g.loc, "joint");
+      for (const auto& s : g.spring_dampers) {
+        CheckId(s.joint, m_.joints.size(), s.loc, "springdamper joint");
+        if (s.simple_body.valid()) {
+          CheckId(s.simple_body, m_.bodies.size(), s.loc, "springdamper body");
+        }
+        if (!(s.timeconst > 0 && s.dampratio > 0)) {
+          Fail(s.loc, "springdamper values must be positive");
+        }
+      }
+      for (const auto& d : g.damp_ratios) {
+        CheckId(d.actuator, m_.actuators.size(), d.loc, "dampratio actuator");
+      }
+    }
     if (level_ >= VerifyLevel::Tree) CheckTree();
     if (level_ >= VerifyLevel::Named) CheckNamesUnique();
     return ok_;
@@ -99,6 +115,12 @@ class Verifier {
     }
     if (level_ >= VerifyLevel::Resolved && !ref.id.valid()) {
       Fail(ref.loc, fmt::format("{} reference '{}' is unresolved", what, m_.Text(ref.name)));
+    }
+  }
+  template <typename IdT>
+  void CheckId(IdT id, size_t table_size, Loc loc, const char* what) {
+    if (!id.valid() || id.index() >= table_size) {
+      Fail(loc, fmt::format("{} id is invalid or out of range", what));
     }
   }
   void CheckFrameRef(const FrameRef& ref) {

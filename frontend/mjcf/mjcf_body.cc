@@ -224,6 +224,7 @@ void MjcfReader::LowerWorldBody(const xml::XmlElement& worldbody) {
     std::string parent_name;
     Transform X_WP0;
     bool parent_is_world;
+    bool parent_is_fixed_root = false;  // a joint-less child of the world
   };
   std::vector<Pending> stack;
   for (auto it = world.bodies.rbegin(); it != world.bodies.rend(); ++it) {
@@ -256,6 +257,7 @@ void MjcfReader::LowerWorldBody(const xml::XmlElement& worldbody) {
     b.X_WB0 = p.X_WP0 * b.X_PB0;
 
     BodyItems items = Collect(*this, e, childclass, false);
+    b.simple_position = items.bodies.empty() && (p.parent_is_world || p.parent_is_fixed_root);
 
     ir::Body body;
     body.name = m.Intern(b.name);
@@ -312,7 +314,8 @@ void MjcfReader::LowerWorldBody(const xml::XmlElement& worldbody) {
     if (!rec.moves && !p.parent_is_world) records[p.parent.value].welded_children.push_back(b.body.value);
 
     for (auto it = items.bodies.rbegin(); it != items.bodies.rend(); ++it) {
-      stack.push_back({*it, b.body, b.name, b.X_WB0, false});
+      stack.push_back({*it, b.body, b.name, b.X_WB0, false,
+                       p.parent_is_world && items.joints.empty()});
     }
   }
 

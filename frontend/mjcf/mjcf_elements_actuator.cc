@@ -16,9 +16,13 @@
 //     parser reads "kd", which MuJoCo does not know: read, with a W);
 //     velocity kv -> kd; general with fixed gain and affine bias -> kp, kd
 //     where they have the position or velocity shape. Zero gains: none.
+//     A position's `dampratio`, and a position-shaped general actuator's
+//     positive biasprm[2] (MuJoCo reads it as a damping ratio), set kd from
+//     the joint-space inertia at qpos0: recorded as a request
+//     (ir::InertiaScaledGains) that the backend computes (BEYOND-008).
 // Other transmissions (tendon, site, body, ...) and the other kinds
 // (intvelocity, damper, cylinder, muscle, adhesion, plugin) W once each,
-// and are skipped. `dampratio` needs the joint-space inertia at qpos0 (W).
+// and are skipped.
 // Each element reads its own kind's default class (as Drake's parser does).
 #include <fmt/format.h>
 
@@ -41,6 +45,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 struct Gains {
   double kp = 0, kd = 0;
+  /// > 0: kd = 2 dampratio sqrt(kp m) once the inertia m at qpos0 is known
+  double dampratio = 0;
+  Loc dampratio_loc;
 };
 
 class ActuatorLowering {
@@ -95,6 +102,9 @@ class ActuatorLowering {
       a.kp = gains->kp;
       a.kd = gains->kd;
     }
+    // BEYOND-008: a damping ratio needs kp > 0 to give a gain (MuJoCo: 2
+    // dampratio sqrt(kp m) is 0 otherwise)
+    const bool scaled = gains && gains->dampratio > 0 && gains->kp > 0;
     // MJCF-024: the joint's armature, reflected through the gear
     if (auto it = L_.r.joint_armature.find(joint->value); it != L_.r.joint_armature.end()) {
       if (a.gear_ratio != 0) {
@@ -104,7 +114,10 @@ class ActuatorLowering {
                          "a gear of 0 cannot reflect the joint's armature; rotor inertia 0");
       }
     }
-    L_.module().Add(std::move(a));
+    const ActuatorId id = L_.module().Add(std::move(a));
+    if (scaled) {
+      L_.r.scaled_gains.damp_ratios.push_back({id, gains->dampratio_loc, gains->dampratio});
+    }
   }
 
  private:
@@ -178,9 +191,9 @@ class ActuatorLowering {
       ok_ = false;
     }
     g.kd = kv.value_or(0);
-    if (dampratio && *dampratio != 0) {
-      L_.WarnAttribute(e_, "position", "dampratio",
-                       "it needs the joint-space inertia at qpos0; the derivative gain is 0");
+    if (dampratio && !kv) {
+      g.dampratio = *dampratio;
+      g.dampratio_loc = e_.Get("dampratio").loc;
     }
     if (auto tc = Param("timeconst"); tc && *tc != 0) {
       L_.WarnAttribute(e_, "position", "timeconst", "activation dynamics");
@@ -270,17 +283,20 @@ class ActuatorLowering {
     }
     ctrl_is_force = false;
     if (biasprm[0] == 0 && g == -biasprm[1] && g > 0) {
-      // position servo: force = kp (ctrl - q) + biasprm[2] qdot
+      // position servo: force = kp (ctrl - q) + biasprm[2] qdot; MuJoCo
+      // reads a positive biasprm[2] as a damping ratio (BEYOND-008)
+      gains.emplace();
+      gains->kp = g;
+      gains->kd = std::max(0.0, -biasprm[2]);
       if (biasprm[2] > 0) {
-        L_.WarnOnce("general/dampratio", DiagKind::UnsupportedValue, e_.Get("biasprm").loc,
-                    "a positive biasprm[2] is MuJoCo's dampratio: it needs the joint-space "
-                    "inertia at qpos0; the derivative gain is 0");
+        gains->dampratio = biasprm[2];
+        gains->dampratio_loc = e_.Get("biasprm").loc;
       }
-      gains = Gains{g, std::max(0.0, -biasprm[2])};
       return true;
     }
     if (biasprm[0] == 0 && biasprm[1] == 0 && g == -biasprm[2] && g > 0) {
-      gains = Gains{0, g};  // velocity servo: force = kv (ctrl - qdot)
+      gains.emplace();  // velocity servo: force = kv (ctrl - qdot)
+      gains->kd = g;
       return true;
     }
     L_.WarnValueOnce("general/affine", e_.Get("biasprm").loc,

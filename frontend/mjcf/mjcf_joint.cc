@@ -8,9 +8,15 @@
 // joint k with X_PF = T(p_k) (the first: X_PB0 T(p_1)) and X_CM = T(p_k)
 // R(a_k, ref_k) reproduces MuJoCo's motion exactly, with the XML pose at
 // q = ref (MJCF-023; Drake itself puts non-final joints in the parent frame).
+//
+// springdamper (BEYOND-007) is recorded as a request with every joint's
+// qpos0 and armature (ir::InertiaScaledGains): MuJoCo derives the joint's
+// stiffness and damping from the joint-space inertia at qpos0, which the
+// backend has once the plant exists.
 #include <fmt/format.h>
 
 #include <Eigen/Geometry>
+#include <array>
 #include <cmath>
 
 #include "frontend/mjcf/mjcf_lowering.h"
@@ -25,11 +31,36 @@ ir::Ref<BodyId> RefTo(const ir::Module& m, BodyId id) { return {m[id].name, m[id
 /// Attributes the plant cannot hold (MJCF-024), warned once each; the
 /// solver's own (solref..., margin) are silent.
 void WarnJointAttributes(MjcfReader& r, const Element& j) {
-  for (std::string_view a : {"group", "springdamper", "actuatorfrcrange", "actuatorfrclimited",
+  for (std::string_view a : {"group", "actuatorfrcrange", "actuatorfrclimited",
                              "actuatorgravcomp", "frictionloss", "user"}) {
     const Attribute attr = j.Get(a);
     if (attr.present()) r.WarnOnce(attr.loc, DiagKind::UnsupportedAttribute, "joint", a);
   }
+}
+
+/// springdamper="timeconst dampratio" (BEYOND-007): both values when it is
+/// in force; "0 0" (MuJoCo's default) asks for nothing, and otherwise both
+/// must be positive (MuJoCo's compiler error). nullopt after an error too.
+std::optional<std::array<double, 2>> SpringDamper(MjcfReader& r, const Element& j) {
+  const Attribute attr = j.Get("springdamper");
+  if (!attr.present()) return std::nullopt;
+  const std::optional<std::vector<double>> v = r.Numbers(j, "springdamper", 2);
+  if (!v || ((*v)[0] == 0 && (*v)[1] == 0)) return std::nullopt;
+  if (!((*v)[0] > 0 && (*v)[1] > 0)) {
+    r.diags().Report(DiagKind::BadValue, attr.loc,
+                     fmt::format("springdamper values (time constant, damping ratio) must both "
+                                 "be positive when defined, not '{}'",
+                                 attr.value));
+    return std::nullopt;
+  }
+  return std::array<double, 2>{(*v)[0], (*v)[1]};
+}
+
+/// MuJoCo's test for a joint axis along one of the body's axes (mjEPS).
+bool AlongBodyAxis(const Eigen::Vector3d& axis) {
+  return (std::abs(axis.x()) > 1e-14) + (std::abs(axis.y()) > 1e-14) +
+             (std::abs(axis.z()) > 1e-14) ==
+         1;
 }
 
 /// MJCF-004: limited = true | false | auto (limited iff a range is given,
@@ -106,6 +137,11 @@ void LowerJoints(MjcfReader& r, const BodyContext& b, const std::vector<BodyItem
     }
     if (j.xml().Name() == "joint") {
       WarnJointAttributes(r, j);
+      if (SpringDamper(r, j)) {
+        r.WarnOnce(j.Get("springdamper").loc, DiagKind::UnsupportedAttribute,
+                   "joint type=\"free\"", "springdamper",
+                   "is not supported for free bodies and is ignored");
+      }
       if (auto d = r.Number(j, "damping", 0); d && *d != 0) {
         r.diags().Report(DiagKind::UnsupportedAttribute, j.Get("damping").loc,
                          fmt::format("damping on the free joint of '{}' is not supported for "
@@ -132,8 +168,25 @@ void LowerJoints(MjcfReader& r, const BodyContext& b, const std::vector<BodyItem
     const JointId id = m.Add(std::move(free));
     r.free_joints.push_back(id);
     r.joint_order.push_back(id);
+    r.scaled_gains.joints.push_back(
+        {id, 0, j.xml().Name() == "joint" ? r.Number(j, "armature", 0).value_or(0) : 0.0});
     if (auto name = j.xml().Attribute("name"); name.present()) r.joints.emplace(name.value, id);
     return;
+  }
+
+  // MuJoCo's "simple" body: besides its place in the tree, only slides, at
+  // the body origin, along the body's axes (its inertia frame is checked by
+  // the backend)
+  bool simple_body = b.simple_position;
+  for (size_t k = 0; k < joints.size() && simple_body; ++k) {
+    const Attribute type = joints[k].Get("type");
+    Eigen::Vector3d pos = Eigen::Vector3d::Zero(), axis = Eigen::Vector3d::UnitZ();
+    if (auto v = r.Numbers(joints[k], "pos", 3)) pos = {(*v)[0], (*v)[1], (*v)[2]};
+    if (auto v = r.Numbers(joints[k], "axis", 3)) axis = {(*v)[0], (*v)[1], (*v)[2]};
+    pos = items[k].X_BF * pos;
+    axis = items[k].X_BF.R * axis;
+    simple_body = type.present() && type.value == "slide" && (pos.array().abs() < 1e-6).all() &&
+                  axis.norm() >= 1e-14 && AlongBodyAxis(axis.normalized());
   }
 
   BodyId parent = b.parent;
@@ -230,6 +283,7 @@ void LowerJoints(MjcfReader& r, const BodyContext& b, const std::vector<BodyItem
     const double damping = r.Number(j, "damping", 0).value_or(0);
     joint.damping.assign(static_cast<size_t>(nv), damping);
     WarnJointAttributes(r, j);
+    const std::optional<std::array<double, 2>> spring_damper = SpringDamper(r, j);
 
     const JointId id = m.Add(std::move(joint));
     r.joint_order.push_back(id);
@@ -243,12 +297,40 @@ void LowerJoints(MjcfReader& r, const BodyContext& b, const std::vector<BodyItem
       }
     }
     // MJCF-024: armature waits for an actuator to become rotor inertia
-    if (j.Get("armature").present()) {
-      r.joint_armature[id.value] = r.Number(j, "armature", 0).value_or(0);
-    }
-    // BEYOND-007: stiffness about springref is a joint spring
+    const double armature = r.Number(j, "armature", 0).value_or(0);
+    if (j.Get("armature").present()) r.joint_armature[id.value] = armature;
+    r.scaled_gains.joints.push_back({id, jt == ir::JointType::Ball ? 0.0 : ref, armature});
+    const double springref_value = r.Number(j, "springref", 0).value_or(0);
+    const double springref = hinge ? r.compiler.Angle(springref_value) : springref_value;
     const double stiffness = r.Number(j, "stiffness", 0).value_or(0);
-    if (stiffness != 0) {
+    // BEYOND-007: springdamper sets stiffness and damping from the inertia at
+    // qpos0 (the backend computes them), replacing the joint's own
+    if (spring_damper) {
+      const Attribute attr = j.Get("springdamper");
+      ir::InertiaScaledGains::SpringDamper request;
+      request.joint = id;
+      request.loc = attr.loc;
+      request.timeconst = (*spring_damper)[0];
+      request.dampratio = (*spring_damper)[1];
+      request.springref = springref;
+      if (simple_body) request.simple_body = b.body;
+      r.scaled_gains.spring_dampers.push_back(request);
+      for (const char* own : {"stiffness", "damping"}) {
+        if (j.HasOwn(own)) {
+          r.diags().Report(DiagKind::JointWarning, j.Get(own).loc,
+                           fmt::format("joint '{}' {} is ignored: 'springdamper' sets it from "
+                                       "the joint-space inertia at qpos0, as in MuJoCo",
+                                       m.Text(m[id].name), own));
+        }
+      }
+      if (jt == ir::JointType::Ball) {
+        r.WarnOnce(attr.loc, DiagKind::UnsupportedAttribute, "joint type=\"ball\"",
+                   "springdamper",
+                   "sets the joint's damping only: stiffness is not supported on ball joints "
+                   "and is ignored");
+      }
+    } else if (stiffness != 0) {
+      // BEYOND-007: stiffness about springref is a joint spring
       if (jt == ir::JointType::Ball) {
         r.WarnOnce(j.Get("stiffness").loc, DiagKind::UnsupportedAttribute, "joint", "stiffness",
                    "on a ball joint is not supported and is ignored");
@@ -259,8 +341,7 @@ void LowerJoints(MjcfReader& r, const BodyContext& b, const std::vector<BodyItem
         spring.type = ir::ForceElementType::JointSpring;
         spring.joint = {m[id].name, j.loc(), id};
         spring.stiffness = stiffness;
-        const double springref = r.Number(j, "springref", 0).value_or(0);
-        spring.nominal = hinge ? r.compiler.Angle(springref) : springref;
+        spring.nominal = springref;
         m.Add(std::move(spring));
       }
     }

@@ -28,6 +28,10 @@ struct BodyContext {
   Transform X_PB0;
   Transform X_WB0;  // world pose at qpos0 (free joints start there)
   bool mass_from_geometry = false;
+  /// MuJoCo's "simple" body structure, as far as the tree decides it: no
+  /// child bodies, and a parent that is the world or a joint-less child of
+  /// it (the joints and the inertia frame decide the rest)
+  bool simple_position = false;
 };
 
 /// MJCF-021..024, BEYOND-007: the body's joints, or a weld to its parent

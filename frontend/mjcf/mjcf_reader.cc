@@ -110,6 +110,12 @@ std::optional<ModelId> Read(FileId file, FrontendContext& ctx) {
     m[id].name = m.Intern(joint_name);
   }
   LowerModelElements(r, top);
+  // BEYOND-007/008: gains from the inertia at qpos0, for the backend
+  if (!r.scaled_gains.empty()) {
+    r.scaled_gains.model = r.model;
+    r.scaled_gains.loc = root.GetLoc();
+    m.inertia_scaled_gains.push_back(std::move(r.scaled_gains));
+  }
 
   for (const auto& e : top) {
     const std::string_view tag = e.Name();

@@ -191,6 +191,10 @@ struct MjcfReader {
   std::unordered_map<uint32_t, double> joint_armature;  // by JointId index
   /// Every MJCF joint in document order (the qpos layout of keyframes).
   std::vector<JointId> joint_order;
+  /// Joint springdamper and actuator dampratio requests, with every joint's
+  /// qpos0 and armature (BEYOND-007, BEYOND-008); added to the module at
+  /// the end when the file asks for any.
+  ir::InertiaScaledGains scaled_gains;
 
   /// The default class an element uses: its own `class`, else the nearest
   /// enclosing childclass (passed by the caller), else "main". An unknown

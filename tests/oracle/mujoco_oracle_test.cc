@@ -58,7 +58,20 @@
 //       sqrt(M_ii M_jj)). MuJoCo's qM includes dof_armature on the diagonal
 //       and plant-json's mass_matrix excludes reflected inertia, so the
 //       oracle subtracts the armature; mdlc's reflected_inertia must be 0 (no
-//       actuator) or the armature (MJCF-024).
+//       actuator) or the armature (MJCF-024);
+//   MJCF-022, BEYOND-007  every hinge, slide and ball joint's damping (dof_damping)
+//       and every hinge and slide joint's stiffness (jnt_stiffness: the
+//       stiffness of mdlc's joint springs on it, 0 without one) and spring
+//       reference (qpos_spring), whether the file gives them or springdamper
+//       derives them from the inertia at qpos0 (MuJoCo 3.3.8 dumps only);
+//   BEYOND-008  every named joint actuator of the position or velocity
+//       servo shape (fixed gain, affine bias, biasprm[0] = 0): kp =
+//       gainprm[0] and kd = -biasprm[2] (position: gainprm[0] = -biasprm[1]
+//       > 0; a dampratio is already MuJoCo's kd there), or kd = gainprm[0]
+//       (velocity: biasprm[1] = 0, gainprm[0] = -biasprm[2] > 0), when mdlc
+//       has an actuator of that name. Joint and actuator gains are compared
+//       to 1e-9, those derived from the inertia at qpos0 too (the corpus's
+//       agree to 2e-14).
 // Configuration 0 is mdlc's default configuration and MuJoCo's base state.
 // Keyframes (MJCF-008, the "keyframe (default positions)" item): the
 // key named "home" if there is one, else the first <key>, sets the default
@@ -139,6 +152,9 @@ using json = nlohmann::json;
 
 constexpr double kKinTol = 1e-9;   // poses, axes, limits, default positions
 constexpr double kMassTol = 1e-6;  // mass properties, M(q), geometry sizes, mesh poses
+// joint damping and stiffness, actuator gains: as given, or derived from
+// the inertia at qpos0 (springdamper, dampratio)
+constexpr double kGainTol = 1e-9;
 
 std::string g_mdlc_binary;  // set in main()
 
@@ -374,7 +390,18 @@ struct RJoint {
   double qpos0 = 0;
   std::vector<double> q_default;
   bool keyed = false;
+  /// jnt_stiffness, qpos_spring (hinge, slide) and dof_damping, when the
+  /// dump has them (MuJoCo 3.3.8's)
+  bool has_gains = false;
+  double stiffness = 0, springref = 0;
+  std::vector<double> damping;
   bool Moving() const { return type == "hinge" || type == "slide"; }
+};
+
+struct RActuator {
+  std::string name, trntype, gaintype, biastype;
+  int trnid = -1;
+  double gainprm[3] = {0, 0, 0}, biasprm[3] = {0, 0, 0};
 };
 
 struct RGeom {
@@ -401,6 +428,7 @@ struct Reference {
   std::vector<RJoint> joints;
   std::vector<RGeom> geoms;
   std::vector<RConfig> configs;
+  std::vector<RActuator> actuators;  // MuJoCo 3.3.8 dumps only
   /// kg m^2: inertia and M entries this close agree (MuJoCo's own residual;
   /// 0 for all but kMujocoEigenResidualFiles)
   double inertia_floor = 0;
@@ -439,6 +467,12 @@ Reference BuildReference(const json& d) {
     J.armature = j.at("armature").empty() ? 0 : j.at("armature").at(0).get<double>();
     const json& q_default = j.contains("key_qpos") ? j.at("key_qpos") : j.at("qpos0");
     J.keyed = j.contains("key_qpos");
+    if (j.contains("stiffness") && j.contains("damping")) {
+      J.has_gains = true;
+      J.stiffness = j.at("stiffness").get<double>();
+      J.springref = j.value("springref", 0.0);
+      for (const auto& v : j.at("damping")) J.damping.push_back(v.get<double>());
+    }
     for (const auto& v : q_default) J.q_default.push_back(v.get<double>());
     J.qpos0 = J.q_default.at(0);
     r.bodies.at(J.body).joints.push_back(static_cast<int>(r.joints.size()));
@@ -501,6 +535,19 @@ Reference BuildReference(const json& d) {
     }
     if (g.contains("mesh_scale")) G.mesh_scale = V3(g.at("mesh_scale"));
     r.geoms.push_back(G);
+  }
+  for (const auto& a : d.value("actuators", json::array())) {
+    RActuator A;
+    A.name = a.at("name").get<std::string>();
+    A.trntype = a.at("trntype").get<std::string>();
+    A.trnid = a.at("trnid").get<int>();
+    A.gaintype = a.at("gaintype").get<std::string>();
+    A.biastype = a.at("biastype").get<std::string>();
+    for (int k = 0; k < 3; ++k) {
+      A.gainprm[k] = a.at("gainprm").at(k).get<double>();
+      A.biasprm[k] = a.at("biasprm").at(k).get<double>();
+    }
+    r.actuators.push_back(A);
   }
   for (const auto& c : d.at("configs")) {
     RConfig C;
@@ -767,6 +814,63 @@ void CompareKeyedDefault(const json& jj, const RJoint& J, const std::string& ent
   ComparePose(rep, "MJCF-008", ent, "X_default (key qpos)", mdlc, ref, kKinTol);
 }
 
+// MJCF-022, BEYOND-007: a joint's damping per dof and, for hinges and
+// slides, the stiffness and nominal position of mdlc's joint springs on it.
+void CompareJointGains(const RJoint& J, const json& jj, const Plant& p, const std::string& ent,
+                       Report* rep) {
+  if (!J.has_gains) return;
+  const json damping = jj.value("damping", json::array());
+  if (!damping.is_array() || damping.size() != J.damping.size()) {
+    rep->Add("MJCF-022 " + ent + " damping: expected " + std::to_string(J.damping.size()) +
+             " values, got " + damping.dump());
+  } else {
+    for (size_t k = 0; k < J.damping.size(); ++k) {
+      rep->Num("MJCF-022/BEYOND-007", ent, "damping[" + std::to_string(k) + "]", Num(damping[k]),
+               J.damping[k], kGainTol);
+    }
+  }
+  if (!J.Moving()) return;
+  double stiffness = 0;
+  std::vector<double> nominal;
+  for (const auto& f : p.root.value("force_elements", json::array())) {
+    const std::string type = f.value("type", "");
+    if ((type == "revolute_spring" || type == "prismatic_spring") &&
+        LocalOf(f.value("joint", "")) == J.name) {
+      stiffness += Num(f.value("stiffness", json()));
+      nominal.push_back(Num(f.value("nominal", json())));
+    }
+  }
+  rep->Num("BEYOND-007", ent, "stiffness (joint springs)", stiffness, J.stiffness, kGainTol);
+  if (J.stiffness != 0) {
+    for (double n : nominal) rep->Num("BEYOND-007", ent, "spring nominal (springref)", n, J.springref, kKinTol);
+  }
+}
+
+// BEYOND-008: named joint actuators of the position or velocity servo shape.
+void CompareActuators(const Reference& ref, const Plant& p, Report* rep) {
+  std::map<std::string, const json*> mdlc;
+  if (!p.root.contains("actuators") || !p.root["actuators"].is_array()) return;
+  for (const auto& a : p.root["actuators"]) mdlc[a.value("name", "")] = &a;
+  for (const RActuator& A : ref.actuators) {
+    if (A.name.empty() || A.trntype != "joint" || A.gaintype != "fixed" ||
+        A.biastype != "affine" || A.biasprm[0] != 0) {
+      continue;
+    }
+    const auto it = mdlc.find(A.name);
+    if (it == mdlc.end()) continue;  // an actuator mdlc leaves out warns there
+    const std::string ent = "actuator '" + A.name + "'";
+    const double g = A.gainprm[0];
+    const json& a = *it->second;
+    if (g > 0 && g == -A.biasprm[1]) {
+      rep->Num("BEYOND-008", ent, "kp (gainprm[0])", Num(a.value("kp", json())), g, kGainTol);
+      rep->Num("BEYOND-008", ent, "kd (-biasprm[2])", Num(a.value("kd", json())), -A.biasprm[2],
+               kGainTol);
+    } else if (g > 0 && A.biasprm[1] == 0 && g == -A.biasprm[2]) {
+      rep->Num("BEYOND-008", ent, "kd (gainprm[0])", Num(a.value("kd", json())), g, kGainTol);
+    }
+  }
+}
+
 // Mass properties, joints' static data and geometry shapes: configuration 0.
 void CompareStatic(const Reference& ref, const Plant& p, Report* rep) {
   for (const auto& dup : p.duplicate_names) rep->Add("plant-json names two entities " + dup);
@@ -821,6 +925,7 @@ void CompareStatic(const Reference& ref, const Plant& p, Report* rep) {
       rep->Add("MJCF-020/023 mdlc's plant has a body '" + name + "' that MuJoCo's model lacks");
     }
   }
+  CompareActuators(ref, p, rep);
 
   for (const RJoint& J : ref.joints) {
     const std::string ent = "joint '" + J.name + "' (" + J.type + ")";
@@ -853,6 +958,7 @@ void CompareStatic(const Reference& ref, const Plant& p, Report* rep) {
       rep->Add("MJCF-022/023 " + ent + " joins " + jj->value("parent", "?") + " -> " +
                jj->value("child", "?") + " in mdlc, expected " + J.parent + " -> " + J.child);
     }
+    CompareJointGains(J, *jj, p, ent, rep);
     if (!J.Moving()) {
       if (J.keyed) CompareKeyedDefault(*jj, J, ent, rep);  // MJCF-008: a ball's key
       continue;
@@ -1326,6 +1432,39 @@ TEST(MujocoOracleSelfCheck, MJCF050_MeshOffsetUndone) {
   // the wedge's volume is 0.2 * 0.05 / 2 * 0.12 = 6e-4 m^3 at density 1000,
   // and the scaled one (2 x 1 x 1.5) 1.8e-3 m^3 at density 500.
   EXPECT_NEAR(r.bodies[1].mass, 0.6 + 0.9, 1e-6);
+}
+
+// BEYOND-007/008: the dump's joint and actuator gains are MuJoCo's derived
+// ones: for a springdamper joint dof_damping = 2 I / timeconst and
+// jnt_stiffness = I / (timeconst dampratio)^2 with I = 1 / dof_invweight0;
+// on the slide-only "simple" body dof_invweight0 is 1 / its mass (box 0.2
+// x 0.16 x 0.12 m at 1000 kg/m^3: 3.84 kg), leaving the armature out; a
+// position's kd = 2 dampratio sqrt(kp dof_M0 / gear^2).
+TEST(MujocoOracleSelfCheck, Beyond007Beyond008DumpedGains) {
+  if (const std::string why = MujocoJsUnavailable(); !why.empty()) GTEST_SKIP() << why;
+  std::string problem;
+  const json d = DumpMujoco3(HandModel("springdamper_dampratio.xml"), &problem);
+  ASSERT_EQ(problem, "");
+  ASSERT_TRUE(d.value("ok", false)) << d.dump();
+  std::map<std::string, json> joints;
+  for (const auto& j : d.at("joints")) joints[j.at("name").get<std::string>()] = j;
+  const struct { const char* name; double timeconst, dampratio; } sd[] = {
+      {"yaw", 0.5, 1}, {"shoulder", 0.3, 0.5}, {"elbow", 0.2, 0.7}, {"extend", 0.1, 2},
+      {"slide_x", 0.25, 1.5}, {"slide_y", 0.2, 0.7}, {"flap_hinge", 0.15, 0.8}};
+  for (const auto& s : sd) {
+    const json& j = joints.at(s.name);
+    const double I = 1 / j.at("invweight0").at(0).get<double>();
+    const double damping = 2 * I / s.timeconst;
+    const double stiffness = I / (s.timeconst * s.timeconst * s.dampratio * s.dampratio);
+    EXPECT_NEAR(j.at("damping").at(0).get<double>(), damping, 1e-12 * damping) << s.name;
+    EXPECT_NEAR(j.at("stiffness").get<double>(), stiffness, 1e-12 * stiffness) << s.name;
+  }
+  EXPECT_NEAR(1 / joints.at("slide_x").at("invweight0").at(0).get<double>(), 3.84, 1e-12);
+  EXPECT_NEAR(joints.at("slide_x").at("M0").at(0).get<double>(), 3.84 + 0.3, 1e-12);
+  const json& a = d.at("actuators").at(0);
+  ASSERT_EQ(a.at("name"), "shoulder_servo");
+  const double M0 = joints.at("shoulder").at("M0").at(0).get<double>();
+  EXPECT_NEAR(-a.at("biasprm").at(2).get<double>(), 2 * 1 * std::sqrt(40 * M0), 1e-12);
 }
 
 }  // namespace

@@ -21,7 +21,13 @@
 //                 inertia, pos, quat}],
 //    "joints":  [{id, name, type, body, dof, qposadr, axis, pos, range,
 //                 limited, armature, qpos0, key_qpos (when "key" is present:
-//                 the key's qpos slice of the joint, as MuJoCo stores it)}],
+//                 the key's qpos slice of the joint, as MuJoCo stores it),
+//                 stiffness (jnt_stiffness), springref (qpos_spring, hinge
+//                 and slide), damping, M0, invweight0 (dof_damping,
+//                 dof_M0, dof_invweight0: one per dof)}],
+//    "actuators": [{id, name, trntype, trnid, gear, dyntype, gaintype,
+//                 biastype, gainprm, biasprm (the first 3 of each), as
+//                 compiled: a dampratio is already turned into biasprm[2]}],
 //    "geoms":   [{id, name, body, type, size, pos, quat, contype,
 //                 conaffinity, group, mesh, mesh_pos, mesh_quat, mesh_scale}],
 //    "configs": [{"q": [[jnt, value], ...],            (hinge/slide joints set)
@@ -59,6 +65,11 @@ import loadMujoco from 'mujoco-js';
 
 const JOINT_TYPES = ['free', 'ball', 'slide', 'hinge'];
 const GEOM_TYPES = ['plane', 'hfield', 'sphere', 'capsule', 'ellipsoid', 'cylinder', 'box', 'mesh', 'sdf'];
+// MuJoCo's mjtTrn, mjtDyn, mjtGain, mjtBias (3.3.8)
+const TRN_TYPES = ['joint', 'jointinparent', 'slidercrank', 'tendon', 'site', 'body'];
+const DYN_TYPES = ['none', 'integrator', 'filter', 'filterexact', 'muscle', 'user'];
+const GAIN_TYPES = ['fixed', 'affine', 'muscle', 'user'];
+const BIAS_TYPES = ['none', 'affine', 'muscle', 'user'];
 
 function usage(msg) {
   process.stderr.write(`mujoco_dump: ${msg}\nusage: node mujoco_dump.mjs [--configs N] [--seed S] ` +
@@ -271,9 +282,27 @@ function dumpModel(file, m) {
       axis: vec(m.jnt_axis, j, 3), pos: vec(m.jnt_pos, j, 3), range: vec(m.jnt_range, j, 2),
       limited: m.jnt_limited[j], armature: Array.from(m.dof_armature.subarray(dof, dof + nd)),
       qpos0: Array.from(m.qpos0.subarray(qadr, qadr + nq)),
+      stiffness: m.jnt_stiffness[j],
+      damping: Array.from(m.dof_damping.subarray(dof, dof + nd)),
+      M0: Array.from(m.dof_M0.subarray(dof, dof + nd)),
+      invweight0: Array.from(m.dof_invweight0.subarray(dof, dof + nd)),
     };
+    if (nq === 1) joint.springref = m.qpos_spring[qadr];
     if (key >= 0) joint.key_qpos = base.slice(qadr, qadr + nq);
     out.joints.push(joint);
+  }
+  out.actuators = [];
+  for (let a = 0; a < m.nu; ++a) {
+    out.actuators.push({
+      id: a, name: nameOf(m, m.name_actuatoradr, a),
+      trntype: TRN_TYPES[m.actuator_trntype[a]] || String(m.actuator_trntype[a]),
+      trnid: m.actuator_trnid[2 * a], gear: m.actuator_gear[6 * a],
+      dyntype: DYN_TYPES[m.actuator_dyntype[a]] || String(m.actuator_dyntype[a]),
+      gaintype: GAIN_TYPES[m.actuator_gaintype[a]] || String(m.actuator_gaintype[a]),
+      biastype: BIAS_TYPES[m.actuator_biastype[a]] || String(m.actuator_biastype[a]),
+      gainprm: vec(m.actuator_gainprm, a, 10).slice(0, 3),
+      biasprm: vec(m.actuator_biasprm, a, 10).slice(0, 3),
+    });
   }
   out.geoms = [];
   const meshScale = m.mesh_scale && m.mesh_scale.length === 3 * m.nmesh ? m.mesh_scale : null;

@@ -410,7 +410,8 @@ TEST(MjcfActuator, UnsupportedKindsAndTransmissions) {
   EXPECT_EQ(m.Count(DiagKind::UnsupportedAttribute, "'tendon' transmission"), 1u)
       << m.Messages();
   EXPECT_EQ(m.Count(DiagKind::UnsupportedAttribute, "'group'"), 1u) << m.Messages();
-  EXPECT_EQ(m.Count(DiagKind::UnsupportedAttribute, "'dampratio'"), 1u) << m.Messages();
+  // BEYOND-008: dampratio is supported (kd from the inertia at qpos0)
+  EXPECT_EQ(m.Count(DiagKind::UnsupportedAttribute, "'dampratio'"), 0u) << m.Messages();
   EXPECT_EQ(m.Count(DiagKind::ActuatorWarning, "Expected either 1 value or 6"), 1u)
       << m.Messages();
   // motor, motor, motor (gear "1 2": first value), position
