@@ -79,4 +79,12 @@ std::string_view ConstraintTypeName(ConstraintType type) {
   return "coupler";
 }
 
+std::vector<uint64_t> NameScopes(const Geometry& geometry) {
+  std::vector<uint64_t> scopes;
+  for (uint8_t role : {kProximityRole, kIllustrationRole, kPerceptionRole}) {
+    if (geometry.roles & role) scopes.push_back(uint64_t{geometry.body.id.value} << 8 | role);
+  }
+  return scopes;
+}
+
 }  // namespace mdlc::ir

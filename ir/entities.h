@@ -260,6 +260,10 @@ struct Geometry {
   bool unnamed = false;  // named by the compiler
 };
 
+/// The scopes a geometry's name must be unique in, as Drake's scene graph
+/// requires: its body, once per role it has (body and role in one key).
+std::vector<uint64_t> NameScopes(const Geometry& geometry);
+
 struct Actuator {
   Symbol name;
   ModelId model;

@@ -154,13 +154,7 @@ class Verifier {
     CheckUnique(m_.joints, "joint", [](const Joint& j) { return Scopes{j.model.value}; });
     CheckUnique(m_.actuators, "actuator", [](const Actuator& a) { return Scopes{a.model.value}; });
     CheckUnique(m_.cameras, "camera", [](const Camera& c) { return Scopes{c.model.value}; });
-    CheckUnique(m_.geometries, "geometry", [](const Geometry& g) {
-      Scopes scopes;
-      for (uint8_t role : {kProximityRole, kIllustrationRole, kPerceptionRole}) {
-        if (g.roles & role) scopes.push_back(uint64_t{g.body.id.value} << 8 | role);
-      }
-      return scopes;
-    });
+    CheckUnique(m_.geometries, "geometry", [](const Geometry& g) { return NameScopes(g); });
   }
   using Scopes = std::vector<uint64_t>;
   template <typename Entity, typename ScopesOf>

@@ -45,11 +45,7 @@ std::vector<uint64_t> ScopesOf(const Entity& e) {
 }
 template <>
 std::vector<uint64_t> ScopesOf(const ir::Geometry& g) {
-  std::vector<uint64_t> scopes;
-  for (uint8_t role : {ir::kProximityRole, ir::kIllustrationRole, ir::kPerceptionRole}) {
-    if (g.roles & role) scopes.push_back(uint64_t{g.body.id.value} << 8 | role);
-  }
-  return scopes;
+  return ir::NameScopes(g);
 }
 
 class UniqueNamesPass : public Pass {
