@@ -10,20 +10,13 @@
 #include <vector>
 #include <string>
 
+#include "frontend/assets/package_map.h"
 #include "ir/diagnostics.h"
+#include "ir/format.h"
 #include "ir/module.h"
 #include "ir/source_manager.h"
 
-namespace mdlc::frontend { class PackageMap; }
-
 namespace mdlc::frontend {
-
-enum class Format { Urdf, Sdf, Mjcf, Directives };
-std::string_view FormatName(Format format);
-
-/// The format a path names by its extension (case-insensitive): .urdf, .sdf,
-/// .xml (MJCF), .dmd.yaml. nullopt for anything else.
-std::optional<Format> FormatFromPath(std::string_view path);
 
 struct FrontendOptions {
   /// Name the model instance this, instead of the name in the file.
@@ -53,13 +46,15 @@ struct FrontendContext {
   ir::Module& module;
   FrontendOptions options;
   RetainedDocuments* retained = nullptr;  // null: free each document when lowered
-  /// Packages for the files a model includes (SDFormat <include>); null: paths only.
-  const PackageMap* packages = nullptr;
+  /// Packages for the files a model includes (SDFormat <include>, directives).
+  const assets::PackageMap& packages = assets::NoPackages();
 };
 
-/// Loads `path` and lowers it with the frontend its extension selects.
-/// Returns the new model instance, or nullopt after reporting errors.
-std::optional<ModelId> ReadModelFile(const std::string& path, FrontendContext& ctx);
+/// Loads `path` and lowers it as `format`, or else with the frontend its
+/// extension selects. Returns the new model instance, or nullopt after
+/// reporting errors.
+std::optional<ModelId> ReadModelFile(const std::string& path, FrontendContext& ctx,
+                                     std::optional<Format> format = {});
 
 /// Lowers a buffer already in the SourceManager as the given format.
 std::optional<ModelId> ReadModel(FileId file, Format format, FrontendContext& ctx);

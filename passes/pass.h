@@ -9,7 +9,7 @@
 #include <memory>
 #include <string_view>
 
-#include "frontend/package_map.h"
+#include "frontend/assets/package_map.h"
 #include "ir/diagnostics.h"
 #include "ir/module.h"
 #include "ir/source_manager.h"
@@ -22,8 +22,8 @@ struct PassContext {
   ir::Module& module;
   DiagnosticEngine& diags;
   const SourceManager& sources;
-  /// Packages for resolving package:// URIs (none: only paths resolve).
-  const frontend::PackageMap* packages = nullptr;
+  /// Packages for resolving package:// URIs.
+  const assets::PackageMap& packages = assets::NoPackages();
   /// Mesh files read during this compile, each once (load-meshes fills it;
   /// fit-to-mesh, mass-from-geometry and inertia-from-collisions read it).
   /// An embedder may share one cache between compiles of the same files.

@@ -20,7 +20,7 @@
 #include <filesystem>
 #include <unordered_map>
 
-#include "frontend/package_map.h"
+#include "frontend/assets/package_map.h"
 #include "passes/pass_registry.h"
 
 namespace mdlc::passes {
@@ -83,8 +83,7 @@ struct Reference {
 };
 
 bool ResolveAssetsPass::Run(PassContext& ctx) {
-  static const frontend::PackageMap kNoPackages;
-  const frontend::PackageMap& packages = ctx.packages ? *ctx.packages : kNoPackages;
+  const assets::PackageMap& packages = ctx.packages;
   const size_t errors_before = ctx.diags.error_count();
   const ir::Module& m = ctx.module;
 
@@ -123,7 +122,7 @@ bool ResolveAssetsPass::Run(PassContext& ctx) {
       path = ref.path;
     } else {
       // an unknown package or unsupported scheme is an error whatever uses it
-      path = frontend::UriToPath(ref.uri, ref.base_dir, packages,
+      path = assets::UriToPath(ref.uri, ref.base_dir, packages,
                                  ref.needed_by ? ref.needed_loc : ref.loc, ctx.diags);
     }
     std::error_code ec;

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # setup.sh - one command from a fresh Debian 12 machine to a working mdlc.
 #
-#   tools/setup.sh example   install what is missing, build, compile a bundled example
-#   tools/setup.sh test      install what is missing, build, run the whole test suite
+#   tools/setup.sh example   install what is missing, build the mdlc command only,
+#                            compile a bundled example
+#   tools/setup.sh test      install what is missing, build everything (libraries,
+#                            command, Python module, tests), run the whole test suite
 #
 # Installing needs root (apt-get); as another user the script prints the exact
 # apt-get line to run and stops. BUILD_DIR (default: build) and JOBS (default:
@@ -22,12 +24,17 @@ jobs=${JOBS:-$(nproc)}
 # what mdlc needs to build and run
 runtime_packages=(cmake ninja-build g++ pkg-config libeigen3-dev libxml2-dev libyaml-cpp-dev
                   libfmt-dev libassimp-dev libqhull-dev libcli11-dev)
+# the Python module (built and tested by `test`)
+python_packages=(python3-dev python3-numpy pybind11-dev)
 # what its tests need besides: GoogleTest, Google Benchmark, and the reference
 # implementations the differential tests compare against (test-only)
 test_packages=(libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
                liburdfdom-dev libsdformat-dev libmujoco-dev)
 
-packages=("${runtime_packages[@]}" "${test_packages[@]}")
+packages=("${runtime_packages[@]}")
+if [ "$mode" = test ]; then
+  packages+=("${python_packages[@]}" "${test_packages[@]}")
+fi
 missing=()
 for p in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
@@ -77,8 +84,19 @@ if [ "$mode" = test ]; then
 fi
 
 echo "==> configuring and building in $build_dir"
-cmake -S "$root" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build "$build_dir" -j "$jobs"
+config=(-G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo)
+if [ "$mode" = example ]; then
+  # only the command: no tests, benchmarks or Python module
+  config+=(-DMDLC_BUILD_TESTS=OFF -DMDLC_BUILD_BENCHMARKS=OFF -DMDLC_BUILD_PYTHON=OFF)
+  targets=(--target mdlc)
+else
+  config+=(-DMDLC_BUILD_TESTS=ON -DMDLC_BUILD_BENCHMARKS=ON -DMDLC_BUILD_PYTHON=ON)
+  # the module is built for Debian's interpreter, the one python3-numpy serves
+  if [ -x /usr/bin/python3 ]; then config+=(-DPython3_EXECUTABLE=/usr/bin/python3); fi
+  targets=()
+fi
+cmake -S "$root" -B "$build_dir" "${config[@]}" >/dev/null
+cmake --build "$build_dir" -j "$jobs" "${targets[@]}"
 
 mdlc="$build_dir/tools/mdlc/mdlc"
 if [ "$mode" = example ]; then

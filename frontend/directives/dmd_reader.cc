@@ -19,7 +19,7 @@
 #include "frontend/directives/yaml_schema.h"
 #include "frontend/frontend.h"
 #include "frontend/model_naming.h"
-#include "frontend/package_map.h"
+#include "frontend/assets/package_map.h"
 #include "ir/scoped_name.h"
 
 namespace mdlc::frontend {
@@ -53,7 +53,7 @@ class DirectivesReader {
  private:
   ir::Module& module() { return ctx_.module; }
   DiagnosticEngine& diags() { return ctx_.diags; }
-  const PackageMap& packages() const { return ctx_.packages ? *ctx_.packages : no_packages_; }
+  const assets::PackageMap& packages() const { return ctx_.packages; }
 
   // Loads and checks the top level of a directives file; pushes it.
   bool Open(FileId file, std::string ns);
@@ -88,7 +88,6 @@ class DirectivesReader {
   }
 
   FrontendContext& ctx_;
-  PackageMap no_packages_;
   std::vector<OpenFile> stack_;
 };
 
@@ -208,7 +207,7 @@ std::optional<std::string> DirectivesReader::ResolveFile(const LocatedString& fi
         .Note(file.loc, "a package:// URI keeps the scene independent of where it is run");
     return std::nullopt;
   }
-  return ResolveUri(file.text, "", packages(), file.loc, diags());
+  return assets::ResolveUri(file.text, "", packages(), file.loc, diags());
 }
 
 std::optional<FileId> DirectivesReader::Load(const std::string& path, Loc referenced_at) {

@@ -14,7 +14,7 @@
 #include <filesystem>
 #include <unordered_map>
 
-#include "frontend/package_map.h"
+#include "frontend/assets/package_map.h"
 #include "frontend/sdf/sdf_reader_detail.h"
 
 namespace mdlc::frontend::sdf {
@@ -106,9 +106,8 @@ void SdfReader::ReadInclude(const xml::XmlElement& e, const SdfFile& file, Model
     return;
   }
   const Loc uri_loc = e.Child("uri").GetLoc();
-  static const PackageMap kNoPackages;
-  const PackageMap& packages = ctx_.packages ? *ctx_.packages : kNoPackages;
-  std::optional<std::string> path = ResolveUri(*uri, file.dir, packages, uri_loc, diags());
+  std::optional<std::string> path =
+      assets::ResolveUri(*uri, file.dir, ctx_.packages, uri_loc, diags());
   if (!path) return;
   std::error_code ec;
   if (fs::is_directory(*path, ec)) {

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "frontend/frontend.h"
-#include "frontend/package_map.h"
+#include "frontend/assets/package_map.h"
 #include "frontend/xml/attribute_reader.h"
 #include "frontend/xml/xml_document.h"
 

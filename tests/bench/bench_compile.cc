@@ -39,7 +39,7 @@
 #include <memory>
 #include <string>
 
-#include "backend/compiler.h"
+#include "tools/driver/compiler.h"
 #include "frontend/xml/xml_document.h"
 #include "model_gen.h"
 #include "model_gen_mjcf.h"
@@ -61,18 +61,18 @@ constexpr int kMdlcXmlOptions = XML_PARSE_NONET | XML_PARSE_HUGE | XML_PARSE_BIG
 
 // a generated model: the mechanism's shape, written in one format
 struct Family {
-  frontend::Format format;
+  Format format;
   Shape shape;
   auto operator<=>(const Family&) const = default;
 };
-constexpr Family kFamilies[] = {{frontend::Format::Urdf, Shape::Chain},
-                                {frontend::Format::Urdf, Shape::Tree},
-                                {frontend::Format::Mjcf, Shape::Chain},
-                                {frontend::Format::Mjcf, Shape::Tree}};
+constexpr Family kFamilies[] = {{Format::Urdf, Shape::Chain},
+                                {Format::Urdf, Shape::Tree},
+                                {Format::Mjcf, Shape::Chain},
+                                {Format::Mjcf, Shape::Tree}};
 
 // "chain" for URDF (the names the benchmark always had), "mjcf_chain" for MJCF
 std::string FamilyName(Family family) {
-  return family.format == frontend::Format::Urdf ? std::string(ShapeName(family.shape))
+  return family.format == Format::Urdf ? std::string(ShapeName(family.shape))
                                                  : fmt::format("mjcf_{}", ShapeName(family.shape));
 }
 
@@ -80,7 +80,7 @@ const std::string& Model(Family family, int n) {
   static std::map<std::pair<Family, int>, std::string> cache;
   auto [it, inserted] = cache.try_emplace({family, n});
   if (inserted) {
-    it->second = family.format == frontend::Format::Urdf ? GenerateUrdf(family.shape, n)
+    it->second = family.format == Format::Urdf ? GenerateUrdf(family.shape, n)
                                                          : GenerateMjcf(family.shape, n);
   }
   return it->second;
@@ -88,7 +88,7 @@ const std::string& Model(Family family, int n) {
 
 std::string FileName(Family family, int n) {
   return fmt::format("{}_n{}.{}", ShapeName(family.shape), n,
-                     family.format == frontend::Format::Urdf ? "urdf" : "mjcf.xml");
+                     family.format == Format::Urdf ? "urdf" : "mjcf.xml");
 }
 
 // A Compilation holding the model's text; the copy is setup, not timed.
@@ -236,7 +236,7 @@ void RegisterAll() {
   for (Family family : kFamilies) {
     for (const Stage& stage : kStages) {
 #ifdef MDLC_BENCH_HAVE_MUJOCO
-      if (stage.fn == BM_MujocoLoad && family.format != frontend::Format::Mjcf) continue;
+      if (stage.fn == BM_MujocoLoad && family.format != Format::Mjcf) continue;
 #endif
       auto* b = benchmark::RegisterBenchmark(
           fmt::format("{}/{}", stage.name, FamilyName(family)).c_str(), stage.fn, family);

@@ -17,7 +17,7 @@
 #include <fstream>
 #include <map>
 
-#include "backend/compiler.h"
+#include "tools/driver/compiler.h"
 
 namespace mdlc::bench {
 namespace {
@@ -87,7 +87,7 @@ fs::path ScenePath(int n) { return Folder() / fmt::format("chain_n{}.dmd.yaml", 
 std::unique_ptr<Compilation> Prepare(benchmark::State& state) {
   state.PauseTiming();
   auto c = std::make_unique<Compilation>();
-  c->options.files = {ScenePath(static_cast<int>(state.range(0))).string()};
+  c->options.inputs = {Input::File(ScenePath(static_cast<int>(state.range(0))).string())};
   c->packages.PopulateFromFolder(Folder().string(), c->sources, c->diags);
   state.ResumeTiming();
   return c;

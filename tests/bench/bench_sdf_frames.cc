@@ -38,7 +38,7 @@
 #include <memory>
 #include <string>
 
-#include "backend/compiler.h"
+#include "tools/driver/compiler.h"
 #include "frontend/xml/xml_document.h"
 #include "model_gen_sdf.h"
 
@@ -81,9 +81,9 @@ std::unique_ptr<Compilation> Prepare(benchmark::State& state, SdfFamily family, 
 
 // as Compilation::RunFrontends does it: documents retained, packages known
 bool RunFrontend(Compilation& c, FileId file) {
-  frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend, &c.documents};
-  ctx.packages = &c.packages;
-  return frontend::ReadModel(file, frontend::Format::Sdf, ctx).has_value() &&
+  frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend, &c.documents,
+                                c.packages};
+  return frontend::ReadModel(file, Format::Sdf, ctx).has_value() &&
          !c.diags.has_errors();
 }
 

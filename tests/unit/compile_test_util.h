@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "backend/compiler.h"
+#include "tools/driver/compiler.h"
 #include "backend/plant_json.h"
 #include "backend/positions.h"
 
@@ -29,7 +29,7 @@ class CompiledText {
     std::filesystem::create_directories(dir_);
     path_ = dir_ / file_name;
     std::ofstream(path_) << text;
-    c_.options.files = {path_.string()};
+    c_.options.inputs = {Input::File(path_.string())};
     c_.options.instrumentation.verify_each = true;
     ok_ = c_.Run();
   }

@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "backend/compiler.h"
+#include "tools/driver/compiler.h"
 #include "backend/plant_json.h"
 #include "backend/positions.h"
 #include "frontend/frontend.h"
@@ -81,7 +81,7 @@ class CompiledSdf {
             fmt::format("mdlc_sdf_drake_{}_{}.sdf", ::getpid(),
                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
     std::ofstream(path_) << SdfDocument(body);
-    c_.options.files = {path_.string()};
+    c_.options.inputs = {Input::File(path_.string())};
     ok_ = c_.Run();
   }
   ~CompiledSdf() { std::filesystem::remove(path_); }

@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "backend/compiler.h"
+#include "tools/driver/compiler.h"
 #include "backend/plant_json.h"
 #include "backend/positions.h"
 #include "frontend/frontend.h"
@@ -87,7 +87,7 @@ class SdfCompileResult {
     for (const auto& [name, contents] : extra_files) std::ofstream(dir_ / name) << contents;
     const auto path = dir_ / "model.sdf";
     std::ofstream(path) << SdfFileText(body);
-    c_.options.files = {path.string()};
+    c_.options.inputs = {Input::File(path.string())};
     ok_ = c_.Run();
   }
   ~SdfCompileResult() { std::filesystem::remove_all(dir_); }

@@ -15,8 +15,8 @@
 #include <fstream>
 #include <iostream>
 
-#include "backend/compiler.h"
 #include "ir/printer.h"
+#include "mdlc/mdlc.h"
 #include "passes/pass_registry.h"
 #include "summary.h"
 #include "verify_diagnostics.h"
@@ -80,80 +80,8 @@ int WriteOutput(const CliOptions& cli, const std::string& text) {
   return 0;
 }
 
-int RunCompile(const CliOptions& cli) {
-  mdlc::DiagnosticPolicy policy;
-  std::string bad;
-  if (!ApplyWarningFlags(cli, policy, &bad)) {
-    fmt::print(stderr, "mdlc: error: {}\n", bad);
-    return 2;
-  }
-  // The compilation is deliberately never freed: the process exits right
-  // after, and tearing down a large model's DOM and IR would only cost time
-  // (clang's -disable-free, for the same reason).
-  auto& c = *new mdlc::Compilation(policy);
-  c.options.files = cli.files;
-  c.options.frontend.model_name = cli.model_name;
-  c.options.frontend.auto_rename = cli.auto_rename;
-  c.options.pipeline = cli.passes;
-  c.options.instrumentation.print_after_all = cli.print_after_all;
-  c.options.instrumentation.print_after.insert(cli.print_after.begin(), cli.print_after.end());
-  c.options.instrumentation.time_passes = cli.time_passes;
-  c.options.instrumentation.verify_each = cli.verify_each;
-  c.options.skip_backend = cli.emit == "ir";
-
-  // diagnostics stream out as they happen, unless they are being verified
-  const bool json = cli.diagnostics_format == "json";
-  const bool color = cli.color == "always" || (cli.color == "auto" && isatty(STDERR_FILENO) && !json);
-  std::vector<mdlc::Diagnostic> collected;
-  c.diags.SetConsumer([&](const mdlc::Diagnostic& d) {
-    if (cli.verify_diagnostics) {
-      collected.push_back(d);
-    } else if (json) {
-      fmt::print(stderr, "{}\n", mdlc::FormatDiagnosticJson(d, c.sources));
-    } else {
-      fmt::print(stderr, "{}", mdlc::FormatDiagnosticText(d, c.sources, color));
-    }
-  });
-  // packages: explicit definitions first, then scanned folders, then the environment
-  for (const std::string& definition : cli.packages) {
-    const size_t eq = definition.find('=');
-    if (eq == std::string::npos || eq == 0) {
-      fmt::print(stderr, "mdlc: error: --package expects NAME=DIR, got '{}'\n", definition);
-      return 2;
-    }
-    c.packages.Add(definition.substr(0, eq), definition.substr(eq + 1), c.diags);
-  }
-  for (const std::string& dir : cli.package_paths) c.packages.PopulateFromFolder(dir, c.sources, c.diags);
-  if (const char* ros = std::getenv("ROS_PACKAGE_PATH")) {
-    c.packages.PopulateFromPathList(ros, c.sources, c.diags);
-  }
-
-  const bool ok = c.Run();
-  if (cli.time_passes) fmt::print(stderr, "{}", c.timing_report());
-  if (cli.verify_diagnostics) {
-    auto problems = mdlc::tools::VerifyDiagnostics(collected, c.sources);
-    for (const auto& p : problems) fmt::print(stderr, "{}\n", p);
-    return problems.empty() ? 0 : 1;
-  }
-  if (!ok || c.diags.has_errors()) {
-    if (!json) {
-      fmt::print(stderr, "{} error{} generated.\n", c.diags.error_count(),
-                 c.diags.error_count() == 1 ? "" : "s");
-    }
-    return 1;
-  }
-
-  if (cli.emit == "ir") {
-    mdlc::ir::PrintOptions print;
-    print.locations = !cli.no_locations;
-    return WriteOutput(cli, mdlc::ir::PrintModule(c.module, c.sources, print));
-  }
-  const mdlc::backend::CompiledModel& model = *c.model;
-  if (cli.emit == "none") return 0;
-  if (cli.emit == "summary") return WriteOutput(cli, mdlc::tools::FormatSummary(model));
-
-  // plant-json
-  Eigen::VectorXd q = mdlc::backend::DefaultPositions(model.plant);
+// --q JOINT=VALUE, each into (JOINT, VALUE); false on a malformed one
+bool ParseJointPositions(const CliOptions& cli, mdlc::Options& options) {
   for (const std::string& assignment : cli.q) {
     const size_t eq = assignment.rfind('=');
     char* end = nullptr;
@@ -161,26 +89,98 @@ int RunCompile(const CliOptions& cli) {
         eq == std::string::npos ? 0 : std::strtod(assignment.c_str() + eq + 1, &end);
     if (eq == std::string::npos || end == assignment.c_str() + eq + 1 || *end != '\0') {
       fmt::print(stderr, "mdlc: error: --q expects JOINT=VALUE, got '{}'\n", assignment);
-      return 2;
+      return false;
     }
-    if (!mdlc::backend::SetJointPositionByName(model.plant, q, assignment.substr(0, eq), value)) {
-      fmt::print(stderr,
-                 "mdlc: error: --q: no single-dof joint named '{}' (use the scoped name "
-                 "'instance::joint' when a name is ambiguous)\n",
-                 assignment.substr(0, eq));
-      return 1;
-    }
+    options.joint_positions.emplace_back(assignment.substr(0, eq), value);
   }
+  return true;
+}
+
+// --package NAME=DIR, --package-path DIR, and ROS_PACKAGE_PATH
+bool ParsePackages(const CliOptions& cli, mdlc::Options& options) {
+  for (const std::string& definition : cli.packages) {
+    const size_t eq = definition.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      fmt::print(stderr, "mdlc: error: --package expects NAME=DIR, got '{}'\n", definition);
+      return false;
+    }
+    options.packages.emplace_back(definition.substr(0, eq), definition.substr(eq + 1));
+  }
+  options.package_paths = cli.package_paths;
+  options.use_ros_package_path = true;
+  return true;
+}
+
+int RunCompile(const CliOptions& cli) {
+  mdlc::Options options;
+  std::string bad;
+  if (!ApplyWarningFlags(cli, options.diagnostics, &bad)) {
+    fmt::print(stderr, "mdlc: error: {}\n", bad);
+    return 2;
+  }
+  if (!ParseJointPositions(cli, options) || !ParsePackages(cli, options)) return 2;
+  options.model_name = cli.model_name;
+  options.auto_rename = cli.auto_rename;
+  options.passes = cli.passes;
+  options.print_after = cli.print_after;
+  options.print_after_all = cli.print_after_all;
+  options.time_passes = cli.time_passes;
+  options.verify_each = cli.verify_each;
+  options.skip_backend = cli.emit == "ir";
+
+  // diagnostics stream out as they happen, unless they are being verified
+  const bool json = cli.diagnostics_format == "json";
+  const bool color = cli.color == "always" || (cli.color == "auto" && isatty(STDERR_FILENO) && !json);
+  std::vector<mdlc::Diagnostic> collected;
+  options.on_diagnostic = [&](const mdlc::Diagnostic& d, const mdlc::SourceManager& s) {
+    if (cli.verify_diagnostics) {
+      collected.push_back(d);
+    } else if (json) {
+      fmt::print(stderr, "{}\n", mdlc::FormatDiagnosticJson(d, s));
+    } else {
+      fmt::print(stderr, "{}", mdlc::FormatDiagnosticText(d, s, color));
+    }
+  };
+
+  std::vector<mdlc::Input> inputs;
+  for (const std::string& file : cli.files) inputs.push_back(mdlc::Input::File(file));
+  // The result is deliberately never freed: the process exits right after,
+  // and tearing down a large model's DOM and IR would only cost time (clang's
+  // -disable-free, for the same reason).
+  const mdlc::Result& result = *new mdlc::Result(mdlc::Compile(inputs, options));
+
+  if (cli.time_passes) fmt::print(stderr, "{}", result.timing_report());
+  if (cli.verify_diagnostics) {
+    auto problems = mdlc::tools::VerifyDiagnostics(collected, result.sources());
+    for (const auto& p : problems) fmt::print(stderr, "{}\n", p);
+    return problems.empty() ? 0 : 1;
+  }
+  if (!result.ok()) {
+    if (!json) {
+      fmt::print(stderr, "{} error{} generated.\n", result.error_count(),
+                 result.error_count() == 1 ? "" : "s");
+    }
+    return 1;
+  }
+
+  if (cli.emit == "ir") {
+    mdlc::ir::PrintOptions print;
+    print.locations = !cli.no_locations;
+    return WriteOutput(cli, mdlc::ir::PrintModule(result.module(), result.sources(), print));
+  }
+  if (cli.emit == "none") return 0;
+  if (cli.emit == "summary") return WriteOutput(cli, mdlc::tools::FormatSummary(result.model()));
+
   mdlc::backend::PlantJsonOptions json_options;
   json_options.force_mass_matrix = cli.mass_matrix;
-  return WriteOutput(cli, mdlc::backend::EmitPlantJson(model, q, json_options));
+  return WriteOutput(cli, result.PlantJson(result.DefaultPositions(), json_options));
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"mdlc - a model compiler for robotics (URDF, SDFormat, MJCF, Model Directives)"};
-  app.set_version_flag("--version", "mdlc 0.1.0");
+  app.set_version_flag("--version", fmt::format("mdlc {}", mdlc::kVersion));
   app.require_subcommand(0, 1);
   bool list_passes = false;
   app.add_flag("--list-passes", list_passes, "List the registered passes and exit");

@@ -16,7 +16,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "backend/compiler.h"
+#include "tools/driver/compiler.h"
 #include "backend/plant_json.h"
 #include "backend/positions.h"
 #include "ir/printer.h"
@@ -34,7 +34,7 @@ class Mjcf {
     std::filesystem::create_directories(dir_);
     const auto path = dir_ / "model.xml";
     std::ofstream(path) << xml;
-    c_.options.files = {path.string()};
+    c_.options.inputs = {Input::File(path.string())};
     ok_ = c_.Run();
   }
   ~Mjcf() { std::filesystem::remove_all(dir_); }

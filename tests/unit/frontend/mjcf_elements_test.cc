@@ -17,7 +17,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "backend/compiler.h"
+#include "tools/driver/compiler.h"
 #include "backend/plant_json.h"
 #include "backend/positions.h"
 #include "ir/module.h"
@@ -38,7 +38,7 @@ class Mjcf {
     std::filesystem::create_directories(dir_);
     const auto path = dir_ / "model.xml";
     std::ofstream(path) << xml;
-    c_.options.files = {path.string()};
+    c_.options.inputs = {Input::File(path.string())};
     ok_ = c_.Run();
   }
   ~Mjcf() { std::filesystem::remove_all(dir_); }
@@ -446,7 +446,7 @@ TEST(MjcfActuator, UnknownAttributeAndIncludeInsideSection) {
       << R"(<mujoco><motor name="inc" joint="ja" ctrlrang="-1 1"/></mujoco>)";
   std::ofstream(dir / "model.xml") << main;
   Compilation c;
-  c.options.files = {(dir / "model.xml").string()};
+  c.options.inputs = {Input::File((dir / "model.xml").string())};
   const bool ok = c.Run();
   std::filesystem::remove_all(dir);
   ASSERT_TRUE(ok);

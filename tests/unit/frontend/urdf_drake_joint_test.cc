@@ -14,7 +14,7 @@
 #include <numbers>
 #include <tuple>
 
-#include "backend/compiler.h"
+#include "tools/driver/compiler.h"
 #include "backend/kinematics.h"
 #include "backend/plant_json.h"
 #include "backend/positions.h"
@@ -477,7 +477,7 @@ class CompiledUrdf {
             fmt::format("mdlc_drake_joint_{}_{}.urdf", ::getpid(),
                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
     std::ofstream(path_) << text;
-    c_.options.files = {path_.string()};
+    c_.options.inputs = {Input::File(path_.string())};
     ok_ = c_.Run();
   }
   ~CompiledUrdf() { std::filesystem::remove(path_); }

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "backend/compiler.h"
+#include "tools/driver/compiler.h"
 #include "backend/plant_json.h"
 #include "backend/positions.h"
 #include "tests/unit/urdf_test_util.h"

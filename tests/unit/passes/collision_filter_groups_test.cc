@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "backend/compiler.h"
+#include "tools/driver/compiler.h"
 #include "passes/pass_registry.h"
 #include "tests/unit/urdf_test_util.h"
 

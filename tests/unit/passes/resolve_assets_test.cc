@@ -12,7 +12,7 @@
 #include <fstream>
 #include <string>
 
-#include "backend/compiler.h"
+#include "tools/driver/compiler.h"
 
 namespace mdlc::testing {
 namespace {
@@ -28,7 +28,7 @@ class Compiled {
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     std::ofstream(dir_ / file_name) << text;
-    c_.options.files = {(dir_ / file_name).string()};
+    c_.options.inputs = {Input::File((dir_ / file_name).string())};
     ok_ = c_.Run();
   }
   ~Compiled() { fs::remove_all(dir_); }
@@ -169,7 +169,7 @@ TEST(ResolveAssetsTest, StrictTurnsTheMissingVisualIntoAnError) {  // COMMON-002
   DiagnosticPolicy strict;
   strict.warnings_as_errors = true;
   Compilation c(strict);
-  c.options.files = {(dir / "robot.urdf").string()};
+  c.options.inputs = {Input::File((dir / "robot.urdf").string())};
   EXPECT_FALSE(c.Run());
   fs::remove_all(dir);
 }
@@ -195,7 +195,7 @@ TEST(ResolveAssetsTest, UrdfPackageUriWithThreeSlashesResolvesWithAWarning) {  /
 )";
   Compilation c;
   c.packages.PopulateFromFolder(dir.string(), c.sources, c.diags);
-  c.options.files = {(dir / "robot_description/robot.urdf").string()};
+  c.options.inputs = {Input::File((dir / "robot_description/robot.urdf").string())};
   EXPECT_TRUE(c.Run());
   ASSERT_EQ(c.diags.diagnostics().size(), 1u);
   const Diagnostic& d = c.diags.diagnostics()[0];

@@ -123,7 +123,7 @@ TEST(ResolveFrames, OldFilesExpressAxesInTheModelFrame) {  // SDF-012 (1.4 conve
       <axis><xyz>1 0 0</xyz></axis>
     </joint>
   </model></sdf>)";
-  c.options.files = {(dir / "old.sdf").string()};
+  c.options.inputs = {Input::File((dir / "old.sdf").string())};
   ASSERT_TRUE(c.Run());
   EXPECT_NEAR((JointNamed(c.module, "j").axis - Eigen::Vector3d(0, -1, 0)).norm(), 0, kTol);
   std::filesystem::remove_all(dir);

@@ -1,8 +1,9 @@
-// compiler.h - the whole pipeline behind one call, for embedders and the CLI:
-// frontends -> passes -> backend.
+// compiler.h - the whole pipeline, frontends -> passes -> backend, stage by
+// stage. mdlc::Compile (mdlc/mdlc.h) is the public face of this class; the
+// test suite and the benchmarks drive the stages one at a time.
 //
 //   mdlc::Compilation c;
-//   c.options.files = {"robot.urdf"};
+//   c.options.inputs = {mdlc::Input::File("robot.urdf")};
 //   if (!c.Run()) { for (auto& d : c.diags.diagnostics()) ...; }
 //   const mdlc::backend::Plant& plant = c.model->plant;
 //
@@ -17,16 +18,17 @@
 
 #include "backend/backend.h"
 #include "frontend/frontend.h"
-#include "frontend/package_map.h"
+#include "frontend/assets/package_map.h"
 #include "ir/diagnostics.h"
 #include "ir/module.h"
 #include "ir/source_manager.h"
+#include "mdlc/mdlc.h"
 #include "passes/pass_manager.h"
 
 namespace mdlc {
 
 struct CompileOptions {
-  std::vector<std::string> files;
+  std::vector<Input> inputs;
   frontend::FrontendOptions frontend;
   passes::PassInstrumentation instrumentation;
   /// Pass names to run instead of the default pipeline (empty: default).
@@ -47,7 +49,7 @@ class Compilation {
   DiagnosticEngine diags;
   ir::Module module;
   /// Packages for package:// and model:// URIs; fill before Run().
-  frontend::PackageMap packages;
+  assets::PackageMap packages;
   std::optional<backend::CompiledModel> model;
   /// Parsed source documents, released with the Compilation.
   frontend::RetainedDocuments documents;

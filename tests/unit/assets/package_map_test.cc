@@ -1,5 +1,5 @@
 // PackageMap and URI resolution (COMMON-010..014).
-#include "frontend/package_map.h"
+#include "frontend/assets/package_map.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-namespace mdlc::frontend {
+namespace mdlc::assets {
 namespace {
 namespace fs = std::filesystem;
 
@@ -177,4 +177,4 @@ TEST_F(PackageMapTest, UnresolvableUrisAreErrors) {  // COMMON-010, COMMON-011
 }
 
 }  // namespace
-}  // namespace mdlc::frontend
+}  // namespace mdlc::assets

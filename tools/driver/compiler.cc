@@ -1,4 +1,4 @@
-#include "backend/compiler.h"
+#include "tools/driver/compiler.h"
 
 #include <fmt/format.h>
 
@@ -6,12 +6,31 @@
 
 namespace mdlc {
 
+namespace {
+
+void ReadInput(const Input& input, frontend::FrontendContext& ctx) {
+  if (!input.text) {
+    frontend::ReadModelFile(input.path, ctx, input.format);
+    return;
+  }
+  const std::optional<Format> format = input.format ? input.format : FormatFromPath(input.path);
+  if (!format) {
+    ctx.diags.Report(DiagKind::UnknownFormat, {},
+                     fmt::format("model text '{}': no format given and none known by its "
+                                 "extension; expected .urdf, .sdf, .xml (MJCF) or .dmd.yaml",
+                                 input.path));
+    return;
+  }
+  frontend::ReadModel(ctx.sources.AddBuffer(input.path, *input.text), *format, ctx);
+}
+
+}  // namespace
+
 bool Compilation::RunFrontends() {
-  frontend::FrontendContext ctx{sources, diags, module, options.frontend, &documents};
-  ctx.packages = &packages;
-  for (const std::string& file : options.files) {
-    // keep going: report the problems of every file in one run
-    frontend::ReadModelFile(file, ctx);
+  frontend::FrontendContext ctx{sources, diags, module, options.frontend, &documents, packages};
+  for (const Input& input : options.inputs) {
+    // keep going: report the problems of every input in one run
+    ReadInput(input, ctx);
   }
   return !diags.has_errors();
 }
@@ -31,7 +50,7 @@ bool Compilation::RunPasses() {
       pm.AddPass(std::move(pass));
     }
   }
-  passes::PassContext ctx{module, diags, sources, &packages};
+  passes::PassContext ctx{module, diags, sources, packages};
   const bool ok = pm.Run(ctx);
   if (options.instrumentation.time_passes) timing_report_ = pm.TimingReport();
   return ok && !diags.has_errors();

@@ -1,4 +1,4 @@
-#include "frontend/package_map.h"
+#include "frontend/assets/package_map.h"
 
 #include <fmt/format.h>
 
@@ -10,8 +10,13 @@
 
 #include "frontend/xml/xml_document.h"
 
-namespace mdlc::frontend {
+namespace mdlc::assets {
 namespace fs = std::filesystem;
+
+const PackageMap& NoPackages() {
+  static const PackageMap empty;
+  return empty;
+}
 
 bool PackageMap::Add(const std::string& name, const std::string& path, DiagnosticEngine& diags,
                      Loc loc) {
@@ -246,4 +251,4 @@ std::optional<std::string> ResolveUri(std::string_view uri, const std::string& b
   return fs::path(*path).lexically_normal().string();
 }
 
-}  // namespace mdlc::frontend
+}  // namespace mdlc::assets

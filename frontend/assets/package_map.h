@@ -18,7 +18,7 @@
 #include "ir/diagnostics.h"
 #include "ir/source_manager.h"
 
-namespace mdlc::frontend {
+namespace mdlc::assets {
 
 class PackageMap {
  public:
@@ -63,6 +63,10 @@ class PackageMap {
 /// nullopt when the scheme is unsupported or the package unknown. The
 /// non-standard `package:///PKG/rel` (an empty authority, as older URDFs
 /// write it) is read as `package://PKG/rel`, with a warning.
+/// The map of a compile that names no packages: only paths resolve. Every
+/// context that may be given no map refers to this one instead.
+const PackageMap& NoPackages();
+
 std::optional<std::string> UriToPath(std::string_view uri, const std::string& base_dir,
                                      const PackageMap& packages, Loc loc,
                                      DiagnosticEngine& diags);
@@ -73,4 +77,4 @@ std::optional<std::string> ResolveUri(std::string_view uri, const std::string& b
                                       const PackageMap& packages, Loc loc,
                                       DiagnosticEngine& diags);
 
-}  // namespace mdlc::frontend
+}  // namespace mdlc::assets

@@ -1,0 +1,53 @@
+# check_layers.cmake - the layers depend downward only:
+#   ir <- xml <- assets <- frontend, passes <- backend <- driver <- tools
+# Every project #include in a layer's sources must name a header of that
+# layer or of one below it (the backend: the IR alone).
+#   cmake -DSOURCE_DIR=... -P check_layers.cmake
+if(NOT DEFINED SOURCE_DIR)
+  message(FATAL_ERROR "check_layers.cmake needs -DSOURCE_DIR=...")
+endif()
+
+# layer folder -> the include prefixes it may use (besides its own)
+set(allowed_ir "ir/")
+set(allowed_frontend_xml "ir/")
+set(allowed_frontend_assets "ir/;frontend/xml/")
+set(allowed_frontend "ir/;frontend/xml/;frontend/assets/")
+set(allowed_passes "ir/;frontend/assets/")
+set(allowed_backend "ir/")
+set(allowed_tools_driver "ir/;frontend/;passes/;backend/;mdlc/")
+
+set(violations "")
+set(checked 0)
+foreach(layer ir frontend/xml frontend/assets frontend passes backend tools/driver)
+  string(REPLACE "/" "_" key ${layer})
+  file(GLOB_RECURSE sources ${SOURCE_DIR}/${layer}/*.h ${SOURCE_DIR}/${layer}/*.cc)
+  foreach(source IN LISTS sources)
+    file(RELATIVE_PATH rel ${SOURCE_DIR} ${source})
+    # frontend/xml and frontend/assets are layers of their own, checked apart
+    if(layer STREQUAL "frontend" AND rel MATCHES "^frontend/(xml|assets)/")
+      continue()
+    endif()
+    math(EXPR checked "${checked} + 1")
+    file(STRINGS ${source} includes REGEX "^#include \"")
+    foreach(line IN LISTS includes)
+      string(REGEX REPLACE "^#include \"([^\"]+)\".*" "\\1" header "${line}")
+      if(NOT header MATCHES "/")
+        continue()  # a header beside the source
+      endif()
+      set(ok FALSE)
+      foreach(prefix "${layer}/" ${allowed_${key}})
+        string(FIND "${header}" "${prefix}" at)
+        if(at EQUAL 0)
+          set(ok TRUE)
+        endif()
+      endforeach()
+      if(NOT ok)
+        string(APPEND violations "  ${rel} includes \"${header}\"\n")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+if(violations)
+  message(FATAL_ERROR "includes that point up or sideways:\n${violations}")
+endif()
+message(STATUS "${checked} sources: every include points down")

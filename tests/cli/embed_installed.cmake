@@ -1,0 +1,68 @@
+# embed_installed.cmake - installs mdlc into a fresh prefix and builds
+# examples/embed_cmake against it, as a user of the installed library would,
+# with CMake (find_package) and with pkg-config; then runs the program.
+#   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -P embed_installed.cmake
+foreach(var BUILD_DIR SOURCE_DIR WORK_DIR)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "embed_installed.cmake needs -D${var}=...")
+  endif()
+endforeach()
+
+function(run what)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${what} failed (${rc}):\n${out}\n${err}")
+  endif()
+  set(run_output "${out}" PARENT_SCOPE)
+endfunction()
+
+file(REMOVE_RECURSE ${WORK_DIR})
+set(prefix ${WORK_DIR}/prefix)
+run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+foreach(installed include/mdlc/mdlc.h include/mdlc/version.h include/mdlc/ir/module.h
+                  include/mdlc/backend/plant.h bin/mdlc)
+  if(NOT EXISTS ${prefix}/${installed})
+    message(FATAL_ERROR "not installed: ${installed}")
+  endif()
+endforeach()
+if(EXISTS ${prefix}/include/mdlc/frontend OR EXISTS ${prefix}/include/mdlc/passes)
+  message(FATAL_ERROR "internal headers (frontend/, passes/) were installed")
+endif()
+
+# the installed command reports the generated version
+run("mdlc --version" ${prefix}/bin/mdlc --version)
+if(NOT run_output MATCHES "^mdlc [0-9]+\\.[0-9]+\\.[0-9]+")
+  message(FATAL_ERROR "unexpected mdlc --version output: ${run_output}")
+endif()
+
+# CMake: find_package(mdlc) from the prefix only
+run("configure examples/embed_cmake" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/embed_cmake
+    -B ${WORK_DIR}/build -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
+run("build examples/embed_cmake" ${CMAKE_COMMAND} --build ${WORK_DIR}/build)
+run("embed" ${WORK_DIR}/build/embed ${SOURCE_DIR}/examples/urdf/double_pendulum.urdf)
+foreach(expected "double_pendulum\\.urdf: bodies 3, positions 2" "generated\\.urdf: bodies 1, positions 1"
+                 "mass matrix at the default configuration \\(2 x 2\\)")
+  if(NOT run_output MATCHES "${expected}")
+    message(FATAL_ERROR "embed output lacks '${expected}':\n${run_output}")
+  endif()
+endforeach()
+message(STATUS "find_package(mdlc): built and ran examples/embed_cmake")
+
+# pkg-config: the same program, compiled with the flags mdlc.pc gives
+find_program(PKG_CONFIG pkg-config)
+find_program(CXX NAMES c++ g++ clang++)
+if(PKG_CONFIG AND CXX)
+  file(GLOB pc_dirs ${prefix}/lib*/pkgconfig ${prefix}/lib/*/pkgconfig)
+  set(ENV{PKG_CONFIG_PATH} "${pc_dirs}")
+  run("pkg-config" ${PKG_CONFIG} --cflags --libs mdlc)
+  string(STRIP "${run_output}" flags)
+  separate_arguments(flags UNIX_COMMAND "${flags}")
+  run("compile with pkg-config flags" ${CXX} -std=c++20 ${SOURCE_DIR}/examples/embed_cmake/embed.cc
+      ${flags} -o ${WORK_DIR}/embed_pc)
+  run("embed (pkg-config)" ${WORK_DIR}/embed_pc ${SOURCE_DIR}/examples/urdf/double_pendulum.urdf)
+  if(NOT run_output MATCHES "double_pendulum\\.urdf: bodies 3")
+    message(FATAL_ERROR "pkg-config build printed:\n${run_output}")
+  endif()
+  message(STATUS "pkg-config mdlc: built and ran examples/embed_cmake/embed.cc")
+endif()
+file(REMOVE_RECURSE ${WORK_DIR})

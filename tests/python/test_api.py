@@ -1,0 +1,190 @@
+"""The Python module mdlc (issue 13): compile from paths and text, the model's
+objects as numpy arrays, evaluation at q, and diagnostics as exceptions.
+
+Run by ctest (python/api) with the built package on PYTHONPATH; models come
+from examples/ and from text written here, so nothing outside the repository
+is needed.
+"""
+
+import json
+import math
+import os
+import pathlib
+import tempfile
+import unittest
+
+import numpy as np
+
+import mdlc
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+EXAMPLES = ROOT / "examples"
+
+PENDULUM = """<?xml version="1.0"?>
+<robot name="pendulum">
+  <link name="world"/>
+  <link name="arm">
+    <inertial><origin xyz="0 0 -0.5"/><mass value="2"/>
+      <inertia ixx="0.1" iyy="0.1" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><geometry><box size="0.1 0.1 1"/></geometry></collision>
+  </link>
+  <joint name="shoulder" type="revolute">
+    <parent link="world"/><child link="arm"/><axis xyz="0 1 0"/>
+    <limit lower="-2" upper="2" effort="10" velocity="5"/>
+  </joint>
+</robot>
+"""
+
+
+class CompileFromPathAndText(unittest.TestCase):
+    def test_path_gives_bodies_joints_and_numpy_values(self):
+        model = mdlc.compile(str(EXAMPLES / "urdf/double_pendulum.urdf"))
+        self.assertEqual(model.bodies[0].name, "world")
+        self.assertTrue(model.bodies[0].is_world)
+        names = [b.name for b in model.bodies[1:]]
+        self.assertEqual(len(names), 3)
+        for body in model.bodies:
+            self.assertIsInstance(body.com, np.ndarray)
+            self.assertEqual(body.com.shape, (3,))
+            self.assertEqual(body.inertia.shape, (3, 3))
+            np.testing.assert_array_equal(body.inertia, body.inertia.T)
+        self.assertEqual(model.num_velocities, 2)
+        self.assertEqual({j.type for j in model.joints} & {"revolute"}, {"revolute"})
+
+    def test_pathlike_is_a_path(self):
+        model = mdlc.compile(EXAMPLES / "urdf/double_pendulum.urdf")
+        self.assertEqual(model.num_positions, 2)
+
+    def test_text_needs_a_format_or_a_name(self):
+        with self.assertRaises(ValueError):
+            mdlc.compile(PENDULUM)
+        by_format = mdlc.compile(PENDULUM, format="urdf")
+        by_name = mdlc.compile(PENDULUM, name="pendulum.urdf")
+        self.assertEqual(by_format.to_json(), by_name.to_json())
+
+    def test_text_and_file_give_byte_identical_plant_json(self):
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "pendulum.urdf")
+            with open(path, "w") as f:
+                f.write(PENDULUM)
+            from_file = mdlc.compile(path)
+            from_text = mdlc.compile(PENDULUM, name=path)
+            self.assertEqual(from_file.to_json(), from_text.to_json())
+
+    def test_several_inputs_make_one_plant(self):
+        model = mdlc.compile([PENDULUM], format="urdf")
+        two = mdlc.compile([str(EXAMPLES / "urdf/double_pendulum.urdf"),
+                            str(EXAMPLES / "urdf/scara_arm.urdf")])
+        self.assertEqual(len(two.model_instances), 4)
+        self.assertGreater(len(two.bodies), len(model.bodies))
+
+    def test_a_non_model_argument_is_a_type_error(self):
+        with self.assertRaises(TypeError):
+            mdlc.compile(42)
+
+
+class EvaluateThePlant(unittest.TestCase):
+    def setUp(self):
+        self.model = mdlc.compile(PENDULUM, format="urdf")
+
+    def test_mass_matrix_is_the_pendulum_inertia_about_the_axis(self):
+        M = self.model.mass_matrix()
+        self.assertEqual(M.shape, (1, 1))
+        # iyy about the center of mass plus m d^2 (parallel axes): 0.1 + 2 * 0.5^2
+        self.assertAlmostEqual(M[0, 0], 0.1 + 2 * 0.25, places=12)
+        np.testing.assert_array_equal(M, self.model.mass_matrix(self.model.default_positions()))
+
+    def test_body_poses_follow_q(self):
+        arm = next(b for b in self.model.bodies if b.name == "arm")
+        at_zero = self.model.body_poses()[arm.index]
+        turned = self.model.body_poses(np.array([math.pi / 2]))[arm.index]
+        np.testing.assert_allclose(at_zero.R, np.eye(3), atol=0)
+        np.testing.assert_allclose(turned.R @ np.array([1.0, 0, 0]), [0, 0, -1], atol=1e-15)
+        self.assertEqual(turned.matrix.shape, (4, 4))
+        np.testing.assert_array_equal(turned.matrix[:3, :3], turned.R)
+
+    def test_poses_agree_with_plant_json_at_the_same_q(self):
+        q = np.array([0.3])
+        dump = json.loads(self.model.to_json(q))
+        poses = self.model.body_poses(q)
+        for entry in dump["bodies"]:
+            body = next(b for b in self.model.bodies if b.name == entry["name"])
+            self.assertEqual(list(poses[body.index].p), entry["X_WB"]["p"])
+            self.assertEqual(list(poses[body.index].q), entry["X_WB"]["q"])
+
+    def test_wrong_q_size_is_a_value_error(self):
+        with self.assertRaises(ValueError):
+            self.model.mass_matrix(np.zeros(3))
+
+    def test_joint_positions_set_the_default_configuration(self):
+        model = mdlc.compile(PENDULUM, format="urdf", joint_positions={"shoulder": 0.25})
+        np.testing.assert_array_equal(model.default_positions(), [0.25])
+        with self.assertRaises(mdlc.CompileError):
+            mdlc.compile(PENDULUM, format="urdf", joint_positions={"elbow": 1})
+
+    def test_geometry_and_joint_details(self):
+        (geometry,) = self.model.geometries
+        self.assertEqual(geometry.shape, "box")
+        np.testing.assert_array_equal(geometry.shape_parameters["size"], [0.1, 0.1, 1])
+        self.assertEqual(geometry.roles, ["proximity"])
+        self.assertEqual(geometry.body, "pendulum::arm")
+        (joint,) = self.model.joints
+        self.assertEqual((joint.parent, joint.child), ("world", "pendulum::arm"))
+        np.testing.assert_array_equal(joint.axis, [0, 1, 0])
+        np.testing.assert_array_equal(joint.lower, [-2])
+
+
+class Diagnostics(unittest.TestCase):
+    def test_errors_raise_with_every_located_diagnostic(self):
+        broken = PENDULUM.replace('<child link="arm"/>', '<child link="hand"/>')
+        with self.assertRaises(mdlc.CompileError) as caught:
+            mdlc.compile(broken, name="broken.urdf")
+        errors = [d for d in caught.exception.diagnostics if d.severity == "error"]
+        self.assertTrue(errors)
+        first = errors[0]
+        self.assertEqual(first.file, "broken.urdf")
+        self.assertEqual(first.line, 10)  # the <child> naming it
+        self.assertGreater(first.column, 0)
+        self.assertIn("hand", first.message)
+        self.assertTrue(first.group)
+        self.assertIn("broken.urdf:10:", str(caught.exception))
+
+    def test_warnings_are_returned_or_raised_when_strict(self):
+        noisy = PENDULUM.replace("<link name=\"arm\">", "<link name=\"arm\"><bogus/>")
+        model = mdlc.compile(noisy, format="urdf")
+        warnings = [d for d in model.diagnostics if d.severity == "warning"]
+        self.assertEqual(len(warnings), 1)
+        self.assertIn("bogus", warnings[0].message)
+        group = warnings[0].group
+        with self.assertRaises(mdlc.CompileError) as caught:
+            mdlc.compile(noisy, format="urdf", strict=True)
+        self.assertEqual(caught.exception.diagnostics[0].severity, "error")
+        quiet = mdlc.compile(noisy, format="urdf", disabled_warnings=[group])
+        self.assertEqual(list(quiet.diagnostics), [])
+        with self.assertRaises(mdlc.CompileError):
+            mdlc.compile(noisy, format="urdf", error_warnings=[group])
+
+    def test_missing_file_is_a_compile_error(self):
+        with self.assertRaises(mdlc.CompileError) as caught:
+            mdlc.compile("no/such/robot.urdf")
+        self.assertIn("no/such/robot.urdf", caught.exception.diagnostics[0].message)
+
+
+class Packages(unittest.TestCase):
+    def test_package_paths_resolve_a_directives_scene(self):
+        scene = EXAMPLES / "directives/handover_cell.dmd.yaml"
+        with self.assertRaises(mdlc.CompileError):
+            mdlc.compile(scene)
+        model = mdlc.compile(scene, package_paths=[EXAMPLES], strict=True)
+        self.assertGreater(len(model.model_instances), 3)
+        by_map = mdlc.compile(scene, packages={"mdlc_examples": str(EXAMPLES)})
+        self.assertEqual(model.to_json(), by_map.to_json())
+
+
+class Version(unittest.TestCase):
+    def test_version_is_the_librarys(self):
+        self.assertRegex(mdlc.__version__, r"^\d+\.\d+\.\d+$")
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,202 @@
+// The public API, mdlc::Compile (mdlc/mdlc.h): files and text in memory,
+// every option the command line has, and the Result's evaluations.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "mdlc/mdlc.h"
+
+namespace mdlc {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kExamples = MDLC_EXAMPLES_DIR;
+
+std::string ReadFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream out;
+  out << in.rdbuf();
+  return out.str();
+}
+
+constexpr const char* kPendulum = R"(<?xml version="1.0"?>
+<robot name="pendulum">
+  <link name="world"/>
+  <link name="arm">
+    <inertial><origin xyz="0 0 -0.5"/><mass value="2"/>
+      <inertia ixx="0.1" iyy="0.1" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+  </link>
+  <joint name="shoulder" type="revolute">
+    <parent link="world"/><child link="arm"/><axis xyz="0 1 0"/>
+  </joint>
+</robot>
+)";
+
+// The text of a model file, compiled from memory under the file's own name,
+// gives the same plant-json, byte for byte, as the file (every format).
+class TextEqualsFile : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(TextEqualsFile, PlantJsonIsByteIdentical) {
+  const fs::path path = kExamples / GetParam();
+  Options options;
+  options.package_paths = {kExamples.string()};  // the directives scene's package
+  const Result from_file = Compile(Input::File(path.string()), options);
+  const Result from_text = Compile(Input::Text(ReadFile(path), path.string()), options);
+  ASSERT_TRUE(from_file.ok());
+  ASSERT_TRUE(from_text.ok());
+  const std::string file_json = from_file.PlantJson(from_file.DefaultPositions());
+  EXPECT_EQ(from_text.PlantJson(from_text.DefaultPositions()), file_json);
+  EXPECT_GT(file_json.size(), 100u);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryFormat, TextEqualsFile,
+                         ::testing::Values("urdf/double_pendulum.urdf", "sdf/workcell.sdf",
+                                           "mjcf/arm_with_gripper.xml",
+                                           "directives/handover_cell.dmd.yaml"));
+
+TEST(CompileApi, TextTakesItsFormatFromTheArgumentOrTheName) {
+  EXPECT_TRUE(Compile(Input::Text(kPendulum, "generated", Format::Urdf)).ok());
+  EXPECT_TRUE(Compile(Input::Text(kPendulum, "generated.urdf")).ok());
+  const Result unknown = Compile(Input::Text(kPendulum, "generated"));
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_EQ(unknown.diagnostics()[0].kind, DiagKind::UnknownFormat);
+  EXPECT_NE(unknown.diagnostics()[0].message.find("generated"), std::string::npos);
+}
+
+TEST(CompileApi, AFileReadAsAnotherFormatThanItsExtension) {
+  const fs::path dir = fs::temp_directory_path() / "mdlc_compile_api_format";
+  fs::create_directories(dir);
+  const fs::path path = dir / "pendulum.txt";
+  std::ofstream(path) << kPendulum;
+  EXPECT_FALSE(Compile(Input::File(path.string())).ok());  // .txt: unknown
+  EXPECT_TRUE(Compile(Input::File(path.string(), Format::Urdf)).ok());
+  fs::remove_all(dir);
+}
+
+TEST(CompileApi, DiagnosticsAreLocatedInTheNamedText) {
+  std::string broken = kPendulum;
+  broken.replace(broken.find("<child link=\"arm\"/>"), 19, "<child link=\"hand\"/>");
+  const Result r = Compile(Input::Text(broken, "gen/broken.urdf"));
+  ASSERT_FALSE(r.ok());
+  ASSERT_GE(r.error_count(), 1u);
+  const Diagnostic& d = r.diagnostics()[0];
+  EXPECT_EQ(r.sources().Path(d.loc.file), "gen/broken.urdf");
+  EXPECT_EQ(d.loc.line, 9u);  // the <child> naming it
+  EXPECT_NE(r.FormatText(d).find("gen/broken.urdf:9:"), std::string::npos);
+  EXPECT_NE(r.FormatJson(d).find("\"line\""), std::string::npos);
+  EXPECT_FALSE(r.has_model());
+  EXPECT_THROW(r.plant(), std::logic_error);
+}
+
+std::string WithUnknownElement() {
+  std::string text = kPendulum;
+  text.replace(text.find("<link name=\"arm\">"), 17, "<link name=\"arm\"><bogus/>");
+  return text;
+}
+
+TEST(CompileApi, StrictnessAndWarningGroups) {
+  const Input noisy = Input::Text(WithUnknownElement(), "noisy.urdf");
+  const Result lenient = Compile(noisy);
+  EXPECT_TRUE(lenient.ok());
+  EXPECT_EQ(lenient.warning_count(), 1u);
+
+  Options strict;
+  strict.diagnostics.warnings_as_errors = true;
+  EXPECT_FALSE(Compile(noisy, strict).ok());
+
+  Options silenced;
+  silenced.diagnostics.disabled_groups = {"unknown"};
+  const Result quiet = Compile(noisy, silenced);
+  EXPECT_TRUE(quiet.ok());
+  EXPECT_TRUE(quiet.diagnostics().empty());
+
+  Options promoted;
+  promoted.diagnostics.error_groups = {"unknown"};
+  EXPECT_FALSE(Compile(noisy, promoted).ok());
+}
+
+TEST(CompileApi, DiagnosticsStreamToACallbackWhenOneIsGiven) {
+  std::vector<std::string> seen;
+  Options options;
+  options.on_diagnostic = [&](const Diagnostic& d, const SourceManager& sources) {
+    seen.push_back(FormatDiagnosticText(d, sources));
+  };
+  const Result r = Compile(Input::Text(WithUnknownElement(), "noisy.urdf"), options);
+  EXPECT_TRUE(r.ok());
+  ASSERT_EQ(seen.size(), 1u);
+  EXPECT_NE(seen[0].find("noisy.urdf:4:"), std::string::npos);
+  EXPECT_TRUE(r.diagnostics().empty());  // the callback took it
+}
+
+TEST(CompileApi, JointPositionsSetTheDefaultConfiguration) {
+  Options options;
+  options.joint_positions = {{"shoulder", 0.5}};
+  const Result r = Compile(Input::Text(kPendulum, "p.urdf"), options);
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(r.DefaultPositions(), Eigen::VectorXd::Constant(1, 0.5));
+  Eigen::VectorXd q = r.DefaultPositions();
+  EXPECT_TRUE(r.SetJointPosition(q, "pendulum::shoulder", -1));
+  EXPECT_FALSE(r.SetJointPosition(q, "elbow", 1));
+  EXPECT_EQ(q[0], -1);
+
+  options.joint_positions = {{"elbow", 1}};
+  const Result unknown = Compile(Input::Text(kPendulum, "p.urdf"), options);
+  EXPECT_FALSE(unknown.ok());
+  EXPECT_NE(unknown.diagnostics().back().message.find("'elbow'"), std::string::npos);
+}
+
+TEST(CompileApi, MassMatrixAndBodyPosesAreMethods) {
+  const Result r = Compile(Input::Text(kPendulum, "p.urdf"));
+  ASSERT_TRUE(r.ok());
+  // iyy about the center of mass plus m d^2
+  EXPECT_NEAR(r.MassMatrix(r.DefaultPositions())(0, 0), 0.1 + 2 * 0.25, 1e-15);
+  const std::vector<Transform> X_WB = r.BodyPoses(Eigen::VectorXd::Constant(1, M_PI / 2));
+  ASSERT_EQ(X_WB.size(), r.plant().bodies.size());
+  EXPECT_THROW(r.MassMatrix(Eigen::VectorXd::Zero(3)), std::invalid_argument);
+}
+
+TEST(CompileApi, NamingAndPipelineOptions) {
+  Options options;
+  options.model_name = "renamed";
+  const Result r = Compile(Input::Text(kPendulum, "p.urdf"), options);
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(r.plant().model_instances.back(), "renamed");
+
+  Options twice;
+  twice.auto_rename = true;
+  const Result both = Compile({Input::Text(kPendulum, "a.urdf"), Input::Text(kPendulum, "b.urdf")},
+                              twice);
+  ASSERT_TRUE(both.ok());
+  EXPECT_EQ(both.plant().model_instances.back(), "pendulum_1");
+
+  Options ir_only;
+  ir_only.skip_backend = true;
+  ir_only.time_passes = true;
+  const Result ir = Compile(Input::Text(kPendulum, "p.urdf"), ir_only);
+  EXPECT_TRUE(ir.ok());
+  EXPECT_FALSE(ir.has_model());
+  EXPECT_EQ(ir.module().bodies.size(), 2u);  // world, arm
+  EXPECT_FALSE(ir.timing_report().empty());
+
+  Options unknown_pass;
+  unknown_pass.passes = {"no-such-pass"};
+  EXPECT_FALSE(Compile(Input::Text(kPendulum, "p.urdf"), unknown_pass).ok());
+}
+
+TEST(CompileApi, ResultsMoveAndOutliveTheirInputs) {
+  Result r = [] {
+    const std::string text = kPendulum;  // gone when the lambda returns
+    return Compile(Input::Text(text, "p.urdf"));
+  }();
+  Result moved = std::move(r);
+  ASSERT_TRUE(moved.ok());
+  EXPECT_EQ(moved.plant().bodies.size(), 2u);  // world, arm
+  EXPECT_EQ(kVersion, MDLC_VERSION_STRING);
+}
+
+}  // namespace
+}  // namespace mdlc

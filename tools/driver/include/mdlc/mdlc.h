@@ -1,0 +1,164 @@
+// mdlc/mdlc.h - mdlc as a library: compile robot models (URDF, SDFormat,
+// MJCF, Drake Model Directives, with Drake's extensions), from files or from
+// text in memory, into a multibody plant, its scene graph and cameras.
+//
+//   mdlc::Result r = mdlc::Compile(mdlc::Input::File("robot.urdf"));
+//   for (const mdlc::Diagnostic& d : r.diagnostics()) std::cerr << r.FormatText(d);
+//   if (!r.ok()) return 1;
+//   Eigen::VectorXd q = r.DefaultPositions();
+//   Eigen::MatrixXd M = r.MassMatrix(q);
+//   std::vector<mdlc::Transform> X_WB = r.BodyPoses(q);  // indexed by BodyId
+//
+// Everything a compile makes stays in its Result: the source buffers (which
+// diagnostics point into), the IR module and the compiled model. The plant
+// and scene graph are plain data (backend/plant.h, backend/scene_graph.h).
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "backend/compiled_model.h"
+#include "backend/plant_json.h"
+#include "ir/diagnostics.h"
+#include "ir/format.h"
+#include "ir/module.h"
+#include "ir/source_manager.h"
+#include "ir/transform.h"
+#include "mdlc/version.h"
+
+namespace mdlc {
+
+class Compilation;
+
+/// One model to compile: a file, or text held in memory.
+struct Input {
+  /// The file to read; for text, its name, which diagnostics print and which
+  /// relative paths in the model (meshes, includes) are resolved against:
+  /// text named "robots/arm.urdf" finds "meshes/a.obj" in "robots/meshes/".
+  std::string path;
+  /// The model's text; unset: read `path`.
+  std::optional<std::string> text;
+  /// Unset: taken from the extension of `path` (.urdf, .sdf, .xml, .dmd.yaml).
+  std::optional<Format> format;
+
+  static Input File(std::string path, std::optional<Format> format = {});
+  static Input Text(std::string text, std::string name, std::optional<Format> format = {});
+};
+
+/// Everything the `mdlc compile` command line can ask for.
+struct Options {
+  // -- packages, for package:// and model:// URIs, looked up in this order
+  /// Explicit NAME -> DIR definitions (`--package NAME=DIR`).
+  std::vector<std::pair<std::string, std::string>> packages;
+  /// Folders searched for package.xml files (`--package-path DIR`).
+  std::vector<std::string> package_paths;
+  /// Also search the folders of the ROS_PACKAGE_PATH environment variable
+  /// (the command line does; a library reads the environment only if asked).
+  bool use_ros_package_path = false;
+
+  // -- diagnostics
+  /// Strictness and warning groups: warnings_as_errors (`--strict`,
+  /// `-Werror`), disabled_groups (`-Wno-GROUP`), error_groups
+  /// (`-Werror=GROUP`), max_errors (`--max-errors`).
+  DiagnosticPolicy diagnostics;
+  /// Called with each diagnostic as it is reported. Unset: the Result keeps
+  /// them (Result::diagnostics()). Either way Result::ok() tells the outcome.
+  std::function<void(const Diagnostic&, const SourceManager&)> on_diagnostic;
+
+  // -- naming
+  /// Name the (single) model instance this instead of the name in the file.
+  std::optional<std::string> model_name;
+  /// On an instance-name collision, pick NAME_1, NAME_2, ... instead of failing.
+  bool auto_rename = false;
+
+  // -- joint positions
+  /// Positions of 1-dof joints by scoped or unambiguous local name (`--q`),
+  /// applied by Result::DefaultPositions; an unknown name is an error.
+  std::vector<std::pair<std::string, double>> joint_positions;
+
+  // -- the pipeline
+  /// Pass names to run instead of the default pipeline (`--passes`).
+  std::vector<std::string> passes;
+  /// Print the IR after these passes / after every pass, to `print_sink`
+  /// (default: standard error).
+  std::vector<std::string> print_after;
+  bool print_after_all = false;
+  std::function<void(std::string_view)> print_sink;
+  /// Time each pass (Result::timing_report) / verify the IR after each pass.
+  bool time_passes = false;
+  bool verify_each = false;
+  /// Stop after the passes: the IR module only, no plant (`--emit=ir`).
+  bool skip_backend = false;
+};
+
+/// What a compile made. Move-only; owns everything it refers to.
+class Result {
+ public:
+  Result(Result&&) noexcept;
+  Result& operator=(Result&&) noexcept;
+  ~Result();
+
+  /// True when no error was reported (warnings are fine, unless promoted).
+  bool ok() const;
+  /// Every diagnostic, in report order (empty when Options::on_diagnostic
+  /// took them as they came).
+  const std::vector<Diagnostic>& diagnostics() const;
+  size_t error_count() const;
+  size_t warning_count() const;
+  /// `file:line:col: severity: message [-Wgroup]` with the source line, and
+  /// the one-line JSON form (`--diagnostics-format=json`).
+  std::string FormatText(const Diagnostic& diagnostic, bool color = false) const;
+  std::string FormatJson(const Diagnostic& diagnostic) const;
+
+  const SourceManager& sources() const;
+  /// The IR after the passes (as far as they got when !ok()).
+  const ir::Module& module() const;
+
+  /// The plant, scene graph and cameras; only when has_model() (ok() and not
+  /// Options::skip_backend). The accessors throw std::logic_error otherwise.
+  bool has_model() const;
+  const backend::CompiledModel& model() const;
+  const backend::Plant& plant() const { return model().plant; }
+  const backend::SceneGraph& scene_graph() const { return model().scene; }
+  const std::vector<backend::SceneCamera>& cameras() const { return model().scene.cameras; }
+
+  /// Each joint's default position, then Options::joint_positions.
+  Eigen::VectorXd DefaultPositions() const;
+  /// Sets 1-dof joint `name` (scoped, or local when unambiguous) in q;
+  /// false when there is no such joint.
+  bool SetJointPosition(Eigen::VectorXd& q, std::string_view name, double value) const;
+  /// The nv x nv mass matrix at q (size num_positions; else
+  /// std::invalid_argument), rows and columns in velocity order.
+  Eigen::MatrixXd MassMatrix(const Eigen::VectorXd& q) const;
+  /// X_WB of every body at q, indexed by BodyId (0 is the world).
+  std::vector<Transform> BodyPoses(const Eigen::VectorXd& q) const;
+  /// The plant-json dump at q (the contract: shared/spec/plant-json.md).
+  std::string PlantJson(const Eigen::VectorXd& q,
+                        const backend::PlantJsonOptions& options = {}) const;
+
+  /// The --time-passes report (Options::time_passes).
+  const std::string& timing_report() const;
+
+ private:
+  friend Result Compile(const std::vector<Input>& inputs, const Options& options);
+  Result(std::unique_ptr<Compilation> compilation,
+         std::vector<std::pair<std::string, double>> joint_positions);
+
+  std::unique_ptr<Compilation> compilation_;
+  std::vector<std::pair<std::string, double>> joint_positions_;
+};
+
+/// Compiles the inputs into one plant, as `mdlc compile` does. Never throws
+/// for a bad model: problems are diagnostics, and ok() is false.
+Result Compile(const std::vector<Input>& inputs, const Options& options = {});
+inline Result Compile(const Input& input, const Options& options = {}) {
+  return Compile(std::vector<Input>{input}, options);
+}
+
+}  // namespace mdlc

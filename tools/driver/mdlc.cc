@@ -1,0 +1,137 @@
+// mdlc.cc - the public API (mdlc/mdlc.h) over a Compilation.
+#include "mdlc/mdlc.h"
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <stdexcept>
+
+#include "backend/kinematics.h"
+#include "backend/mass_matrix.h"
+#include "backend/positions.h"
+#include "tools/driver/compiler.h"
+
+namespace mdlc {
+
+Input Input::File(std::string path, std::optional<Format> format) {
+  return Input{std::move(path), std::nullopt, format};
+}
+
+Input Input::Text(std::string text, std::string name, std::optional<Format> format) {
+  return Input{std::move(name), std::move(text), format};
+}
+
+namespace {
+
+void DefinePackages(const Options& options, Compilation& c) {
+  for (const auto& [name, dir] : options.packages) c.packages.Add(name, dir, c.diags);
+  for (const std::string& dir : options.package_paths) {
+    c.packages.PopulateFromFolder(dir, c.sources, c.diags);
+  }
+  if (options.use_ros_package_path) {
+    if (const char* ros = std::getenv("ROS_PACKAGE_PATH")) {
+      c.packages.PopulateFromPathList(ros, c.sources, c.diags);
+    }
+  }
+}
+
+void CheckJointPositions(const Options& options, Compilation& c) {
+  if (!c.model) return;
+  Eigen::VectorXd q = backend::DefaultPositions(c.model->plant);
+  for (const auto& [name, value] : options.joint_positions) {
+    if (!backend::SetJointPositionByName(c.model->plant, q, name, value)) {
+      c.diags.Report(DiagKind::UnknownReference, {},
+                     fmt::format("no single-dof joint named '{}' to set the position of (use "
+                                 "the scoped name 'instance::joint' when a name is ambiguous)",
+                                 name));
+    }
+  }
+}
+
+}  // namespace
+
+Result Compile(const std::vector<Input>& inputs, const Options& options) {
+  auto c = std::make_unique<Compilation>(options.diagnostics);
+  if (options.on_diagnostic) {
+    c->diags.SetConsumer(
+        [&sources = c->sources, consumer = options.on_diagnostic](const Diagnostic& d) {
+          consumer(d, sources);
+        });
+  }
+  c->options.inputs = inputs;
+  c->options.frontend.model_name = options.model_name;
+  c->options.frontend.auto_rename = options.auto_rename;
+  c->options.pipeline = options.passes;
+  c->options.instrumentation.print_after.insert(options.print_after.begin(),
+                                                 options.print_after.end());
+  c->options.instrumentation.print_after_all = options.print_after_all;
+  c->options.instrumentation.print_sink = options.print_sink;
+  c->options.instrumentation.time_passes = options.time_passes;
+  c->options.instrumentation.verify_each = options.verify_each;
+  c->options.skip_backend = options.skip_backend;
+  DefinePackages(options, *c);
+  if (c->Run()) CheckJointPositions(options, *c);
+  return Result(std::move(c), options.joint_positions);
+}
+
+Result::Result(std::unique_ptr<Compilation> compilation,
+               std::vector<std::pair<std::string, double>> joint_positions)
+    : compilation_(std::move(compilation)), joint_positions_(std::move(joint_positions)) {}
+Result::Result(Result&&) noexcept = default;
+Result& Result::operator=(Result&&) noexcept = default;
+Result::~Result() = default;
+
+bool Result::ok() const { return !compilation_->diags.has_errors(); }
+const std::vector<Diagnostic>& Result::diagnostics() const {
+  return compilation_->diags.diagnostics();
+}
+size_t Result::error_count() const { return compilation_->diags.error_count(); }
+size_t Result::warning_count() const { return compilation_->diags.warning_count(); }
+
+std::string Result::FormatText(const Diagnostic& diagnostic, bool color) const {
+  return FormatDiagnosticText(diagnostic, compilation_->sources, color);
+}
+std::string Result::FormatJson(const Diagnostic& diagnostic) const {
+  return FormatDiagnosticJson(diagnostic, compilation_->sources);
+}
+
+const SourceManager& Result::sources() const { return compilation_->sources; }
+const ir::Module& Result::module() const { return compilation_->module; }
+
+bool Result::has_model() const { return compilation_->model.has_value() && ok(); }
+const backend::CompiledModel& Result::model() const {
+  if (!has_model()) {
+    throw std::logic_error(ok() ? "mdlc: the compile stopped before the backend (skip_backend)"
+                                : "mdlc: the compile failed; see diagnostics()");
+  }
+  return *compilation_->model;
+}
+
+Eigen::VectorXd Result::DefaultPositions() const {
+  Eigen::VectorXd q = backend::DefaultPositions(plant());
+  for (const auto& [name, value] : joint_positions_) {
+    backend::SetJointPositionByName(plant(), q, name, value);  // checked by Compile
+  }
+  return q;
+}
+
+bool Result::SetJointPosition(Eigen::VectorXd& q, std::string_view name, double value) const {
+  return backend::SetJointPositionByName(plant(), q, name, value);
+}
+
+Eigen::MatrixXd Result::MassMatrix(const Eigen::VectorXd& q) const {
+  return backend::CalcMassMatrix(plant(), q);
+}
+
+std::vector<Transform> Result::BodyPoses(const Eigen::VectorXd& q) const {
+  return backend::BodyPosesInWorld(plant(), q);
+}
+
+std::string Result::PlantJson(const Eigen::VectorXd& q,
+                              const backend::PlantJsonOptions& options) const {
+  return backend::EmitPlantJson(model(), q, options);
+}
+
+const std::string& Result::timing_report() const { return compilation_->timing_report(); }
+
+}  // namespace mdlc

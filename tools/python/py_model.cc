@@ -1,0 +1,344 @@
+// py_model.cc - builds the Python view of a compiled model (py_model.h) and
+// binds its classes.
+#include "py_model.h"
+
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include <variant>
+
+namespace mdlc::python {
+namespace py = pybind11;
+
+Eigen::Matrix4d Pose::matrix() const {
+  Eigen::Matrix4d X = Eigen::Matrix4d::Identity();
+  X.topLeftCorner<3, 3>() = R;
+  X.topRightCorner<3, 1>() = p;
+  return X;
+}
+
+Pose MakePose(const Transform& X) {
+  const Eigen::Quaterniond quat = CanonicalQuaternion(X.R);
+  return Pose{X.p, X.R, Eigen::Vector4d(quat.w(), quat.x(), quat.y(), quat.z())};
+}
+
+namespace {
+
+Eigen::VectorXd ToVector(const std::vector<double>& v) {
+  return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+}
+
+// plant-json's names: the world body is just "world", every other entity
+// "instance::local"
+class Names {
+ public:
+  explicit Names(const backend::Plant& plant) : plant_(plant) {}
+  const std::string& instance(ModelId id) const { return plant_.model_instances[id.index()]; }
+  const std::string& body(BodyId id) const { return plant_.body(id).scoped_name; }
+  const std::string& joint(JointId id) const { return plant_.joint(id).scoped_name; }
+
+ private:
+  const backend::Plant& plant_;
+};
+
+std::vector<std::string> RoleNames(uint8_t roles) {
+  std::vector<std::string> names;
+  if (roles & ir::kProximityRole) names.emplace_back("proximity");
+  if (roles & ir::kIllustrationRole) names.emplace_back("illustration");
+  if (roles & ir::kPerceptionRole) names.emplace_back("perception");
+  return names;
+}
+
+py::dict ShapeParameters(const ir::Shape& shape) {
+  py::dict d;
+  std::visit(
+      [&](const auto& s) {
+        using S = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<S, ir::Box>) {
+          d["size"] = Eigen::Vector3d(s.size);
+        } else if constexpr (std::is_same_v<S, ir::Sphere>) {
+          d["radius"] = s.radius;
+        } else if constexpr (std::is_same_v<S, ir::Cylinder> || std::is_same_v<S, ir::Capsule>) {
+          d["radius"] = s.radius;
+          d["length"] = s.length;
+        } else if constexpr (std::is_same_v<S, ir::Ellipsoid>) {
+          d["a"] = s.a;
+          d["b"] = s.b;
+          d["c"] = s.c;
+        } else if constexpr (std::is_same_v<S, ir::Mesh>) {
+          d["uri"] = s.uri;
+          d["path"] = s.resolved;
+          d["scale"] = Eigen::Vector3d(s.scale);
+        }
+      },
+      shape);
+  return d;
+}
+
+py::dict Properties(const std::vector<ir::Property>& properties) {
+  py::dict d;
+  for (const ir::Property& p : properties) {
+    d[py::str(p.key)] = std::visit([](const auto& v) -> py::object { return py::cast(v); }, p.value);
+  }
+  return d;
+}
+
+Constraint MakeConstraint(const backend::PlantConstraint& c, const Names& names) {
+  Constraint out{std::string(ir::ConstraintTypeName(c.type)), names.instance(c.model), {}};
+  py::dict& d = out.parameters;
+  switch (c.type) {
+    case ir::ConstraintType::Coupler:
+      d["joint0"] = names.joint(c.joint0);
+      d["joint1"] = names.joint(c.joint1);
+      d["gear_ratio"] = c.gear_ratio;
+      d["offset"] = c.offset;
+      break;
+    case ir::ConstraintType::Ball:
+    case ir::ConstraintType::Distance:
+      d["body_A"] = names.body(c.body_A);
+      d["body_B"] = names.body(c.body_B);
+      d["p_AP"] = Eigen::Vector3d(c.X_AP.p);
+      d["p_BQ"] = Eigen::Vector3d(c.X_BQ.p);
+      if (c.type == ir::ConstraintType::Distance) {
+        d["distance"] = c.distance;
+        d["stiffness"] = c.stiffness;
+        d["damping"] = c.damping;
+      }
+      break;
+    case ir::ConstraintType::Weld:
+      d["body_A"] = names.body(c.body_A);
+      d["body_B"] = names.body(c.body_B);
+      d["X_AP"] = MakePose(c.X_AP);
+      d["X_BQ"] = MakePose(c.X_BQ);
+      break;
+    case ir::ConstraintType::Tendon: {
+      py::list joints;
+      for (JointId j : c.joints) joints.append(names.joint(j));
+      d["joints"] = joints;
+      d["a"] = ToVector(c.a);
+      d["offset"] = c.offset;
+      d["lower"] = c.lower;
+      d["upper"] = c.upper;
+      d["stiffness"] = c.stiffness;
+      d["damping"] = c.damping;
+      break;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+Model MakeModel(std::shared_ptr<const Result> result, py::list diagnostics) {
+  const backend::Plant& plant = result->plant();
+  const backend::SceneGraph& scene = result->scene_graph();
+  const Names names(plant);
+  Model m;
+  m.result = result;
+  m.diagnostics = std::move(diagnostics);
+  m.model_instances = plant.model_instances;
+  for (size_t i = 0; i < plant.bodies.size(); ++i) {
+    const backend::PlantBody& b = plant.bodies[i];
+    Body body{b.name, b.scoped_name, names.instance(b.model), b.mass, b.p_BoBcm_B, b.I_BBcm_B,
+              b.is_world, b.unnamed, std::nullopt, std::nullopt, static_cast<int>(i)};
+    if (b.parent.valid()) body.parent = names.body(b.parent);
+    if (b.inbound_joint.valid()) body.joint = names.joint(b.inbound_joint);
+    m.bodies.push_back(std::move(body));
+  }
+  for (const backend::PlantJoint& j : plant.joints) {
+    m.joints.push_back(Joint{j.name, j.scoped_name, names.instance(j.model),
+                             std::string(ir::JointTypeName(j.type)), names.body(j.parent),
+                             names.body(j.child), MakePose(j.X_PF), MakePose(j.X_CM), j.axis,
+                             ToVector(j.lower), ToVector(j.upper), ToVector(j.velocity_lower),
+                             ToVector(j.velocity_upper), ToVector(j.effort),
+                             ToVector(j.damping), ToVector(j.default_positions),
+                             j.screw_thread_pitch, j.unnamed, j.q_start, j.nq, j.v_start, j.nv});
+  }
+  for (const backend::PlantFrame& f : plant.frames) {
+    m.frames.push_back(
+        Frame{f.name, names.instance(f.model), names.body(f.body), MakePose(f.X_BF), f.unnamed});
+  }
+  for (const backend::SceneGeometry& g : scene.geometries) {
+    m.geometries.push_back(Geometry{g.name, names.instance(g.model), names.body(g.body),
+                                    MakePose(g.X_BG), RoleNames(g.roles),
+                                    std::string(ir::ShapeTypeName(g.shape)),
+                                    ShapeParameters(g.shape), Properties(g.properties),
+                                    g.unnamed});
+  }
+  for (const backend::PlantActuator& a : plant.actuators) {
+    m.actuators.push_back(Actuator{a.name, names.instance(a.model), names.joint(a.joint),
+                                   a.effort_limit, a.gear_ratio, a.rotor_inertia, a.kp, a.kd,
+                                   a.unnamed});
+  }
+  for (const backend::PlantConstraint& c : plant.constraints) {
+    m.constraints.push_back(MakeConstraint(c, names));
+  }
+  for (const backend::SceneCamera& c : scene.cameras) {
+    m.cameras.push_back(Camera{c.name, names.instance(c.model), names.body(c.body),
+                               MakePose(c.X_BC), c.width, c.height, c.fov_y, c.unnamed});
+  }
+  return m;
+}
+
+namespace {
+
+// q defaults to the model's default configuration
+Eigen::VectorXd PositionsOr(const Model& m, const std::optional<Eigen::VectorXd>& q) {
+  return q ? *q : m.result->DefaultPositions();
+}
+
+template <typename T>
+std::string Repr(const char* kind, const T& entity) {
+  return std::string("<mdlc.") + kind + " '" + entity.name + "'>";
+}
+
+}  // namespace
+
+void BindModel(py::module_& m) {
+  py::class_<Pose>(m, "Pose", "A pose X_AB: p (3), R (3x3), q = [w, x, y, z] (w >= 0)")
+      .def_readonly("p", &Pose::p)
+      .def_readonly("R", &Pose::R)
+      .def_readonly("q", &Pose::q)
+      .def_property_readonly("matrix", &Pose::matrix, "The 4x4 homogeneous transform")
+      .def("__repr__", [](const Pose& p) {
+        return "<mdlc.Pose p=[" + std::to_string(p.p.x()) + ", " + std::to_string(p.p.y()) +
+               ", " + std::to_string(p.p.z()) + "]>";
+      });
+
+  py::class_<Body>(m, "Body")
+      .def_readonly("name", &Body::name)
+      .def_readonly("scoped_name", &Body::scoped_name)
+      .def_readonly("model_instance", &Body::model_instance)
+      .def_readonly("mass", &Body::mass)
+      .def_readonly("com", &Body::com, "Center of mass in the body frame")
+      .def_readonly("inertia", &Body::inertia, "Rotational inertia about the center of mass, in B")
+      .def_readonly("is_world", &Body::is_world)
+      .def_readonly("unnamed", &Body::unnamed)
+      .def_readonly("parent", &Body::parent)
+      .def_readonly("joint", &Body::joint, "The joint whose child this body is")
+      .def_readonly("index", &Body::index, "Its index in Model.bodies and body_poses()")
+      .def("__repr__", [](const Body& b) { return Repr("Body", b); });
+
+  py::class_<Joint>(m, "Joint")
+      .def_readonly("name", &Joint::name)
+      .def_readonly("scoped_name", &Joint::scoped_name)
+      .def_readonly("model_instance", &Joint::model_instance)
+      .def_readonly("type", &Joint::type)
+      .def_readonly("parent", &Joint::parent)
+      .def_readonly("child", &Joint::child)
+      .def_readonly("X_PF", &Joint::X_PF)
+      .def_readonly("X_CM", &Joint::X_CM)
+      .def_readonly("axis", &Joint::axis)
+      .def_readonly("lower", &Joint::lower)
+      .def_readonly("upper", &Joint::upper)
+      .def_readonly("velocity_lower", &Joint::velocity_lower)
+      .def_readonly("velocity_upper", &Joint::velocity_upper)
+      .def_readonly("effort", &Joint::effort)
+      .def_readonly("damping", &Joint::damping)
+      .def_readonly("default_positions", &Joint::default_positions)
+      .def_readonly("screw_thread_pitch", &Joint::screw_thread_pitch)
+      .def_readonly("unnamed", &Joint::unnamed)
+      .def_readonly("q_start", &Joint::q_start)
+      .def_readonly("nq", &Joint::nq)
+      .def_readonly("v_start", &Joint::v_start)
+      .def_readonly("nv", &Joint::nv)
+      .def("__repr__", [](const Joint& j) { return Repr("Joint", j); });
+
+  py::class_<Frame>(m, "Frame")
+      .def_readonly("name", &Frame::name)
+      .def_readonly("model_instance", &Frame::model_instance)
+      .def_readonly("body", &Frame::body)
+      .def_readonly("X_BF", &Frame::X_BF)
+      .def_readonly("unnamed", &Frame::unnamed)
+      .def("__repr__", [](const Frame& f) { return Repr("Frame", f); });
+
+  py::class_<Geometry>(m, "Geometry")
+      .def_readonly("name", &Geometry::name)
+      .def_readonly("model_instance", &Geometry::model_instance)
+      .def_readonly("body", &Geometry::body)
+      .def_readonly("X_BG", &Geometry::X_BG)
+      .def_readonly("roles", &Geometry::roles)
+      .def_readonly("shape", &Geometry::shape)
+      .def_readonly("shape_parameters", &Geometry::shape_parameters)
+      .def_readonly("properties", &Geometry::properties)
+      .def_readonly("unnamed", &Geometry::unnamed)
+      .def("__repr__", [](const Geometry& g) { return Repr("Geometry", g); });
+
+  py::class_<Actuator>(m, "Actuator")
+      .def_readonly("name", &Actuator::name)
+      .def_readonly("model_instance", &Actuator::model_instance)
+      .def_readonly("joint", &Actuator::joint)
+      .def_readonly("effort_limit", &Actuator::effort_limit)
+      .def_readonly("gear_ratio", &Actuator::gear_ratio)
+      .def_readonly("rotor_inertia", &Actuator::rotor_inertia)
+      .def_readonly("kp", &Actuator::kp)
+      .def_readonly("kd", &Actuator::kd)
+      .def_readonly("unnamed", &Actuator::unnamed)
+      .def("__repr__", [](const Actuator& a) { return Repr("Actuator", a); });
+
+  py::class_<Constraint>(m, "Constraint")
+      .def_readonly("type", &Constraint::type)
+      .def_readonly("model_instance", &Constraint::model_instance)
+      .def_readonly("parameters", &Constraint::parameters)
+      .def("__repr__", [](const Constraint& c) { return "<mdlc.Constraint " + c.type + ">"; });
+
+  py::class_<Camera>(m, "Camera")
+      .def_readonly("name", &Camera::name)
+      .def_readonly("model_instance", &Camera::model_instance)
+      .def_readonly("body", &Camera::body)
+      .def_readonly("X_BC", &Camera::X_BC)
+      .def_readonly("width", &Camera::width)
+      .def_readonly("height", &Camera::height)
+      .def_readonly("fov_y", &Camera::fov_y)
+      .def_readonly("unnamed", &Camera::unnamed)
+      .def("__repr__", [](const Camera& c) { return Repr("Camera", c); });
+
+  py::class_<Model>(m, "Model", "A compiled model: the plant, its scene graph and cameras")
+      .def_readonly("model_instances", &Model::model_instances)
+      .def_readonly("bodies", &Model::bodies, "Every body, by index; bodies[0] is the world")
+      .def_readonly("joints", &Model::joints)
+      .def_readonly("frames", &Model::frames)
+      .def_readonly("geometries", &Model::geometries)
+      .def_readonly("actuators", &Model::actuators)
+      .def_readonly("constraints", &Model::constraints)
+      .def_readonly("cameras", &Model::cameras)
+      .def_readonly("diagnostics", &Model::diagnostics, "Warnings the compile reported")
+      .def_property_readonly("num_positions",
+                             [](const Model& m) { return m.result->plant().num_positions; })
+      .def_property_readonly("num_velocities",
+                             [](const Model& m) { return m.result->plant().num_velocities; })
+      .def_property_readonly(
+          "gravity", [](const Model& m) { return Eigen::Vector3d(m.result->plant().gravity); })
+      .def_property_readonly("time_step",
+                             [](const Model& m) { return m.result->plant().time_step; })
+      .def("default_positions", [](const Model& m) { return m.result->DefaultPositions(); },
+           "Each joint's default position (and the compile's joint_positions), in q order")
+      .def(
+          "mass_matrix",
+          [](const Model& m, const std::optional<Eigen::VectorXd>& q) {
+            return m.result->MassMatrix(PositionsOr(m, q));
+          },
+          py::arg("q") = py::none(),
+          "The nv x nv mass matrix M(q) (default: at default_positions())")
+      .def(
+          "body_poses",
+          [](const Model& m, const std::optional<Eigen::VectorXd>& q) {
+            std::vector<Pose> poses;
+            for (const Transform& X : m.result->BodyPoses(PositionsOr(m, q))) {
+              poses.push_back(MakePose(X));
+            }
+            return poses;
+          },
+          py::arg("q") = py::none(), "X_WB of every body at q, indexed like bodies")
+      .def(
+          "to_json",
+          [](const Model& m, const std::optional<Eigen::VectorXd>& q, bool full_mass_matrix) {
+            backend::PlantJsonOptions options;
+            options.force_mass_matrix = full_mass_matrix;
+            return m.result->PlantJson(PositionsOr(m, q), options);
+          },
+          py::arg("q") = py::none(), py::arg("full_mass_matrix") = false,
+          "plant-json (schema mdlc-plant/1) at q");
+}
+
+}  // namespace mdlc::python
