@@ -9,6 +9,7 @@
 #include "backend/inertia_scaled_gains.h"
 #include "backend/ref_check.h"
 #include "backend/topology.h"
+#include "ir/overloaded.h"
 
 namespace mdlc::backend {
 
@@ -122,22 +123,27 @@ class PlantBuilder {
 
   void AddForceElement(const ir::ForceElement& src) {
     CheckEntityModel(src.model, src.loc);
-    switch (src.type) {
-      case ir::ForceElementType::LinearBushingRpy:
-        plant_.force_elements.emplace_back(LinearBushingRpy{
-            FrameName(src.frame_A, src.loc), FrameName(src.frame_C, src.loc),
-            src.torque_stiffness, src.torque_damping, src.force_stiffness, src.force_damping});
-        break;
-      case ir::ForceElementType::LinearSpringDamper:
-        plant_.force_elements.emplace_back(LinearSpringDamper{
-            ResolveBody(src.body_A, src.loc), ResolveBody(src.body_B, src.loc), src.p_AP,
-            src.p_BQ, src.free_length, src.stiffness, src.damping});
-        break;
-      case ir::ForceElementType::JointSpring:
-        plant_.force_elements.emplace_back(
-            JointSpring{ResolveJoint(src.joint, src.loc), src.nominal, src.stiffness});
-        break;
-    }
+    plant_.force_elements.push_back(std::visit(
+        ir::Overloaded{
+            [&](const ir::LinearBushingRpy& k) -> ForceElement {
+              return LinearBushingRpy{FrameName(k.frame_A, src.loc), FrameName(k.frame_C, src.loc),
+                                      k.torque_stiffness, k.torque_damping, k.force_stiffness,
+                                      k.force_damping};
+            },
+            [&](const ir::LinearSpringDamper& k) -> ForceElement {
+              return LinearSpringDamper{ResolveBody(k.body_A, src.loc),
+                                        ResolveBody(k.body_B, src.loc),
+                                        k.p_AP,
+                                        k.p_BQ,
+                                        k.free_length,
+                                        k.stiffness,
+                                        k.damping};
+            },
+            [&](const ir::JointSpring& k) -> ForceElement {
+              return JointSpring{ResolveJoint(k.joint, src.loc), k.nominal, k.stiffness};
+            },
+        },
+        src.payload));
   }
 
   void AddFrame(const ir::Frame& src) {
@@ -233,42 +239,43 @@ class PlantBuilder {
 
   void AddConstraint(const ir::Constraint& src) {
     CheckEntityModel(src.model, src.loc);
-    PlantConstraint& c = plant_.constraints.emplace_back();
-    c.model = src.model;
-    c.type = src.type;
-    switch (src.type) {
-      case ir::ConstraintType::Coupler:
-        c.joint0 = ResolveJoint(src.joint0, src.loc);
-        c.joint1 = ResolveJoint(src.joint1, src.loc);
-        break;
-      case ir::ConstraintType::Ball:
-      case ir::ConstraintType::Distance:
-      case ir::ConstraintType::Weld:
-        c.body_A = ResolveBody(src.body_A, src.loc);
-        c.body_B = ResolveBody(src.body_B, src.loc);
-        break;
-      case ir::ConstraintType::Tendon:
-        for (const ir::Ref<JointId>& ref : src.joints) {
-          c.joints.push_back(ResolveJoint(ref, src.loc));
-        }
-        if (src.a.size() != src.joints.size()) {
-          diags_.Report(DiagKind::BadValue, src.loc,
-                        fmt::format("tendon constraint has {} joints but {} coefficients",
-                                    src.joints.size(), src.a.size()));
-          Fail();
-        }
-        break;
-    }
-    c.gear_ratio = src.gear_ratio;
-    c.offset = src.offset;
-    c.X_AP = src.X_AP;
-    c.X_BQ = src.X_BQ;
-    c.distance = src.distance;
-    c.stiffness = src.stiffness;
-    c.damping = src.damping;
-    c.a = src.a;
-    c.lower = src.lower;
-    c.upper = src.upper;
+    auto body = [&](const ir::Ref<BodyId>& ref) { return ResolveBody(ref, src.loc); };
+    auto joint = [&](const ir::Ref<JointId>& ref) { return ResolveJoint(ref, src.loc); };
+    ConstraintPayload payload = std::visit(
+        ir::Overloaded{
+            [&](const ir::CouplerConstraint& k) -> ConstraintPayload {
+              return CouplerConstraint{joint(k.joint0), joint(k.joint1), k.gear_ratio, k.offset};
+            },
+            [&](const ir::BallConstraint& k) -> ConstraintPayload {
+              return BallConstraint{body(k.body_A), body(k.body_B), k.p_AP, k.p_BQ};
+            },
+            [&](const ir::DistanceConstraint& k) -> ConstraintPayload {
+              return DistanceConstraint{body(k.body_A), body(k.body_B), k.p_AP,     k.p_BQ,
+                                        k.distance,     k.stiffness,    k.damping};
+            },
+            [&](const ir::WeldConstraint& k) -> ConstraintPayload {
+              return WeldConstraint{body(k.body_A), body(k.body_B), k.X_AP, k.X_BQ};
+            },
+            [&](const ir::TendonConstraint& k) -> ConstraintPayload {
+              TendonConstraint out;
+              for (const ir::Ref<JointId>& ref : k.joints) out.joints.push_back(joint(ref));
+              if (k.a.size() != k.joints.size()) {
+                diags_.Report(DiagKind::BadValue, src.loc,
+                              fmt::format("tendon constraint has {} joints but {} coefficients",
+                                          k.joints.size(), k.a.size()));
+                Fail();
+              }
+              out.a = k.a;
+              out.offset = k.offset;
+              out.lower = k.lower;
+              out.upper = k.upper;
+              out.stiffness = k.stiffness;
+              out.damping = k.damping;
+              return out;
+            },
+        },
+        src.payload);
+    plant_.constraints.push_back({src.model, std::move(payload)});
   }
 
   const ir::Module& m_;

@@ -91,23 +91,40 @@ struct PlantActuator {
   bool unnamed = false;  // named by the compiler
 };
 
-/// The IR constraint with its references resolved to ids. Which fields are
-/// meaningful depends on `type` (see ir::Constraint).
+// Constraints: the IR's (ir::CouplerConstraint, ...) with references
+// resolved to ids.
+struct CouplerConstraint {  // q0 = gear_ratio * q1 + offset (joint0 follows)
+  JointId joint0, joint1;
+  double gear_ratio = 1, offset = 0;
+};
+struct BallConstraint {  // P (on A) and Q (on B) coincide
+  BodyId body_A, body_B;
+  Eigen::Vector3d p_AP = Eigen::Vector3d::Zero(), p_BQ = Eigen::Vector3d::Zero();
+};
+struct DistanceConstraint {  // |p_PQ| = distance
+  BodyId body_A, body_B;
+  Eigen::Vector3d p_AP = Eigen::Vector3d::Zero(), p_BQ = Eigen::Vector3d::Zero();
+  double distance = 0, stiffness = 0, damping = 0;
+};
+struct WeldConstraint {  // frames P (on A) and Q (on B) coincide
+  BodyId body_A, body_B;
+  Transform X_AP, X_BQ;
+};
+struct TendonConstraint {  // lower <= sum a_i q_i + offset <= upper
+  std::vector<JointId> joints;
+  std::vector<double> a;
+  double offset = 0, lower = 0, upper = 0, stiffness = 0, damping = 0;
+};
+/// Alternatives in the order of ir::ConstraintType.
+using ConstraintPayload = std::variant<CouplerConstraint, BallConstraint, DistanceConstraint,
+                                       WeldConstraint, TendonConstraint>;
 struct PlantConstraint {
   ModelId model;
-  ir::ConstraintType type = ir::ConstraintType::Coupler;
-  JointId joint0, joint1;  // coupler: q0 = gear_ratio * q1 + offset (joint0 follows)
-  double gear_ratio = 1, offset = 0;
-  BodyId body_A, body_B;  // ball, distance, weld
-  Transform X_AP, X_BQ;
-  double distance = 0, stiffness = 0, damping = 0;
-  std::vector<JointId> joints;  // tendon: lower <= sum a_i q_i + offset <= upper
-  std::vector<double> a;
-  double lower = 0, upper = 0;
+  ConstraintPayload payload;
+  ir::ConstraintType type() const { return static_cast<ir::ConstraintType>(payload.index()); }
 };
 
-// Force elements. The IR has none yet; the structures fix what the plant and
-// plant-json will carry once frontends produce them.
+// Force elements, with references resolved.
 struct LinearBushingRpy {
   std::string frameA, frameC;  // scoped frame names
   Eigen::Vector3d torque_stiffness = Eigen::Vector3d::Zero();

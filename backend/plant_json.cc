@@ -9,6 +9,7 @@
 #include "backend/json_writer.h"
 #include "backend/kinematics.h"
 #include "backend/mass_matrix.h"
+#include "ir/overloaded.h"
 
 namespace mdlc::backend {
 
@@ -297,52 +298,56 @@ class PlantJsonEmitter {
   }
 
   void Constraint(const PlantConstraint& c) {
-    using ir::ConstraintType;
     w_.BeginObject();
-    w_.Key("type").String(ir::ConstraintTypeName(c.type));
+    w_.Key("type").String(ir::ConstraintTypeName(c.type()));
     w_.Key("model_instance").String(Instance(c.model));
-    switch (c.type) {
-      case ConstraintType::Coupler:
-        w_.Key("joint0").String(JointName(c.joint0));
-        w_.Key("joint1").String(JointName(c.joint1));
-        w_.Key("gear_ratio").Number(c.gear_ratio);
-        w_.Key("offset").Number(c.offset);
-        break;
-      case ConstraintType::Ball:
-      case ConstraintType::Distance:
-        w_.Key("body_A").String(BodyName(c.body_A));
-        w_.Key("body_B").String(BodyName(c.body_B));
-        w_.Key("p_AP");
-        Vector(c.X_AP.p);
-        w_.Key("p_BQ");
-        Vector(c.X_BQ.p);
-        if (c.type == ConstraintType::Distance) {
-          w_.Key("distance").Number(c.distance);
-          w_.Key("stiffness").Number(c.stiffness);
-          w_.Key("damping").Number(c.damping);
-        }
-        break;
-      case ConstraintType::Weld:
-        w_.Key("body_A").String(BodyName(c.body_A));
-        w_.Key("body_B").String(BodyName(c.body_B));
-        w_.Key("X_AP");
-        Pose(c.X_AP);
-        w_.Key("X_BQ");
-        Pose(c.X_BQ);
-        break;
-      case ConstraintType::Tendon:
-        w_.Key("joints").BeginArray();
-        for (JointId j : c.joints) w_.String(JointName(j));
-        w_.EndArray();
-        w_.Key("a");
-        Numbers(c.a);
-        w_.Key("offset").Number(c.offset);
-        w_.Key("lower").Number(c.lower);
-        w_.Key("upper").Number(c.upper);
-        w_.Key("stiffness").Number(c.stiffness);
-        w_.Key("damping").Number(c.damping);
-        break;
-    }
+    auto bodies_and_points = [&](BodyId body_A, BodyId body_B, const Eigen::Vector3d& p_AP,
+                                 const Eigen::Vector3d& p_BQ) {
+      w_.Key("body_A").String(BodyName(body_A));
+      w_.Key("body_B").String(BodyName(body_B));
+      w_.Key("p_AP");
+      Vector(p_AP);
+      w_.Key("p_BQ");
+      Vector(p_BQ);
+    };
+    std::visit(ir::Overloaded{
+                   [&](const CouplerConstraint& k) {
+                     w_.Key("joint0").String(JointName(k.joint0));
+                     w_.Key("joint1").String(JointName(k.joint1));
+                     w_.Key("gear_ratio").Number(k.gear_ratio);
+                     w_.Key("offset").Number(k.offset);
+                   },
+                   [&](const BallConstraint& k) {
+                     bodies_and_points(k.body_A, k.body_B, k.p_AP, k.p_BQ);
+                   },
+                   [&](const DistanceConstraint& k) {
+                     bodies_and_points(k.body_A, k.body_B, k.p_AP, k.p_BQ);
+                     w_.Key("distance").Number(k.distance);
+                     w_.Key("stiffness").Number(k.stiffness);
+                     w_.Key("damping").Number(k.damping);
+                   },
+                   [&](const WeldConstraint& k) {
+                     w_.Key("body_A").String(BodyName(k.body_A));
+                     w_.Key("body_B").String(BodyName(k.body_B));
+                     w_.Key("X_AP");
+                     Pose(k.X_AP);
+                     w_.Key("X_BQ");
+                     Pose(k.X_BQ);
+                   },
+                   [&](const TendonConstraint& k) {
+                     w_.Key("joints").BeginArray();
+                     for (JointId j : k.joints) w_.String(JointName(j));
+                     w_.EndArray();
+                     w_.Key("a");
+                     Numbers(k.a);
+                     w_.Key("offset").Number(k.offset);
+                     w_.Key("lower").Number(k.lower);
+                     w_.Key("upper").Number(k.upper);
+                     w_.Key("stiffness").Number(k.stiffness);
+                     w_.Key("damping").Number(k.damping);
+                   },
+               },
+               c.payload);
     w_.EndObject();
   }
 

@@ -276,27 +276,53 @@ struct Actuator {
   bool unnamed = false;  // named by the compiler
 };
 
+/// Drake's AddCouplerConstraint: q0 = gear_ratio * q1 + offset, joint0 being
+/// the joint that follows (the mimicking joint) and joint1 the joint it follows.
+struct CouplerConstraint {
+  Ref<JointId> joint0, joint1;
+  double gear_ratio = 1, offset = 0;
+};
+/// Drake's AddBallConstraint: point P of body A coincides with point Q of B.
+struct BallConstraint {
+  Ref<BodyId> body_A, body_B;
+  Eigen::Vector3d p_AP = Eigen::Vector3d::Zero(), p_BQ = Eigen::Vector3d::Zero();
+};
+/// Drake's AddDistanceConstraint: |p_PQ| = distance, rigid when stiffness is
+/// infinite.
+struct DistanceConstraint {
+  Ref<BodyId> body_A, body_B;
+  Eigen::Vector3d p_AP = Eigen::Vector3d::Zero(), p_BQ = Eigen::Vector3d::Zero();
+  double distance = 0, stiffness = 0, damping = 0;
+};
+/// Drake's AddWeldConstraint: frame P (on A) coincides with frame Q (on B).
+struct WeldConstraint {
+  Ref<BodyId> body_A, body_B;
+  Transform X_AP, X_BQ;
+};
+/// Drake's AddTendonConstraint: lower <= sum a_i q_i + offset <= upper.
+struct TendonConstraint {
+  std::vector<Ref<JointId>> joints;
+  std::vector<double> a;
+  double offset = 0;
+  double lower = -std::numeric_limits<double>::infinity();
+  double upper = std::numeric_limits<double>::infinity();
+  double stiffness = std::numeric_limits<double>::infinity(), damping = 0;
+};
+
+/// The kinds of constraint, in the order of ConstraintPayload's alternatives.
 enum class ConstraintType { Coupler, Ball, Distance, Weld, Tendon };
 std::string_view ConstraintTypeName(ConstraintType type);
+using ConstraintPayload = std::variant<CouplerConstraint, BallConstraint, DistanceConstraint,
+                                       WeldConstraint, TendonConstraint>;
 
 struct Constraint {
   ModelId model;
   Loc loc;
-  ConstraintType type = ConstraintType::Coupler;
-  // coupler, as Drake's AddCouplerConstraint: q0 = gear_ratio * q1 + offset,
-  // joint0 being the joint that follows (the mimicking joint) and joint1 the
-  // joint it follows
-  Ref<JointId> joint0, joint1;
-  double gear_ratio = 1, offset = 0;
-  // ball / distance / weld
-  Ref<BodyId> body_A, body_B;
-  Transform X_AP, X_BQ;
-  double distance = 0, stiffness = 0, damping = 0;
-  // tendon
-  std::vector<Ref<JointId>> joints;
-  std::vector<double> a;
-  double lower = -std::numeric_limits<double>::infinity();
-  double upper = std::numeric_limits<double>::infinity();
+  ConstraintPayload payload;
+  ConstraintType type() const { return static_cast<ConstraintType>(payload.index()); }
+  /// The payload of kind T (the caller knows the kind).
+  template <typename T> T& As() { return std::get<T>(payload); }
+  template <typename T> const T& As() const { return std::get<T>(payload); }
 };
 
 struct CollisionFilterGroup {
@@ -318,26 +344,38 @@ struct FrameRef {
   bool resolved() const { return frame.valid() || body.valid(); }
 };
 
-enum class ForceElementType { LinearBushingRpy, LinearSpringDamper, JointSpring };
-
-/// Force elements of the plant (Drake's ForceElement subclasses).
-struct ForceElement {
-  ModelId model;
-  Loc loc;
-  ForceElementType type = ForceElementType::LinearSpringDamper;
-  // linear_bushing_rpy: between frames A and C, gains per axis
+/// Drake's LinearBushingRollPitchYaw between frames A and C, gains per axis.
+struct LinearBushingRpy {
   FrameRef frame_A, frame_C;
   Eigen::Vector3d torque_stiffness = Eigen::Vector3d::Zero();
   Eigen::Vector3d torque_damping = Eigen::Vector3d::Zero();
   Eigen::Vector3d force_stiffness = Eigen::Vector3d::Zero();
   Eigen::Vector3d force_damping = Eigen::Vector3d::Zero();
-  // linear_spring_damper: between point P of body A and point Q of body B
+};
+/// Drake's LinearSpringDamper between point P of body A and point Q of body B.
+struct LinearSpringDamper {
   Ref<BodyId> body_A, body_B;
   Eigen::Vector3d p_AP = Eigen::Vector3d::Zero(), p_BQ = Eigen::Vector3d::Zero();
   double free_length = 0, stiffness = 0, damping = 0;
-  // joint spring (revolute or prismatic, by the joint's type): stiffness, nominal
+};
+/// Drake's RevoluteSpring or PrismaticSpring, by the joint's type.
+struct JointSpring {
   Ref<JointId> joint;
-  double nominal = 0;
+  double stiffness = 0, nominal = 0;
+};
+
+/// The kinds of force element, in the order of ForceElementPayload's alternatives.
+enum class ForceElementType { LinearBushingRpy, LinearSpringDamper, JointSpring };
+using ForceElementPayload = std::variant<LinearBushingRpy, LinearSpringDamper, JointSpring>;
+
+/// Force elements of the plant (Drake's ForceElement subclasses).
+struct ForceElement {
+  ModelId model;
+  Loc loc;
+  ForceElementPayload payload;
+  ForceElementType type() const { return static_cast<ForceElementType>(payload.index()); }
+  template <typename T> T& As() { return std::get<T>(payload); }
+  template <typename T> const T& As() const { return std::get<T>(payload); }
 };
 
 /// Gains that MuJoCo's compiler derives from an MJCF model's joint-space

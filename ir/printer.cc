@@ -7,6 +7,8 @@
 #include <type_traits>
 #include <variant>
 
+#include "ir/overloaded.h"
+
 namespace mdlc::ir {
 namespace {
 
@@ -314,35 +316,39 @@ std::string Printer::Run() {
   }
   for (size_t i = 0; i < m_.constraints.size(); ++i) {
     const Constraint& c = m_.constraints[i];
-    out_ += fmt::format("  constraint #{} {} model={}", i, ConstraintTypeName(c.type), Model(c.model));
-    switch (c.type) {
-      case ConstraintType::Coupler:
-        out_ += fmt::format(" joint0={} joint1={} gear_ratio={} offset={}", JointRef(c.joint0),
-                            JointRef(c.joint1), Num(c.gear_ratio), Num(c.offset));
-        break;
-      case ConstraintType::Ball:
-        out_ += fmt::format(" body_A={} p_AP={} body_B={} p_BQ={}", BodyRef(c.body_A),
-                            Vec(c.X_AP.p), BodyRef(c.body_B), Vec(c.X_BQ.p));
-        break;
-      case ConstraintType::Distance:
-        out_ += fmt::format(" body_A={} p_AP={} body_B={} p_BQ={} distance={} stiffness={} "
-                            "damping={}",
-                            BodyRef(c.body_A), Vec(c.X_AP.p), BodyRef(c.body_B), Vec(c.X_BQ.p),
-                            Num(c.distance), Num(c.stiffness), Num(c.damping));
-        break;
-      case ConstraintType::Weld:
-        out_ += fmt::format(" body_A={} X_AP={} body_B={} X_BQ={}", BodyRef(c.body_A),
-                            Pose(c.X_AP), BodyRef(c.body_B), Pose(c.X_BQ));
-        break;
-      case ConstraintType::Tendon: {
-        std::string joints;
-        for (const auto& j : c.joints) joints += (joints.empty() ? "" : " ") + JointRef(j);
-        out_ += fmt::format(" joints=[{}] a={} offset={} lower={} upper={} stiffness={} damping={}",
-                            joints, List(c.a), Num(c.offset), Num(c.lower), Num(c.upper),
-                            Num(c.stiffness), Num(c.damping));
-        break;
-      }
-    }
+    out_ += fmt::format("  constraint #{} {} model={}", i, ConstraintTypeName(c.type()), Model(c.model));
+    std::visit(
+        Overloaded{
+            [&](const CouplerConstraint& k) {
+              out_ += fmt::format(" joint0={} joint1={} gear_ratio={} offset={}",
+                                  JointRef(k.joint0), JointRef(k.joint1), Num(k.gear_ratio),
+                                  Num(k.offset));
+            },
+            [&](const BallConstraint& k) {
+              out_ += fmt::format(" body_A={} p_AP={} body_B={} p_BQ={}", BodyRef(k.body_A),
+                                  Vec(k.p_AP), BodyRef(k.body_B), Vec(k.p_BQ));
+            },
+            [&](const DistanceConstraint& k) {
+              out_ += fmt::format(" body_A={} p_AP={} body_B={} p_BQ={} distance={} "
+                                  "stiffness={} damping={}",
+                                  BodyRef(k.body_A), Vec(k.p_AP), BodyRef(k.body_B),
+                                  Vec(k.p_BQ), Num(k.distance), Num(k.stiffness),
+                                  Num(k.damping));
+            },
+            [&](const WeldConstraint& k) {
+              out_ += fmt::format(" body_A={} X_AP={} body_B={} X_BQ={}", BodyRef(k.body_A),
+                                  Pose(k.X_AP), BodyRef(k.body_B), Pose(k.X_BQ));
+            },
+            [&](const TendonConstraint& k) {
+              std::string joints;
+              for (const auto& j : k.joints) joints += (joints.empty() ? "" : " ") + JointRef(j);
+              out_ += fmt::format(" joints=[{}] a={} offset={} lower={} upper={} stiffness={} "
+                                  "damping={}",
+                                  joints, List(k.a), Num(k.offset), Num(k.lower), Num(k.upper),
+                                  Num(k.stiffness), Num(k.damping));
+            },
+        },
+        c.payload);
     out_ += Where(c.loc) + "\n";
   }
   for (size_t i = 0; i < m_.filter_groups.size(); ++i) {
@@ -363,25 +369,28 @@ std::string Printer::Run() {
   for (size_t i = 0; i < m_.force_elements.size(); ++i) {
     const ForceElement& f = m_.force_elements[i];
     out_ += fmt::format("  force_element #{} model={}", i, Model(f.model));
-    switch (f.type) {
-      case ForceElementType::LinearBushingRpy:
-        out_ += fmt::format(" linear_bushing_rpy frame_A={} frame_C={} torque_stiffness={} "
-                            "torque_damping={} force_stiffness={} force_damping={}",
-                            FrameRefText(f.frame_A), FrameRefText(f.frame_C),
-                            Vec(f.torque_stiffness), Vec(f.torque_damping),
-                            Vec(f.force_stiffness), Vec(f.force_damping));
-        break;
-      case ForceElementType::LinearSpringDamper:
-        out_ += fmt::format(" linear_spring_damper body_A={} p_AP={} body_B={} p_BQ={} "
-                            "free_length={} stiffness={} damping={}",
-                            BodyRef(f.body_A), Vec(f.p_AP), BodyRef(f.body_B), Vec(f.p_BQ),
-                            Num(f.free_length), Num(f.stiffness), Num(f.damping));
-        break;
-      case ForceElementType::JointSpring:
-        out_ += fmt::format(" joint_spring joint={} nominal={} stiffness={}", JointRef(f.joint),
-                            Num(f.nominal), Num(f.stiffness));
-        break;
-    }
+    std::visit(
+        Overloaded{
+            [&](const LinearBushingRpy& k) {
+              out_ += fmt::format(" linear_bushing_rpy frame_A={} frame_C={} torque_stiffness={} "
+                                  "torque_damping={} force_stiffness={} force_damping={}",
+                                  FrameRefText(k.frame_A), FrameRefText(k.frame_C),
+                                  Vec(k.torque_stiffness), Vec(k.torque_damping),
+                                  Vec(k.force_stiffness), Vec(k.force_damping));
+            },
+            [&](const LinearSpringDamper& k) {
+              out_ += fmt::format(" linear_spring_damper body_A={} p_AP={} body_B={} p_BQ={} "
+                                  "free_length={} stiffness={} damping={}",
+                                  BodyRef(k.body_A), Vec(k.p_AP), BodyRef(k.body_B),
+                                  Vec(k.p_BQ), Num(k.free_length), Num(k.stiffness),
+                                  Num(k.damping));
+            },
+            [&](const JointSpring& k) {
+              out_ += fmt::format(" joint_spring joint={} nominal={} stiffness={}",
+                                  JointRef(k.joint), Num(k.nominal), Num(k.stiffness));
+            },
+        },
+        f.payload);
     out_ += Where(f.loc) + "\n";
   }
   PrintInertiaScaledGains();

@@ -1,5 +1,7 @@
 #include "ir/verifier.h"
 
+#include "ir/overloaded.h"
+
 #include <fmt/format.h>
 
 #include <set>
@@ -38,22 +40,24 @@ class Verifier {
     for (const Actuator& a : m_.actuators) CheckRef(a.joint, m_.joints.size(), "actuator joint");
     for (const Constraint& c : m_.constraints) {
       CheckModel(c.model, c.loc, "constraint");
-      switch (c.type) {
-        case ConstraintType::Coupler:
-          CheckRef(c.joint0, m_.joints.size(), "coupler joint");
-          CheckRef(c.joint1, m_.joints.size(), "coupler joint");
-          break;
-        case ConstraintType::Ball:
-        case ConstraintType::Distance:
-        case ConstraintType::Weld:
-          CheckRef(c.body_A, m_.bodies.size(), "constraint body");
-          CheckRef(c.body_B, m_.bodies.size(), "constraint body");
-          break;
-        case ConstraintType::Tendon:
-          for (const auto& j : c.joints) CheckRef(j, m_.joints.size(), "tendon joint");
-          if (c.joints.size() != c.a.size()) Fail(c.loc, "tendon joints and coefficients differ in number");
-          break;
-      }
+      std::visit(
+          Overloaded{
+              [&](const CouplerConstraint& k) {
+                CheckRef(k.joint0, m_.joints.size(), "coupler joint");
+                CheckRef(k.joint1, m_.joints.size(), "coupler joint");
+              },
+              [&](const TendonConstraint& k) {
+                for (const auto& j : k.joints) CheckRef(j, m_.joints.size(), "tendon joint");
+                if (k.joints.size() != k.a.size()) {
+                  Fail(c.loc, "tendon joints and coefficients differ in number");
+                }
+              },
+              [&](const auto& between_bodies) {  // ball, distance, weld
+                CheckRef(between_bodies.body_A, m_.bodies.size(), "constraint body");
+                CheckRef(between_bodies.body_B, m_.bodies.size(), "constraint body");
+              },
+          },
+          c.payload);
     }
     for (const CollisionFilterGroup& g : m_.filter_groups) {
       CheckModel(g.model, g.loc, "collision filter group");
@@ -63,19 +67,20 @@ class Verifier {
     }
     for (const ForceElement& f : m_.force_elements) {
       CheckModel(f.model, f.loc, "force element");
-      switch (f.type) {
-        case ForceElementType::LinearBushingRpy:
-          CheckFrameRef(f.frame_A);
-          CheckFrameRef(f.frame_C);
-          break;
-        case ForceElementType::LinearSpringDamper:
-          CheckRef(f.body_A, m_.bodies.size(), "spring body");
-          CheckRef(f.body_B, m_.bodies.size(), "spring body");
-          break;
-        case ForceElementType::JointSpring:
-          CheckRef(f.joint, m_.joints.size(), "spring joint");
-          break;
-      }
+      std::visit(Overloaded{
+                     [&](const LinearBushingRpy& k) {
+                       CheckFrameRef(k.frame_A);
+                       CheckFrameRef(k.frame_C);
+                     },
+                     [&](const LinearSpringDamper& k) {
+                       CheckRef(k.body_A, m_.bodies.size(), "spring body");
+                       CheckRef(k.body_B, m_.bodies.size(), "spring body");
+                     },
+                     [&](const JointSpring& k) {
+                       CheckRef(k.joint, m_.joints.size(), "spring joint");
+                     },
+                 },
+                 f.payload);
     }
     for (const InertiaScaledGains& g : m_.inertia_scaled_gains) {
       CheckModel(g.model, g.loc, "inertia-scaled gains");

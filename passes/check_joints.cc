@@ -27,12 +27,13 @@ bool CheckJointsPass::Run(PassContext& ctx) {
   std::vector<ir::Constraint> kept;
   kept.reserve(m.constraints.size());
   for (ir::Constraint& c : m.constraints) {
-    if (c.type != ir::ConstraintType::Coupler) {
+    if (c.type() != ir::ConstraintType::Coupler) {
       kept.push_back(std::move(c));
       continue;
     }
-    const ir::Joint& follower = m[c.joint0.id];
-    const ir::Joint& leader = m[c.joint1.id];
+    const ir::CouplerConstraint& coupler = c.As<ir::CouplerConstraint>();
+    const ir::Joint& follower = m[coupler.joint0.id];
+    const ir::Joint& leader = m[coupler.joint1.id];
     const int n_follower = ir::JointVelocityCount(follower.type);
     const int n_leader = ir::JointVelocityCount(leader.type);
     // Drake ignores mimic on a joint that is not single-dof, then requires

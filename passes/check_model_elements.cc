@@ -21,7 +21,9 @@
 #include <fmt/format.h>
 
 #include <unordered_map>
+#include <variant>
 
+#include "ir/overloaded.h"
 #include "passes/pass_registry.h"
 
 namespace mdlc::passes {
@@ -94,77 +96,82 @@ void CheckModelElementsPass::CheckGroups(PassContext& ctx) {
 
 void CheckModelElementsPass::CheckConstraint(PassContext& ctx, const ir::Constraint& c) {
   const ir::Module& m = ctx.module;
-  switch (c.type) {
-    case ir::ConstraintType::Ball:
-    case ir::ConstraintType::Distance:
-      for (const ir::Ref<BodyId>* ref : {&c.body_A, &c.body_B}) {
-        if (ref->resolved() && ref->id != ir::kWorldBody && ref->id.index() < m.bodies.size()) {
-          CheckWithin(ctx, c.model, m[ref->id].model, "body", ref->name, ref->loc);
+  auto distinct_bodies = [&](const ir::Ref<BodyId>& body_A, const ir::Ref<BodyId>& body_B) {
+    for (const ir::Ref<BodyId>* ref : {&body_A, &body_B}) {
+      if (ref->resolved() && ref->id != ir::kWorldBody && ref->id.index() < m.bodies.size()) {
+        CheckWithin(ctx, c.model, m[ref->id].model, "body", ref->name, ref->loc);
+      }
+    }
+    if (body_A.resolved() && body_A.id == body_B.id && body_A.id.index() < m.bodies.size()) {
+      ctx.diags.Report(DiagKind::BadValue, body_B.loc.valid() ? body_B.loc : c.loc,
+                       fmt::format("{} constraint: body_A and body_B must be two distinct "
+                                   "bodies, both are '{}'",
+                                   ir::ConstraintTypeName(c.type()), m.ScopedName(body_A.id)));
+    }
+  };
+  auto tendon_joints = [&](const ir::TendonConstraint& k) {
+    for (size_t i = 0; i < k.joints.size(); ++i) {
+      const ir::Ref<JointId>& ref = k.joints[i];
+      if (!ref.resolved() || ref.id.index() >= m.joints.size()) continue;  // not ours to report
+      const ir::Joint& joint = m[ref.id];
+      CheckWithin(ctx, c.model, joint.model, "joint", ref.name, ref.loc);
+      const int nv = ir::JointVelocityCount(joint.type);
+      if (nv != 1) {
+        ctx.diags.Report(DiagKind::BadValue, ref.loc.valid() ? ref.loc : c.loc,
+                         fmt::format("tendon constraint: joint '{}' ({}) has {} degrees of "
+                                     "freedom; only single-dof joints can be in a tendon",
+                                     m.ScopedName(ref.id), ir::JointTypeName(joint.type), nv));
+      }
+      for (size_t j = 0; j < i; ++j) {
+        if (k.joints[j].id == ref.id) {
+          ctx.diags
+              .Report(DiagKind::BadValue, ref.loc.valid() ? ref.loc : c.loc,
+                      fmt::format("tendon constraint: joint '{}' is listed twice; the joints "
+                                  "of a tendon must be distinct",
+                                  m.ScopedName(ref.id)))
+              .Note(k.joints[j].loc, "first listed here");
+          break;
         }
       }
-      if (c.body_A.resolved() && c.body_A.id == c.body_B.id &&
-          c.body_A.id.index() < m.bodies.size()) {
-        ctx.diags.Report(DiagKind::BadValue, c.body_B.loc.valid() ? c.body_B.loc : c.loc,
-                         fmt::format("{} constraint: body_A and body_B must be two distinct "
-                                     "bodies, both are '{}'",
-                                     ir::ConstraintTypeName(c.type), m.ScopedName(c.body_A.id)));
-      }
-      break;
-    case ir::ConstraintType::Tendon:
-      for (size_t i = 0; i < c.joints.size(); ++i) {
-        const ir::Ref<JointId>& ref = c.joints[i];
-        if (!ref.resolved() || ref.id.index() >= m.joints.size()) continue;  // not ours to report
-        const ir::Joint& joint = m[ref.id];
-        CheckWithin(ctx, c.model, joint.model, "joint", ref.name, ref.loc);
-        const int nv = ir::JointVelocityCount(joint.type);
-        if (nv != 1) {
-          ctx.diags.Report(DiagKind::BadValue, ref.loc.valid() ? ref.loc : c.loc,
-                           fmt::format("tendon constraint: joint '{}' ({}) has {} degrees of "
-                                       "freedom; only single-dof joints can be in a tendon",
-                                       m.ScopedName(ref.id), ir::JointTypeName(joint.type), nv));
-        }
-        for (size_t k = 0; k < i; ++k) {
-          if (c.joints[k].id == ref.id) {
-            ctx.diags
-                .Report(DiagKind::BadValue, ref.loc.valid() ? ref.loc : c.loc,
-                        fmt::format("tendon constraint: joint '{}' is listed twice; the joints "
-                                    "of a tendon must be distinct",
-                                    m.ScopedName(ref.id)))
-                .Note(c.joints[k].loc, "first listed here");
-            break;
-          }
-        }
-      }
-      break;
-    case ir::ConstraintType::Coupler:
-    case ir::ConstraintType::Weld:
-      break;
-  }
+    }
+  };
+  std::visit(ir::Overloaded{
+                 [&](const ir::BallConstraint& k) { distinct_bodies(k.body_A, k.body_B); },
+                 [&](const ir::DistanceConstraint& k) { distinct_bodies(k.body_A, k.body_B); },
+                 [&](const ir::TendonConstraint& k) { tendon_joints(k); },
+                 // couplers are the check-joints pass's; welds have no rule here
+                 [](const ir::CouplerConstraint&) {},
+                 [](const ir::WeldConstraint&) {},
+             },
+             c.payload);
 }
 
 void CheckModelElementsPass::CheckForceElement(PassContext& ctx, const ir::ForceElement& f) {
   const ir::Module& m = ctx.module;
-  switch (f.type) {
-    case ir::ForceElementType::LinearBushingRpy:
-      for (const ir::FrameRef* ref : {&f.frame_A, &f.frame_C}) {
-        if (ref->frame.valid() && ref->frame.index() < m.frames.size()) {
-          CheckWithin(ctx, f.model, m[ref->frame].model, "frame", ref->name, ref->loc);
-        } else if (ref->body.valid() && ref->body != ir::kWorldBody &&
-                   ref->body.index() < m.bodies.size()) {
-          CheckWithin(ctx, f.model, m[ref->body].model, "frame", ref->name, ref->loc);
-        }
-      }
-      break;
-    case ir::ForceElementType::LinearSpringDamper:
-      for (const ir::Ref<BodyId>* ref : {&f.body_A, &f.body_B}) {
-        if (ref->resolved() && ref->id != ir::kWorldBody && ref->id.index() < m.bodies.size()) {
-          CheckWithin(ctx, f.model, m[ref->id].model, "body", ref->name, ref->loc);
-        }
-      }
-      break;
-    case ir::ForceElementType::JointSpring:
-      break;
-  }
+  std::visit(ir::Overloaded{
+                 [&](const ir::LinearBushingRpy& k) {
+                   for (const ir::FrameRef* ref : {&k.frame_A, &k.frame_C}) {
+                     if (ref->frame.valid() && ref->frame.index() < m.frames.size()) {
+                       CheckWithin(ctx, f.model, m[ref->frame].model, "frame", ref->name,
+                                   ref->loc);
+                     } else if (ref->body.valid() && ref->body != ir::kWorldBody &&
+                                ref->body.index() < m.bodies.size()) {
+                       CheckWithin(ctx, f.model, m[ref->body].model, "frame", ref->name,
+                                   ref->loc);
+                     }
+                   }
+                 },
+                 [&](const ir::LinearSpringDamper& k) {
+                   for (const ir::Ref<BodyId>* ref : {&k.body_A, &k.body_B}) {
+                     if (ref->resolved() && ref->id != ir::kWorldBody &&
+                         ref->id.index() < m.bodies.size()) {
+                       CheckWithin(ctx, f.model, m[ref->id].model, "body", ref->name, ref->loc);
+                     }
+                   }
+                 },
+                 [](const ir::JointSpring&) {},  // its joint's kind is checked where it is made
+             },
+             f.payload);
 }
 
 bool CheckModelElementsPass::Run(PassContext& ctx) {

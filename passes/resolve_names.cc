@@ -15,7 +15,9 @@
 #include <fmt/format.h>
 
 #include <type_traits>
+#include <variant>
 
+#include "ir/overloaded.h"
 #include "passes/name_index.h"
 #include "passes/pass_registry.h"
 
@@ -216,20 +218,40 @@ bool ResolveNamesPass::Run(PassContext& ctx) {
     Resolve(ctx, a.joint, a.model, joints, m.joints, "joint", described("actuator", a.name));
   }
   for (ir::Constraint& c : m.constraints) {
-    auto user = [&c] { return fmt::format("{} constraint", ir::ConstraintTypeName(c.type)); };
-    Resolve(ctx, c.joint0, c.model, joints, m.joints, "joint", user);
-    Resolve(ctx, c.joint1, c.model, joints, m.joints, "joint", user);
-    Resolve(ctx, c.body_A, c.model, bodies, m.bodies, "link", user);
-    Resolve(ctx, c.body_B, c.model, bodies, m.bodies, "link", user);
-    for (auto& jr : c.joints) Resolve(ctx, jr, c.model, joints, m.joints, "joint", user);
+    auto user = [&c] { return fmt::format("{} constraint", ir::ConstraintTypeName(c.type())); };
+    std::visit(ir::Overloaded{
+                   [&](ir::CouplerConstraint& k) {
+                     Resolve(ctx, k.joint0, c.model, joints, m.joints, "joint", user);
+                     Resolve(ctx, k.joint1, c.model, joints, m.joints, "joint", user);
+                   },
+                   [&](ir::TendonConstraint& k) {
+                     for (auto& jr : k.joints) {
+                       Resolve(ctx, jr, c.model, joints, m.joints, "joint", user);
+                     }
+                   },
+                   [&](auto& between_bodies) {  // ball, distance, weld
+                     Resolve(ctx, between_bodies.body_A, c.model, bodies, m.bodies, "link", user);
+                     Resolve(ctx, between_bodies.body_B, c.model, bodies, m.bodies, "link", user);
+                   },
+               },
+               c.payload);
   }
   for (ir::ForceElement& f : m.force_elements) {
     auto user = [] { return std::string("force element"); };
-    ResolveFrame(ctx, f.frame_A, f.model, frames, bodies, "force element");
-    ResolveFrame(ctx, f.frame_C, f.model, frames, bodies, "force element");
-    Resolve(ctx, f.body_A, f.model, bodies, m.bodies, "link", user);
-    Resolve(ctx, f.body_B, f.model, bodies, m.bodies, "link", user);
-    Resolve(ctx, f.joint, f.model, joints, m.joints, "joint", user);
+    std::visit(ir::Overloaded{
+                   [&](ir::LinearBushingRpy& k) {
+                     ResolveFrame(ctx, k.frame_A, f.model, frames, bodies, "force element");
+                     ResolveFrame(ctx, k.frame_C, f.model, frames, bodies, "force element");
+                   },
+                   [&](ir::LinearSpringDamper& k) {
+                     Resolve(ctx, k.body_A, f.model, bodies, m.bodies, "link", user);
+                     Resolve(ctx, k.body_B, f.model, bodies, m.bodies, "link", user);
+                   },
+                   [&](ir::JointSpring& k) {
+                     Resolve(ctx, k.joint, f.model, joints, m.joints, "joint", user);
+                   },
+               },
+               f.payload);
   }
   // groups may name groups defined later, in this file or another (COMMON-055)
   for (ir::CollisionFilterGroup& g : m.filter_groups) {

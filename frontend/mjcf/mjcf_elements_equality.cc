@@ -83,12 +83,9 @@ class EqualityLowering {
     return false;
   }
 
-  ir::Constraint Start(ir::ConstraintType type) {
-    ir::Constraint c;
-    c.model = L_.r.model;
-    c.loc = e_.loc();
-    c.type = type;
-    return c;
+  /// Adds the constraint `payload`, located at this element.
+  void Add(ir::ConstraintPayload payload) {
+    L_.module().Add(ir::Constraint{L_.r.model, e_.loc(), std::move(payload)});
   }
 
   // body1/body2 of the body form; nullopt after an error
@@ -146,7 +143,7 @@ class EqualityLowering {
 
   void Connect() {
     if (BothForms()) return;
-    ir::Constraint c = Start(ir::ConstraintType::Ball);
+    ir::BallConstraint c;
     if (e_.Get("body1").present()) {
       const Attribute anchor_attr = e_.Get("anchor");
       if (!anchor_attr.present()) {
@@ -165,17 +162,17 @@ class EqualityLowering {
       c.body_A = L_.BodyRef(bodies->first, e_.Get("body1").loc);
       c.body_B = L_.BodyRef(bodies->second, e_.Get("body2").present() ? e_.Get("body2").loc
                                                                       : e_.loc());
-      c.X_AP = Transform::FromTranslation(p_AP);
-      c.X_BQ = Transform::FromTranslation(X_WB.inverse() * (X_WA * p_AP));
+      c.p_AP = p_AP;
+      c.p_BQ = X_WB.inverse() * (X_WA * p_AP);
     } else {
       auto sites = Sites();
       if (!sites) return;
       c.body_A = L_.BodyRef(sites->body1, e_.Get("site1").loc);
       c.body_B = L_.BodyRef(sites->body2, e_.Get("site2").loc);
-      c.X_AP = Transform::FromTranslation(sites->X_B1S1.p);
-      c.X_BQ = Transform::FromTranslation(sites->X_B2S2.p);
+      c.p_AP = sites->X_B1S1.p;
+      c.p_BQ = sites->X_B2S2.p;
     }
-    L_.module().Add(std::move(c));
+    Add(std::move(c));
   }
 
   void Weld() {
@@ -186,7 +183,7 @@ class EqualityLowering {
                   "<weld> torquescale is not supported by the plant's weld constraint and is "
                   "ignored");
     }
-    ir::Constraint c = Start(ir::ConstraintType::Weld);
+    ir::WeldConstraint c;
     if (e_.Get("body1").present()) {
       auto bodies = Bodies();
       // anchor: on body2, default its origin
@@ -221,7 +218,7 @@ class EqualityLowering {
       c.X_AP = sites->X_B1S1;
       c.X_BQ = sites->X_B2S2;
     }
-    L_.module().Add(std::move(c));
+    Add(std::move(c));
   }
 
   void Joint() {
@@ -267,23 +264,23 @@ class EqualityLowering {
     const double ref1 = L_.JointQpos0(*joint1);
     if (joint2) {
       const double ref2 = L_.JointQpos0(*joint2);
-      ir::Constraint c = Start(ir::ConstraintType::Coupler);
+      ir::CouplerConstraint c;
       // Drake's coupler orientation: joint0 (MJCF's joint1) follows joint1
       c.joint0 = L_.JointRef(*joint1, j1.loc);
       c.joint1 = L_.JointRef(*joint2, j2.loc);
       c.gear_ratio = poly[1];
       c.offset = poly[0] + ref1 - poly[1] * ref2;
-      L_.module().Add(std::move(c));
+      Add(std::move(c));
     } else {
       // joint1 held at ref1 + c0: 1 * q1 - (ref1 + c0) in [0, 0]
-      ir::Constraint c = Start(ir::ConstraintType::Tendon);
+      ir::TendonConstraint c;
       c.joints = {L_.JointRef(*joint1, j1.loc)};
       c.a = {1.0};
       c.offset = -(ref1 + poly[0]);
       c.lower = c.upper = 0;
       c.stiffness = kInf;
       c.damping = 0;
-      L_.module().Add(std::move(c));
+      Add(std::move(c));
     }
   }
 
@@ -329,15 +326,15 @@ class EqualityLowering {
                                     distance));
       return;
     }
-    ir::Constraint c = Start(ir::ConstraintType::Distance);
+    ir::DistanceConstraint c;
     c.body_A = L_.BodyRef(*body1, g1.loc);
     c.body_B = L_.BodyRef(*body2, g2.loc);
-    c.X_AP = Transform::FromTranslation(geom1.X_BG.p);
-    c.X_BQ = Transform::FromTranslation(geom2.X_BG.p);
+    c.p_AP = geom1.X_BG.p;
+    c.p_BQ = geom2.X_BG.p;
     c.distance = distance;
     c.stiffness = kInf;  // rigid, as MuJoCo's equality (solref ignored)
     c.damping = 0;
-    L_.module().Add(std::move(c));
+    Add(std::move(c));
   }
 
   ElementsLowering& L_;

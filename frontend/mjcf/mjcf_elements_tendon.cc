@@ -29,9 +29,11 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // the joint's spring reference (qpos_spring), where a joint spring keeps it
 double SpringReference(const ir::Module& m, JointId joint) {
   for (const ir::ForceElement& f : m.force_elements) {
-    if (f.type != ir::ForceElementType::JointSpring) continue;
-    if (f.joint.resolved() ? f.joint.id == joint : f.joint.name == m[joint].name) {
-      return f.nominal;
+    const auto* spring = std::get_if<ir::JointSpring>(&f.payload);
+    if (!spring) continue;
+    if (spring->joint.resolved() ? spring->joint.id == joint
+                                 : spring->joint.name == m[joint].name) {
+      return spring->nominal;
     }
   }
   return 0;
@@ -96,18 +98,15 @@ void LowerFixed(ElementsLowering& L, const Element& e) {
   if (!ok) return;
 
   auto add = [&](double lower, double upper, double k, double b) {
-    ir::Constraint c;
-    c.model = L.r.model;
-    c.loc = e.loc();
-    c.type = ir::ConstraintType::Tendon;
-    c.joints = joints;
-    c.a = coefs;
-    c.offset = 0;
-    c.lower = lower;
-    c.upper = upper;
-    c.stiffness = k;
-    c.damping = b;
-    L.module().Add(std::move(c));
+    ir::TendonConstraint tendon;
+    tendon.joints = joints;
+    tendon.a = coefs;
+    tendon.offset = 0;
+    tendon.lower = lower;
+    tendon.upper = upper;
+    tendon.stiffness = k;
+    tendon.damping = b;
+    L.module().Add(ir::Constraint{L.r.model, e.loc(), std::move(tendon)});
   };
 
   if (limited && range) {

@@ -335,14 +335,11 @@ void LowerJoints(MjcfReader& r, const BodyContext& b, const std::vector<BodyItem
         r.WarnOnce(j.Get("stiffness").loc, DiagKind::UnsupportedAttribute, "joint", "stiffness",
                    "on a ball joint is not supported and is ignored");
       } else {
-        ir::ForceElement spring;
-        spring.model = r.model;
-        spring.loc = j.Get("stiffness").loc;
-        spring.type = ir::ForceElementType::JointSpring;
+        ir::JointSpring spring;
         spring.joint = {m[id].name, j.loc(), id};
         spring.stiffness = stiffness;
         spring.nominal = springref;
-        m.Add(std::move(spring));
+        m.Add(ir::ForceElement{r.model, j.Get("stiffness").loc, spring});
       }
     }
     parent = child;

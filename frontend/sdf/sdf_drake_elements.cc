@@ -526,10 +526,7 @@ void SdfReader::ReadDrakeModelElement(const xml::XmlElement& e, ModelScope& s) {
                       {"drake:bushing_frameA", "drake:bushing_frameC",
                        "drake:bushing_torque_stiffness", "drake:bushing_torque_damping",
                        "drake:bushing_force_stiffness", "drake:bushing_force_damping"});
-    ir::ForceElement f;
-    f.type = ir::ForceElementType::LinearBushingRpy;
-    f.model = s.model;
-    f.loc = e.GetLoc();
+    ir::LinearBushingRpy f;
     r.Name("drake:bushing_frameA", f.frame_A);
     r.Name("drake:bushing_frameC", f.frame_C);
     // LinearBushingRollPitchYaw requires every gain to be >= 0
@@ -542,7 +539,7 @@ void SdfReader::ReadDrakeModelElement(const xml::XmlElement& e, ModelScope& s) {
     f.torque_damping = *torque_damping;
     f.force_stiffness = *force_stiffness;
     f.force_damping = *force_damping;
-    module().Add(std::move(f));
+    module().Add(ir::ForceElement{s.model, e.GetLoc(), std::move(f)});
     return;
   }
   if (tag == "drake:linear_spring_damper") {
@@ -552,10 +549,7 @@ void SdfReader::ReadDrakeModelElement(const xml::XmlElement& e, ModelScope& s) {
                        "drake:linear_spring_damper_free_length",
                        "drake:linear_spring_damper_stiffness",
                        "drake:linear_spring_damper_damping"});
-    ir::ForceElement f;
-    f.type = ir::ForceElementType::LinearSpringDamper;
-    f.model = s.model;
-    f.loc = e.GetLoc();
+    ir::LinearSpringDamper f;
     r.Name("drake:linear_spring_damper_body_A", f.body_A);
     r.Name("drake:linear_spring_damper_body_B", f.body_B);
     auto p_AP = r.Vector("drake:linear_spring_damper_p_AP");
@@ -572,7 +566,7 @@ void SdfReader::ReadDrakeModelElement(const xml::XmlElement& e, ModelScope& s) {
     f.free_length = *free_length;
     f.stiffness = *stiffness;
     f.damping = *damping;
-    module().Add(std::move(f));
+    module().Add(ir::ForceElement{s.model, e.GetLoc(), std::move(f)});
     return;
   }
 
@@ -581,18 +575,15 @@ void SdfReader::ReadDrakeModelElement(const xml::XmlElement& e, ModelScope& s) {
     TextChildReader r(*this, e,
                       {"drake:ball_constraint_body_A", "drake:ball_constraint_body_B",
                        "drake:ball_constraint_p_AP", "drake:ball_constraint_p_BQ"});
-    ir::Constraint c;
-    c.type = ir::ConstraintType::Ball;
-    c.model = s.model;
-    c.loc = e.GetLoc();
+    ir::BallConstraint c;
     r.Name("drake:ball_constraint_body_A", c.body_A);
     r.Name("drake:ball_constraint_body_B", c.body_B);
     auto p_AP = r.Vector("drake:ball_constraint_p_AP");
     auto p_BQ = r.Vector("drake:ball_constraint_p_BQ");
     if (!r.ok()) return;
-    c.X_AP.p = *p_AP;
-    c.X_BQ.p = *p_BQ;
-    module().Add(std::move(c));
+    c.p_AP = *p_AP;
+    c.p_BQ = *p_BQ;
+    module().Add(ir::Constraint{s.model, e.GetLoc(), std::move(c)});
     return;
   }
   if (tag == "drake:distance_constraint") {
@@ -601,10 +592,7 @@ void SdfReader::ReadDrakeModelElement(const xml::XmlElement& e, ModelScope& s) {
                        "drake:distance_constraint_body_B", "drake:distance_constraint_p_BQ",
                        "drake:distance_constraint_distance", "drake:distance_constraint_stiffness",
                        "drake:distance_constraint_damping"});
-    ir::Constraint c;
-    c.type = ir::ConstraintType::Distance;
-    c.model = s.model;
-    c.loc = e.GetLoc();
+    ir::DistanceConstraint c;
     r.Name("drake:distance_constraint_body_A", c.body_A);
     r.Name("drake:distance_constraint_body_B", c.body_B);
     auto p_AP = r.Vector("drake:distance_constraint_p_AP");
@@ -617,12 +605,12 @@ void SdfReader::ReadDrakeModelElement(const xml::XmlElement& e, ModelScope& s) {
     auto damping =
         r.Scalar("drake:distance_constraint_damping", xml::Need::Required, Sign::NonNegative);
     if (!r.ok()) return;
-    c.X_AP.p = *p_AP;
-    c.X_BQ.p = *p_BQ;
+    c.p_AP = *p_AP;
+    c.p_BQ = *p_BQ;
     c.distance = *distance;
     c.stiffness = *stiffness;
     c.damping = *damping;
-    module().Add(std::move(c));
+    module().Add(ir::Constraint{s.model, e.GetLoc(), std::move(c)});
     return;
   }
   if (tag == "drake:tendon_constraint") {
@@ -632,10 +620,7 @@ void SdfReader::ReadDrakeModelElement(const xml::XmlElement& e, ModelScope& s) {
                        "drake:tendon_constraint_upper_limit", "drake:tendon_constraint_stiffness",
                        "drake:tendon_constraint_damping"},
                       {"drake:tendon_constraint_joint"});
-    ir::Constraint c;
-    c.type = ir::ConstraintType::Tendon;
-    c.model = s.model;
-    c.loc = e.GetLoc();
+    ir::TendonConstraint c;
     // <drake:tendon_constraint_joint name="j" a="1"/>: attributes, as in Drake
     for (auto j = e.FirstChild(); j; j = j.NextSibling()) {
       if (j.Name() != "drake:tendon_constraint_joint") continue;
@@ -700,7 +685,7 @@ void SdfReader::ReadDrakeModelElement(const xml::XmlElement& e, ModelScope& s) {
                          c.lower, c.upper));
       return;
     }
-    module().Add(std::move(c));
+    module().Add(ir::Constraint{s.model, e.GetLoc(), std::move(c)});
     return;
   }
 
@@ -777,15 +762,12 @@ void SdfReader::ReadJointDrakeChildren(const xml::XmlElement& joint_element, Mod
                                    joint.type == ir::JointType::Weld ? 0 : nv));
         continue;
       }
-      ir::Constraint c;
-      c.type = ir::ConstraintType::Coupler;
-      c.model = s.model;
-      c.loc = child.GetLoc();
+      ir::CouplerConstraint c;
       c.joint0 = {joint.name, joint.loc, {}};  // the follower, as in Drake
       c.joint1 = {module().Intern(other.value), other.loc, {}};
       c.gear_ratio = *multiplier;
       c.offset = *offset;
-      module().Add(std::move(c));
+      module().Add(ir::Constraint{s.model, child.GetLoc(), std::move(c)});
       continue;
     }
 

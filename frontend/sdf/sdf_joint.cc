@@ -315,14 +315,11 @@ void SdfReader::ReadJoint(const xml::XmlElement& e, ModelScope& s) {
                      fmt::format("the spring stiffness of joint '{}' must be non-negative",
                                  *name));
     } else {
-      ir::ForceElement spring;
-      spring.model = s.model;
-      spring.loc = e.GetLoc();
-      spring.type = ir::ForceElementType::JointSpring;
+      ir::JointSpring spring;
       spring.joint = {final_name, e.GetLoc(), joint_id};
       spring.nominal = v.spring_reference;
       spring.stiffness = v.spring_stiffness;
-      module().Add(std::move(spring));
+      module().Add(ir::ForceElement{s.model, e.GetLoc(), spring});
     }
   }
 

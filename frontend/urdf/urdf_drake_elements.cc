@@ -255,10 +255,7 @@ void UrdfReader::ReadLinearBushing(const xml::XmlElement& e) {
                  "drake:bushing_torque_damping", "drake:bushing_force_stiffness",
                  "drake:bushing_force_damping"},
                 attrs_, module());
-  ir::ForceElement f;
-  f.type = ir::ForceElementType::LinearBushingRpy;
-  f.model = model_;
-  f.loc = e.GetLoc();
+  ir::LinearBushingRpy f;
   r.Name("drake:bushing_frameA", f.frame_A);
   r.Name("drake:bushing_frameC", f.frame_C);
   // Drake's LinearBushingRollPitchYaw requires every gain to be >= 0
@@ -271,7 +268,7 @@ void UrdfReader::ReadLinearBushing(const xml::XmlElement& e) {
   f.torque_damping = *torque_damping;
   f.force_stiffness = *force_stiffness;
   f.force_damping = *force_damping;
-  module().Add(std::move(f));
+  module().Add(ir::ForceElement{model_, e.GetLoc(), std::move(f)});
 }
 
 // <drake:linear_spring_damper> (EXT-051): every child required; free length
@@ -283,10 +280,7 @@ void UrdfReader::ReadLinearSpringDamper(const xml::XmlElement& e) {
                  "drake:linear_spring_damper_free_length", "drake:linear_spring_damper_stiffness",
                  "drake:linear_spring_damper_damping"},
                 attrs_, module());
-  ir::ForceElement f;
-  f.type = ir::ForceElementType::LinearSpringDamper;
-  f.model = model_;
-  f.loc = e.GetLoc();
+  ir::LinearSpringDamper f;
   r.Name("drake:linear_spring_damper_body_A", f.body_A);
   r.Name("drake:linear_spring_damper_body_B", f.body_B);
   auto p_AP = r.Vector("drake:linear_spring_damper_p_AP");
@@ -303,7 +297,7 @@ void UrdfReader::ReadLinearSpringDamper(const xml::XmlElement& e) {
   f.free_length = *free_length;
   f.stiffness = *stiffness;
   f.damping = *damping;
-  module().Add(std::move(f));
+  module().Add(ir::ForceElement{model_, e.GetLoc(), std::move(f)});
 }
 
 // <drake:ball_constraint> (EXT-052): bodies A and B, points P (in A) and Q
@@ -313,18 +307,15 @@ void UrdfReader::ReadBallConstraint(const xml::XmlElement& e) {
                 {"drake:ball_constraint_body_A", "drake:ball_constraint_body_B",
                  "drake:ball_constraint_p_AP", "drake:ball_constraint_p_BQ"},
                 attrs_, module());
-  ir::Constraint c;
-  c.type = ir::ConstraintType::Ball;
-  c.model = model_;
-  c.loc = e.GetLoc();
+  ir::BallConstraint c;
   r.Name("drake:ball_constraint_body_A", c.body_A);
   r.Name("drake:ball_constraint_body_B", c.body_B);
   auto p_AP = r.Vector("drake:ball_constraint_p_AP");
   auto p_BQ = r.Vector("drake:ball_constraint_p_BQ");
   if (!r.ok()) return;
-  c.X_AP.p = *p_AP;
-  c.X_BQ.p = *p_BQ;
-  module().Add(std::move(c));
+  c.p_AP = *p_AP;
+  c.p_BQ = *p_BQ;
+  module().Add(ir::Constraint{model_, e.GetLoc(), std::move(c)});
 }
 
 // <drake:distance_constraint> (EXT-053): every child required; distance > 0,
@@ -337,10 +328,7 @@ void UrdfReader::ReadDistanceConstraint(const xml::XmlElement& e) {
                  "drake:distance_constraint_distance", "drake:distance_constraint_stiffness",
                  "drake:distance_constraint_damping"},
                 attrs_, module());
-  ir::Constraint c;
-  c.type = ir::ConstraintType::Distance;
-  c.model = model_;
-  c.loc = e.GetLoc();
+  ir::DistanceConstraint c;
   r.Name("drake:distance_constraint_body_A", c.body_A);
   r.Name("drake:distance_constraint_body_B", c.body_B);
   auto p_AP = r.Vector("drake:distance_constraint_p_AP");
@@ -352,12 +340,12 @@ void UrdfReader::ReadDistanceConstraint(const xml::XmlElement& e) {
   auto damping =
       r.Scalar("drake:distance_constraint_damping", xml::Need::Required, Sign::NonNegative);
   if (!r.ok()) return;
-  c.X_AP.p = *p_AP;
-  c.X_BQ.p = *p_BQ;
+  c.p_AP = *p_AP;
+  c.p_BQ = *p_BQ;
   c.distance = *distance;
   c.stiffness = *stiffness;
   c.damping = *damping;
-  module().Add(std::move(c));
+  module().Add(ir::Constraint{model_, e.GetLoc(), std::move(c)});
 }
 
 // <drake:tendon_constraint> (EXT-054): one or more
@@ -372,10 +360,7 @@ void UrdfReader::ReadTendonConstraint(const xml::XmlElement& e) {
                  "drake:tendon_constraint_lower_limit", "drake:tendon_constraint_upper_limit",
                  "drake:tendon_constraint_stiffness", "drake:tendon_constraint_damping"},
                 attrs_, module());
-  ir::Constraint c;
-  c.type = ir::ConstraintType::Tendon;
-  c.model = model_;
-  c.loc = e.GetLoc();
+  ir::TendonConstraint c;
   for (auto j = e.FirstChild(); j; j = j.NextSibling()) {
     if (j.Name() != "drake:tendon_constraint_joint") continue;
     attrs_.WarnUnknownAttributes(j, {"name", "a"});
@@ -424,7 +409,7 @@ void UrdfReader::ReadTendonConstraint(const xml::XmlElement& e) {
                        c.lower, c.upper));
     return;
   }
-  module().Add(std::move(c));
+  module().Add(ir::Constraint{model_, e.GetLoc(), std::move(c)});
 }
 
 }  // namespace mdlc::frontend::urdf

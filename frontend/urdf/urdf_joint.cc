@@ -332,15 +332,12 @@ void UrdfReader::ReadMimic(const xml::XmlElement& e, const ir::Joint& joint) {
                    fmt::format("joint '{}' cannot mimic itself", module().Text(joint.name)));
     return;
   }
-  ir::Constraint c;
-  c.type = ir::ConstraintType::Coupler;
-  c.model = model_;
-  c.loc = e.GetLoc();
+  ir::CouplerConstraint c;
   c.joint0 = {joint.name, joint.loc, {}};
   c.joint1 = {module().Intern(*other), e.Attribute("joint").loc, {}};
   c.gear_ratio = attrs_.Double(e, "multiplier").value_or(1.0);
   c.offset = attrs_.Double(e, "offset").value_or(0.0);
-  module().Add(std::move(c));
+  module().Add(ir::Constraint{model_, e.GetLoc(), std::move(c)});
 }
 
 void UrdfReader::ReadFrame(const xml::XmlElement& e) {

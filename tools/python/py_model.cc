@@ -7,6 +7,8 @@
 
 #include <variant>
 
+#include "ir/overloaded.h"
+
 namespace mdlc::python {
 namespace py = pybind11;
 
@@ -84,46 +86,50 @@ py::dict Properties(const std::vector<ir::Property>& properties) {
 }
 
 Constraint MakeConstraint(const backend::PlantConstraint& c, const Names& names) {
-  Constraint out{std::string(ir::ConstraintTypeName(c.type)), names.instance(c.model), {}};
+  Constraint out{std::string(ir::ConstraintTypeName(c.type())), names.instance(c.model), {}};
   py::dict& d = out.parameters;
-  switch (c.type) {
-    case ir::ConstraintType::Coupler:
-      d["joint0"] = names.joint(c.joint0);
-      d["joint1"] = names.joint(c.joint1);
-      d["gear_ratio"] = c.gear_ratio;
-      d["offset"] = c.offset;
-      break;
-    case ir::ConstraintType::Ball:
-    case ir::ConstraintType::Distance:
-      d["body_A"] = names.body(c.body_A);
-      d["body_B"] = names.body(c.body_B);
-      d["p_AP"] = Eigen::Vector3d(c.X_AP.p);
-      d["p_BQ"] = Eigen::Vector3d(c.X_BQ.p);
-      if (c.type == ir::ConstraintType::Distance) {
-        d["distance"] = c.distance;
-        d["stiffness"] = c.stiffness;
-        d["damping"] = c.damping;
-      }
-      break;
-    case ir::ConstraintType::Weld:
-      d["body_A"] = names.body(c.body_A);
-      d["body_B"] = names.body(c.body_B);
-      d["X_AP"] = MakePose(c.X_AP);
-      d["X_BQ"] = MakePose(c.X_BQ);
-      break;
-    case ir::ConstraintType::Tendon: {
-      py::list joints;
-      for (JointId j : c.joints) joints.append(names.joint(j));
-      d["joints"] = joints;
-      d["a"] = ToVector(c.a);
-      d["offset"] = c.offset;
-      d["lower"] = c.lower;
-      d["upper"] = c.upper;
-      d["stiffness"] = c.stiffness;
-      d["damping"] = c.damping;
-      break;
-    }
-  }
+  auto bodies_and_points = [&](BodyId body_A, BodyId body_B, const Eigen::Vector3d& p_AP,
+                               const Eigen::Vector3d& p_BQ) {
+    d["body_A"] = names.body(body_A);
+    d["body_B"] = names.body(body_B);
+    d["p_AP"] = Eigen::Vector3d(p_AP);
+    d["p_BQ"] = Eigen::Vector3d(p_BQ);
+  };
+  std::visit(ir::Overloaded{
+                 [&](const backend::CouplerConstraint& k) {
+                   d["joint0"] = names.joint(k.joint0);
+                   d["joint1"] = names.joint(k.joint1);
+                   d["gear_ratio"] = k.gear_ratio;
+                   d["offset"] = k.offset;
+                 },
+                 [&](const backend::BallConstraint& k) {
+                   bodies_and_points(k.body_A, k.body_B, k.p_AP, k.p_BQ);
+                 },
+                 [&](const backend::DistanceConstraint& k) {
+                   bodies_and_points(k.body_A, k.body_B, k.p_AP, k.p_BQ);
+                   d["distance"] = k.distance;
+                   d["stiffness"] = k.stiffness;
+                   d["damping"] = k.damping;
+                 },
+                 [&](const backend::WeldConstraint& k) {
+                   d["body_A"] = names.body(k.body_A);
+                   d["body_B"] = names.body(k.body_B);
+                   d["X_AP"] = MakePose(k.X_AP);
+                   d["X_BQ"] = MakePose(k.X_BQ);
+                 },
+                 [&](const backend::TendonConstraint& k) {
+                   py::list joints;
+                   for (JointId j : k.joints) joints.append(names.joint(j));
+                   d["joints"] = joints;
+                   d["a"] = ToVector(k.a);
+                   d["offset"] = k.offset;
+                   d["lower"] = k.lower;
+                   d["upper"] = k.upper;
+                   d["stiffness"] = k.stiffness;
+                   d["damping"] = k.damping;
+                 },
+             },
+             c.payload);
   return out;
 }
 

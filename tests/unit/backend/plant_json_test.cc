@@ -92,13 +92,11 @@ ir::Module SmallArm() {
   camera.body = b.BodyRef(upper);
   m.Add(camera);
 
-  ir::Constraint coupler;
-  coupler.model = b.model();
-  coupler.type = ir::ConstraintType::Coupler;
+  ir::CouplerConstraint coupler;
   coupler.joint0 = b.Ref(shoulder, "shoulder");
   coupler.joint1 = b.Ref(screw, "screw");
   coupler.gear_ratio = -2;
-  m.Add(coupler);
+  m.Add(ir::Constraint{b.model(), {}, coupler});
   return std::move(m);
 }
 

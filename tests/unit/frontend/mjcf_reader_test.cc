@@ -215,8 +215,8 @@ TEST(MjcfReader, Beyond007StiffnessBecomesJointSpring) {
     <joint name="j" stiffness="5" springref="90"/></body></worldbody>)"));
   ASSERT_TRUE(r.ok()) << r.Messages();
   ASSERT_EQ(r.module.force_elements.size(), 1u);
-  const ir::ForceElement& f = r.module.force_elements[0];
-  EXPECT_EQ(f.type, ir::ForceElementType::JointSpring);
+  ASSERT_EQ(r.module.force_elements[0].type(), ir::ForceElementType::JointSpring);
+  const auto& f = r.module.force_elements[0].As<ir::JointSpring>();
   EXPECT_EQ(f.stiffness, 5);
   EXPECT_NEAR(f.nominal, M_PI / 2, kTol);
 }

@@ -309,8 +309,8 @@ TEST(SdfForceElementTest, LinearBushingRpy) {  // EXT-050
   </drake:linear_bushing_rpy>)")))
       << l.Messages();
   ASSERT_EQ(l.module.force_elements.size(), 1u);
-  const ir::ForceElement& f = l.module.force_elements[0];
-  EXPECT_EQ(f.type, ir::ForceElementType::LinearBushingRpy);
+  ASSERT_EQ(l.module.force_elements[0].type(), ir::ForceElementType::LinearBushingRpy);
+  const auto& f = l.module.force_elements[0].As<ir::LinearBushingRpy>();
   EXPECT_EQ(l.module.Text(f.frame_A.name), "fa");
   EXPECT_EQ(l.module.Text(f.frame_C.name), "c");
   EXPECT_EQ(f.torque_stiffness, Eigen::Vector3d(1, 2, 3));
@@ -364,8 +364,8 @@ TEST(SdfForceElementTest, LinearSpringDamper) {  // EXT-051
   LoweredSdf l;
   ASSERT_TRUE(l.Read(Model(fmt::format(fmt::runtime(element), 0.5, 100, 2)))) << l.Messages();
   ASSERT_EQ(l.module.force_elements.size(), 1u);
-  const ir::ForceElement& f = l.module.force_elements[0];
-  EXPECT_EQ(f.type, ir::ForceElementType::LinearSpringDamper);
+  ASSERT_EQ(l.module.force_elements[0].type(), ir::ForceElementType::LinearSpringDamper);
+  const auto& f = l.module.force_elements[0].As<ir::LinearSpringDamper>();
   EXPECT_EQ(l.module.Text(f.body_A.name), "a");
   EXPECT_EQ(l.module.Text(f.body_B.name), "c");
   EXPECT_EQ(f.p_AP, Eigen::Vector3d(0, 0, 1));
@@ -401,12 +401,12 @@ TEST(SdfConstraintTest, BallConstraint) {  // EXT-052
   </drake:ball_constraint>)")))
       << l.Messages();
   ASSERT_EQ(l.module.constraints.size(), 1u);
-  const ir::Constraint& c = l.module.constraints[0];
-  EXPECT_EQ(c.type, ir::ConstraintType::Ball);
+  ASSERT_EQ(l.module.constraints[0].type(), ir::ConstraintType::Ball);
+  const auto& c = l.module.constraints[0].As<ir::BallConstraint>();
   EXPECT_EQ(l.module.Text(c.body_A.name), "a");
   EXPECT_EQ(l.module.Text(c.body_B.name), "c");
-  EXPECT_EQ(c.X_AP.p, Eigen::Vector3d(1, 2, 3));
-  EXPECT_EQ(c.X_BQ.p, Eigen::Vector3d(4, 5, 6));
+  EXPECT_EQ(c.p_AP, Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(c.p_BQ, Eigen::Vector3d(4, 5, 6));
 
   LoweredSdf missing;
   EXPECT_FALSE(missing.Read(Model(R"(<drake:ball_constraint>
@@ -472,8 +472,8 @@ TEST(SdfConstraintTest, TendonConstraint) {  // EXT-054
   </drake:tendon_constraint>)")))
       << l.Messages();
   ASSERT_EQ(l.module.constraints.size(), 1u);
-  const ir::Constraint& c = l.module.constraints[0];
-  EXPECT_EQ(c.type, ir::ConstraintType::Tendon);
+  ASSERT_EQ(l.module.constraints[0].type(), ir::ConstraintType::Tendon);
+  const auto& c = l.module.constraints[0].As<ir::TendonConstraint>();
   ASSERT_EQ(c.joints.size(), 2u);
   EXPECT_EQ(l.module.Text(c.joints[0].name), "rev");
   EXPECT_EQ(l.module.Text(c.joints[1].name), "other");
@@ -578,8 +578,8 @@ TEST(SdfJointDrakeChildrenTest, MimicIsACouplerConstraint) {  // EXT-010
   ASSERT_TRUE(l.Read(JointModel("<drake:mimic joint='j2' multiplier='2' offset='0.5'/>")))
       << l.Messages();
   ASSERT_EQ(l.module.constraints.size(), 1u);
-  const ir::Constraint& c = l.module.constraints[0];
-  EXPECT_EQ(c.type, ir::ConstraintType::Coupler);
+  ASSERT_EQ(l.module.constraints[0].type(), ir::ConstraintType::Coupler);
+  const auto& c = l.module.constraints[0].As<ir::CouplerConstraint>();
   EXPECT_EQ(l.module.Text(c.joint0.name), "j1");  // the mimicking joint follows
   EXPECT_EQ(l.module.Text(c.joint1.name), "j2");  // the mimicked joint
   EXPECT_EQ(c.gear_ratio, 2);

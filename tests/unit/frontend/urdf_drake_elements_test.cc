@@ -130,9 +130,9 @@ TEST(UrdfLinearBushingTest, LowersFramesAndGains) {  // EXT-050
   Lowered l;
   ASSERT_TRUE(l.Read(Robot(kBushing))) << l.Messages();
   ASSERT_EQ(l.module.force_elements.size(), 1u);
-  const ir::ForceElement& f = l.module.force_elements[0];
-  EXPECT_EQ(f.type, ir::ForceElementType::LinearBushingRpy);
-  EXPECT_EQ(f.model, *l.model);
+  ASSERT_EQ(l.module.force_elements[0].type(), ir::ForceElementType::LinearBushingRpy);
+  EXPECT_EQ(l.module.force_elements[0].model, *l.model);
+  const auto& f = l.module.force_elements[0].As<ir::LinearBushingRpy>();
   EXPECT_EQ(l.module.Text(f.frame_A.name), "fa");
   EXPECT_EQ(l.module.Text(f.frame_C.name), "c");
   EXPECT_EQ(f.frame_A.loc.line, 8u);
@@ -163,7 +163,7 @@ void ExpectRejected(const char* element, const Broken& b) {
   EXPECT_FALSE(l.Read(Robot(text))) << b.from << " -> " << b.to;
   EXPECT_TRUE(l.HasDiagnostic(b.kind, b.message)) << b.to << "\n" << l.Messages();
   EXPECT_TRUE(l.module.force_elements.empty());
-  for (const auto& c : l.module.constraints) EXPECT_EQ(c.type, ir::ConstraintType::Coupler);
+  for (const auto& c : l.module.constraints) EXPECT_EQ(c.type(), ir::ConstraintType::Coupler);
 }
 
 TEST(UrdfLinearBushingTest, EveryChildIsRequiredAndGainsAreNonNegative) {  // EXT-050
@@ -213,8 +213,8 @@ TEST(UrdfLinearSpringDamperTest, LowersBodiesPointsAndGains) {  // EXT-051
   Lowered l;
   ASSERT_TRUE(l.Read(Robot(kSpring))) << l.Messages();
   ASSERT_EQ(l.module.force_elements.size(), 1u);
-  const ir::ForceElement& f = l.module.force_elements[0];
-  EXPECT_EQ(f.type, ir::ForceElementType::LinearSpringDamper);
+  ASSERT_EQ(l.module.force_elements[0].type(), ir::ForceElementType::LinearSpringDamper);
+  const auto& f = l.module.force_elements[0].As<ir::LinearSpringDamper>();
   EXPECT_EQ(l.module.Text(f.body_A.name), "a");
   EXPECT_EQ(l.module.Text(f.body_B.name), "c");
   EXPECT_EQ(f.p_AP, Eigen::Vector3d(1, 2, 3));
@@ -262,13 +262,12 @@ TEST(UrdfBallConstraintTest, LowersBodiesAndPoints) {  // EXT-052
   Lowered l;
   ASSERT_TRUE(l.Read(Robot(kBall))) << l.Messages();
   ASSERT_EQ(l.module.constraints.size(), 1u);
-  const ir::Constraint& c = l.module.constraints[0];
-  EXPECT_EQ(c.type, ir::ConstraintType::Ball);
+  ASSERT_EQ(l.module.constraints[0].type(), ir::ConstraintType::Ball);
+  const auto& c = l.module.constraints[0].As<ir::BallConstraint>();
   EXPECT_EQ(l.module.Text(c.body_A.name), "a");
   EXPECT_EQ(l.module.Text(c.body_B.name), "c");
-  EXPECT_EQ(c.X_AP.p, Eigen::Vector3d(1, 2, 3));
-  EXPECT_EQ(c.X_BQ.p, Eigen::Vector3d(4, 5, 6));
-  EXPECT_TRUE(c.X_AP.R.isIdentity());
+  EXPECT_EQ(c.p_AP, Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(c.p_BQ, Eigen::Vector3d(4, 5, 6));
   ASSERT_TRUE(l.RunPasses()) << l.Messages();
 }
 
@@ -320,12 +319,12 @@ TEST(UrdfDistanceConstraintTest, LowersEveryParameter) {  // EXT-053
   Lowered l;
   ASSERT_TRUE(l.Read(Robot(kDistance))) << l.Messages();
   ASSERT_EQ(l.module.constraints.size(), 1u);
-  const ir::Constraint& c = l.module.constraints[0];
-  EXPECT_EQ(c.type, ir::ConstraintType::Distance);
+  ASSERT_EQ(l.module.constraints[0].type(), ir::ConstraintType::Distance);
+  const auto& c = l.module.constraints[0].As<ir::DistanceConstraint>();
   EXPECT_EQ(l.module.Text(c.body_A.name), "a");
   EXPECT_EQ(l.module.Text(c.body_B.name), "c");
-  EXPECT_EQ(c.X_AP.p, Eigen::Vector3d(1, 2, 3));
-  EXPECT_EQ(c.X_BQ.p, Eigen::Vector3d(4, 5, 6));
+  EXPECT_EQ(c.p_AP, Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(c.p_BQ, Eigen::Vector3d(4, 5, 6));
   EXPECT_EQ(c.distance, 0.5);
   EXPECT_EQ(c.stiffness, 100);
   EXPECT_EQ(c.damping, 0);
@@ -337,7 +336,7 @@ TEST(UrdfDistanceConstraintTest, InfiniteStiffnessIsARigidConstraint) {  // EXT-
   std::string text = kDistance;
   text.replace(text.find("'100'"), 5, "'inf'");
   ASSERT_TRUE(l.Read(Robot(text))) << l.Messages();
-  EXPECT_EQ(l.module.constraints[0].stiffness, kInf);
+  EXPECT_EQ(l.module.constraints[0].As<ir::DistanceConstraint>().stiffness, kInf);
 }
 
 TEST(UrdfDistanceConstraintTest, EveryChildIsRequiredAndValuesAreChecked) {  // EXT-053
@@ -374,8 +373,8 @@ TEST(UrdfTendonConstraintTest, LowersJointsCoefficientsAndParameters) {  // EXT-
   </drake:tendon_constraint>)")))
       << l.Messages();
   ASSERT_EQ(l.module.constraints.size(), 1u);
-  const ir::Constraint& c = l.module.constraints[0];
-  EXPECT_EQ(c.type, ir::ConstraintType::Tendon);
+  ASSERT_EQ(l.module.constraints[0].type(), ir::ConstraintType::Tendon);
+  const auto& c = l.module.constraints[0].As<ir::TendonConstraint>();
   ASSERT_EQ(c.joints.size(), 2u);
   EXPECT_EQ(l.module.Text(c.joints[0].name), "rev");
   EXPECT_EQ(l.module.Text(c.joints[1].name), "pri");
@@ -386,7 +385,8 @@ TEST(UrdfTendonConstraintTest, LowersJointsCoefficientsAndParameters) {  // EXT-
   EXPECT_EQ(c.stiffness, 0.4);
   EXPECT_EQ(c.damping, 0.09);
   ASSERT_TRUE(l.RunPasses()) << l.Messages();
-  const ir::Constraint& resolved = l.module.constraints[0];  // check-joints rebuilds the table
+  // check-joints rebuilds the table
+  const auto& resolved = l.module.constraints[0].As<ir::TendonConstraint>();
   EXPECT_EQ(l.module[resolved.joints[0].id].name, l.module.Intern("rev"));
   EXPECT_EQ(l.module[resolved.joints[1].id].name, l.module.Intern("pri"));
 }
@@ -400,7 +400,7 @@ TEST(UrdfTendonConstraintTest, OptionalParametersTakeAddTendonConstraintDefaults
     <drake:tendon_constraint_upper_limit value='0.5'/>
   </drake:tendon_constraint>)")))
       << l.Messages();
-  const ir::Constraint& c = l.module.constraints[0];
+  const auto& c = l.module.constraints[0].As<ir::TendonConstraint>();
   EXPECT_EQ(c.offset, 0);
   EXPECT_EQ(c.lower, -kInf);
   EXPECT_EQ(c.upper, 0.5);
@@ -487,7 +487,8 @@ TEST(UrdfDrakeElementsTest, UnknownAndRepeatedChildrenAreWarnings) {  // EXT-050
   ASSERT_TRUE(l.Read(Robot(text))) << l.Messages();
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnknownElement, "<drake:extra>"));
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnknownElement, "only the first one is used"));
-  EXPECT_EQ(l.module.constraints[0].X_AP.p, Eigen::Vector3d(1, 2, 3));  // Drake: the first
+  EXPECT_EQ(l.module.constraints[0].As<ir::BallConstraint>().p_AP,
+            Eigen::Vector3d(1, 2, 3));  // Drake: the first
 }
 
 TEST(UrdfDrakeElementsTest, EveryProblemOfOneElementIsReported) {  // COMMON-001

@@ -193,8 +193,8 @@ TEST(UrdfDrakeJointTest, JointsAreMadeInDocumentOrderAcrossBothElements) {  // U
   EXPECT_EQ(l.module.actuators[0].effort_limit, kInf);
   ASSERT_EQ(l.module.constraints.size(), 1u);
   // r1 follows the drake:joint s (Drake's orientation: joint0 follows joint1)
-  EXPECT_EQ(l.module.Text(l.module[l.module.constraints[0].joint0.id].name), "r1");
-  EXPECT_EQ(l.module.Text(l.module[l.module.constraints[0].joint1.id].name), "s");
+  EXPECT_EQ(l.module.Text(l.module[l.module.constraints[0].As<ir::CouplerConstraint>().joint0.id].name), "r1");
+  EXPECT_EQ(l.module.Text(l.module[l.module.constraints[0].As<ir::CouplerConstraint>().joint1.id].name), "s");
 
   Lowered dup;
   EXPECT_FALSE(dup.Read(Robot(R"(
@@ -215,9 +215,9 @@ TEST(UrdfDrakeJointTest, DrakeJointHonoursDrakeIgnoreAndMimic) {  // EXT-001, UR
   EXPECT_EQ(l.Joint("gone"), nullptr);
   ASSERT_TRUE(l.RunPasses()) << l.Messages();
   ASSERT_EQ(l.module.constraints.size(), 1u);
-  EXPECT_EQ(l.module.Text(l.module[l.module.constraints[0].joint0.id].name), "follow");
-  EXPECT_EQ(l.module.Text(l.module[l.module.constraints[0].joint1.id].name), "lead");
-  EXPECT_EQ(l.module.constraints[0].offset, 1);
+  EXPECT_EQ(l.module.Text(l.module[l.module.constraints[0].As<ir::CouplerConstraint>().joint0.id].name), "follow");
+  EXPECT_EQ(l.module.Text(l.module[l.module.constraints[0].As<ir::CouplerConstraint>().joint1.id].name), "lead");
+  EXPECT_EQ(l.module.constraints[0].As<ir::CouplerConstraint>().offset, 1);
 }
 
 TEST(UrdfDrakeJointTest, LimitsOfCustomTypesAreIgnoredWithAWarning) {  // EXT-001, URDF-013

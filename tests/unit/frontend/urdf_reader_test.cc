@@ -259,8 +259,8 @@ TEST(UrdfReaderTest, MimicBecomesACouplerConstraint) {  // URDF-018
   </robot>)"));
   ASSERT_TRUE(l.RunPasses()) << l.Messages();  // forward reference resolved
   ASSERT_EQ(l.module.constraints.size(), 1u);
-  const ir::Constraint& c = l.module.constraints[0];
-  EXPECT_EQ(c.type, ir::ConstraintType::Coupler);
+  ASSERT_EQ(l.module.constraints[0].type(), ir::ConstraintType::Coupler);
+  const auto& c = l.module.constraints[0].As<ir::CouplerConstraint>();
   // Drake's AddCouplerConstraint(joint0, joint1): q0 = gear * q1 + offset, and
   // Drake passes the joint holding <mimic> as joint0
   EXPECT_EQ(l.module.Text(l.module[c.joint0.id].name), "follower");
