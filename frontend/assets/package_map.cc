@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "frontend/xml/trim.h"
 #include "frontend/xml/xml_document.h"
 
 namespace mdlc::assets {
@@ -52,9 +53,7 @@ void PackageMap::AddFromManifest(const std::string& manifest, SourceManager& sou
   if (!doc) return;
   xml::XmlElement root = doc->Root();
   xml::XmlElement name = root.Child("name");
-  std::string text = name ? name.Text() : "";
-  const size_t first = text.find_first_not_of(" \t\r\n");
-  text = first == std::string::npos ? "" : text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
+  const std::string text(xml::Trim(name ? name.Text() : std::string()));
   if (root.Name() != "package" || text.empty()) {
     diags.Report(DiagKind::MissingElement, root.GetLoc(),
                  "package.xml must be a <package> with a non-empty <name>");

@@ -24,6 +24,7 @@
 
 #include "frontend/drake_proximity.h"
 #include "frontend/sdf/sdf_reader_detail.h"
+#include "frontend/xml/trim.h"
 
 namespace mdlc::frontend::sdf {
 namespace {
@@ -38,13 +39,6 @@ constexpr std::string_view kDiffuseMapTag = "drake:diffuse_map";
 // geometry_names_ keeps one name space per (link, kind): the kind is mixed
 // into the key's scope
 enum NameKind : uint32_t { kCollisionNames = 0, kVisualNames = 1, kSensorNames = 2 };
-
-std::string_view Trim(std::string_view s) {
-  auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
-  while (!s.empty() && space(s.front())) s.remove_prefix(1);
-  while (!s.empty() && space(s.back())) s.remove_suffix(1);
-  return s;
-}
 
 /// How the SDFormat elements of a visual are spelled: plain, or with the
 /// drake: prefix inside a <drake:visual> (EXT-032).
@@ -157,7 +151,7 @@ std::optional<Eigen::Vector3d> Sizes3Or(SdfReader& r, const xml::XmlElement& par
   if (!(v->minCoeff() > 0)) {
     r.diags().Report(DiagKind::BadValue, child.GetLoc(),
                      fmt::format("<{}> of <{}> must hold positive numbers, got '{}'", name,
-                                 parent.Name(), Trim(child.Text())));
+                                 parent.Name(), xml::Trim(child.Text())));
     return std::nullopt;
   }
   return v;
@@ -267,7 +261,7 @@ std::optional<ShapeResult> ReadShape(SdfReader& r, const xml::XmlElement& geomet
       if (!(v->norm() >= 1e-10)) {
         r.diags().Report(DiagKind::BadValue, n.GetLoc(),
                          fmt::format("the plane normal must not be zero, got '{}'",
-                                     Trim(n.Text())));
+                                     xml::Trim(n.Text())));
         return std::nullopt;
       }
       normal = *v;
@@ -278,7 +272,7 @@ std::optional<ShapeResult> ReadShape(SdfReader& r, const xml::XmlElement& geomet
       if ((*v)[0] < 0 || (*v)[1] < 0) {
         r.diags().Report(DiagKind::BadValue, size.GetLoc(),
                          fmt::format("<{}> of <{}> must not be negative, got '{}'", size.Name(),
-                                     e.Name(), Trim(size.Text())));
+                                     e.Name(), xml::Trim(size.Text())));
         return std::nullopt;
       }
     }
@@ -289,7 +283,7 @@ std::optional<ShapeResult> ReadShape(SdfReader& r, const xml::XmlElement& geomet
                         {"submesh", "convex_decomposition", "optimization"});
     xml::XmlElement uri = e.Child(sp("uri"));
     const std::string written = uri ? uri.Text() : std::string();
-    const std::string_view text = Trim(written);
+    const std::string_view text = xml::Trim(written);
     if (!uri || text.empty()) {
       // libsdformat's default uri is "__default__", which Drake rejects
       r.diags().Report(DiagKind::MissingElement, uri ? uri.GetLoc() : e.GetLoc(),
@@ -328,14 +322,14 @@ std::optional<Eigen::Vector4d> ReadColor(SdfReader& r, const xml::XmlElement& e)
   if (!values || (values->size() != 3 && values->size() != 4)) {
     r.diags().Report(DiagKind::BadValue, e.GetLoc(),
                      fmt::format("<{}> must hold a color 'r g b [a]', found '{}'", e.Name(),
-                                 Trim(text)));
+                                 xml::Trim(text)));
     return std::nullopt;
   }
   for (double v : *values) {
     if (!(v >= 0 && v <= 1)) {
       r.diags().Report(DiagKind::BadValue, e.GetLoc(),
                        fmt::format("<{}> color values must be within [0, 1], got '{}'", e.Name(),
-                                   Trim(text)));
+                                   xml::Trim(text)));
       return std::nullopt;
     }
   }
@@ -358,7 +352,7 @@ void ReadMaterial(SdfReader& r, const xml::XmlElement& material, const Spelling&
   std::vector<std::string> script_lacks;
   for (std::string_view needed : {"uri", "name"}) {
     xml::XmlElement c = script ? script.Child(needed) : xml::XmlElement();
-    if (script && (!c || Trim(c.Text()).empty() || Trim(c.Text()) == "__default__")) {
+    if (script && (!c || xml::Trim(c.Text()).empty() || xml::Trim(c.Text()) == "__default__")) {
       script_lacks.push_back(fmt::format("<{}>", needed));
     }
   }
@@ -398,7 +392,7 @@ void ReadMaterial(SdfReader& r, const xml::XmlElement& material, const Spelling&
   }
   if (xml::XmlElement map = material.Child(kDiffuseMapTag)) {
     const std::string written = map.Text();
-    const std::string_view uri = Trim(written);
+    const std::string_view uri = xml::Trim(written);
     if (uri.empty()) {
       r.diags().Report(DiagKind::BadValue, map.GetLoc(),
                        fmt::format("<{}> is empty; it must name a texture file", kDiffuseMapTag));
@@ -422,7 +416,7 @@ void ReadRoleElement(SdfReader& r, const xml::XmlElement& e, ir::Geometry& g) {
   const uint8_t role = e.Name() == kIllustrationTag ? ir::kIllustrationRole : ir::kPerceptionRole;
   xml::XmlAttribute enabled = e.Attribute("enabled");
   if (!enabled.present()) return;
-  const std::string_view value = Trim(enabled.value);
+  const std::string_view value = xml::Trim(enabled.value);
   if (value == "true" || value == "1") {
     g.roles |= role;
   } else if (value == "false" || value == "0") {
@@ -439,7 +433,7 @@ void ReadRoleElement(SdfReader& r, const xml::XmlElement& e, ir::Geometry& g) {
 void ReadAcceptingRenderer(SdfReader& r, const xml::XmlElement& e, ir::Geometry& g) {
   r.attrs_.WarnUnknownAttributes(e, {});
   const std::string written = e.Text();
-  const std::string_view name = Trim(written);
+  const std::string_view name = xml::Trim(written);
   if (name.empty()) {
     r.diags().Report(DiagKind::BadValue, e.GetLoc(),
                      fmt::format("<{}> is empty; it must name a renderer", kAcceptingTag));
@@ -535,7 +529,7 @@ std::optional<int> PixelsOr(SdfReader& r, const xml::XmlElement& parent, std::st
   if (!(*v >= 1 && *v <= 1e6 && *v == std::floor(*v))) {
     r.diags().Report(DiagKind::BadValue, child.GetLoc(),
                      fmt::format("<{}> must be a positive whole number of pixels, got '{}'",
-                                 name, Trim(child.Text())));
+                                 name, xml::Trim(child.Text())));
     return std::nullopt;
   }
   return static_cast<int>(*v);

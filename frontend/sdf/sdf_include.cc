@@ -16,6 +16,7 @@
 
 #include "frontend/assets/package_map.h"
 #include "frontend/sdf/sdf_reader_detail.h"
+#include "frontend/xml/trim.h"
 
 namespace mdlc::frontend::sdf {
 namespace {
@@ -72,13 +73,12 @@ std::optional<std::string> SdfReader::ModelFileInFolder(const std::string& dir, 
       }
     }
     if (version > 111) continue;  // newer than mdlc reads
-    std::string text = e.Text();
-    auto b = text.find_first_not_of(" \t\r\n");
-    auto t = text.find_last_not_of(" \t\r\n");
-    if (b == std::string::npos) continue;
+    const std::string text = e.Text();
+    const std::string_view trimmed = xml::Trim(text);
+    if (trimmed.empty()) continue;
     if (version > best_version) {
       best_version = version;
-      best = text.substr(b, t - b + 1);
+      best = std::string(trimmed);
     }
   }
   if (best.empty()) {

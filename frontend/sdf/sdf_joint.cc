@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "frontend/sdf/sdf_reader_detail.h"
+#include "frontend/xml/trim.h"
 
 namespace mdlc::frontend::sdf {
 namespace {
@@ -79,15 +80,14 @@ void SdfReader::ReadJoint(const xml::XmlElement& e, ModelScope& s) {
                      fmt::format("joint '{}' is missing required element <{}>", *name, tag));
       return {};
     }
-    std::string text = el.Text();
-    auto b = text.find_first_not_of(" \t\r\n");
-    auto t = text.find_last_not_of(" \t\r\n");
-    if (b == std::string::npos) {
+    const std::string text = el.Text();
+    const std::string_view trimmed = xml::Trim(text);
+    if (trimmed.empty()) {
       diags().Report(DiagKind::BadValue, el.GetLoc(),
                      fmt::format("<{}> of joint '{}' must name a frame", tag, *name));
       return {};
     }
-    return {module().Intern(std::string_view(text).substr(b, t - b + 1)), el.GetLoc()};
+    return {module().Intern(trimmed), el.GetLoc()};
   };
   ir::NameRef parent = frame_name("parent");
   ir::NameRef child = frame_name("child");

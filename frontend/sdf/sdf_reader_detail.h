@@ -7,8 +7,12 @@
 //   sdf_link.cc           <link>, <inertial>, <frame>
 //   sdf_joint.cc          <joint>: types, axes, limits, dynamics, actuators
 //   sdf_geometry.cc       <visual>, <collision>, shapes, materials, sensors
-//   sdf_drake_elements.cc drake: elements of a model (custom joints, filter
-//                         groups, bushings, constraints, deformables, mimic)
+//   sdf_drake_elements.cc drake: elements of a model (dispatch: filter groups,
+//                         bushings and constraints are read by the reader
+//                         shared with URDF, drake_elements.h) and of a joint
+//                         (mimic, actuator parameters)
+//   sdf_drake_joint.cc    <drake:joint>: planar and curvilinear joints
+//   sdf_deformable.cc     <drake:deformable_properties> of a link
 // Poses and attachments are recorded in Module::frame_graph, unevaluated;
 // the resolve-frames pass evaluates them. Other references stay names until
 // resolve-names.
@@ -116,6 +120,8 @@ class SdfReader {
   // --- sdf_drake_elements.cc: model-level drake: elements, read after every
   // link, joint and nested model of the model (EXT-001, EXT-040, EXT-050..054)
   void ReadDrakeModelElement(const xml::XmlElement& e, ModelScope& s);
+  // --- sdf_drake_joint.cc: <drake:joint> (EXT-001, EXT-003, EXT-004)
+  void ReadDrakeJoint(const xml::XmlElement& e, ModelScope& s);
   void AddDrakeJointFrames(JointId joint, const ModelScope& s, const ir::Ref<BodyId>& parent,
                            const ir::Ref<BodyId>& child);
   /// drake: children of a <joint> (drake:mimic, drake:rotor_inertia,
@@ -123,6 +129,7 @@ class SdfReader {
   /// Called after the joint and its actuator (if any) exist.
   void ReadJointDrakeChildren(const xml::XmlElement& joint_element, ModelScope& s, JointId joint,
                               std::optional<ActuatorId> actuator);
+  // --- sdf_deformable.cc
   /// drake:deformable_properties on a link (EXT-070); `body` is the link's body.
   void ReadDeformableProperties(const xml::XmlElement& link, ModelScope& s, BodyId body);
 

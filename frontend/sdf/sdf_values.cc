@@ -8,16 +8,9 @@
 #include <numbers>
 
 #include "frontend/sdf/sdf_reader_detail.h"
+#include "frontend/xml/trim.h"
 
 namespace mdlc::frontend::sdf {
-namespace {
-std::string_view Trim(std::string_view s) {
-  auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
-  while (!s.empty() && space(s.front())) s.remove_prefix(1);
-  while (!s.empty() && space(s.back())) s.remove_suffix(1);
-  return s;
-}
-}  // namespace
 
 std::optional<std::string> SdfReader::ChildText(const xml::XmlElement& parent,
                                                 std::string_view name, xml::Need need) {
@@ -29,7 +22,7 @@ std::optional<std::string> SdfReader::ChildText(const xml::XmlElement& parent,
     }
     return std::nullopt;
   }
-  return std::string(Trim(child.Text()));
+  return std::string(xml::Trim(child.Text()));
 }
 
 std::optional<double> SdfReader::TextDouble(const xml::XmlElement& e, xml::Finite finite) {
@@ -38,7 +31,7 @@ std::optional<double> SdfReader::TextDouble(const xml::XmlElement& e, xml::Finit
   if (!v) {
     // libsdformat reads the leading number and drops the rest; real models
     // rely on it ("2.35"" with a stray quote), so take the number, and warn
-    std::string_view trimmed = Trim(text);
+    std::string_view trimmed = xml::Trim(text);
     std::string copy(trimmed);
     char* end = nullptr;
     const double prefix = copy.empty() ? 0 : std::strtod(copy.c_str(), &end);
@@ -51,12 +44,12 @@ std::optional<double> SdfReader::TextDouble(const xml::XmlElement& e, xml::Finit
   }
   if (!v) {
     diags().Report(DiagKind::BadValue, e.GetLoc(),
-                   fmt::format("<{}> must hold a number, found '{}'", e.Name(), Trim(text)));
+                   fmt::format("<{}> must hold a number, found '{}'", e.Name(), xml::Trim(text)));
     return std::nullopt;
   }
   if (finite == xml::Finite::Required && !std::isfinite(*v)) {
     diags().Report(DiagKind::NonFinite, e.GetLoc(),
-                   fmt::format("<{}> must be finite, found '{}'", e.Name(), Trim(text)));
+                   fmt::format("<{}> must be finite, found '{}'", e.Name(), xml::Trim(text)));
     return std::nullopt;
   }
   return v;
@@ -82,7 +75,7 @@ std::optional<std::vector<double>> SdfReader::TextDoubles(const xml::XmlElement&
   if (!values || values->size() != count) {
     diags().Report(DiagKind::BadValue, e.GetLoc(),
                    fmt::format("<{}> must hold {} numbers, found '{}'", e.Name(), count,
-                               Trim(text)));
+                               xml::Trim(text)));
     return std::nullopt;
   }
   if (finite == xml::Finite::Required) {
@@ -90,7 +83,7 @@ std::optional<std::vector<double>> SdfReader::TextDoubles(const xml::XmlElement&
       if (!std::isfinite(v)) {
         diags().Report(DiagKind::NonFinite, e.GetLoc(),
                        fmt::format("<{}> must hold finite numbers, found '{}'", e.Name(),
-                                   Trim(text)));
+                                   xml::Trim(text)));
         return std::nullopt;
       }
     }
@@ -118,7 +111,7 @@ std::optional<Eigen::Vector3d> SdfReader::ChildVector3(const xml::XmlElement& pa
 }
 
 std::optional<bool> SdfReader::TextBool(const xml::XmlElement& e) {
-  std::string text(Trim(e.Text()));
+  std::string text(xml::Trim(e.Text()));
   if (text == "true" || text == "1") return true;
   if (text == "false" || text == "0") return false;
   diags().Report(DiagKind::BadValue, e.GetLoc(),
@@ -151,7 +144,7 @@ Transform SdfReader::ReadPoseValue(const xml::XmlElement& pose) {
   std::string_view format = "euler_rpy";
   if (auto f = attrs_.String(pose, "rotation_format")) format = *f;
   std::string text = pose.Text();
-  if (Trim(text).empty()) return Transform::Identity();
+  if (xml::Trim(text).empty()) return Transform::Identity();
   auto values = xml::ParseDoubleList(text);
   const size_t want = format == "quat_xyzw" ? 7 : 6;
   if (format != "euler_rpy" && format != "quat_xyzw") {
@@ -164,13 +157,13 @@ Transform SdfReader::ReadPoseValue(const xml::XmlElement& pose) {
     diags().Report(DiagKind::BadValue, pose.GetLoc(),
                    fmt::format("<pose> must hold {} numbers ({}), found '{}'", want,
                                want == 7 ? "x y z qx qy qz qw" : "x y z roll pitch yaw",
-                               Trim(text)));
+                               xml::Trim(text)));
     return Transform::Identity();
   }
   for (double v : *values) {
     if (!std::isfinite(v)) {
       diags().Report(DiagKind::NonFinite, pose.GetLoc(),
-                     fmt::format("<pose> must hold finite numbers, found '{}'", Trim(text)));
+                     fmt::format("<pose> must hold finite numbers, found '{}'", xml::Trim(text)));
       return Transform::Identity();
     }
   }

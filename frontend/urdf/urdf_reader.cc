@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "frontend/drake_elements.h"
 #include "frontend/model_naming.h"
 #include "frontend/urdf/urdf_reader_detail.h"
 
@@ -84,15 +85,10 @@ std::optional<ModelId> UrdfReader::Read() {
     }
   }
   for (const auto& e : transmissions_) ReadTransmission(e);
-  for (const auto& e : late_elements_) {
-    std::string_view tag = e.Name();
-    if (tag == "drake:collision_filter_group") ReadCollisionFilterGroup(e);
-    else if (tag == "drake:linear_bushing_rpy") ReadLinearBushing(e);
-    else if (tag == "drake:linear_spring_damper") ReadLinearSpringDamper(e);
-    else if (tag == "drake:ball_constraint") ReadBallConstraint(e);
-    else if (tag == "drake:distance_constraint") ReadDistanceConstraint(e);
-    else if (tag == "drake:tendon_constraint") ReadTendonConstraint(e);
-  }
+  // model-level drake: elements (EXT-040, EXT-050..054), read last so they
+  // may name any link, joint or frame; URDF spells their values in attributes
+  const DrakeElementContext drake{module(), attrs_, model_, ValueSpelling::Attribute};
+  for (const auto& e : late_elements_) ReadDrakeModelLevelElement(e, drake);
   return model_;
 }
 

@@ -74,15 +74,6 @@ class UrdfReader {
   bool ReadCurvilinearPath(const xml::XmlElement& e, ir::Joint& joint);
   // --- end: <joint> / <drake:joint> helpers ---
 
-  // urdf_drake_elements.cc: model-level drake: elements, read after every
-  // link and joint so they may name any of them (EXT-040, EXT-050..054)
-  void ReadCollisionFilterGroup(const xml::XmlElement& e);
-  void ReadLinearBushing(const xml::XmlElement& e);
-  void ReadLinearSpringDamper(const xml::XmlElement& e);
-  void ReadBallConstraint(const xml::XmlElement& e);
-  void ReadDistanceConstraint(const xml::XmlElement& e);
-  void ReadTendonConstraint(const xml::XmlElement& e);
-
   // urdf_geometry_properties.cc: drake: children of <collision> and <visual>
   // (EXT-020, EXT-021, EXT-030, EXT-031, URDF-033). Each returns true when
   // `child` was one of its elements (handled).

@@ -6,15 +6,11 @@
 #include <cmath>
 #include <limits>
 
+#include "frontend/xml/trim.h"
+
 namespace mdlc::xml {
 namespace {
 bool IsSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
-
-std::string_view Trim(std::string_view s) {
-  while (!s.empty() && IsSpace(s.front())) s.remove_prefix(1);
-  while (!s.empty() && IsSpace(s.back())) s.remove_suffix(1);
-  return s;
-}
 }  // namespace
 
 std::optional<double> ParseDouble(std::string_view text) {

@@ -101,8 +101,7 @@ TEST(UrdfCollisionFilterGroupTest, ChildWithoutItsNameAttributeIsAnError) {  // 
         "</drake:collision_filter_group>",
         child))))
         << child;
-    EXPECT_TRUE(l.HasDiagnostic(DiagKind::MissingAttribute, "does not specify the required "
-                                                            "attribute"))
+    EXPECT_TRUE(l.HasDiagnostic(DiagKind::MissingAttribute, "needs a name"))
         << l.Messages();
   }
 }
@@ -168,21 +167,21 @@ void ExpectRejected(const char* element, const Broken& b) {
 
 TEST(UrdfLinearBushingTest, EveryChildIsRequiredAndGainsAreNonNegative) {  // EXT-050
   const Broken cases[] = {
-      {"<drake:bushing_frameA name='fa'/>", "", DiagKind::BadValue,
-       "Unable to find the <drake:bushing_frameA> tag"},
-      {"<drake:bushing_frameC name='c'/>", "", DiagKind::BadValue,
-       "Unable to find the <drake:bushing_frameC> tag"},
-      {"<drake:bushing_torque_damping value='4 5 6'/>", "", DiagKind::BadValue,
-       "Unable to find the <drake:bushing_torque_damping> tag"},
-      {"<drake:bushing_force_damping value='10 11 12'/>", "", DiagKind::BadValue,
-       "Unable to find the <drake:bushing_force_damping> tag"},
-      {"name='c'", "naQQme='c'", DiagKind::BadValue,
-       "Unable to read the 'name' attribute for the <drake:bushing_frameC> tag"},
+      {"<drake:bushing_frameA name='fa'/>", "", DiagKind::MissingElement,
+       "needs a <drake:bushing_frameA> child"},
+      {"<drake:bushing_frameC name='c'/>", "", DiagKind::MissingElement,
+       "needs a <drake:bushing_frameC> child"},
+      {"<drake:bushing_torque_damping value='4 5 6'/>", "", DiagKind::MissingElement,
+       "needs a <drake:bushing_torque_damping> child"},
+      {"<drake:bushing_force_damping value='10 11 12'/>", "", DiagKind::MissingElement,
+       "needs a <drake:bushing_force_damping> child"},
+      {"name='c'", "naQQme='c'", DiagKind::MissingAttribute,
+       "<drake:bushing_frameC> needs a name"},
       {"value='1 2 3'", "", DiagKind::MissingAttribute,
-       "Unable to read the 'value' attribute for the <drake:bushing_torque_stiffness> tag"},
-      {"value='1 2 3'", "value='1 2'", DiagKind::BadValue, "must have 3 values"},
+       "<drake:bushing_torque_stiffness> needs a value"},
+      {"value='1 2 3'", "value='1 2'", DiagKind::BadValue, "must hold 3 numbers"},
       {"value='7 8 9'", "value='7 -8 9'", DiagKind::BadValue, "must be non-negative"},
-      {"value='4 5 6'", "value='4 inf 6'", DiagKind::NonFinite, "must be finite"},
+      {"value='4 5 6'", "value='4 inf 6'", DiagKind::NonFinite, "must hold finite numbers"},
   };
   for (const Broken& b : cases) ExpectRejected(kBushing, b);
 }
@@ -229,22 +228,22 @@ TEST(UrdfLinearSpringDamperTest, LowersBodiesPointsAndGains) {  // EXT-051
 
 TEST(UrdfLinearSpringDamperTest, EveryChildIsRequiredAndValuesAreChecked) {  // EXT-051
   const Broken cases[] = {
-      {"<drake:linear_spring_damper_body_B name='c'/>", "", DiagKind::BadValue,
-       "Unable to find the <drake:linear_spring_damper_body_B> tag"},
-      {"<drake:linear_spring_damper_p_AP value='1 2 3'/>", "", DiagKind::BadValue,
-       "Unable to find the <drake:linear_spring_damper_p_AP> tag"},
-      {"<drake:linear_spring_damper_stiffness value='8'/>", "", DiagKind::BadValue,
-       "Unable to find the <drake:linear_spring_damper_stiffness> tag"},
+      {"<drake:linear_spring_damper_body_B name='c'/>", "", DiagKind::MissingElement,
+       "needs a <drake:linear_spring_damper_body_B> child"},
+      {"<drake:linear_spring_damper_p_AP value='1 2 3'/>", "", DiagKind::MissingElement,
+       "needs a <drake:linear_spring_damper_p_AP> child"},
+      {"<drake:linear_spring_damper_stiffness value='8'/>", "", DiagKind::MissingElement,
+       "needs a <drake:linear_spring_damper_stiffness> child"},
       {"value='1 2 3'", "", DiagKind::MissingAttribute,
-       "Unable to read the 'value' attribute for the <drake:linear_spring_damper_p_AP> tag"},
-      {"value='7'", "value='0'", DiagKind::BadValue, "must be strictly positive"},
-      {"value='7'", "value='-1'", DiagKind::BadValue, "must be strictly positive"},
+       "<drake:linear_spring_damper_p_AP> needs a value"},
+      {"value='7'", "value='0'", DiagKind::BadValue, "must be positive"},
+      {"value='7'", "value='-1'", DiagKind::BadValue, "must be positive"},
       {"value='8'", "value='-8'", DiagKind::BadValue, "must be non-negative"},
       {"value='9'", "value='-0.1'", DiagKind::BadValue, "must be non-negative"},
       {"value='9'", "value='nan'", DiagKind::BadValue, "not NaN"},
       {"value='8'", "value='inf'", DiagKind::BadValue, "must be finite"},
-      {"value='9'", "value='x'", DiagKind::BadValue, "must be numbers"},
-      {"name='a'", "name=''", DiagKind::BadValue, "is empty"},
+      {"value='9'", "value='x'", DiagKind::BadValue, "must hold a number"},
+      {"name='a'", "name=''", DiagKind::MissingAttribute, "needs a name"},
   };
   for (const Broken& b : cases) ExpectRejected(kSpring, b);
 }
@@ -273,11 +272,11 @@ TEST(UrdfBallConstraintTest, LowersBodiesAndPoints) {  // EXT-052
 
 TEST(UrdfBallConstraintTest, EveryChildIsRequired) {  // EXT-052
   const Broken cases[] = {
-      {"<drake:ball_constraint_body_A name='a'/>", "", DiagKind::BadValue,
-       "Unable to find the <drake:ball_constraint_body_A> tag"},
-      {"<drake:ball_constraint_p_BQ value='4 5 6'/>", "", DiagKind::BadValue,
-       "Unable to find the <drake:ball_constraint_p_BQ> tag"},
-      {"value='4 5 6'", "value='4 5 6 7'", DiagKind::BadValue, "must have 3 values"},
+      {"<drake:ball_constraint_body_A name='a'/>", "", DiagKind::MissingElement,
+       "needs a <drake:ball_constraint_body_A> child"},
+      {"<drake:ball_constraint_p_BQ value='4 5 6'/>", "", DiagKind::MissingElement,
+       "needs a <drake:ball_constraint_p_BQ> child"},
+      {"value='4 5 6'", "value='4 5 6 7'", DiagKind::BadValue, "must hold 3 numbers"},
   };
   for (const Broken& b : cases) ExpectRejected(kBall, b);
 }
@@ -341,16 +340,16 @@ TEST(UrdfDistanceConstraintTest, InfiniteStiffnessIsARigidConstraint) {  // EXT-
 
 TEST(UrdfDistanceConstraintTest, EveryChildIsRequiredAndValuesAreChecked) {  // EXT-053
   const Broken cases[] = {
-      {"<drake:distance_constraint_distance value='0.5'/>", "", DiagKind::BadValue,
-       "Unable to find the <drake:distance_constraint_distance> tag"},
-      {"<drake:distance_constraint_stiffness value='100'/>", "", DiagKind::BadValue,
-       "Unable to find the <drake:distance_constraint_stiffness> tag"},
-      {"<drake:distance_constraint_damping value='0'/>", "", DiagKind::BadValue,
-       "Unable to find the <drake:distance_constraint_damping> tag"},
-      {"<drake:distance_constraint_body_B name='c'/>", "", DiagKind::BadValue,
-       "Unable to find the <drake:distance_constraint_body_B> tag"},
-      {"value='0.5'", "value='0'", DiagKind::BadValue, "must be strictly positive"},
-      {"value='100'", "value='0'", DiagKind::BadValue, "must be strictly positive"},
+      {"<drake:distance_constraint_distance value='0.5'/>", "", DiagKind::MissingElement,
+       "needs a <drake:distance_constraint_distance> child"},
+      {"<drake:distance_constraint_stiffness value='100'/>", "", DiagKind::MissingElement,
+       "needs a <drake:distance_constraint_stiffness> child"},
+      {"<drake:distance_constraint_damping value='0'/>", "", DiagKind::MissingElement,
+       "needs a <drake:distance_constraint_damping> child"},
+      {"<drake:distance_constraint_body_B name='c'/>", "", DiagKind::MissingElement,
+       "needs a <drake:distance_constraint_body_B> child"},
+      {"value='0.5'", "value='0'", DiagKind::BadValue, "must be positive"},
+      {"value='100'", "value='0'", DiagKind::BadValue, "must be positive"},
       {"value='0'/>\n  </drake", "value='-1'/>\n  </drake", DiagKind::BadValue,
        "must be non-negative"},
       {"value='0.5'", "value='inf'", DiagKind::BadValue, "must be finite"},
@@ -417,15 +416,17 @@ TEST(UrdfTendonConstraintTest, RejectsWhatAddTendonConstraintRejects) {  // EXT-
     <drake:tendon_constraint_damping value='4'/>
   </drake:tendon_constraint>)";
   const Broken cases[] = {
-      {"<drake:tendon_constraint_joint name='rev' a='1'/>", "", DiagKind::BadValue,
+      {"<drake:tendon_constraint_joint name='rev' a='1'/>", "", DiagKind::MissingElement,
        "needs at least one <drake:tendon_constraint_joint>"},
-      {"name='rev' a='1'", "a='1'", DiagKind::BadValue, "Unable to read the 'name' attribute"},
-      {"name='rev' a='1'", "name='rev'", DiagKind::BadValue, "Unable to read the 'a' attribute"},
+      {"name='rev' a='1'", "a='1'", DiagKind::MissingAttribute,
+       "<drake:tendon_constraint_joint> needs a name"},
+      {"name='rev' a='1'", "name='rev'", DiagKind::MissingAttribute,
+       "<drake:tendon_constraint_joint> needs its 'a' attribute"},
       {"a='1'", "a='inf'", DiagKind::BadValue, "must be finite"},
       {"value='-1'", "value='2'", DiagKind::BadValue, "greater than upper limit"},
       {"value='-1'", "value='inf'", DiagKind::BadValue, "must be finite or -inf"},
       {"value='1'", "value='-inf'", DiagKind::BadValue, "must be finite or inf"},
-      {"value='3'", "value='0'", DiagKind::BadValue, "must be strictly positive"},
+      {"value='3'", "value='0'", DiagKind::BadValue, "must be positive"},
       {"value='4'", "value='-4'", DiagKind::BadValue, "must be non-negative"},
       {"value='4'", "value='nan'", DiagKind::BadValue, "not NaN"},
       {"<drake:tendon_constraint_lower_limit value='-1'/>\n    "
