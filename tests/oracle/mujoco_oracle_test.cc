@@ -1132,7 +1132,7 @@ TEST_P(MujocoOracle, CompiledModelMatches) {
       GTEST_SKIP() << "MuJoCo 3.3.8 rejects " << mc.display << " (" << err3 << "); MuJoCo 2.2.2 "
                    << (problem2.empty() ? "rejects it too (" + dump2.value("error", std::string("?")) + ")"
                                         : "unavailable: " + problem2)
-                   << "; tests/corpus/mjcf_reference_rejects_test.cc covers it";
+                   << "; tests/corpus/reference_rejects_mjcf.cc covers it";
     }
     dump = std::move(dump2);
     oracle = "mujoco2.2.2";
