@@ -131,9 +131,6 @@ using Eigen::Quaterniond;
 using Eigen::Vector3d;
 using json = nlohmann::json;
 
-#ifndef MDLC_BINARY
-#define MDLC_BINARY ""
-#endif
 #ifndef MDLC_SHARED_DIR
 #define MDLC_SHARED_DIR ""
 #endif
@@ -155,14 +152,6 @@ constexpr double kMassTol = 1e-6;  // mass properties, M(q), geometry sizes, mes
 // joint damping and stiffness, actuator gains: as given, or derived from
 // the inertia at qpos0 (springdamper, dampratio)
 constexpr double kGainTol = 1e-9;
-
-std::string g_mdlc_binary;  // set in main()
-
-std::string MdlcBinary() {
-  if (!g_mdlc_binary.empty()) return g_mdlc_binary;
-  if (const char* env = std::getenv("MDLC_BINARY"); env && *env) return env;
-  return MDLC_BINARY;
-}
 
 // CMake leaves "<VAR>-NOTFOUND" when it finds no program.
 std::string Found(const std::string& s) {
@@ -608,36 +597,6 @@ json DumpMujoco2(const std::string& file, std::string* problem) {
 // mdlc's dump
 // ---------------------------------------------------------------------------
 
-class Report {
- public:
-  Report(std::string model, std::string oracle) : model_(std::move(model)), oracle_(std::move(oracle)) {}
-  void SetContext(std::string ctx) { ctx_ = std::move(ctx); }
-  void Add(const std::string& what) {
-    msgs_.push_back("[" + model_ + (ctx_.empty() ? "" : " | " + ctx_) + "] " + what);
-  }
-  // |mdlc - ref| <= tol * max(scale, |mdlc|, |ref|)
-  void Num(const std::string& feature, const std::string& entity, const std::string& quantity,
-           double mdlc, double ref, double tol, double scale = 1.0) {
-    const double bound = tol * std::max({scale, std::abs(mdlc), std::abs(ref)});
-    if (std::isfinite(mdlc) && std::isfinite(ref) && std::abs(mdlc - ref) <= bound) return;
-    if (std::isinf(mdlc) && mdlc == ref) return;
-    Add(feature + " " + entity + " " + quantity + ": mdlc=" + Fmt(mdlc) + " " + oracle_ + "=" +
-        Fmt(ref) + " (|diff|=" + Fmt(std::abs(mdlc - ref)) + ")");
-  }
-  size_t size() const { return msgs_.size(); }
-  std::string Text() const {
-    const size_t limit = static_cast<size_t>(EnvInt("MDLC_ORACLE_MAX_MESSAGES", 60));
-    std::string text = std::to_string(msgs_.size()) + " discrepancies for " + model_ + ":\n";
-    for (size_t i = 0; i < msgs_.size() && i < limit; ++i) text += "  " + msgs_[i] + "\n";
-    if (msgs_.size() > limit) text += "  ... and " + std::to_string(msgs_.size() - limit) + " more\n";
-    return text;
-  }
-
- private:
-  std::string model_, oracle_, ctx_;
-  std::vector<std::string> msgs_;
-};
-
 struct Plant {
   json root;
   std::map<std::string, const json*> bodies;  // local name (world: "world")
@@ -653,24 +612,6 @@ std::string LocalOf(const std::string& scoped) {
   return at == std::string::npos ? scoped : scoped.substr(at + 2);
 }
 
-std::string Quote(const std::vector<std::string>& argv) {
-  std::string s;
-  for (const auto& a : argv) s += (s.empty() ? "" : " ") + a;
-  return s;
-}
-
-std::string ErrorExcerpt(const std::string& err) {
-  std::stringstream ss(err);
-  std::vector<std::string> lines;
-  for (std::string l; std::getline(ss, l);) lines.push_back(l);
-  std::string out;
-  for (size_t i = 0; i < lines.size() && out.size() < 3000; ++i) {
-    if (lines[i].find("error") == std::string::npos) continue;
-    for (size_t k = i; k < lines.size() && k < i + 3; ++k) out += "\n      " + lines[k];
-  }
-  return out.empty() ? "\n      " + err.substr(0, 2000) : out;
-}
-
 struct MdlcRun {
   RunResult result;
   bool ok = false;  // exit 0 and a readable dump
@@ -680,41 +621,17 @@ struct MdlcRun {
 MdlcRun RunMdlc(const std::string& file, const std::vector<std::pair<std::string, double>>& q,
                 Plant* plant) {
   MdlcRun run;
-  std::vector<std::string> argv = {MdlcBinary(), "compile", file, "--emit=plant-json"};
-  for (const auto& [name, v] : q) {
-    argv.push_back("--q");
-    argv.push_back(name + "=" + Fmt(v));
-  }
+  const std::vector<std::string> argv = PlantJsonCommand(file, "", q);
   plant->cmdline = Quote(argv);
   run.result = RunProcess(argv, 120.0);
   const RunResult& r = run.result;
-  if (!r.spawn_error.empty()) {
-    run.problem = "could not run mdlc: " + r.spawn_error;
-    return run;
+  run.problem = SpawnFailure(r);
+  if (run.problem.empty()) run.problem = ExitFailure(r, plant->cmdline);
+  if (run.problem.empty()) {
+    run.problem = ReadPlantJson(r, plant->cmdline, {"bodies", "joints", "geometries"}, &plant->root);
   }
-  if (r.timed_out || r.exit_code != 0) {
-    run.problem = std::string("mdlc ") +
-                  (r.timed_out ? "timed out" : "exited with status " + std::to_string(r.exit_code)) +
-                  "\n    command: " + plant->cmdline + "\n    stderr (errors):" + ErrorExcerpt(r.err);
-    return run;
-  }
-  try {
-    plant->root = json::parse(r.out);
-  } catch (const std::exception& e) {
-    run.problem = std::string("mdlc output is not JSON (") + e.what() + ")";
-    return run;
-  }
+  if (!run.problem.empty()) return run;
   const json& root = plant->root;
-  if (root.value("schema", "") != "mdlc-plant/1") {
-    run.problem = "plant-json schema is not mdlc-plant/1";
-    return run;
-  }
-  for (const char* section : {"bodies", "joints", "geometries"}) {
-    if (!root.contains(section) || !root[section].is_array()) {
-      run.problem = std::string("plant-json has no '") + section + "' array";
-      return run;
-    }
-  }
   for (const auto& b : root["bodies"]) {
     const std::string name = b.value("name", "");
     if (!plant->bodies.emplace(name, &b).second) plant->duplicate_names.insert("body " + name);
@@ -752,22 +669,6 @@ double Num(const json& v) {
 // ---------------------------------------------------------------------------
 // Comparison
 // ---------------------------------------------------------------------------
-
-void ComparePose(Report* rep, const std::string& feature, const std::string& ent,
-                 const std::string& what, const Isometry3d& mdlc, const Isometry3d& ref,
-                 double tol, bool rotation = true) {
-  for (int i = 0; i < 3; ++i) {
-    rep->Num(feature, ent, what + ".p[" + std::to_string(i) + "]", mdlc.translation()(i),
-             ref.translation()(i), tol);
-  }
-  if (!rotation) return;
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) {
-      rep->Num(feature, ent, "R" + what.substr(1) + "(" + std::to_string(r) + "," + std::to_string(c) + ")",
-               mdlc.linear()(r, c), ref.linear()(r, c), tol);
-    }
-  }
-}
 
 void CompareVec(Report* rep, const std::string& feature, const std::string& ent,
                 const std::string& what, const Vector3d& mdlc, const Vector3d& ref, double tol) {
@@ -1181,17 +1082,9 @@ void CompareConfiguration(const Reference& ref, const RConfig& C, const Plant& p
   }
 }
 
-std::string DescribeQ(const std::vector<std::pair<std::string, double>>& q) {
-  if (q.empty()) return "default configuration (key 'home' or first key, else qpos0)";
-  std::string s = "q:";
-  for (size_t i = 0; i < q.size(); ++i) {
-    if (i == 6) {
-      s += " ...(" + std::to_string(q.size()) + " joints)";
-      break;
-    }
-    s += " " + q[i].first + "=" + Fmt(q[i].second);
-  }
-  return s;
+std::string DescribeQ(const JointValues& q) {
+  return mdlc::oracle::DescribeQ(q, "default configuration (key 'home' or first key, else qpos0)",
+                                 "joints");
 }
 
 // A located error (file:line:col: error:) among mdlc's diagnostics.
@@ -1239,7 +1132,7 @@ TEST_P(MujocoOracle, CompiledModelMatches) {
       GTEST_SKIP() << "MuJoCo 3.3.8 rejects " << mc.display << " (" << err3 << "); MuJoCo 2.2.2 "
                    << (problem2.empty() ? "rejects it too (" + dump2.value("error", std::string("?")) + ")"
                                         : "unavailable: " + problem2)
-                   << "; tests/corpus/mjcf_reference_rejects_test.cc covers it";
+                   << "; tests/corpus/reference_rejects_mjcf.cc covers it";
     }
     dump = std::move(dump2);
     oracle = "mujoco2.2.2";
@@ -1311,12 +1204,6 @@ TEST_P(MujocoOracle, CompiledModelMatches) {
   }
   if (rep.size() > 0) ADD_FAILURE() << rep.Text();
 }
-
-struct CaseName {
-  std::string operator()(const ::testing::TestParamInfo<ModelCase>& info) const {
-    return info.param.id;
-  }
-};
 
 INSTANTIATE_TEST_SUITE_P(Corpus, MujocoOracle, ::testing::ValuesIn(CorpusCases()), CaseName());
 INSTANTIATE_TEST_SUITE_P(HandMade, MujocoOracle, ::testing::ValuesIn(HandMadeCases()), CaseName());
@@ -1471,9 +1358,6 @@ TEST(MujocoOracleSelfCheck, Beyond007Beyond008DumpedGains) {
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a.rfind("--mdlc=", 0) == 0) g_mdlc_binary = a.substr(7);
-  }
+  ParseMdlcFlag(argc, argv);
   return RUN_ALL_TESTS();
 }

@@ -1,6 +1,7 @@
 // oracle_util.h - what the differential tests share: numbers formatted and
-// compared the same way, environment knobs, and running the mdlc CLI as a
-// subprocess with a timeout (the tests link no mdlc library code).
+// compared the same way, environment knobs, running the mdlc CLI as a
+// subprocess with a timeout (the tests link no mdlc library code), reading
+// its plant-json dump, and collecting discrepancies into one report per model.
 #pragma once
 
 #include <fcntl.h>
@@ -26,7 +27,15 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
 extern char** environ;
+
+#ifndef MDLC_BINARY
+#define MDLC_BINARY ""
+#endif
 
 namespace mdlc::oracle {
 
@@ -187,5 +196,288 @@ inline RunResult RunProcess(const std::vector<std::string>& argv, double timeout
   if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
   return r;
 }
+
+// ---------------------------------------------------------------------------
+// The mdlc CLI and its plant-json dump
+// ---------------------------------------------------------------------------
+
+/// --mdlc=PATH from the command line; main() sets it.
+inline std::string& MdlcBinaryFlag() {
+  static std::string path;
+  return path;
+}
+
+/// The mdlc CLI the tests run: --mdlc=PATH, else env MDLC_BINARY, else the
+/// path compiled in.
+inline std::string MdlcBinary() {
+  if (!MdlcBinaryFlag().empty()) return MdlcBinaryFlag();
+  if (const char* env = std::getenv("MDLC_BINARY"); env && *env) return env;
+  return MDLC_BINARY;
+}
+
+/// Takes --mdlc=PATH from the arguments gtest left.
+inline void ParseMdlcFlag(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.rfind("--mdlc=", 0) == 0) MdlcBinaryFlag() = a.substr(7);
+  }
+}
+
+/// Joint positions for --q, in order: (joint name, value).
+using JointValues = std::vector<std::pair<std::string, double>>;
+
+inline std::string Quote(const std::vector<std::string>& argv) {
+  std::string s;
+  for (const auto& a : argv) s += (s.empty() ? "" : " ") + a;
+  return s;
+}
+
+/// A configuration for failure messages: its first six values.
+inline std::string DescribeQ(const JointValues& q,
+                             const std::string& if_empty = "default configuration",
+                             const std::string& unit = "dofs") {
+  if (q.empty()) return if_empty;
+  std::string s = "q:";
+  for (size_t i = 0; i < q.size(); ++i) {
+    if (i == 6) {
+      s += " ...(" + std::to_string(q.size()) + " " + unit + ")";
+      break;
+    }
+    s += " " + q[i].first + "=" + Fmt(q[i].second);
+  }
+  return s;
+}
+
+/// The error lines of mdlc's stderr (each with the two lines after it), so
+/// failures are not buried under warnings; falls back to the head of stderr.
+inline std::string ErrorExcerpt(const std::string& err) {
+  std::vector<std::string> lines;
+  std::stringstream ss(err);
+  for (std::string l; std::getline(ss, l);) lines.push_back(l);
+  std::string out;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    if (lines[i].find("error") == std::string::npos) continue;
+    for (size_t k = i; k < lines.size() && k < i + 3; ++k) out += "\n      " + lines[k];
+    if (out.size() > 3000) break;
+  }
+  if (out.empty()) out = "\n      " + err.substr(0, 2000);
+  return out;
+}
+
+/// `mdlc compile FILE --emit=plant-json [--package-path DIR] [--q NAME=V]...`
+inline std::vector<std::string> PlantJsonCommand(const std::string& file,
+                                                 const std::string& package_path,
+                                                 const JointValues& q) {
+  std::vector<std::string> argv = {MdlcBinary(), "compile", file, "--emit=plant-json"};
+  if (!package_path.empty()) {
+    argv.push_back("--package-path");
+    argv.push_back(package_path);
+  }
+  for (const auto& [name, v] : q) {
+    argv.push_back("--q");
+    argv.push_back(name + "=" + Fmt(v));
+  }
+  return argv;
+}
+
+/// Why mdlc could not be run at all ("" when it ran).
+inline std::string SpawnFailure(const RunResult& r) {
+  return r.spawn_error.empty() ? "" : "could not run mdlc: " + r.spawn_error;
+}
+
+/// Why a run failed (timed out, or exited with a non-zero status), with
+/// mdlc's errors; "" when it exited 0.
+inline std::string ExitFailure(const RunResult& r, const std::string& cmdline) {
+  if (!r.timed_out && r.exit_code == 0) return "";
+  return std::string("mdlc ") +
+         (r.timed_out ? "timed out" : "exited with status " + std::to_string(r.exit_code)) +
+         "\n    command: " + cmdline + "\n    stderr (errors):" + ErrorExcerpt(r.err);
+}
+
+/// Parses mdlc's stdout as plant-json (schema mdlc-plant/1) holding the
+/// top-level arrays `sections`; returns why not, or "".
+inline std::string ReadPlantJson(const RunResult& r, const std::string& cmdline,
+                                 const std::vector<std::string>& sections, nlohmann::json* root) {
+  try {
+    *root = nlohmann::json::parse(r.out);
+  } catch (const std::exception& e) {
+    return std::string("mdlc output is not JSON (") + e.what() + ")\n    command: " + cmdline +
+           "\n    stdout starts: " + r.out.substr(0, 300) + "\n    stderr: " + r.err.substr(0, 1000);
+  }
+  if (!root->is_object() || root->value("schema", "") != "mdlc-plant/1") {
+    return "plant-json schema is not mdlc-plant/1: " +
+           (root->is_object() ? root->value("schema", std::string("<missing>")) : root->dump().substr(0, 100));
+  }
+  for (const auto& section : sections) {
+    if (!root->contains(section) || !(*root)[section].is_array()) {
+      return "plant-json has no '" + section + "' array";
+    }
+  }
+  return "";
+}
+
+/// Collects the discrepancies of one model, each tagged with the model and
+/// the current context (e.g. the configuration), and reports them as one
+/// failure.
+class Report {
+ public:
+  /// `oracle` names the reference in messages ("urdfdom", "mujoco3.3.8").
+  Report(std::string model, std::string oracle)
+      : model_(std::move(model)), oracle_(std::move(oracle)) {}
+  void SetContext(std::string ctx) { ctx_ = std::move(ctx); }
+  void Add(const std::string& what) {
+    msgs_.push_back("[" + model_ + (ctx_.empty() ? "" : " | " + ctx_) + "] " + what);
+  }
+  /// Agreement within |mdlc - ref| <= tol * max(scale, |mdlc|, |ref|); equal
+  /// infinities agree, NaN never does. feature: spec ID; entity: e.g. "body
+  /// 'r::l'"; quantity: e.g. "X_WB.p[0]".
+  void Num(const std::string& feature, const std::string& entity, const std::string& quantity,
+           double mdlc, double ref, double tol = kRelTol, double scale = 1.0) {
+    if (Agree(mdlc, ref, tol, scale)) return;
+    Add(Disagreement(feature, entity, quantity, mdlc, ref));
+  }
+  /// As Num, to kRelTol, with a note on why the expected value is what it is.
+  void Num(const std::string& feature, const std::string& entity, const std::string& quantity,
+           double mdlc, double ref, const std::string& note) {
+    if (Agree(mdlc, ref, kRelTol, 1.0)) return;
+    Add(Disagreement(feature, entity, quantity, mdlc, ref) + (note.empty() ? "" : " [" + note + "]"));
+  }
+  bool empty() const { return msgs_.empty(); }
+  size_t size() const { return msgs_.size(); }
+  const std::vector<std::string>& messages() const { return msgs_; }
+  /// All messages, up to MDLC_ORACLE_MAX_MESSAGES (default 60) of them.
+  std::string Text() const {
+    const size_t limit = static_cast<size_t>(EnvInt("MDLC_ORACLE_MAX_MESSAGES", 60));
+    std::string text = std::to_string(msgs_.size()) + " discrepancies for " + model_ + ":\n";
+    for (size_t i = 0; i < msgs_.size() && i < limit; ++i) text += "  " + msgs_[i] + "\n";
+    if (msgs_.size() > limit) text += "  ... and " + std::to_string(msgs_.size() - limit) + " more\n";
+    return text;
+  }
+  /// Fails the test with Text() when there is anything to report, and clears.
+  void Flush() {
+    if (msgs_.empty()) return;
+    ADD_FAILURE() << Text();
+    msgs_.clear();
+  }
+
+ private:
+  static bool Agree(double mdlc, double ref, double tol, double scale) {
+    if (std::isinf(mdlc) || std::isinf(ref)) return mdlc == ref;
+    if (std::isnan(mdlc) || std::isnan(ref)) return false;
+    return std::abs(mdlc - ref) <= tol * std::max({scale, std::abs(mdlc), std::abs(ref)});
+  }
+  std::string Disagreement(const std::string& feature, const std::string& entity,
+                           const std::string& quantity, double mdlc, double ref) const {
+    return feature + " " + entity + " " + quantity + ": mdlc=" + Fmt(mdlc) + " " + oracle_ + "=" +
+           Fmt(ref) + " (|diff|=" + Fmt(std::abs(mdlc - ref)) + ")";
+  }
+
+  std::string model_, oracle_, ctx_;
+  std::vector<std::string> msgs_;
+};
+
+/// "instance::name", the key of Dump's maps.
+inline std::string Key(const std::string& inst, const std::string& name) { return inst + "::" + name; }
+
+/// mdlc's plant-json, its entities by "instance::name".
+struct Dump {
+  bool rejected_as_expected = false;  // see ListedRejection
+  nlohmann::json root;
+  std::map<std::string, const nlohmann::json*> bodies, joints, frames;
+  std::string cmdline;
+};
+
+/// A file a table lists as one mdlc must reject: mdlc exiting with status 1
+/// and `keyword` (empty: any) in its stderr is the listed outcome; mdlc
+/// accepting the file makes the entry stale, a failure.
+struct ListedRejection {
+  std::string table;    // the table's name, for the stale-entry message
+  std::string keyword;
+  std::string why;
+};
+
+/// Runs mdlc on `file` at configuration `q`; returns false (after reporting,
+/// unless the run is a listed rejection) when there is no usable dump.
+inline bool RunMdlc(const std::string& file, const std::string& package_path,
+                    const JointValues& q, const std::optional<ListedRejection>& listed,
+                    Report* rep, Dump* d) {
+  const std::vector<std::string> argv = PlantJsonCommand(file, package_path, q);
+  d->cmdline = Quote(argv);
+  const RunResult r = RunProcess(argv, 60.0);
+  if (const std::string why = SpawnFailure(r); !why.empty()) {
+    rep->Add(why);
+    return false;
+  }
+  if (listed) {
+    if (r.exit_code == 1 && r.err.find(listed->keyword) != std::string::npos) {
+      d->rejected_as_expected = true;
+      return false;
+    }
+    if (r.exit_code == 0) {
+      rep->Add("stale " + listed->table + " entry: mdlc now accepts this file (listed because: " +
+               listed->why + ")");
+    }
+    // a rejection for another reason fails below, with mdlc's errors
+  }
+  if (const std::string why = ExitFailure(r, d->cmdline); !why.empty()) {
+    rep->Add(why);
+    return false;
+  }
+  if (const std::string why = ReadPlantJson(r, d->cmdline, {"bodies", "joints"}, &d->root);
+      !why.empty()) {
+    rep->Add(why);
+    return false;
+  }
+  for (const auto& b : d->root["bodies"]) {
+    d->bodies[Key(b.value("model_instance", ""), b.value("name", ""))] = &b;
+  }
+  for (const auto& j : d->root["joints"]) {
+    d->joints[Key(j.value("model_instance", ""), j.value("name", ""))] = &j;
+  }
+  if (d->root.contains("frames") && d->root["frames"].is_array()) {
+    for (const auto& f : d->root["frames"]) {
+      d->frames[Key(f.value("model_instance", ""), f.value("name", ""))] = &f;
+    }
+  }
+  return true;
+}
+
+/// A 3-vector of numbers; false when `v` is anything else.
+inline bool ReadVec3(const nlohmann::json& v, Eigen::Vector3d* out) {
+  if (!v.is_array() || v.size() != 3) return false;
+  for (int i = 0; i < 3; ++i) {
+    if (!v[i].is_number()) return false;
+    (*out)(i) = v[i].get<double>();
+  }
+  return true;
+}
+
+/// Compares a pose: translation entries and (unless `rotation` is false) the
+/// rotation matrix, never raw quaternions, whose sign is a convention.
+/// `what` names the pose, e.g. "X_WB" (its rotation is then "R_WB").
+inline void ComparePose(Report* rep, const std::string& feature, const std::string& ent,
+                        const std::string& what, const Eigen::Isometry3d& mdlc,
+                        const Eigen::Isometry3d& ref, double tol = kRelTol, bool rotation = true) {
+  for (int i = 0; i < 3; ++i) {
+    rep->Num(feature, ent, what + ".p[" + std::to_string(i) + "]", mdlc.translation()(i),
+             ref.translation()(i), tol);
+  }
+  if (!rotation) return;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      rep->Num(feature, ent,
+               "R" + what.substr(1) + "(" + std::to_string(r) + "," + std::to_string(c) + ")",
+               mdlc.linear()(r, c), ref.linear()(r, c), tol);
+    }
+  }
+}
+
+/// gtest names the parameterized cases by their `id`.
+struct CaseName {
+  template <typename Case>
+  std::string operator()(const ::testing::TestParamInfo<Case>& info) const {
+    return info.param.id;
+  }
+};
 
 }  // namespace mdlc::oracle

@@ -92,7 +92,6 @@
 #include <sdf/SemanticPose.hh>
 #include <sdf/World.hh>
 
-
 namespace {
 
 namespace fs = std::filesystem;
@@ -106,23 +105,12 @@ using json = nlohmann::json;
 
 const char* const kWorldInstance = "WorldModelInstance";
 
-#ifndef MDLC_BINARY
-#define MDLC_BINARY ""
-#endif
 #ifndef MDLC_SHARED_DIR
 #define MDLC_SHARED_DIR ""
 #endif
 #ifndef MDLC_TEST_MODELS
 #define MDLC_TEST_MODELS ""
 #endif
-
-std::string g_mdlc_binary;  // set in main()
-
-std::string MdlcBinary() {
-  if (!g_mdlc_binary.empty()) return g_mdlc_binary;
-  if (const char* env = std::getenv("MDLC_BINARY"); env && *env) return env;
-  return MDLC_BINARY;
-}
 
 // ---------------------------------------------------------------------------
 // URI resolution for libsdformat (package:// and model://)
@@ -965,145 +953,14 @@ std::vector<ModelCase> HandMadeCases() {
 // Comparison
 // ---------------------------------------------------------------------------
 
-// Collects discrepancies for one model and reports them as one failure.
-class Report {
- public:
-  explicit Report(std::string model) : model_(std::move(model)) {}
-  void SetContext(std::string ctx) { ctx_ = std::move(ctx); }
-  void Add(const std::string& what) {
-    msgs_.push_back("[" + model_ + (ctx_.empty() ? "" : " | " + ctx_) + "] " + what);
-  }
-  // feature: spec ID; entity: e.g. "body 'r::l'"; quantity: e.g. "X_WB.p[0]".
-  void Num(const std::string& feature, const std::string& entity, const std::string& quantity,
-           double mdlc, double oracle) {
-    if (Near(mdlc, oracle)) return;
-    Add(feature + " " + entity + " " + quantity + ": mdlc=" + Fmt(mdlc) +
-        " libsdformat=" + Fmt(oracle) + " (|diff|=" + Fmt(std::abs(mdlc - oracle)) + ")");
-  }
-  size_t size() const { return msgs_.size(); }
-  void Flush() {
-    if (msgs_.empty()) return;
-    const size_t limit = static_cast<size_t>(EnvInt("MDLC_ORACLE_MAX_MESSAGES", 60));
-    std::string text = std::to_string(msgs_.size()) + " discrepancies for " + model_ + ":\n";
-    for (size_t i = 0; i < msgs_.size() && i < limit; ++i) text += "  " + msgs_[i] + "\n";
-    if (msgs_.size() > limit) {
-      text += "  ... and " + std::to_string(msgs_.size() - limit) + " more\n";
-    }
-    ADD_FAILURE() << text;
-    msgs_.clear();
-  }
-
- private:
-  std::string model_, ctx_;
-  std::vector<std::string> msgs_;
-};
-
-std::string Key(const std::string& inst, const std::string& name) { return inst + "::" + name; }
-
-struct Dump {
-  bool rejected_known = false;  // a kKnownDisagreements entry, rejected by mdlc
-  json root;
-  std::map<std::string, const json*> bodies;  // "inst::name"
-  std::map<std::string, const json*> joints;
-  std::map<std::string, const json*> frames;
-  std::string cmdline;
-};
-
-// The error lines of mdlc's stderr (each with the two lines after it), so
-// failures are not buried under warnings; falls back to the head of stderr.
-std::string ErrorExcerpt(const std::string& err) {
-  std::vector<std::string> lines;
-  std::stringstream ss(err);
-  for (std::string l; std::getline(ss, l);) lines.push_back(l);
-  std::string out;
-  for (size_t i = 0; i < lines.size(); ++i) {
-    if (lines[i].find("error") == std::string::npos) continue;
-    for (size_t k = i; k < lines.size() && k < i + 3; ++k) out += "\n      " + lines[k];
-    if (out.size() > 3000) break;
-  }
-  if (out.empty()) out = "\n      " + err.substr(0, 2000);
-  return out;
-}
-
-std::string Quote(const std::vector<std::string>& argv) {
-  std::string s;
-  for (const auto& a : argv) s += (s.empty() ? "" : " ") + a;
-  return s;
-}
-
-// Runs mdlc; returns false (after reporting) when there is no usable dump.
-bool RunMdlc(const ModelCase& mc, const std::vector<std::pair<std::string, double>>& q,
-             Report* rep, Dump* d) {
-  std::vector<std::string> argv = {MdlcBinary(), "compile", mc.path, "--emit=plant-json"};
-  if (!mc.package_path.empty()) {
-    argv.push_back("--package-path");
-    argv.push_back(mc.package_path);
-  }
-  for (const auto& [name, v] : q) {
-    argv.push_back("--q");
-    argv.push_back(name + "=" + Fmt(v));
-  }
-  d->cmdline = Quote(argv);
-  const RunResult r = RunProcess(argv, 60.0);
-  if (!r.spawn_error.empty()) {
-    rep->Add("could not run mdlc: " + r.spawn_error);
-    return false;
-  }
+// Runs mdlc on the case at `q` (oracle_util.h); a case listed in
+// kKnownDisagreements is skipped when mdlc rejects it, whatever the reason.
+bool RunMdlc(const ModelCase& mc, const JointValues& q, Report* rep, Dump* d) {
+  std::optional<ListedRejection> listed;
   if (!mc.known_disagreement.empty()) {
-    if (r.exit_code == 1) {
-      d->rejected_known = true;
-      return false;
-    }
-    if (r.exit_code == 0) {
-      rep->Add("stale kKnownDisagreements entry: mdlc now accepts this file (listed because: " +
-               mc.known_disagreement + ")");
-    }
+    listed = ListedRejection{"kKnownDisagreements", "", mc.known_disagreement};
   }
-  if (r.timed_out || r.exit_code != 0) {
-    rep->Add(std::string("mdlc ") +
-             (r.timed_out ? "timed out" : "exited with status " + std::to_string(r.exit_code)) +
-             "\n    command: " + d->cmdline + "\n    stderr (errors):" + ErrorExcerpt(r.err));
-    return false;
-  }
-  try {
-    d->root = json::parse(r.out);
-  } catch (const std::exception& e) {
-    rep->Add(std::string("mdlc output is not JSON (") + e.what() + ")\n    command: " +
-             d->cmdline + "\n    stdout starts: " + r.out.substr(0, 300) +
-             "\n    stderr: " + r.err.substr(0, 1000));
-    return false;
-  }
-  if (d->root.value("schema", "") != "mdlc-plant/1") {
-    rep->Add("plant-json schema is not mdlc-plant/1: " +
-             d->root.value("schema", std::string("<missing>")));
-  }
-  for (const char* section : {"bodies", "joints"}) {
-    if (!d->root.contains(section) || !d->root[section].is_array()) {
-      rep->Add(std::string("plant-json has no '") + section + "' array");
-      return false;
-    }
-  }
-  for (const auto& b : d->root["bodies"]) {
-    d->bodies[Key(b.value("model_instance", ""), b.value("name", ""))] = &b;
-  }
-  for (const auto& j : d->root["joints"]) {
-    d->joints[Key(j.value("model_instance", ""), j.value("name", ""))] = &j;
-  }
-  if (d->root.contains("frames") && d->root["frames"].is_array()) {
-    for (const auto& f : d->root["frames"]) {
-      d->frames[Key(f.value("model_instance", ""), f.value("name", ""))] = &f;
-    }
-  }
-  return true;
-}
-
-bool ReadVec3(const json& v, Vector3d* out) {
-  if (!v.is_array() || v.size() != 3) return false;
-  for (int i = 0; i < 3; ++i) {
-    if (!v[i].is_number()) return false;
-    (*out)(i) = v[i].get<double>();
-  }
-  return true;
+  return mdlc::oracle::RunMdlc(mc.path, mc.package_path, q, listed, rep, d);
 }
 
 // Reads a plant-json pose {"p":[..], "q":[w,x,y,z]}.
@@ -1130,22 +987,6 @@ bool ReadPose(const json& X, Isometry3d* out, std::string* problem) {
   out->linear() = Quaterniond(w, x, y, z).normalized().toRotationMatrix();
   out->translation() = p;
   return true;
-}
-
-// Compares a pose: translation entries and the rotation matrix (never raw
-// quaternions, whose sign is a convention).
-void ComparePose(Report* rep, const std::string& feature, const std::string& ent,
-                 const std::string& what, const Isometry3d& mdlc, const Isometry3d& oracle) {
-  for (int i = 0; i < 3; ++i) {
-    rep->Num(feature, ent, what + ".p[" + std::to_string(i) + "]", mdlc.translation()(i),
-             oracle.translation()(i));
-  }
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) {
-      rep->Num(feature, ent, "R" + what.substr(1) + "(" + std::to_string(r) + "," + std::to_string(c) + ")",
-               mdlc.linear()(r, c), oracle.linear()(r, c));
-    }
-  }
 }
 
 // X_WB of every oracle body against mdlc (SDF-003, SDF-006, SDF-008).
@@ -1407,19 +1248,6 @@ std::vector<std::pair<std::string, double>> Configuration(const Oracle& o, int i
   return q;
 }
 
-std::string DescribeQ(const std::vector<std::pair<std::string, double>>& q) {
-  if (q.empty()) return "default configuration";
-  std::string s = "q:";
-  for (size_t i = 0; i < q.size(); ++i) {
-    if (i == 6) {
-      s += " ...(" + std::to_string(q.size()) + " dofs)";
-      break;
-    }
-    s += " " + q[i].first + "=" + Fmt(q[i].second);
-  }
-  return s;
-}
-
 class SdformatOracle : public ::testing::TestWithParam<ModelCase> {
  protected:
   void SetUp() override {
@@ -1440,7 +1268,7 @@ class SdformatOracle : public ::testing::TestWithParam<ModelCase> {
 // configuration.
 TEST_P(SdformatOracle, MassPropertiesFramesAndJoints) {
   const ModelCase& mc = GetParam();
-  Report rep(mc.display);
+  Report rep(mc.display, "libsdformat");
   Dump d;
   rep.SetContext("default configuration");
   try {
@@ -1452,14 +1280,14 @@ TEST_P(SdformatOracle, MassPropertiesFramesAndJoints) {
     rep.Add(std::string("malformed plant-json (") + e.what() + ")\n    command: " + d.cmdline);
   }
   rep.Flush();
-  if (d.rejected_known) GTEST_SKIP() << "known disagreement: " << mc.known_disagreement;
+  if (d.rejected_as_expected) GTEST_SKIP() << "known disagreement: " << mc.known_disagreement;
 }
 
 // SDF-003/010/012: X_WB, axis_W and M(q) at the default configuration and at
 // seeded random ones.
 TEST_P(SdformatOracle, KinematicsAndMassMatrix) {
   const ModelCase& mc = GetParam();
-  Report rep(mc.display);
+  Report rep(mc.display, "libsdformat");
   const int n_random = EnvInt("MDLC_ORACLE_CONFIGS", 3);
   const bool check_m = oracle_.mass_matrix_problem.empty();
   for (int c = 0; c <= n_random; ++c) {
@@ -1471,7 +1299,7 @@ TEST_P(SdformatOracle, KinematicsAndMassMatrix) {
     Dump d;
     const size_t before = rep.size();
     if (!RunMdlc(mc, q, &rep, &d)) {
-      if (d.rejected_known) GTEST_SKIP() << "known disagreement: " << mc.known_disagreement;
+      if (d.rejected_as_expected) GTEST_SKIP() << "known disagreement: " << mc.known_disagreement;
       break;
     }
     if (!oracle_ok_) break;  // reported as a stale known disagreement
@@ -1512,12 +1340,6 @@ std::vector<ModelCase> ExtraCases() {
   Uniquify(&cases);
   return cases;
 }
-
-struct CaseName {
-  std::string operator()(const ::testing::TestParamInfo<ModelCase>& info) const {
-    return info.param.id;
-  }
-};
 
 INSTANTIATE_TEST_SUITE_P(Corpus, SdformatOracle, ::testing::ValuesIn(CorpusCases()), CaseName());
 INSTANTIATE_TEST_SUITE_P(HandMade, SdformatOracle, ::testing::ValuesIn(HandMadeCases()), CaseName());
@@ -1755,10 +1577,7 @@ TEST(SdformatOracleSelfCheck, AllModelsBuildWithSaneMassMatrix) {
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a.rfind("--mdlc=", 0) == 0) g_mdlc_binary = a.substr(7);
-  }
+  ParseMdlcFlag(argc, argv);
   sdf::Console::Instance()->SetQuiet(true);
   return RUN_ALL_TESTS();
 }

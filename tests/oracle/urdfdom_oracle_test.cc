@@ -71,7 +71,6 @@
 #include <urdf_model/model.h>
 #include <urdf_parser/urdf_parser.h>
 
-
 namespace {
 
 namespace fs = std::filesystem;
@@ -86,23 +85,12 @@ using json = nlohmann::json;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-#ifndef MDLC_BINARY
-#define MDLC_BINARY ""
-#endif
 #ifndef MDLC_SHARED_DIR
 #define MDLC_SHARED_DIR ""
 #endif
 #ifndef MDLC_TEST_MODELS
 #define MDLC_TEST_MODELS ""
 #endif
-
-std::string g_mdlc_binary;  // set in main()
-
-std::string MdlcBinary() {
-  if (!g_mdlc_binary.empty()) return g_mdlc_binary;
-  if (const char* env = std::getenv("MDLC_BINARY"); env && *env) return env;
-  return MDLC_BINARY;
-}
 
 // ---------------------------------------------------------------------------
 // The oracle model, built from urdfdom
@@ -574,41 +562,15 @@ std::vector<ModelCase> HandMadeCases() {
 // Comparison
 // ---------------------------------------------------------------------------
 
-// Collects discrepancies for one model and reports them as one failure.
-class Report {
- public:
-  explicit Report(std::string model) : model_(std::move(model)) {}
-  void SetContext(std::string ctx) { ctx_ = std::move(ctx); }
-  void Add(const std::string& what) {
-    msgs_.push_back("[" + model_ + (ctx_.empty() ? "" : " | " + ctx_) + "] " + what);
+// Runs mdlc on the case at `q` (oracle_util.h); a case listed in
+// kExpectedRejections is skipped when mdlc rejects it for the listed reason.
+bool RunMdlc(const ModelCase& mc, const JointValues& q, Report* rep, Dump* d) {
+  std::optional<ListedRejection> listed;
+  if (!mc.reject_keyword.empty()) {
+    listed = ListedRejection{"kExpectedRejections", mc.reject_keyword, mc.reject_why};
   }
-  // feature: spec ID; entity: e.g. "body 'r::l'"; quantity: e.g. "X_WB.p[0]".
-  void Num(const std::string& feature, const std::string& entity, const std::string& quantity,
-           double mdlc, double oracle, const std::string& note = "") {
-    if (Near(mdlc, oracle)) return;
-    Add(feature + " " + entity + " " + quantity + ": mdlc=" + Fmt(mdlc) +
-        " urdfdom=" + Fmt(oracle) + " (|diff|=" + Fmt(std::abs(mdlc - oracle)) + ")" +
-        (note.empty() ? "" : " [" + note + "]"));
-  }
-  bool empty() const { return msgs_.empty(); }
-  size_t size() const { return msgs_.size(); }
-  const std::vector<std::string>& messages() const { return msgs_; }
-  void Flush() {
-    if (msgs_.empty()) return;
-    const size_t limit = static_cast<size_t>(EnvInt("MDLC_ORACLE_MAX_MESSAGES", 60));
-    std::string text = std::to_string(msgs_.size()) + " discrepancies for " + model_ + ":\n";
-    for (size_t i = 0; i < msgs_.size() && i < limit; ++i) text += "  " + msgs_[i] + "\n";
-    if (msgs_.size() > limit) {
-      text += "  ... and " + std::to_string(msgs_.size() - limit) + " more\n";
-    }
-    ADD_FAILURE() << text;
-    msgs_.clear();
-  }
-
- private:
-  std::string model_, ctx_;
-  std::vector<std::string> msgs_;
-};
+  return mdlc::oracle::RunMdlc(mc.path, mc.package_path, q, listed, rep, d);
+}
 
 // Reads a number-or-null; null means +inf (or -inf when negative_null).
 std::optional<double> NumOrNull(const json& v, bool negative_null) {
@@ -617,114 +579,12 @@ std::optional<double> NumOrNull(const json& v, bool negative_null) {
   return std::nullopt;
 }
 
-std::string Key(const std::string& inst, const std::string& name) { return inst + "::" + name; }
-
-struct Dump {
-  bool rejected_as_expected = false;  // see ModelCase::reject_keyword
-  json root;
-  std::map<std::string, const json*> bodies;  // "inst::name"
-  std::map<std::string, const json*> joints;
-  std::string cmdline;
-};
-
-// The error lines of mdlc's stderr (each with the two lines after it), so
-// failures are not buried under warnings; falls back to the head of stderr.
-std::string ErrorExcerpt(const std::string& err) {
-  std::vector<std::string> lines;
-  std::stringstream ss(err);
-  for (std::string l; std::getline(ss, l);) lines.push_back(l);
-  std::string out;
-  for (size_t i = 0; i < lines.size(); ++i) {
-    if (lines[i].find("error") == std::string::npos) continue;
-    for (size_t k = i; k < lines.size() && k < i + 3; ++k) out += "\n      " + lines[k];
-    if (out.size() > 3000) break;
-  }
-  if (out.empty()) out = "\n      " + err.substr(0, 2000);
-  return out;
-}
-
-std::string Quote(const std::vector<std::string>& argv) {
-  std::string s;
-  for (const auto& a : argv) s += (s.empty() ? "" : " ") + a;
-  return s;
-}
-
-// Runs mdlc; returns false (after reporting) when there is no usable dump.
-bool RunMdlc(const ModelCase& mc, const std::vector<std::pair<std::string, double>>& q,
-             Report* rep, Dump* d) {
-  std::vector<std::string> argv = {MdlcBinary(), "compile", mc.path, "--emit=plant-json"};
-  if (!mc.package_path.empty()) {
-    argv.push_back("--package-path");
-    argv.push_back(mc.package_path);
-  }
-  for (const auto& [name, v] : q) {
-    argv.push_back("--q");
-    argv.push_back(name + "=" + Fmt(v));
-  }
-  d->cmdline = Quote(argv);
-  const RunResult r = RunProcess(argv, 60.0);
-  if (!r.spawn_error.empty()) {
-    rep->Add("could not run mdlc: " + r.spawn_error);
-    return false;
-  }
-  if (!mc.reject_keyword.empty()) {
-    if (r.exit_code == 1 && r.err.find(mc.reject_keyword) != std::string::npos) {
-      d->rejected_as_expected = true;
-      return false;
-    }
-    if (r.exit_code == 0) {
-      rep->Add("stale kExpectedRejections entry: mdlc now accepts this file (listed because: " +
-               mc.reject_why + ")");
-    }
-    // a rejection for another reason fails below, with mdlc's errors
-  }
-  if (r.timed_out || r.exit_code != 0) {
-    rep->Add(std::string("mdlc ") +
-             (r.timed_out ? "timed out" : "exited with status " + std::to_string(r.exit_code)) +
-             "\n    command: " + d->cmdline + "\n    stderr (errors):" + ErrorExcerpt(r.err));
-    return false;
-  }
-  try {
-    d->root = json::parse(r.out);
-  } catch (const std::exception& e) {
-    rep->Add(std::string("mdlc output is not JSON (") + e.what() + ")\n    command: " +
-             d->cmdline + "\n    stdout starts: " + r.out.substr(0, 300) +
-             "\n    stderr: " + r.err.substr(0, 1000));
-    return false;
-  }
-  if (d->root.value("schema", "") != "mdlc-plant/1") {
-    rep->Add("plant-json schema is not mdlc-plant/1: " + d->root.value("schema", std::string("<missing>")));
-  }
-  for (const char* section : {"bodies", "joints"}) {
-    if (!d->root.contains(section) || !d->root[section].is_array()) {
-      rep->Add(std::string("plant-json has no '") + section + "' array");
-      return false;
-    }
-  }
-  for (const auto& b : d->root["bodies"]) {
-    d->bodies[Key(b.value("model_instance", ""), b.value("name", ""))] = &b;
-  }
-  for (const auto& j : d->root["joints"]) {
-    d->joints[Key(j.value("model_instance", ""), j.value("name", ""))] = &j;
-  }
-  return true;
-}
-
 // Name of the free joint Drake synthesizes for a body: the body name,
 // prefixed with '_' until it does not clash with an existing joint.
 std::string FreeJointName(const Oracle& o, const std::string& body) {
   std::string name = body;
   while (o.joints.count(name)) name = "_" + name;
   return name;
-}
-
-bool ReadVec3(const json& v, Vector3d* out) {
-  if (!v.is_array() || v.size() != 3) return false;
-  for (int i = 0; i < 3; ++i) {
-    if (!v[i].is_number()) return false;
-    (*out)(i) = v[i].get<double>();
-  }
-  return true;
 }
 
 // Checks one limit array (1-dof: one entry).
@@ -1038,19 +898,6 @@ std::vector<std::pair<std::string, double>> Configuration(const Oracle& o, int i
   return q;
 }
 
-std::string DescribeQ(const std::vector<std::pair<std::string, double>>& q) {
-  if (q.empty()) return "default configuration";
-  std::string s = "q:";
-  for (size_t i = 0; i < q.size(); ++i) {
-    if (i == 6) {
-      s += " ...(" + std::to_string(q.size()) + " dofs)";
-      break;
-    }
-    s += " " + q[i].first + "=" + Fmt(q[i].second);
-  }
-  return s;
-}
-
 class UrdfdomOracle : public ::testing::TestWithParam<ModelCase> {
  protected:
   void SetUp() override {
@@ -1065,7 +912,7 @@ class UrdfdomOracle : public ::testing::TestWithParam<ModelCase> {
 // URDF-003/004/005/012/013/014/017, COMMON-040/041/042 at the default configuration.
 TEST_P(UrdfdomOracle, MassPropertiesAndJoints) {
   const ModelCase& mc = GetParam();
-  Report rep(mc.display);
+  Report rep(mc.display, "urdfdom");
   Dump d;
   rep.SetContext("default configuration");
   try {
@@ -1081,7 +928,7 @@ TEST_P(UrdfdomOracle, MassPropertiesAndJoints) {
 // seeded random ones.
 TEST_P(UrdfdomOracle, KinematicsAndMassMatrix) {
   const ModelCase& mc = GetParam();
-  Report rep(mc.display);
+  Report rep(mc.display, "urdfdom");
   const int n_random = EnvInt("MDLC_ORACLE_CONFIGS", 5);
   for (int c = 0; c <= n_random; ++c) {
     const auto q = Configuration(oracle_, c);
@@ -1132,12 +979,6 @@ std::vector<ModelCase> ExtraCases() {
   Uniquify(&cases);
   return cases;
 }
-
-struct CaseName {
-  std::string operator()(const ::testing::TestParamInfo<ModelCase>& info) const {
-    return info.param.id;
-  }
-};
 
 INSTANTIATE_TEST_SUITE_P(Corpus, UrdfdomOracle, ::testing::ValuesIn(CorpusCases()), CaseName());
 INSTANTIATE_TEST_SUITE_P(HandMade, UrdfdomOracle, ::testing::ValuesIn(HandMadeCases()), CaseName());
@@ -1352,14 +1193,14 @@ constexpr const char* kFine = R"(<robot name="r">
 </robot>)";
 
 TEST_F(ExpectedRejectionTest, RejectedForTheListedReasonIsSkipped) {  // URDF-032
-  Report rep("listed.urdf");
+  Report rep("listed.urdf", "urdfdom");
   const Dump d = Run(kVisualWithoutGeometry, "no <geometry>", &rep);
   EXPECT_TRUE(d.rejected_as_expected);
   EXPECT_TRUE(rep.empty());
 }
 
 TEST_F(ExpectedRejectionTest, AcceptedIsAStaleEntry) {  // URDF-032
-  Report rep("listed.urdf");
+  Report rep("listed.urdf", "urdfdom");
   const Dump d = Run(kFine, "no <geometry>", &rep);
   EXPECT_FALSE(d.rejected_as_expected);
   ASSERT_EQ(rep.size(), 1u);
@@ -1369,7 +1210,7 @@ TEST_F(ExpectedRejectionTest, AcceptedIsAStaleEntry) {  // URDF-032
 }
 
 TEST_F(ExpectedRejectionTest, RejectedForAnotherReasonFails) {  // URDF-032
-  Report rep("listed.urdf");
+  Report rep("listed.urdf", "urdfdom");
   const Dump d = Run(kVisualWithoutGeometry, "unknown joint", &rep);
   EXPECT_FALSE(d.rejected_as_expected);
   ASSERT_EQ(rep.size(), 1u);
@@ -1381,10 +1222,7 @@ TEST_F(ExpectedRejectionTest, RejectedForAnotherReasonFails) {  // URDF-032
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a.rfind("--mdlc=", 0) == 0) g_mdlc_binary = a.substr(7);
-  }
+  ParseMdlcFlag(argc, argv);
   console_bridge::setLogLevel(console_bridge::CONSOLE_BRIDGE_LOG_ERROR);
   return RUN_ALL_TESTS();
 }

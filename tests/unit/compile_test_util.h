@@ -1,6 +1,7 @@
 // compile_test_util.h - the whole pipeline (frontends, passes verified after
 // each, backend) on model text written to a fresh folder, with the
-// plant-json dump and the diagnostics at hand.
+// plant-json dump and the diagnostics at hand. Strict about diagnostics: see
+// diagnostic_claims.h.
 #pragma once
 
 #include <fmt/format.h>
@@ -15,6 +16,7 @@
 #include "tools/driver/compiler.h"
 #include "backend/plant_json.h"
 #include "backend/positions.h"
+#include "tests/unit/diagnostic_claims.h"
 
 namespace mdlc::testing {
 
@@ -33,7 +35,10 @@ class CompiledText {
     c_.options.instrumentation.verify_each = true;
     ok_ = c_.Run();
   }
-  ~CompiledText() { std::filesystem::remove_all(dir_); }
+  ~CompiledText() {
+    claims_.CheckAtEnd(c_.diags.diagnostics());
+    std::filesystem::remove_all(dir_);
+  }
   CompiledText(const CompiledText&) = delete;
   CompiledText& operator=(const CompiledText&) = delete;
 
@@ -51,14 +56,22 @@ class CompiledText {
     }
     return out;
   }
-  /// The diagnostics of `kind` whose message contains `text`.
+  /// The diagnostics of `kind` whose message contains `text`; those found
+  /// are claimed.
   std::vector<const Diagnostic*> Find(DiagKind kind, std::string_view text = "") const {
     std::vector<const Diagnostic*> found;
     for (const auto& d : c_.diags.diagnostics()) {
       if (d.kind == kind && d.message.find(text) != std::string::npos) found.push_back(&d);
     }
+    if (!found.empty()) claims_.Found(kind, text);
     return found;
   }
+  /// Claims the diagnostics of `kind` holding `text`; at least one must come.
+  void ExpectDiagnostic(DiagKind kind, std::string_view text) { claims_.Expect(kind, text); }
+  /// Claims the errors (any kind) holding `text`; at least one must come.
+  void ExpectError(std::string_view text) { claims_.ExpectError(text); }
+  /// Fails for every diagnostic so far that no claim covers.
+  void ExpectNoOtherDiagnostics() const { claims_.Check(c_.diags.diagnostics()); }
   /// plant-json at the default configuration.
   nlohmann::json Json() const {
     return nlohmann::json::parse(
@@ -69,6 +82,7 @@ class CompiledText {
   std::filesystem::path dir_, path_;
   Compilation c_;
   bool ok_ = false;
+  mutable DiagnosticClaims claims_;
 };
 
 /// The entry of `list` (a plant-json array) with this name and instance.

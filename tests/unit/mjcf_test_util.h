@@ -1,6 +1,7 @@
 // mjcf_test_util.h - lowers MJCF text with the MJCF frontend alone (the IR
 // as lowered, references as the frontend set them) from a fresh folder, so
-// tests can add included files and meshes beside the main file.
+// tests can add included files and meshes beside the main file. Strict about
+// diagnostics: see diagnostic_claims.h.
 #pragma once
 
 #include <fmt/format.h>
@@ -15,6 +16,7 @@
 
 #include "frontend/frontend.h"
 #include "ir/module.h"
+#include "tests/unit/diagnostic_claims.h"
 
 namespace mdlc::testing {
 
@@ -37,7 +39,10 @@ class LoweredMjcf {
     frontend::FrontendContext ctx{sources, diags, module, {}};
     model = frontend::ReadModelFile((dir_ / "model.xml").string(), ctx);
   }
-  ~LoweredMjcf() { std::filesystem::remove_all(dir_); }
+  ~LoweredMjcf() {
+    claims_.CheckAtEnd(diags.diagnostics());
+    std::filesystem::remove_all(dir_);
+  }
   LoweredMjcf(const LoweredMjcf&) = delete;
   LoweredMjcf& operator=(const LoweredMjcf&) = delete;
 
@@ -66,13 +71,23 @@ class LoweredMjcf {
     }
     return out;
   }
-  /// The first diagnostic of `kind` whose message holds `text` (null: none).
+  /// The first diagnostic of `kind` whose message holds `text` (null: none);
+  /// those found are claimed.
   const Diagnostic* Find(DiagKind kind, std::string_view text = "") const {
     for (const auto& d : diags.diagnostics()) {
-      if (d.kind == kind && d.message.find(text) != std::string::npos) return &d;
+      if (d.kind == kind && d.message.find(text) != std::string::npos) {
+        claims_.Found(kind, text);
+        return &d;
+      }
     }
     return nullptr;
   }
+  /// Claims the diagnostics of `kind` holding `text`; at least one must come.
+  void ExpectDiagnostic(DiagKind kind, std::string_view text) { claims_.Expect(kind, text); }
+  /// Claims the errors (any kind) holding `text`; at least one must come.
+  void ExpectError(std::string_view text) { claims_.ExpectError(text); }
+  /// Fails for every diagnostic so far that no claim covers.
+  void ExpectNoOtherDiagnostics() const { claims_.Check(diags.diagnostics()); }
 
   SourceManager sources;
   DiagnosticEngine diags;
@@ -81,6 +96,7 @@ class LoweredMjcf {
 
  private:
   std::filesystem::path dir_;
+  mutable DiagnosticClaims claims_;
 };
 
 }  // namespace mdlc::testing

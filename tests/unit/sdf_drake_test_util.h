@@ -1,6 +1,7 @@
 // sdf_drake_test_util.h - lowers SDFormat text into a Module (frontend
 // only, or the whole pipeline with the plant-json dump) for tests of the
-// SDFormat frontend's drake: elements.
+// SDFormat frontend's drake: elements. Both are strict about diagnostics:
+// see diagnostic_claims.h.
 #pragma once
 
 #include <fmt/format.h>
@@ -15,6 +16,7 @@
 #include "tools/driver/compiler.h"
 #include "backend/plant_json.h"
 #include "backend/positions.h"
+#include "tests/unit/diagnostic_claims.h"
 #include "frontend/frontend.h"
 #include "ir/module.h"
 
@@ -34,6 +36,11 @@ struct LoweredSdf {
   DiagnosticEngine diags;
   ir::Module module;
   std::optional<ModelId> model;
+
+  LoweredSdf() = default;
+  ~LoweredSdf() { claims_.CheckAtEnd(diags.diagnostics()); }
+  LoweredSdf(const LoweredSdf&) = delete;
+  LoweredSdf& operator=(const LoweredSdf&) = delete;
 
   /// Runs the SDFormat frontend on SdfDocument(body).
   bool Read(std::string_view body) {
@@ -58,9 +65,13 @@ struct LoweredSdf {
     }
     return out;
   }
+  /// Whether a diagnostic of `kind` holds `text`; those found are claimed.
   bool HasDiagnostic(DiagKind kind, std::string_view text) const {
     for (const auto& d : diags.diagnostics()) {
-      if (d.kind == kind && d.message.find(text) != std::string::npos) return true;
+      if (d.kind == kind && d.message.find(text) != std::string::npos) {
+        claims_.Found(kind, text);
+        return true;
+      }
     }
     return false;
   }
@@ -71,6 +82,15 @@ struct LoweredSdf {
     }
     return 0;
   }
+  /// Claims the diagnostics of `kind` holding `text`; at least one must come.
+  void ExpectDiagnostic(DiagKind kind, std::string_view text) { claims_.Expect(kind, text); }
+  /// Claims the errors (any kind) holding `text`; at least one must come.
+  void ExpectError(std::string_view text) { claims_.ExpectError(text); }
+  /// Fails for every diagnostic so far that no claim covers.
+  void ExpectNoOtherDiagnostics() const { claims_.Check(diags.diagnostics()); }
+
+ private:
+  mutable DiagnosticClaims claims_;
 };
 
 /// The whole pipeline (frontend, passes, backend) on SdfDocument(body).
@@ -84,7 +104,10 @@ class CompiledSdf {
     c_.options.inputs = {Input::File(path_.string())};
     ok_ = c_.Run();
   }
-  ~CompiledSdf() { std::filesystem::remove(path_); }
+  ~CompiledSdf() {
+    claims_.CheckAtEnd(c_.diags.diagnostics());
+    std::filesystem::remove(path_);
+  }
   CompiledSdf(const CompiledSdf&) = delete;
   CompiledSdf& operator=(const CompiledSdf&) = delete;
 
@@ -99,11 +122,28 @@ class CompiledSdf {
     return nlohmann::json::parse(
         backend::EmitPlantJson(*c_.model, backend::DefaultPositions(c_.model->plant)));
   }
+  /// Whether a diagnostic of `kind` holds `text`; those found are claimed.
+  bool HasDiagnostic(DiagKind kind, std::string_view text) const {
+    for (const auto& d : c_.diags.diagnostics()) {
+      if (d.kind == kind && d.message.find(text) != std::string::npos) {
+        claims_.Found(kind, text);
+        return true;
+      }
+    }
+    return false;
+  }
+  /// Claims the diagnostics of `kind` holding `text`; at least one must come.
+  void ExpectDiagnostic(DiagKind kind, std::string_view text) { claims_.Expect(kind, text); }
+  /// Claims the errors (any kind) holding `text`; at least one must come.
+  void ExpectError(std::string_view text) { claims_.ExpectError(text); }
+  /// Fails for every diagnostic so far that no claim covers.
+  void ExpectNoOtherDiagnostics() const { claims_.Check(c_.diags.diagnostics()); }
 
  private:
   std::filesystem::path path_;
   Compilation c_;
   bool ok_ = false;
+  mutable DiagnosticClaims claims_;
 };
 
 /// The entry of `list` (a plant-json array) named `name` (null json: none).

@@ -1,7 +1,8 @@
 // sdf_test_util.h - lowers SDFormat text for tests of the SDFormat frontend:
 // the frontend alone (IR as lowered), or the whole pipeline from a file in a
 // fresh temporary folder (so relative mesh and texture URIs have a home),
-// with the plant-json dump.
+// with the plant-json dump. Both are strict about diagnostics: see
+// diagnostic_claims.h.
 #pragma once
 
 #include <fmt/format.h>
@@ -16,6 +17,7 @@
 #include "tools/driver/compiler.h"
 #include "backend/plant_json.h"
 #include "backend/positions.h"
+#include "tests/unit/diagnostic_claims.h"
 #include "frontend/frontend.h"
 #include "ir/module.h"
 
@@ -42,6 +44,11 @@ struct SdfFrontendResult {
   ir::Module module;
   std::optional<ModelId> model;
 
+  SdfFrontendResult() = default;
+  ~SdfFrontendResult() { claims_.CheckAtEnd(diags.diagnostics()); }
+  SdfFrontendResult(const SdfFrontendResult&) = delete;
+  SdfFrontendResult& operator=(const SdfFrontendResult&) = delete;
+
   bool Read(std::string_view body) {
     FileId file = sources.AddBuffer("test.sdf", SdfFileText(body));
     frontend::FrontendContext ctx{sources, diags, module, {}};
@@ -61,17 +68,32 @@ struct SdfFrontendResult {
     }
     return out;
   }
+  /// The number of diagnostics of `kind`; counting them claims them all.
   size_t Count(DiagKind kind) const {
     size_t n = 0;
     for (const auto& d : diags.diagnostics()) n += d.kind == kind;
+    claims_.Found(kind, "");
     return n;
   }
+  /// Whether a diagnostic of `kind` holds `text`; those found are claimed.
   bool HasDiagnostic(DiagKind kind, std::string_view text) const {
     for (const auto& d : diags.diagnostics()) {
-      if (d.kind == kind && d.message.find(text) != std::string::npos) return true;
+      if (d.kind == kind && d.message.find(text) != std::string::npos) {
+        claims_.Found(kind, text);
+        return true;
+      }
     }
     return false;
   }
+  /// Claims the diagnostics of `kind` holding `text`; at least one must come.
+  void ExpectDiagnostic(DiagKind kind, std::string_view text) { claims_.Expect(kind, text); }
+  /// Claims the errors (any kind) holding `text`; at least one must come.
+  void ExpectError(std::string_view text) { claims_.ExpectError(text); }
+  /// Fails for every diagnostic so far that no claim covers.
+  void ExpectNoOtherDiagnostics() const { claims_.Check(diags.diagnostics()); }
+
+ private:
+  mutable DiagnosticClaims claims_;
 };
 
 /// The whole pipeline on SdfFileText(body), written as model.sdf into a
@@ -90,7 +112,10 @@ class SdfCompileResult {
     c_.options.inputs = {Input::File(path.string())};
     ok_ = c_.Run();
   }
-  ~SdfCompileResult() { std::filesystem::remove_all(dir_); }
+  ~SdfCompileResult() {
+    claims_.CheckAtEnd(c_.diags.diagnostics());
+    std::filesystem::remove_all(dir_);
+  }
   SdfCompileResult(const SdfCompileResult&) = delete;
   SdfCompileResult& operator=(const SdfCompileResult&) = delete;
 
@@ -105,11 +130,28 @@ class SdfCompileResult {
     return nlohmann::json::parse(
         backend::EmitPlantJson(*c_.model, backend::DefaultPositions(c_.model->plant)));
   }
+  /// Whether a diagnostic of `kind` holds `text`; those found are claimed.
+  bool HasDiagnostic(DiagKind kind, std::string_view text) const {
+    for (const auto& d : c_.diags.diagnostics()) {
+      if (d.kind == kind && d.message.find(text) != std::string::npos) {
+        claims_.Found(kind, text);
+        return true;
+      }
+    }
+    return false;
+  }
+  /// Claims the diagnostics of `kind` holding `text`; at least one must come.
+  void ExpectDiagnostic(DiagKind kind, std::string_view text) { claims_.Expect(kind, text); }
+  /// Claims the errors (any kind) holding `text`; at least one must come.
+  void ExpectError(std::string_view text) { claims_.ExpectError(text); }
+  /// Fails for every diagnostic so far that no claim covers.
+  void ExpectNoOtherDiagnostics() const { claims_.Check(c_.diags.diagnostics()); }
 
  private:
   std::filesystem::path dir_;
   Compilation c_;
   bool ok_ = false;
+  mutable DiagnosticClaims claims_;
 };
 
 /// The entries of a plant-json array with this name (a visual and a

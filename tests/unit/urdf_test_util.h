@@ -1,5 +1,6 @@
 // urdf_test_util.h - lowers URDF text into a Module for frontend and pass
-// tests, and finds entities by name.
+// tests, and finds entities by name. Strict about diagnostics: see
+// diagnostic_claims.h.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@
 #include "frontend/frontend.h"
 #include "ir/module.h"
 #include "passes/pass_manager.h"
+#include "tests/unit/diagnostic_claims.h"
 
 namespace mdlc::testing {
 
@@ -17,6 +19,11 @@ struct Lowered {
   DiagnosticEngine diags;
   ir::Module module;
   std::optional<ModelId> model;
+
+  Lowered() = default;
+  ~Lowered() { claims_.CheckAtEnd(diags.diagnostics()); }
+  Lowered(const Lowered&) = delete;
+  Lowered& operator=(const Lowered&) = delete;
 
   /// Runs the URDF frontend on `text`.
   bool Read(std::string text, frontend::FrontendOptions options = {}) {
@@ -49,12 +56,25 @@ struct Lowered {
     for (const auto& d : diags.diagnostics()) out += d.message + "\n";
     return out;
   }
+  /// Whether a diagnostic of `kind` holds `text`; those found are claimed.
   bool HasDiagnostic(DiagKind kind, std::string_view text) const {
     for (const auto& d : diags.diagnostics()) {
-      if (d.kind == kind && d.message.find(text) != std::string::npos) return true;
+      if (d.kind == kind && d.message.find(text) != std::string::npos) {
+        claims_.Found(kind, text);
+        return true;
+      }
     }
     return false;
   }
+  /// Claims the diagnostics of `kind` holding `text`; at least one must come.
+  void ExpectDiagnostic(DiagKind kind, std::string_view text) { claims_.Expect(kind, text); }
+  /// Claims the errors (any kind) holding `text`; at least one must come.
+  void ExpectError(std::string_view text) { claims_.ExpectError(text); }
+  /// Fails for every diagnostic so far that no claim covers.
+  void ExpectNoOtherDiagnostics() const { claims_.Check(diags.diagnostics()); }
+
+ private:
+  mutable DiagnosticClaims claims_;
 };
 
 }  // namespace mdlc::testing

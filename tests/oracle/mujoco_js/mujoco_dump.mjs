@@ -1,7 +1,7 @@
 // mujoco_dump.mjs - test-only: what MuJoCo 3.3.8 (the official WebAssembly
 // build, npm mujoco-js 0.0.7) compiles from MJCF files, as JSON, for mdlc's
 // differential tests (tests/oracle/mujoco_oracle_test.cc, and
-// tests/corpus/mjcf_reference_rejects_test.cc).
+// tests/corpus/reference_rejects_mjcf.cc).
 //
 //   node mujoco_dump.mjs --version
 //   node mujoco_dump.mjs [options] FILE...

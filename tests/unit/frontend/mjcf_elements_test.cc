@@ -21,6 +21,7 @@
 #include "backend/plant_json.h"
 #include "backend/positions.h"
 #include "ir/module.h"
+#include "tests/unit/diagnostic_claims.h"
 
 namespace mdlc {
 namespace {
@@ -29,6 +30,8 @@ constexpr double kTol = 1e-12;
 const double kInf = std::numeric_limits<double>::infinity();
 
 /// The whole pipeline on one MJCF file (model.xml in a fresh folder).
+/// Strict about diagnostics (diagnostic_claims.h): Count and Line claim what
+/// they find.
 class Mjcf {
  public:
   explicit Mjcf(std::string_view xml) {
@@ -41,7 +44,12 @@ class Mjcf {
     c_.options.inputs = {Input::File(path.string())};
     ok_ = c_.Run();
   }
-  ~Mjcf() { std::filesystem::remove_all(dir_); }
+  ~Mjcf() {
+    claims_.CheckAtEnd(c_.diags.diagnostics());
+    std::filesystem::remove_all(dir_);
+  }
+  Mjcf(const Mjcf&) = delete;
+  Mjcf& operator=(const Mjcf&) = delete;
 
   bool ok() const { return ok_; }
   const ir::Module& module() const { return c_.module; }
@@ -54,21 +62,27 @@ class Mjcf {
     return out;
   }
   size_t DiagCount() const { return c_.diags.diagnostics().size(); }
-  /// Diagnostics of `kind` whose message contains `text`.
+  /// Diagnostics of `kind` whose message contains `text`; those are claimed.
   size_t Count(DiagKind kind, std::string_view text = "") const {
     size_t n = 0;
     for (const auto& d : c_.diags.diagnostics()) {
       n += d.kind == kind && d.message.find(text) != std::string::npos;
     }
+    if (n > 0) claims_.Found(kind, text);
     return n;
   }
-  /// The line of the first diagnostic of `kind` (0 when none).
+  /// The line of the first diagnostic of `kind` (0 when none); claims it.
   uint32_t Line(DiagKind kind) const {
     for (const auto& d : c_.diags.diagnostics()) {
-      if (d.kind == kind) return d.loc.line;
+      if (d.kind == kind) {
+        claims_.Found(kind, d.message);
+        return d.loc.line;
+      }
     }
     return 0;
   }
+  /// Claims the diagnostics of `kind` holding `text`; at least one must come.
+  void ExpectDiagnostic(DiagKind kind, std::string_view text) { claims_.Expect(kind, text); }
   nlohmann::json Json() const {
     return nlohmann::json::parse(
         backend::EmitPlantJson(*c_.model, backend::DefaultPositions(c_.model->plant)));
@@ -84,6 +98,7 @@ class Mjcf {
   std::filesystem::path dir_;
   Compilation c_;
   bool ok_ = false;
+  mutable testing::DiagnosticClaims claims_;
 };
 
 std::string Doc(std::string_view after_worldbody) {
@@ -247,6 +262,8 @@ TEST(MjcfEquality, ActiveFromDefaultClass) {
  <equality><connect body1="a" anchor="0 0 0"/></equality>)"));
   ASSERT_TRUE(m.ok()) << m.Messages();
   EXPECT_TRUE(m.module().constraints.empty());
+  m.ExpectDiagnostic(DiagKind::UnsupportedValue,
+                     "active=\"false\": MuJoCo starts this constraint disabled");
 }
 
 TEST(MjcfEquality, DistanceBetweenSpheres) {
@@ -432,6 +449,8 @@ TEST(MjcfActuator, UnknownJointAndAutolimitsOff) {
                                           "'autolimits' is disabled (give 'ctrllimited'"),
               1u)
         << m.Messages();
+    // with autolimits off, the ranged joints of Doc() are errors too
+    m.ExpectDiagnostic(DiagKind::BadValue, "the joint 'range' is given but 'limited' is not");
   }
 }
 

@@ -377,6 +377,7 @@ TEST(MjcfReader, UnknownAndUnsupportedAreDistinctWarnings) {
   size_t lights = 0;
   for (const auto& d : r.diags.diagnostics()) lights += d.message.find("<light>") != std::string::npos;
   EXPECT_EQ(lights, 1u);  // once per element kind
+  r.ExpectDiagnostic(DiagKind::UnsupportedElement, "<light>");
   EXPECT_EQ(r.module.time_step, 0.01);
 }
 

@@ -62,6 +62,7 @@ TEST(SdfDrakeJointTest, PlanarNeedsThreeNonNegativeDampings) {  // EXT-004
         << damping;
     EXPECT_EQ(l.Joint("p"), nullptr);
     EXPECT_EQ(l.diags.error_count(), 1u) << l.Messages();
+    l.ExpectDiagnostic(DiagKind::BadValue, "");  // the one error, counted above
   }
   LoweredSdf missing;
   missing.Read(Model(R"(<drake:joint name='p' type='planar'>
@@ -156,6 +157,7 @@ TEST(SdfDrakeJointTest, CurvilinearErrors) {  // EXT-003
       <drake:parent>b</drake:parent><drake:child>c</drake:child>{}</drake:joint>)",
                                           body))))
         << c.body;
+    l.ExpectError(c.message);
     bool found = false;
     for (const auto& d : l.diags.diagnostics()) {
       found |= d.severity == Severity::Error && d.message.find(c.message) != std::string::npos;
@@ -292,6 +294,7 @@ TEST(SdfCollisionFilterGroupTest, UnknownMemberIsReportedByResolveNames) {  // C
     <drake:member>nope</drake:member></drake:collision_filter_group>)"));
   EXPECT_FALSE(c.ok());
   EXPECT_NE(c.Messages().find("not found"), std::string::npos) << c.Messages();
+  c.ExpectDiagnostic(DiagKind::UnknownReference, "");  // its text is checked above
 }
 
 // ------------------------------------------------------- EXT-050, EXT-051
@@ -425,6 +428,7 @@ TEST(SdfConstraintTest, BallConstraint) {  // EXT-052
   EXPECT_FALSE(unknown.ok());
   EXPECT_NE(unknown.Messages().find("unknown link 'zz'"), std::string::npos)
       << unknown.Messages();
+  unknown.ExpectDiagnostic(DiagKind::UnknownReference, "");  // its text is checked above
 }
 
 TEST(SdfConstraintTest, DistanceConstraint) {  // EXT-053
@@ -621,6 +625,7 @@ TEST(SdfJointDrakeChildrenTest, MimicErrors) {  // EXT-010
   EXPECT_FALSE(unknown.ok());
   EXPECT_NE(unknown.Messages().find("unknown joint 'nope'"), std::string::npos)
       << unknown.Messages();
+  unknown.ExpectDiagnostic(DiagKind::UnknownReference, "");  // its text is checked above
 }
 
 // ------------------------------------------------------------- EXT-070
@@ -757,6 +762,15 @@ TEST(SdfDeformableTest, PropertyAndLinkErrors) {  // EXT-070
   for (const Case& c : cases) {
     LoweredSdf l;
     EXPECT_FALSE(l.Read(DeformableModel(c.link_body, c.after_link))) << c.link_body;
+    l.ExpectError(c.message);
+    // what two collisions of one name and two visuals without a geometry say
+    // besides the case's error
+    if (c.link_body.find(coll + coll) != std::string::npos) {
+      l.ExpectDiagnostic(DiagKind::DuplicateName, "is already used by another collision");
+    }
+    if (c.link_body.find("<visual name='v1'/>") != std::string::npos) {
+      l.ExpectDiagnostic(DiagKind::EmptyGeometry, "has no <geometry>");
+    }
     bool found = false;
     for (const auto& d : l.diags.diagnostics()) {
       found |= d.severity == Severity::Error && d.message.find(c.message) != std::string::npos;

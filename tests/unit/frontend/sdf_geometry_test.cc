@@ -350,6 +350,7 @@ TEST(SdfGeometry, MaterialScriptWithoutUriIsAWarning) {  // SDF-041
       <material><script><name>Gazebo/Red</name></script><diffuse>1 0 0</diffuse></material>)")))
       << l.Messages();
   ASSERT_EQ(l.diags.diagnostics().size(), 1u) << l.Messages();
+  l.ExpectDiagnostic(DiagKind::IncompleteMaterialScript, "has no <uri>");
   const Diagnostic& d = l.diags.diagnostics()[0];
   EXPECT_EQ(d.kind, DiagKind::IncompleteMaterialScript);
   EXPECT_EQ(d.severity, Severity::Warning);

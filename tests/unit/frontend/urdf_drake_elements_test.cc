@@ -500,6 +500,7 @@ TEST(UrdfDrakeElementsTest, EveryProblemOfOneElementIsReported) {  // COMMON-001
   </drake:linear_spring_damper>)")));
   // body_A, body_B, p_BQ, stiffness and damping missing; p_AP and free length bad
   EXPECT_EQ(l.diags.error_count(), 7u) << l.Messages();
+  l.ExpectDiagnostic(DiagKind::BadValue, "");  // the seven errors, counted above
   EXPECT_TRUE(l.module.force_elements.empty());
 }
 

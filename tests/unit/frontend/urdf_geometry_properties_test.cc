@@ -172,9 +172,11 @@ TEST(UrdfGeometryProperties, ValueAttributeIsRequiredAndNumeric) {  // EXT-020
   Lowered text;
   EXPECT_FALSE(text.Read(Proximity("<drake:hydroelastic_modulus value='soft'/>")));
   EXPECT_TRUE(text.diags.has_errors());
+  text.ExpectDiagnostic(DiagKind::BadValue, "must be numbers");
   Lowered nan;
   EXPECT_FALSE(nan.Read(Proximity("<drake:hydroelastic_modulus value='nan'/>")));
   EXPECT_TRUE(nan.diags.has_errors());
+  nan.ExpectDiagnostic(DiagKind::NonFinite, "must be finite");
   // the number is an attribute in URDF; text content is not read
   Lowered content;
   EXPECT_FALSE(content.Read(Proximity("<drake:mu_dynamic>0.5</drake:mu_dynamic>")));
@@ -223,6 +225,7 @@ TEST(UrdfGeometryProperties, UnknownAndRepeatedChildrenAreReported) {  // EXT-02
       <drake:proximity_properties><drake:mu_static value='0.1'/></drake:proximity_properties>)")))
       << twice.Messages();
   EXPECT_EQ(Count(twice, DiagKind::UnsupportedElement), 1u);
+  twice.ExpectDiagnostic(DiagKind::UnsupportedElement, "is given more than once");
   EXPECT_EQ(Numbers(twice.module.geometries[0], "material/coulomb_friction"),
             (std::vector<double>{0.7, 0.7}));
 }
@@ -472,6 +475,7 @@ TEST(UrdfActuatorExtensions, BadValuesAreErrors) {  // EXT-012, EXT-013, EXT-014
   // the other gain is not set alone
   Lowered one;
   EXPECT_FALSE(one.Read(Actuated("<drake:controller_gains p='5'/>")));
+  one.ExpectDiagnostic(DiagKind::MissingAttribute, "'d'");
   ASSERT_EQ(one.module.actuators.size(), 1u);
   EXPECT_FALSE(one.module.actuators[0].kp.has_value());
 }
@@ -518,12 +522,20 @@ TEST(UrdfSurfaceVelocity, AxisIsNormalizedOntoTheBody) {  // EXT-060
 }
 
 TEST(UrdfSurfaceVelocity, BadAxesAreErrors) {  // EXT-060
-  for (const char* xml : {"<drake:surface_velocity_axis/>",
-                          "<drake:surface_velocity_axis axis='0 0 0'/>",
-                          "<drake:surface_velocity_axis axis='1 0'/>",
-                          "<drake:surface_velocity_axis axis='nan 0 1'/>"}) {
+  struct Case {
+    const char* xml;
+    DiagKind kind;
+    const char* message;
+  };
+  for (const Case& c : std::initializer_list<Case>{
+           {"<drake:surface_velocity_axis/>", DiagKind::MissingAttribute, "'axis'"},
+           {"<drake:surface_velocity_axis axis='0 0 0'/>", DiagKind::BadValue, "non-zero length"},
+           {"<drake:surface_velocity_axis axis='1 0'/>", DiagKind::BadValue, "3 values"},
+           {"<drake:surface_velocity_axis axis='nan 0 1'/>", DiagKind::NonFinite, "finite"},
+       }) {
     Lowered l;
-    EXPECT_FALSE(l.Read(Link(xml))) << xml;
+    EXPECT_FALSE(l.Read(Link(c.xml))) << c.xml;
+    l.ExpectDiagnostic(c.kind, c.message);
     EXPECT_FALSE(l.Body("a")->surface_velocity_axis.has_value());
   }
 }

@@ -238,6 +238,8 @@ TEST(UrdfReaderTest, TransmissionsMakeActuators) {  // URDF-020..024
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedValue, "mechanicalReduction"));
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedValue, "Differential"));
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::ActuatorWarning, "fixed joint 'w'"));
+  // the actuator takes its name from <actuator>, as in Drake
+  l.ExpectDiagnostic(DiagKind::UnsupportedAttribute, "attribute 'name' of <transmission>");
 }
 
 TEST(UrdfReaderTest, ZeroEffortMakesNoActuator) {  // URDF-021
@@ -290,6 +292,12 @@ TEST(UrdfReaderTest, ManyIndependentErrorsInOneRun) {
     <joint type='fixed'/>
   </robot>)"));
   EXPECT_GE(l.diags.error_count(), 4u) << l.Messages();
+  l.ExpectDiagnostic(DiagKind::MissingAttribute, "<link> is missing required attribute 'name'");
+  l.ExpectDiagnostic(DiagKind::BadValue, "attribute 'value' of <mass>");
+  l.ExpectDiagnostic(DiagKind::BadValue, "unrecognized type 'bogus'");
+  l.ExpectDiagnostic(DiagKind::MissingAttribute, "<joint> is missing required attribute 'name'");
+  l.ExpectDiagnostic(DiagKind::MissingElement, "missing its <parent> element");
+  l.ExpectDiagnostic(DiagKind::MissingElement, "missing its <child> element");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // mesh_test_util.h - test meshes (tests/models/meshes, made by generate.py)
 // and a small IR fixture for running the mesh and mass passes on geometry
-// built by hand, without a frontend.
+// built by hand, without a frontend. The fixture is strict about
+// diagnostics: see diagnostic_claims.h.
 #pragma once
 
 #include <fmt/format.h>
@@ -13,6 +14,7 @@
 #include "ir/module.h"
 #include "passes/pass.h"
 #include "passes/pass_registry.h"
+#include "tests/unit/diagnostic_claims.h"
 
 namespace mdlc::testing {
 
@@ -53,6 +55,9 @@ struct MassFixture {
     mi.loc = NextLoc();
     model = module.Add(mi);
   }
+  ~MassFixture() { claims_.CheckAtEnd(diags.diagnostics()); }
+  MassFixture(const MassFixture&) = delete;
+  MassFixture& operator=(const MassFixture&) = delete;
   Loc NextLoc() { return Loc{file, next_line++, 1}; }
 
   BodyId AddBody(std::string_view name, bool from_geometry = true) {
@@ -109,12 +114,21 @@ struct MassFixture {
     }
     return out;
   }
+  /// The first diagnostic of `kind` (null: none); those of `kind` are then
+  /// claimed.
   const Diagnostic* Find(DiagKind kind) const {
     for (const auto& d : diags.diagnostics()) {
-      if (d.kind == kind) return &d;
+      if (d.kind == kind) {
+        claims_.Found(kind, "");
+        return &d;
+      }
     }
     return nullptr;
   }
+  /// Claims the diagnostics of `kind` holding `text`; at least one must come.
+  void ExpectDiagnostic(DiagKind kind, std::string_view text) { claims_.Expect(kind, text); }
+  /// Fails for every diagnostic so far that no claim covers.
+  void ExpectNoOtherDiagnostics() const { claims_.Check(diags.diagnostics()); }
 
   /// The body's inertia about its center of mass, in the body frame.
   Eigen::Matrix3d InertiaB(BodyId body) const {
@@ -124,6 +138,9 @@ struct MassFixture {
     return in.X_BI.R * I * in.X_BI.R.transpose();
   }
   Eigen::Vector3d Com(BodyId body) const { return module[body].inertial->X_BI.p; }
+
+ private:
+  mutable DiagnosticClaims claims_;
 };
 
 }  // namespace mdlc::testing

@@ -200,6 +200,7 @@ TEST(CollisionFilterGroupsTest, UnknownMemberIsNotFound) {  // COMMON-053
   const Diagnostic& d = l.diags.diagnostics()[0];
   EXPECT_EQ(d.kind, DiagKind::UnknownReference);
   EXPECT_NE(d.message.find("body with name 'r::hnad' not found"), std::string::npos) << d.message;
+  l.ExpectDiagnostic(DiagKind::UnknownReference, "body with name 'r::hnad' not found");
   EXPECT_EQ(d.loc.line, 4u);  // the group's line, at the member's link attribute
   ASSERT_EQ(d.notes.size(), 1u);
   EXPECT_EQ(d.notes[0].message, "did you mean 'hand'?");
@@ -293,6 +294,7 @@ TEST(CollisionFilterGroupsTest, DuplicateGroupIsAnError) {  // COMMON-050
   const Diagnostic& d = l.diags.diagnostics()[0];
   EXPECT_EQ(d.kind, DiagKind::DuplicateName);
   EXPECT_NE(d.message.find("group 'r::g' has already been defined"), std::string::npos);
+  l.ExpectDiagnostic(DiagKind::DuplicateName, "group 'r::g' has already been defined");
   EXPECT_EQ(d.loc.line, 5u);
   ASSERT_EQ(d.notes.size(), 1u);
   EXPECT_EQ(d.notes[0].loc.line, 4u);

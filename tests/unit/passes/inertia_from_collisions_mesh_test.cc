@@ -49,6 +49,7 @@ TEST(InertiaFromCollisionsMeshTest, OpenMeshUsesItsHullWithAWarning) {  // BEYON
   SdfCompileResult r(LinkWithMesh("open_box.obj"));
   ASSERT_TRUE(r.ok()) << r.Messages();
   EXPECT_NE(r.Messages().find("convex hull"), std::string::npos) << r.Messages();
+  r.ExpectDiagnostic(DiagKind::MeshNotClosed, "its convex hull is used");
   const ir::Inertial& in = InertialOf(r.compilation());
   EXPECT_NEAR(in.mass, 2 * 1, 1e-12);  // the whole box
   ExpectNear(in.X_BI.p, Eigen::Vector3d(2.5, 0.25, 1.25), 1e-12, "com");
@@ -71,6 +72,7 @@ TEST(InertiaFromCollisionsMeshTest, BadMeshIsAnErrorAtItsUri) {  // BEYOND-001
     }
   }
   EXPECT_TRUE(found) << r.Messages();
+  r.ExpectDiagnostic(DiagKind::BadMesh, "cannot read mesh file");
 }
 
 }  // namespace

@@ -83,6 +83,7 @@ TEST(InertiaFromCollisions, NoCollisionIsAnError) {  // SDF-007
   EXPECT_FALSE(r.ok());
   EXPECT_NE(r.Messages().find("has no collision with a volume"), std::string::npos)
       << r.Messages();
+  r.ExpectDiagnostic(DiagKind::BadValue, "has no collision with a volume");
 }
 
 }  // namespace

@@ -188,6 +188,8 @@ TEST(LoadMeshesTest, UnreadableMeshesAreErrorsAtTheirUri) {  // BEYOND-001
     locs.push_back(d.loc);
   }
   EXPECT_EQ(locs, (std::vector<Loc>{garbage.uri_loc, empty.uri_loc})) << f.Messages();
+  f.ExpectDiagnostic(DiagKind::BadMesh, "cannot read mesh file");
+  f.ExpectDiagnostic(DiagKind::BadMesh, "holds no triangles");
 }
 
 TEST(LoadMeshesTest, EachFileIsReadOnce) {  // BEYOND-001

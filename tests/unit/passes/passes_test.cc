@@ -49,6 +49,7 @@ TEST(ResolveNamesTest, ResolvesAndSuggests) {  // URDF-010
   EXPECT_NE(d.message.find("Could not find link 'foreram'"), std::string::npos);
   ASSERT_EQ(d.notes.size(), 1u);
   EXPECT_EQ(d.notes[0].message, "did you mean 'forearm'?");
+  l.ExpectDiagnostic(DiagKind::UnknownReference, "Could not find link 'foreram'");
   EXPECT_EQ(d.loc.line, 2u);
 }
 
@@ -100,6 +101,7 @@ TEST(BuildKinematicTreeTest, LongLoopIsFoundWithoutRecursion) {
   ASSERT_EQ(l.diags.error_count(), 1u);
   EXPECT_EQ(l.diags.diagnostics()[0].kind, DiagKind::KinematicLoop);
   EXPECT_EQ(l.diags.diagnostics()[0].notes.size(), static_cast<size_t>(n));
+  l.ExpectDiagnostic(DiagKind::KinematicLoop, "kinematic loop through joints");
 }
 
 TEST(CheckInertiaTest, ReplacesNonPhysicalInertiaWithASphere) {  // COMMON-040
@@ -134,6 +136,7 @@ TEST(CheckInertiaTest, MassRules) {  // COMMON-041
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::NonPhysicalInertia, "principal moment -1 is negative"));
   EXPECT_EQ(l.Body("fine")->inertial->izz, 2);  // a flat disk is exactly on the boundary
   EXPECT_EQ(l.diags.warning_count(), 3u) << l.Messages();
+  l.ExpectDiagnostic(DiagKind::NonPositiveMass, "'r::zero_mass' has non-physical inertia: mass is zero");
 }
 
 // COMMON-040 at the boundary, from both sides. Drake's test
@@ -172,6 +175,7 @@ TEST(CheckInertiaTest, DrakesToleranceAtTheBoundary) {  // COMMON-040
     const ir::Inertial& in = *l.Body("a")->inertial;
     const bool sphere = in.ixx == in.iyy && in.iyy == in.izz && in.ixy == 0;
     EXPECT_EQ(l.diags.warning_count(), kept ? 0u : 1u) << moments << "\n" << l.Messages();
+    if (!kept) l.ExpectDiagnostic(DiagKind::NonPhysicalInertia, "using a solid sphere");
     EXPECT_EQ(!sphere, kept) << moments;
   }
 }
@@ -193,6 +197,7 @@ TEST(PassManagerTest, StopsAtTheFirstPassThatFails) {
   ASSERT_EQ(printed.size(), 2u);  // resolve-frames (nothing to do for URDF), then resolve-names
   EXPECT_NE(printed[0].find("resolve-frames"), std::string::npos);
   EXPECT_NE(printed[1].find("resolve-names"), std::string::npos);
+  l.ExpectDiagnostic(DiagKind::UnknownReference, "Could not find link 'missing'");
 }
 
 TEST(PassManagerTest, EveryRegisteredPassCanBeCreatedByName) {

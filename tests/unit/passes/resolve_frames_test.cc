@@ -217,6 +217,7 @@ TEST(ResolveFrames, CyclesAndDanglingNamesAreLocatedErrors) {  // SDF-004
   EXPECT_FALSE(cycle.ok());
   EXPECT_NE(cycle.Messages().find("relative_to cycle: m::A -> m::B -> m::A"), std::string::npos)
       << cycle.Messages();
+  cycle.ExpectDiagnostic(DiagKind::FrameCycle, "relative_to cycle: m::A -> m::B -> m::A");
   SdfCompileResult dangling(R"(
   <model name='m'>
     <link name='L'><pose relative_to='nowhere'/></link>
@@ -224,6 +225,7 @@ TEST(ResolveFrames, CyclesAndDanglingNamesAreLocatedErrors) {  // SDF-004
   EXPECT_FALSE(dangling.ok());
   EXPECT_NE(dangling.Messages().find("relative_to name 'nowhere' does not match"),
             std::string::npos);
+  dangling.ExpectDiagnostic(DiagKind::UnknownReference, "relative_to name 'nowhere' does not match");
 }
 
 TEST(ResolveFrames, DeepChainsNeedNoRecursion) {  // SDF-003: 20,000 frames in one chain

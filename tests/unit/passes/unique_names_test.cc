@@ -116,6 +116,17 @@ TEST(UniqueNames, MadeNamesGiveWayToTheFilesNames) {  // MJCF-020, MJCF-021, MJC
       EXPECT_EQ(n, 1) << list << " " << key.first << "::" << key.second;
     }
   }
+
+  // each made name that gave way is noted
+  for (const char* name : {"body name 'vertebra_C10'", "body name 'body5'",
+                           "joint name 'world_welds_to_body5'", "actuator name 'motor0'",
+                           "camera name 'spine/camera0'", "geometry name 'geom0'"}) {
+    c.ExpectDiagnostic(DiagKind::SynthesizedNameTaken, name);
+  }
+  // TODO: the note for geometry 'geom0' comes twice, word for word at the
+  // same location, once per registration (visual and collision) of the one
+  // <geom>; one note per element would do.
+  EXPECT_EQ(c.Find(DiagKind::SynthesizedNameTaken, "geometry name 'geom0'").size(), 2u);
 }
 
 TEST(UniqueNames, EachRenameIsANoteAtTheMadeEntity) {

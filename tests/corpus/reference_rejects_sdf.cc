@@ -12,38 +12,15 @@
 // the plant (a deliberate difference the README lists). The table must cover every
 // such file in the manifest, so a new corpus file cannot slip by.
 //
-// Skipped (reported as skipped) when ../shared is absent.
-#include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
+// reference_rejects_test.cc runs the table (skipped when ../shared is
+// absent). An entry whose error is about the file itself (its name), raised
+// before the file is read, has no line: `located` false.
+#include "reference_rejects.h"
 
-#include <cctype>
-#include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <map>
-#include <regex>
-#include <set>
-#include <sstream>
-#include <string>
-#include <vector>
-
-namespace {
-namespace fs = std::filesystem;
-
-struct Expectation {
-  const char* path;     // relative to corpus/
-  bool accepted;        // does mdlc compile it?
-  const char* keyword;  // rejected: a word the error must contain
-  const char* why;
-  // rejected: the error carries file:line:col. Only errors about the file
-  // itself (its name), raised before it is read, have no line.
-  bool located = true;
-};
+namespace mdlc::corpus {
 
 // clang-format off
-constexpr Expectation kExpectations[] = {
+constexpr Expectation kSdf[] = {
   {"drake/examples/multibody/four_bar/dev/four_bar_loop.sdf", false, "Failed to parse XML",
    "COMMON-004: '--' inside a comment is not well-formed XML (libsdformat, on tinyxml2, got past"
    " it and rejected frame 'Wd' attached_to 'world', SDF-004)"},
@@ -441,127 +418,6 @@ constexpr Expectation kExpectations[] = {
 };
 // clang-format on
 
-// readable test parameters in gtest's failure messages
-void PrintTo(const Expectation& e, std::ostream* os) { *os << e.path; }
+std::span<const Expectation> SdfReferenceRejects() { return kSdf; }
 
-fs::path Corpus() { return fs::path(MDLC_SHARED_DIR) / "corpus"; }
-
-struct Result {
-  int status;
-  std::string err;
-};
-
-Result Compile(const fs::path& file) {
-  const fs::path err =
-      fs::temp_directory_path() / ("mdlc_sdf_rejects_" + std::to_string(::getpid()));
-  const std::string cmd = std::string(MDLC_BINARY) + " compile '" + file.string() +
-                          "' --emit=none --package-path '" + Corpus().string() +
-                          "' >/dev/null 2>'" + err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  std::ifstream in(err);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  fs::remove(err);
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), ss.str()};
-}
-
-// An error line "FILE:LINE:COL: error: ..." (FILE may be an included file)
-// whose message contains the keyword.
-bool HasLocatedError(const std::string& err, const std::string& keyword) {
-  static const std::regex kLocated(R"(:[0-9]+:[0-9]+: error: )");
-  std::istringstream lines(err);
-  std::string line;
-  while (std::getline(lines, line)) {
-    std::smatch m;
-    if (std::regex_search(line, m, kLocated) &&
-        line.find(keyword, m.position(0)) != std::string::npos) {
-      return true;
-    }
-  }
-  return false;
-}
-
-// Any error line (located or not) whose message contains the keyword.
-bool HasError(const std::string& err, const std::string& keyword) {
-  std::istringstream lines(err);
-  std::string line;
-  while (std::getline(lines, line)) {
-    const auto at = line.find("error: ");
-    if (at != std::string::npos && line.find(keyword, at) != std::string::npos) return true;
-  }
-  return false;
-}
-
-// The file itself is named with a line and column: as the error's location, or
-// in the "in file included from FILE:LINE:COL:" chain of an error raised in a
-// file it includes.
-bool NamesFileWithLine(const std::string& err, const std::string& path) {
-  static const std::regex kLineCol(R"(^:[0-9]+:[0-9]+:)");
-  for (auto at = err.find(path); at != std::string::npos; at = err.find(path, at + 1)) {
-    const std::string rest = err.substr(at + path.size(), 32);
-    if (std::regex_search(rest, kLineCol)) return true;
-  }
-  return false;
-}
-
-class SdfReferenceRejects : public ::testing::TestWithParam<Expectation> {};
-
-TEST_P(SdfReferenceRejects, MdlcFollowsDrake) {
-  if (!fs::exists(Corpus() / "manifest.tsv")) GTEST_SKIP() << "shared corpus not found";
-  const Expectation& e = GetParam();
-  const Result r = Compile(Corpus() / e.path);
-  if (e.accepted) {
-    EXPECT_EQ(r.status, 0) << e.path << " (" << e.why << ")\n" << r.err;
-  } else {
-    EXPECT_EQ(r.status, 1) << e.path << " (" << e.why << ")\n" << r.err;
-    if (e.located) {
-      // located: "file:line:col: error: ...keyword..."
-      EXPECT_TRUE(HasLocatedError(r.err, e.keyword))
-          << e.path << ": no located error containing '" << e.keyword << "'\n" << r.err;
-      EXPECT_TRUE(NamesFileWithLine(r.err, e.path))
-          << e.path << ": the file is not named with line:col\n" << r.err;
-    } else {
-      EXPECT_TRUE(HasError(r.err, e.keyword))
-          << e.path << ": no error containing '" << e.keyword << "'\n" << r.err;
-      EXPECT_NE(r.err.find(e.path), std::string::npos) << r.err;
-    }
-  }
-}
-
-std::string CaseName(const ::testing::TestParamInfo<Expectation>& info) {
-  const fs::path p(info.param.path);
-  std::string name = p.parent_path().filename().string() + "_" + p.stem().string();
-  for (char& c : name) {
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  }
-  return name + "_" + std::to_string(info.index);
-}
-
-INSTANTIATE_TEST_SUITE_P(Corpus, SdfReferenceRejects, ::testing::ValuesIn(kExpectations), CaseName);
-
-TEST(SdfReferenceRejectsTable, CoversExactlyTheSdfTheReferenceRejects) {
-  const fs::path manifest = Corpus() / "manifest.tsv";
-  if (!fs::exists(manifest)) GTEST_SKIP() << "shared corpus not found";
-  std::map<std::string, int> listed;
-  for (const auto& e : kExpectations) ++listed[e.path];
-  for (const auto& [path, count] : listed) EXPECT_EQ(count, 1) << "listed twice: " << path;
-
-  std::set<std::string> rejected;  // sdf rows whose loads_in_reference is not "yes..."
-  std::ifstream in(manifest);
-  std::string line;
-  while (std::getline(in, line)) {
-    std::vector<std::string> cols;
-    std::stringstream ss(line);
-    std::string col;
-    while (std::getline(ss, col, '\t')) cols.push_back(col);
-    if (cols.size() < 7 || cols[0] != "sdf" || cols[6].rfind("yes", 0) == 0) continue;
-    rejected.insert(cols[1]);
-    EXPECT_TRUE(listed.count(cols[1])) << "no expectation for " << cols[1] << " (" << cols[6] << ")";
-  }
-  for (const auto& [path, count] : listed) {
-    EXPECT_TRUE(rejected.count(path))
-        << path << " is listed but is not an sdf file that the reference rejects";
-  }
-}
-
-}  // namespace
+}  // namespace mdlc::corpus

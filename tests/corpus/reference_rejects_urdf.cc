@@ -6,29 +6,14 @@
 // deliberate difference the README lists). The table must cover every such
 // file in the manifest, so a new corpus file cannot slip by.
 //
-// Skipped (reported as skipped) when ../shared is absent.
-#include <gtest/gtest.h>
-#include <sys/wait.h>
+// reference_rejects_test.cc runs the table (skipped when ../shared is
+// absent).
+#include "reference_rejects.h"
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <set>
-#include <sstream>
-#include <string>
-
-namespace {
-namespace fs = std::filesystem;
-
-struct Expectation {
-  const char* path;     // relative to corpus/
-  bool accepted;        // does mdlc compile it?
-  const char* keyword;  // rejected: a word the error must contain
-  const char* why;
-};
+namespace mdlc::corpus {
 
 // clang-format off
-constexpr Expectation kExpectations[] = {
+constexpr Expectation kUrdf[] = {
   {"drake/examples/acrobot/Acrobot.urdf", true, "",
    "URDF-003: a joint may name the link 'world' without defining it; urdfdom needs the link"},
   {"drake/multibody/benchmarking/cassie_v2.urdf", true, "",
@@ -70,70 +55,6 @@ constexpr Expectation kExpectations[] = {
 };
 // clang-format on
 
-// readable test parameters in gtest's failure messages
-void PrintTo(const Expectation& e, std::ostream* os) { *os << e.path; }
+std::span<const Expectation> UrdfReferenceRejects() { return kUrdf; }
 
-fs::path Corpus() { return fs::path(MDLC_SHARED_DIR) / "corpus"; }
-
-struct Result {
-  int status;
-  std::string err;
-};
-
-Result Compile(const fs::path& file) {
-  const fs::path err = fs::temp_directory_path() / ("mdlc_rejects_" + std::to_string(::getpid()));
-  const std::string cmd = std::string(MDLC_BINARY) + " compile --emit=none --package-path '" +
-                          Corpus().string() + "' '" + file.string() + "' >/dev/null 2>'" +
-                          err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  std::ifstream in(err);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  fs::remove(err);
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), ss.str()};
-}
-
-class UrdfReferenceRejects : public ::testing::TestWithParam<Expectation> {};
-
-TEST_P(UrdfReferenceRejects, MdlcFollowsDrake) {
-  if (!fs::exists(Corpus() / "manifest.tsv")) GTEST_SKIP() << "shared corpus not found";
-  const Expectation& e = GetParam();
-  const Result r = Compile(Corpus() / e.path);
-  if (e.accepted) {
-    EXPECT_EQ(r.status, 0) << e.path << " (" << e.why << ")\n" << r.err;
-  } else {
-    EXPECT_EQ(r.status, 1) << e.path << " (" << e.why << ")\n" << r.err;
-    EXPECT_NE(r.err.find(e.keyword), std::string::npos) << e.path << "\n" << r.err;
-    // located: "path:line:col: error:"
-    EXPECT_NE(r.err.find(std::string(e.path) + ":"), std::string::npos) << r.err;
-  }
-}
-
-std::string CaseName(const ::testing::TestParamInfo<Expectation>& info) {
-  std::string name = fs::path(info.param.path).stem().string();
-  for (char& c : name) {
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  }
-  return name + "_" + std::to_string(info.index);
-}
-
-INSTANTIATE_TEST_SUITE_P(Corpus, UrdfReferenceRejects, ::testing::ValuesIn(kExpectations), CaseName);
-
-TEST(UrdfReferenceRejectsTable, CoversEveryUrdfTheReferenceRejects) {
-  const fs::path manifest = Corpus() / "manifest.tsv";
-  if (!fs::exists(manifest)) GTEST_SKIP() << "shared corpus not found";
-  std::set<std::string> listed;
-  for (const auto& e : kExpectations) listed.insert(e.path);
-  std::ifstream in(manifest);
-  std::string line;
-  while (std::getline(in, line)) {
-    std::vector<std::string> cols;
-    std::stringstream ss(line);
-    std::string col;
-    while (std::getline(ss, col, '\t')) cols.push_back(col);
-    if (cols.size() < 7 || cols[0] != "urdf" || cols[6].rfind("no", 0) != 0) continue;
-    EXPECT_TRUE(listed.count(cols[1])) << "no expectation for " << cols[1] << " (" << cols[6] << ")";
-  }
-}
-
-}  // namespace
+}  // namespace mdlc::corpus
