@@ -500,7 +500,9 @@ TEST(UrdfDrakeElementsTest, EveryProblemOfOneElementIsReported) {  // COMMON-001
   </drake:linear_spring_damper>)")));
   // body_A, body_B, p_BQ, stiffness and damping missing; p_AP and free length bad
   EXPECT_EQ(l.diags.error_count(), 7u) << l.Messages();
-  l.ExpectDiagnostic(DiagKind::BadValue, "");  // the seven errors, counted above
+  // the seven errors, counted above: five missing children, two bad values
+  l.ExpectDiagnostic(DiagKind::MissingElement, "needs a <drake:linear_spring_damper_");
+  l.ExpectDiagnostic(DiagKind::BadValue, "");
   EXPECT_TRUE(l.module.force_elements.empty());
 }
 
