@@ -17,7 +17,9 @@
 // (build-kinematic-tree); afterwards the verifier's Named level holds.
 #include <fmt/format.h>
 
+#include <optional>
 #include <unordered_set>
+#include <utility>
 
 #include "passes/pass_registry.h"
 
@@ -104,6 +106,9 @@ class UniqueNamesPass : public Pass {
     for (const Entity& e : table) {
       if (!e.unnamed) take(e);
     }
+    // one MJCF <geom> is registered twice (visual and collision), in a row:
+    // its rename is noted once
+    std::optional<std::pair<Loc, Symbol>> last_note;
     for (Entity& e : table) {
       if (!e.unnamed) continue;
       if (!is_free(e, e.name)) {
@@ -113,11 +118,14 @@ class UniqueNamesPass : public Pass {
           renamed = m.Intern(fmt::format("{}_{}", made, n));
           if (is_free(e, renamed)) break;
         }
-        ctx.diags.Report(DiagKind::SynthesizedNameTaken, e.loc,
-                         fmt::format("the {} name '{}' that mdlc made is already used in model "
-                                     "instance '{}'; this {} is named '{}'",
-                                     what, made, m.Text(m.models[e.model.index()].name), what,
-                                     m.Text(renamed)));
+        if (last_note != std::pair{e.loc, renamed}) {
+          ctx.diags.Report(DiagKind::SynthesizedNameTaken, e.loc,
+                           fmt::format("the {} name '{}' that mdlc made is already used in "
+                                       "model instance '{}'; this {} is named '{}'",
+                                       what, made, m.Text(m.models[e.model.index()].name), what,
+                                       m.Text(renamed)));
+          last_note = std::pair{e.loc, renamed};
+        }
         e.name = renamed;
       }
       take(e);
