@@ -13,8 +13,16 @@ Eigen::Matrix3d RotationFromRpy(const Eigen::Vector3d& rpy) {
 
 Eigen::Vector3d RpyFromRotation(const Eigen::Matrix3d& R) {
   const double pitch = std::atan2(-R(2, 0), std::hypot(R(0, 0), R(1, 0)));
-  const double roll = std::atan2(R(2, 1), R(2, 2));
   const double yaw = std::atan2(R(1, 0), R(0, 0));
+  // roll from what is left once yaw and pitch are taken out, so the three
+  // angles rebuild R to rounding even at and near pitch = +-pi/2, where yaw
+  // and roll turn about the same axis and atan2(R21, R22) would read noise
+  const Eigen::Matrix3d rest = (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
+                                Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()))
+                                   .toRotationMatrix()
+                                   .transpose() *
+                               R;
+  const double roll = std::atan2(rest(2, 1), rest(1, 1));
   return {roll, pitch, yaw};
 }
 

@@ -372,4 +372,92 @@ TEST_F(CliTest, YamlBombsAreLocatedErrors) {
   EXPECT_NE(b.err.find("laughs.dmd.yaml:1:1: error: unknown key 'l0'"), std::string::npos) << b.err;
 }
 
+// --- mdlc convert (issue 14) ---
+
+const char* kMjcfWithLosses = R"(<mujoco model="losses">
+  <worldbody>
+    <geom name="floor" type="plane" size="1 1 0.1"/>
+    <body name="ball" pos="0 0 1">
+      <freejoint name="free"/>
+      <geom name="shell" type="capsule" size="0.1 0.2" mass="1"/>
+    </body>
+  </worldbody>
+</mujoco>
+)";
+
+TEST_F(CliTest, ConvertInfersTheTargetAndReportsWhatIsLost) {
+  const fs::path out = dir_ / "out" / "losses.urdf";
+  fs::create_directories(out.parent_path());
+  Result r = Run("convert " + Write("losses.xml", kMjcfWithLosses).string() + " -o " + out.string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  // the half space and the free body's default pose cannot be written
+  EXPECT_NE(r.err.find("losses.xml:3:5: warning: geometry 'floor' is a half space"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("the default pose of free link 'ball' is not written"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("[-Wlossy]"), std::string::npos) << r.err;
+  const std::string urdf = ReadFile(out);
+  EXPECT_NE(urdf.find("<drake:capsule radius=\"0.1\" length=\"0.4\"/>"), std::string::npos)
+      << urdf;
+  // and what is written compiles
+  Result back = Run("compile --emit=none --strict " + out.string());
+  EXPECT_EQ(back.status, 0) << back.err;
+}
+
+TEST_F(CliTest, ConvertStrictMakesLossesErrors) {
+  const fs::path out = dir_ / "strict.urdf";
+  Result r = Run("convert --strict " + Write("losses.xml", kMjcfWithLosses).string() + " -o " +
+                 out.string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("error: geometry 'floor' is a half space"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  // one group can be silenced: then nothing is lost that --strict minds
+  Result quiet = Run("convert --strict -Wno-lossy " + (dir_ / "losses.xml").string() + " -o " +
+                     out.string());
+  EXPECT_EQ(quiet.status, 0) << quiet.err;
+}
+
+TEST_F(CliTest, ConvertNeedsATarget) {
+  const fs::path in = Write("p.urdf", kPendulum);
+  EXPECT_EQ(Run("convert " + in.string() + " -o " + (dir_ / "p.txt").string()).status, 2);
+  EXPECT_EQ(Run("convert " + in.string() + " --to step -o -").status, 2);
+  // an SDFormat or MJCF writer does not exist yet, and says so
+  Result sdf = Run("convert " + in.string() + " -o " + (dir_ / "p.sdf").string());
+  EXPECT_EQ(sdf.status, 1);
+  EXPECT_NE(sdf.err.find("converting to SDFormat is not implemented yet"), std::string::npos)
+      << sdf.err;
+}
+
+TEST_F(CliTest, ConvertNamesMeshesFromTheOutputAndCopiesThemOnce) {
+  const fs::path mesh = fs::path(MDLC_TEST_MODELS) / "meshes" / "box.obj";
+  const std::string robot = fmt::format(R"(<robot name="r">
+  <link name="a">
+    <visual><geometry><mesh filename="{0}"/></geometry></visual>
+    <collision><geometry><mesh filename="{0}" scale="2 2 2"/></geometry></collision>
+  </link>
+</robot>)",
+                                        mesh.string());
+  const fs::path in = Write("meshy.urdf", robot);
+  fs::create_directories(dir_ / "out");
+  Result plain = Run("convert " + in.string() + " -o " + (dir_ / "out" / "a.urdf").string());
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  const std::string relative = fs::relative(mesh, dir_ / "out").generic_string();
+  EXPECT_NE(ReadFile(dir_ / "out" / "a.urdf").find("filename=\"" + relative + "\""),
+            std::string::npos);
+
+  Result copied = Run("convert " + in.string() + " -o " + (dir_ / "out" / "b.urdf").string() +
+                      " --copy-assets " + (dir_ / "out" / "meshes").string());
+  ASSERT_EQ(copied.status, 0) << copied.err;
+  std::vector<fs::path> copies;
+  for (const auto& e : fs::directory_iterator(dir_ / "out" / "meshes")) copies.push_back(e.path());
+  ASSERT_EQ(copies.size(), 1u);  // one file, named twice: one copy
+  EXPECT_EQ(ReadFile(copies[0]), ReadFile(mesh));
+  const std::string b = ReadFile(dir_ / "out" / "b.urdf");
+  EXPECT_NE(b.find("filename=\"meshes/" + copies[0].filename().string() + "\""), std::string::npos)
+      << b;
+  Result back = Run("compile --emit=none " + (dir_ / "out" / "b.urdf").string());
+  EXPECT_EQ(back.status, 0) << back.err;
+}
+
 }  // namespace

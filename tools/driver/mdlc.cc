@@ -9,6 +9,7 @@
 #include "backend/kinematics.h"
 #include "backend/mass_matrix.h"
 #include "backend/positions.h"
+#include "backend/writers/writer.h"
 #include "tools/driver/compiler.h"
 
 namespace mdlc {
@@ -133,5 +134,17 @@ std::string Result::PlantJson(const Eigen::VectorXd& q,
 }
 
 const std::string& Result::timing_report() const { return compilation_->timing_report(); }
+
+std::optional<std::string> Result::Convert(const ConvertOptions& options) {
+  if (!has_model()) {
+    throw std::logic_error("mdlc: nothing to convert; the compile did not make a model");
+  }
+  writers::WriteOptions write;
+  write.to = options.to;
+  write.output = options.output;
+  if (options.copy_assets_dir) write.copy_assets_dir = *options.copy_assets_dir;
+  write.keep_package_uris = options.keep_package_uris;
+  return writers::Write(*compilation_->model, compilation_->module, write, compilation_->diags);
+}
 
 }  // namespace mdlc

@@ -4,6 +4,7 @@
 //                        [--q JOINT=VALUE ...] [--diagnostics-format=text|json]
 //                        [-Werror|--strict] [-Wno-GROUP] [-Werror=GROUP]
 //                        [--print-after=PASS] [--print-after-all] [--time-passes]
+//   mdlc convert FILE... --to urdf -o OUT [--copy-assets DIR] [--keep-package-uris]
 //   mdlc --list-passes
 //
 // Exit status: 0 on success, 1 when any error was reported, 2 on bad usage.
@@ -45,6 +46,10 @@ struct CliOptions {
   std::vector<std::string> package_paths;
   std::vector<std::string> packages;
   std::string color = "auto";
+  // convert
+  std::string to;
+  std::string copy_assets_dir;
+  bool keep_package_uris = false;
 };
 
 // -Werror, -Werror=GROUP, -Wno-GROUP, -WGROUP (enable: the default)
@@ -111,8 +116,8 @@ bool ParsePackages(const CliOptions& cli, mdlc::Options& options) {
   return true;
 }
 
-int RunCompile(const CliOptions& cli) {
-  mdlc::Options options;
+/// The options both subcommands share; 0, or the exit status of bad usage.
+int PrepareOptions(const CliOptions& cli, mdlc::Options& options) {
   std::string bad;
   if (!ApplyWarningFlags(cli, options.diagnostics, &bad)) {
     fmt::print(stderr, "mdlc: error: {}\n", bad);
@@ -127,6 +132,12 @@ int RunCompile(const CliOptions& cli) {
   options.time_passes = cli.time_passes;
   options.verify_each = cli.verify_each;
   options.skip_backend = cli.emit == "ir";
+  return 0;
+}
+
+int RunCompile(const CliOptions& cli) {
+  mdlc::Options options;
+  if (int status = PrepareOptions(cli, options)) return status;
 
   // diagnostics stream out as they happen, unless they are being verified
   const bool json = cli.diagnostics_format == "json";
@@ -176,6 +187,80 @@ int RunCompile(const CliOptions& cli) {
   return WriteOutput(cli, result.PlantJson(result.DefaultPositions(), json_options));
 }
 
+int RunConvert(CliOptions cli) {
+  // the target: --to, or the output file's extension
+  std::optional<mdlc::Format> to;
+  if (!cli.to.empty()) {
+    to = cli.to == "urdf" ? std::optional(mdlc::Format::Urdf)
+         : cli.to == "sdf" ? std::optional(mdlc::Format::Sdf)
+         : cli.to == "mjcf" ? std::optional(mdlc::Format::Mjcf)
+                           : std::nullopt;
+  } else if (!cli.output.empty() && cli.output != "-") {
+    to = mdlc::FormatFromPath(cli.output);
+  }
+  if (!to || *to == mdlc::Format::Directives) {
+    fmt::print(stderr, "mdlc: error: convert needs --to urdf|sdf|mjcf, or an output file "
+                       "ending in .urdf, .sdf or .xml\n");
+    return 2;
+  }
+  cli.emit = "none";
+  mdlc::Options options;
+  if (int status = PrepareOptions(cli, options)) return status;
+  const bool json = cli.diagnostics_format == "json";
+  const bool color = cli.color == "always" || (cli.color == "auto" && isatty(STDERR_FILENO) && !json);
+  options.on_diagnostic = [&](const mdlc::Diagnostic& d, const mdlc::SourceManager& s) {
+    if (json) {
+      fmt::print(stderr, "{}\n", mdlc::FormatDiagnosticJson(d, s));
+    } else {
+      fmt::print(stderr, "{}", mdlc::FormatDiagnosticText(d, s, color));
+    }
+  };
+  std::vector<mdlc::Input> inputs;
+  for (const std::string& file : cli.files) inputs.push_back(mdlc::Input::File(file));
+  mdlc::Result& result = *new mdlc::Result(mdlc::Compile(inputs, options));  // see RunCompile
+  std::optional<std::string> text;
+  if (result.ok()) {
+    mdlc::ConvertOptions convert;
+    convert.to = *to;
+    convert.output = cli.output == "-" ? "" : cli.output;
+    if (!cli.copy_assets_dir.empty()) convert.copy_assets_dir = cli.copy_assets_dir;
+    convert.keep_package_uris = cli.keep_package_uris;
+    text = result.Convert(convert);
+  }
+  if (!result.ok() || !text) {
+    if (!json) {
+      fmt::print(stderr, "{} error{} generated.\n", result.error_count(),
+                 result.error_count() == 1 ? "" : "s");
+    }
+    return 1;
+  }
+  return WriteOutput(cli, *text);
+}
+
+/// The options of every subcommand that compiles.
+void AddCompileOptions(CLI::App* command, CliOptions& cli) {
+  command->add_option("files", cli.files, "Model files (.urdf, .sdf, .xml, .dmd.yaml)")
+      ->required();
+  command->add_option("--diagnostics-format", cli.diagnostics_format, "text or json")
+      ->check(CLI::IsMember({"text", "json"}));
+  command
+      ->add_option("-W", cli.warning_flags,
+                   "-Werror: warnings are errors; -Werror=GROUP; -Wno-GROUP silences a group")
+      ->allow_extra_args(false);
+  command->add_flag("--strict", cli.strict, "Warnings are errors (Drake's strict parsing)");
+  command->add_option("--max-errors", cli.max_errors,
+                      "Stop reporting after N errors (0: no limit)");
+  command->add_option("--model-name", cli.model_name, "Name the model instance this");
+  command->add_flag("--auto-rename", cli.auto_rename,
+                    "Rename a model whose name is taken to NAME_1, NAME_2, ...");
+  command->add_option("--package-path", cli.package_paths, "Search DIR for package.xml files")
+      ->allow_extra_args(false);
+  command->add_option("--package", cli.packages, "Define package NAME=DIR")
+      ->allow_extra_args(false);
+  command->add_option("--color", cli.color, "Color diagnostics: auto, always or never")
+      ->check(CLI::IsMember({"auto", "always", "never"}));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -187,19 +272,12 @@ int main(int argc, char** argv) {
 
   CliOptions cli;
   CLI::App* compile = app.add_subcommand("compile", "Compile robot model files into a plant");
-  compile->add_option("files", cli.files, "Model files (.urdf, .sdf, .xml, .dmd.yaml)")->required();
+  AddCompileOptions(compile, cli);
   compile->add_option("--emit", cli.emit, "What to print: summary, ir, plant-json or none")
       ->check(CLI::IsMember({"summary", "ir", "plant-json", "none"}));
   compile->add_option("-o,--output", cli.output, "Write the output here instead of stdout");
   compile->add_option("--q", cli.q, "Set a 1-dof joint's position: JOINT=VALUE (repeatable)")
       ->allow_extra_args(false);
-  compile->add_option("--diagnostics-format", cli.diagnostics_format, "text or json")
-      ->check(CLI::IsMember({"text", "json"}));
-  compile->add_option("-W", cli.warning_flags,
-                      "-Werror: warnings are errors; -Werror=GROUP; -Wno-GROUP silences a group")
-      ->allow_extra_args(false);
-  compile->add_flag("--strict", cli.strict, "Warnings are errors (Drake's strict parsing)");
-  compile->add_option("--max-errors", cli.max_errors, "Stop reporting after N errors (0: no limit)");
   compile->add_option("--print-after", cli.print_after, "Print the IR after this pass (repeatable)")
       ->allow_extra_args(false);
   compile->add_flag("--print-after-all", cli.print_after_all, "Print the IR after every pass");
@@ -207,20 +285,23 @@ int main(int argc, char** argv) {
   compile->add_flag("--verify-each", cli.verify_each, "Run the IR verifier after every pass");
   compile->add_option("--passes", cli.passes, "Run these passes instead of the default pipeline")
       ->delimiter(',');
-  compile->add_option("--model-name", cli.model_name, "Name the model instance this");
-  compile->add_flag("--auto-rename", cli.auto_rename,
-                    "Rename a model whose name is taken to NAME_1, NAME_2, ...");
   compile->add_flag("--mass-matrix", cli.mass_matrix,
                     "Include the mass matrix in plant-json even above 1000 dofs");
   compile->add_flag("--verify-diagnostics", cli.verify_diagnostics,
                     "Check diagnostics against expected-error comments in the input");
   compile->add_flag("--no-locations", cli.no_locations, "Leave source locations out of --emit=ir");
-  compile->add_option("--package-path", cli.package_paths, "Search DIR for package.xml files")
-      ->allow_extra_args(false);
-  compile->add_option("--package", cli.packages, "Define package NAME=DIR")
-      ->allow_extra_args(false);
-  compile->add_option("--color", cli.color, "Color diagnostics: auto, always or never")
-      ->check(CLI::IsMember({"auto", "always", "never"}));
+
+  CLI::App* convert =
+      app.add_subcommand("convert", "Compile models and write them in another format");
+  AddCompileOptions(convert, cli);
+  convert->add_option("--to", cli.to, "The format to write: urdf, sdf or mjcf (default: from -o)")
+      ->check(CLI::IsMember({"urdf", "sdf", "mjcf"}));
+  convert->add_option("-o,--output", cli.output, "Write the converted model here ('-': stdout)")
+      ->required();
+  convert->add_option("--copy-assets", cli.copy_assets_dir,
+                      "Copy the meshes into DIR (one copy per distinct content) and name them");
+  convert->add_flag("--keep-package-uris", cli.keep_package_uris,
+                    "Keep package:// URIs as written instead of naming the files");
 
   try {
     app.parse(argc, argv);
@@ -234,6 +315,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (compile->parsed()) return RunCompile(cli);
+  if (convert->parsed()) return RunConvert(cli);
   fmt::print("{}", app.help());
   return 2;
 }

@@ -97,6 +97,20 @@ struct Options {
   bool skip_backend = false;
 };
 
+/// What `mdlc convert` writes (Result::Convert).
+struct ConvertOptions {
+  /// The target: urdf (sdf and mjcf are not written yet).
+  Format to = Format::Urdf;
+  /// The file the text will be written to: mesh paths are written relative
+  /// to its folder (empty: the current directory).
+  std::string output;
+  /// Copy every mesh into this folder (one copy per distinct content) and
+  /// name the copies.
+  std::optional<std::string> copy_assets_dir;
+  /// Keep package:// URIs as the source wrote them.
+  bool keep_package_uris = false;
+};
+
 /// What a compile made. Move-only; owns everything it refers to.
 class Result {
  public:
@@ -144,6 +158,12 @@ class Result {
 
   /// The --time-passes report (Options::time_passes).
   const std::string& timing_report() const;
+
+  /// The compiled model written as options.to (`mdlc convert`). What the
+  /// target cannot hold is reported as -Wlossy warnings, added to
+  /// diagnostics(); nullopt (and !ok()) after an error, e.g. a lossy
+  /// warning made an error by the diagnostic policy.
+  std::optional<std::string> Convert(const ConvertOptions& options);
 
  private:
   friend Result Compile(const std::vector<Input>& inputs, const Options& options);

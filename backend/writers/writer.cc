@@ -1,0 +1,26 @@
+// writer.cc - see writer.h: picks the writer for the target format.
+#include "backend/writers/writer.h"
+
+#include <fmt/format.h>
+
+namespace mdlc::writers {
+
+std::optional<std::string> Write(const backend::CompiledModel& model, const ir::Module& module,
+                                 const WriteOptions& options, DiagnosticEngine& diags) {
+  const size_t errors_before = diags.error_count();
+  std::optional<std::string> text;
+  switch (options.to) {
+    case Format::Urdf:
+      text = WriteUrdf(model, module, options, diags);
+      break;
+    default:
+      diags.Report(DiagKind::NotImplemented, Loc{},
+                   fmt::format("converting to {} is not implemented yet; only urdf is",
+                               FormatName(options.to)));
+      return std::nullopt;
+  }
+  if (diags.error_count() != errors_before) return std::nullopt;
+  return text;
+}
+
+}  // namespace mdlc::writers

@@ -1,0 +1,369 @@
+// round_trip_test.cc - `mdlc convert` round trips (issue 14): a model
+// compiled, converted to the target format, written beside a temporary
+// folder and compiled back is the same plant:
+//   - every body is there, under its mapped name;
+//   - every joint connects the mapped bodies with the same type;
+//   - at the default and at random configurations, every body's pose and
+//     the mass matrix agree to 1e-12 (relative to the quantity's scale);
+//   - each role has as many geometries as before (less the ones the writer
+//     reported as dropped);
+//   - the same body pairs are filtered from collision.
+// A conversion that reported structural losses (-Wlossy on a joint the
+// target cannot hold) is counted as approximated and not compared; the test
+// prints how many models were compared and approximated per format.
+//
+// Models: the project's own test models and examples, and every corpus model
+// the reference tools load (../shared; skipped when absent).
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include "mdlc/mdlc.h"
+
+namespace mdlc {
+namespace {
+namespace fs = std::filesystem;
+
+constexpr double kTolerance = 1e-12;
+
+fs::path Corpus() { return fs::path(MDLC_SHARED_DIR) / "corpus"; }
+
+struct ModelCase {
+  fs::path path;
+  std::string format;  // as the manifest spells it
+};
+
+/// The corpus models of `format` that the reference tools load.
+std::vector<ModelCase> CorpusModels(std::string_view format) {
+  std::vector<ModelCase> out;
+  std::ifstream in(Corpus() / "manifest.tsv");
+  std::string line;
+  std::getline(in, line);  // header: format path ... loads_in_reference
+  while (std::getline(in, line)) {
+    std::vector<std::string> fields;
+    std::stringstream row(line);
+    for (std::string f; std::getline(row, f, '\t');) fields.push_back(f);
+    if (fields.size() < 7 || fields[0] != format) continue;
+    if (format != "dmd" && !fields[6].starts_with("yes")) continue;
+    out.push_back({Corpus() / fields[1], fields[0]});
+  }
+  return out;
+}
+
+/// The project's own models of a format (they stand alone, without ../shared).
+std::vector<ModelCase> OwnModels(std::string_view format, std::string_view extension) {
+  std::vector<ModelCase> out;
+  const fs::path dir = fs::path(MDLC_TEST_MODELS) / format;
+  if (!fs::is_directory(dir)) return out;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (entry.is_regular_file() && entry.path().string().ends_with(extension)) {
+      out.push_back({entry.path(), std::string(format)});
+    }
+  }
+  std::sort(out.begin(), out.end(),
+            [](const ModelCase& a, const ModelCase& b) { return a.path < b.path; });
+  return out;
+}
+
+/// Where the converted files go: a temporary folder, or the folder
+/// MDLC_CONVERT_KEEP_DIR names, where they stay for the reference
+/// implementations to load (tests/convert/CMakeLists.txt).
+class OutputDir {
+ public:
+  OutputDir() {
+    const char* keep = std::getenv("MDLC_CONVERT_KEEP_DIR");
+    keep_ = keep && *keep;
+    path_ = keep_ ? fs::path(keep)
+                  : fs::temp_directory_path() / fmt::format("mdlc_convert_{}", ::getpid());
+    if (!keep_) fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~OutputDir() {
+    if (!keep_) fs::remove_all(path_);
+  }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+  bool keep_ = false;
+};
+
+/// A file name for the converted model: its path, flattened, so models of
+/// the same name in different folders do not collide.
+std::string OutputName(const ModelCase& mc, std::string_view extension) {
+  std::string id = mc.format + "_" + mc.path.lexically_relative(Corpus()).generic_string();
+  if (id.find("..") != std::string::npos) id = mc.format + "_own_" + mc.path.filename().string();
+  for (char& c : id) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  }
+  return id + "." + std::string(extension);
+}
+
+std::string Messages(const Result& r) {
+  std::string out;
+  for (const Diagnostic& d : r.diagnostics()) out += r.FormatText(d);
+  return out;
+}
+
+bool Near(double a, double b, double scale) {
+  return std::abs(a - b) <= kTolerance * std::max(1.0, scale);
+}
+
+/// A random configuration: each coordinate in [-1, 1], quaternions unit.
+Eigen::VectorXd RandomPositions(const backend::Plant& plant, std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  Eigen::VectorXd q(plant.num_positions);
+  for (int i = 0; i < q.size(); ++i) q[i] = u(rng);
+  for (const auto& j : plant.joints) {
+    if (j.type == ir::JointType::QuaternionFloating) q.segment(j.q_start, 4).normalize();
+  }
+  return q;
+}
+
+size_t CountLossy(const Result& r, std::string_view text) {
+  size_t n = 0;
+  for (const Diagnostic& d : r.diagnostics()) {
+    n += d.kind == DiagKind::Lossy && d.message.find(text) != std::string::npos;
+  }
+  return n;
+}
+
+enum class Outcome { Compared, Approximated, Rejected };
+
+/// The converted model against the original; failures are gtest failures.
+class Comparison {
+ public:
+  Comparison(const Result& a, const Result& b) : a_(a), b_(b), pa_(a.plant()), pb_(b.plant()) {}
+
+  /// False when the kinematic structure could not be mapped.
+  bool MapStructure(std::string* why) {
+    const bool one_instance = [&] {
+      std::set<size_t> instances;
+      for (size_t i = 1; i < pa_.bodies.size(); ++i) instances.insert(pa_.bodies[i].model.index());
+      return instances.size() <= 1;
+    }();
+    std::map<std::string, BodyId> by_name;
+    for (size_t i = 1; i < pb_.bodies.size(); ++i) by_name[pb_.bodies[i].name] = BodyId(i);
+    body_map_.assign(pa_.bodies.size(), BodyId());
+    body_map_[0] = ir::kWorldBody;
+    for (size_t i = 1; i < pa_.bodies.size(); ++i) {
+      const auto& body = pa_.bodies[i];
+      // "outer::inner" + "link" -> "outer/inner/link", as the URDF writer names
+      std::string name = one_instance
+                             ? body.name
+                             : pa_.model_instances[body.model.index()] + "/" + body.name;
+      for (size_t at; (at = name.find("::")) != std::string::npos;) name.replace(at, 2, "/");
+      auto it = by_name.find(name);
+      if (it == by_name.end()) {
+        *why = fmt::format("body '{}' is missing (looked for '{}')", body.scoped_name, name);
+        return false;
+      }
+      body_map_[i] = it->second;
+    }
+    if (pa_.bodies.size() != pb_.bodies.size()) {
+      *why = fmt::format("{} bodies became {}", pa_.bodies.size(), pb_.bodies.size());
+      return false;
+    }
+    for (size_t j = 0; j < pa_.joints.size(); ++j) {
+      const auto& ja = pa_.joints[j];
+      const BodyId child = body_map_[ja.child.index()];
+      const JointId mapped = pb_.body(child).inbound_joint;
+      if (!mapped.valid()) {
+        *why = fmt::format("joint '{}' is missing", ja.scoped_name);
+        return false;
+      }
+      const auto& jb = pb_.joint(mapped);
+      if (jb.type != ja.type || jb.parent != body_map_[ja.parent.index()]) {
+        *why = fmt::format("joint '{}' ({}) became '{}' ({})", ja.scoped_name,
+                           ir::JointTypeName(ja.type), jb.scoped_name, ir::JointTypeName(jb.type));
+        return false;
+      }
+      joint_map_.push_back(mapped);
+    }
+    return true;
+  }
+
+  Eigen::VectorXd MapPositions(const Eigen::VectorXd& q) const {
+    Eigen::VectorXd out = Eigen::VectorXd::Zero(pb_.num_positions);
+    for (size_t j = 0; j < pa_.joints.size(); ++j) {
+      const auto& ja = pa_.joints[j];
+      out.segment(pb_.joint(joint_map_[j]).q_start, ja.nq) = q.segment(ja.q_start, ja.nq);
+    }
+    return out;
+  }
+
+  /// The converted model's velocity index of each original velocity.
+  std::vector<int> VelocityMap() const {
+    std::vector<int> map(pa_.num_velocities);
+    for (size_t j = 0; j < pa_.joints.size(); ++j) {
+      const auto& ja = pa_.joints[j];
+      for (int k = 0; k < ja.nv; ++k) map[ja.v_start + k] = pb_.joint(joint_map_[j]).v_start + k;
+    }
+    return map;
+  }
+
+  void CompareAt(const Eigen::VectorXd& q, const std::string& label) {
+    const Eigen::VectorXd qb = MapPositions(q);
+    const auto X_WA = a_.BodyPoses(q);
+    const auto X_WB = b_.BodyPoses(qb);
+    for (size_t i = 1; i < pa_.bodies.size(); ++i) {
+      // the converted link's frame is the original joint's child frame M
+      Transform expected = X_WA[i];
+      if (pa_.bodies[i].inbound_joint.valid()) {
+        expected = expected * pa_.joint(pa_.bodies[i].inbound_joint).X_CM;
+      }
+      const Transform& got = X_WB[body_map_[i].index()];
+      const double scale = expected.p.cwiseAbs().maxCoeff();
+      bool same = true;
+      for (int r = 0; r < 3; ++r) {
+        same = same && Near(got.p[r], expected.p[r], scale);
+        for (int c = 0; c < 3; ++c) same = same && Near(got.R(r, c), expected.R(r, c), 1);
+      }
+      EXPECT_TRUE(same) << label << ": pose of body '" << pa_.bodies[i].scoped_name
+                        << "' differs:\n  expected p " << expected.p.transpose() << "\n  got p "
+                        << got.p.transpose();
+      if (!same) return;
+    }
+    const Eigen::MatrixXd Ma = a_.MassMatrix(q);
+    const Eigen::MatrixXd Mb = b_.MassMatrix(qb);
+    ASSERT_EQ(Ma.rows(), Mb.rows());
+    if (Ma.size() == 0) return;  // nothing moves
+    const std::vector<int> v = VelocityMap();
+    const double scale = Ma.cwiseAbs().maxCoeff();
+    for (int r = 0; r < Ma.rows(); ++r) {
+      for (int c = 0; c < Ma.cols(); ++c) {
+        if (!Near(Mb(v[r], v[c]), Ma(r, c), scale)) {
+          ADD_FAILURE() << label << ": mass matrix (" << r << ", " << c << ") is "
+                        << Mb(v[r], v[c]) << ", was " << Ma(r, c);
+          return;
+        }
+      }
+    }
+  }
+
+  void CompareGeometryAndFilters(size_t dropped_half_spaces) {
+    auto count = [](const backend::SceneGraph& s, uint8_t roles) {
+      size_t n = 0;
+      for (const auto& g : s.geometries) n += (g.roles & roles) ? 1 : 0;
+      return n;
+    };
+    const auto& sa = a_.scene_graph();
+    const auto& sb = b_.scene_graph();
+    size_t half_space_proximity = 0, half_space_visual = 0;
+    for (const auto& g : sa.geometries) {
+      if (!std::holds_alternative<ir::HalfSpace>(g.shape)) continue;
+      half_space_proximity += (g.roles & ir::kProximityRole) ? 1 : 0;
+      half_space_visual += (g.roles & (ir::kIllustrationRole | ir::kPerceptionRole)) ? 1 : 0;
+    }
+    EXPECT_EQ(half_space_proximity + half_space_visual > 0, dropped_half_spaces > 0);
+    EXPECT_EQ(count(sb, ir::kProximityRole), count(sa, ir::kProximityRole) - half_space_proximity);
+    EXPECT_EQ(count(sb, ir::kIllustrationRole),
+              count(sa, ir::kIllustrationRole | ir::kPerceptionRole) - half_space_visual);
+    // filters against the world cannot be written in URDF (reported)
+    std::set<std::pair<size_t, size_t>> fa, fb;
+    for (const auto& [x, y] : sa.collision_filters) {
+      if (x.index() == 0 || y.index() == 0) {
+        EXPECT_GT(CountLossy(a_, "and the world is dropped"), 0u);
+        continue;
+      }
+      const size_t mx = body_map_[x.index()].index(), my = body_map_[y.index()].index();
+      fa.insert({std::min(mx, my), std::max(mx, my)});
+    }
+    for (const auto& [x, y] : sb.collision_filters) {
+      fb.insert({std::min(x.index(), y.index()), std::max(x.index(), y.index())});
+    }
+    EXPECT_EQ(fa, fb) << "the filtered body pairs differ";
+  }
+
+ private:
+  const Result& a_;
+  const Result& b_;
+  const backend::Plant& pa_;
+  const backend::Plant& pb_;
+  std::vector<BodyId> body_map_;
+  std::vector<JointId> joint_map_;
+};
+
+Outcome RoundTrip(const ModelCase& mc, Format to, const fs::path& dir) {
+  Options options;
+  options.package_paths = {Corpus().string()};
+  Result a = Compile(Input::File(mc.path.string()), options);
+  if (!a.ok()) return Outcome::Rejected;  // which models are rejected is the corpus tests'
+  const fs::path out = dir / OutputName(mc, "urdf");
+  ConvertOptions convert;
+  convert.to = to;
+  convert.output = out.string();
+  const std::optional<std::string> text = a.Convert(convert);
+  EXPECT_TRUE(text) << Messages(a);
+  if (!text) return Outcome::Compared;
+  std::ofstream(out) << *text;
+  Result b = Compile(Input::File(out.string()));
+  EXPECT_TRUE(b.ok()) << "the converted model does not compile:\n"
+                      << Messages(b) << "\n--- converted:\n"
+                      << *text;
+  if (!b.ok()) return Outcome::Compared;
+
+  Comparison cmp(a, b);
+  std::string why;
+  if (!cmp.MapStructure(&why)) {
+    // only a conversion that said it changed the structure may do so
+    const bool reported = CountLossy(a, "joint") > 0;
+    EXPECT_TRUE(reported) << "structure changed without a -Wlossy warning: " << why;
+    return Outcome::Approximated;
+  }
+  std::mt19937 rng(20261126);
+  cmp.CompareAt(a.DefaultPositions(), "default q");
+  for (int k = 0; k < 3; ++k) cmp.CompareAt(RandomPositions(a.plant(), rng), fmt::format("q #{}", k));
+  cmp.CompareGeometryAndFilters(CountLossy(a, "half space"));
+  return Outcome::Compared;
+}
+
+struct Suite {
+  std::string name;
+  std::vector<ModelCase> models;
+};
+
+void RunSuite(const std::vector<ModelCase>& models, Format to, std::string_view label) {
+  OutputDir dir;
+  int compared = 0, approximated = 0, rejected = 0;
+  for (const ModelCase& mc : models) {
+    SCOPED_TRACE(mc.path.string());
+    switch (RoundTrip(mc, to, dir.path())) {
+      case Outcome::Compared: ++compared; break;
+      case Outcome::Approximated: ++approximated; break;
+      case Outcome::Rejected: ++rejected; break;
+    }
+  }
+  fmt::print("{} -> {}: {} models compared, {} approximated (reported -Wlossy), {} rejected by "
+             "mdlc\n",
+             label, FormatName(to), compared, approximated, rejected);
+  EXPECT_GT(compared, 0);
+}
+
+TEST(ConvertRoundTrip, OwnUrdfToUrdf) {
+  RunSuite(OwnModels("urdf", ".urdf"), Format::Urdf, "own URDF");
+}
+TEST(ConvertRoundTrip, OwnSdfToUrdf) {
+  RunSuite(OwnModels("sdf", ".sdf"), Format::Urdf, "own SDFormat");
+}
+
+class CorpusRoundTrip : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(CorpusRoundTrip, ToUrdf) {
+  if (!fs::exists(Corpus() / "manifest.tsv")) GTEST_SKIP() << "the shared corpus is absent";
+  RunSuite(CorpusModels(GetParam()), Format::Urdf, fmt::format("corpus {}", GetParam()));
+}
+INSTANTIATE_TEST_SUITE_P(Formats, CorpusRoundTrip, ::testing::Values("urdf", "sdf", "mjcf", "dmd"),
+                         [](const auto& info) { return std::string(info.param); });
+
+}  // namespace
+}  // namespace mdlc
