@@ -293,14 +293,25 @@ class Comparison {
   std::vector<JointId> joint_map_;
 };
 
-Outcome RoundTrip(const ModelCase& mc, Format to, const fs::path& dir) {
+/// The formats `mdlc convert` writes; a new writer adds its line here.
+struct Target {
+  Format format;
+  const char* extension;  // of the converted file
+  const char* name;       // in test names
+};
+constexpr Target kTargets[] = {
+    {Format::Urdf, "urdf", "Urdf"},
+};
+void PrintTo(const Target& t, std::ostream* os) { *os << t.name; }
+
+Outcome RoundTrip(const ModelCase& mc, const Target& to, const fs::path& dir) {
   Options options;
   options.package_paths = {Corpus().string()};
   Result a = Compile(Input::File(mc.path.string()), options);
   if (!a.ok()) return Outcome::Rejected;  // which models are rejected is the corpus tests'
-  const fs::path out = dir / OutputName(mc, "urdf");
+  const fs::path out = dir / OutputName(mc, to.extension);
   ConvertOptions convert;
-  convert.to = to;
+  convert.to = to.format;
   convert.output = out.string();
   const std::optional<std::string> text = a.Convert(convert);
   EXPECT_TRUE(text) << Messages(a);
@@ -327,12 +338,7 @@ Outcome RoundTrip(const ModelCase& mc, Format to, const fs::path& dir) {
   return Outcome::Compared;
 }
 
-struct Suite {
-  std::string name;
-  std::vector<ModelCase> models;
-};
-
-void RunSuite(const std::vector<ModelCase>& models, Format to, std::string_view label) {
+void RunSuite(const std::vector<ModelCase>& models, const Target& to, std::string_view label) {
   OutputDir dir;
   int compared = 0, approximated = 0, rejected = 0;
   for (const ModelCase& mc : models) {
@@ -345,25 +351,34 @@ void RunSuite(const std::vector<ModelCase>& models, Format to, std::string_view 
   }
   fmt::print("{} -> {}: {} models compared, {} approximated (reported -Wlossy), {} rejected by "
              "mdlc\n",
-             label, FormatName(to), compared, approximated, rejected);
+             label, FormatName(to.format), compared, approximated, rejected);
   EXPECT_GT(compared, 0);
 }
 
-TEST(ConvertRoundTrip, OwnUrdfToUrdf) {
-  RunSuite(OwnModels("urdf", ".urdf"), Format::Urdf, "own URDF");
+// the project's own models (they stand alone, without ../shared)
+class OwnRoundTrip : public ::testing::TestWithParam<Target> {};
+TEST_P(OwnRoundTrip, UrdfModels) {
+  RunSuite(OwnModels("urdf", ".urdf"), GetParam(), "own URDF");
 }
-TEST(ConvertRoundTrip, OwnSdfToUrdf) {
-  RunSuite(OwnModels("sdf", ".sdf"), Format::Urdf, "own SDFormat");
-}
+TEST_P(OwnRoundTrip, SdfModels) { RunSuite(OwnModels("sdf", ".sdf"), GetParam(), "own SDFormat"); }
+INSTANTIATE_TEST_SUITE_P(To, OwnRoundTrip, ::testing::ValuesIn(kTargets),
+                         [](const auto& info) { return std::string(info.param.name); });
 
-class CorpusRoundTrip : public ::testing::TestWithParam<const char*> {};
-
-TEST_P(CorpusRoundTrip, ToUrdf) {
+// every corpus model the reference tools load, of each source format
+class CorpusRoundTrip
+    : public ::testing::TestWithParam<std::tuple<Target, const char*>> {};
+TEST_P(CorpusRoundTrip, Converts) {
   if (!fs::exists(Corpus() / "manifest.tsv")) GTEST_SKIP() << "the shared corpus is absent";
-  RunSuite(CorpusModels(GetParam()), Format::Urdf, fmt::format("corpus {}", GetParam()));
+  const auto& [to, format] = GetParam();
+  RunSuite(CorpusModels(format), to, fmt::format("corpus {}", format));
 }
-INSTANTIATE_TEST_SUITE_P(Formats, CorpusRoundTrip, ::testing::Values("urdf", "sdf", "mjcf", "dmd"),
-                         [](const auto& info) { return std::string(info.param); });
+INSTANTIATE_TEST_SUITE_P(Corpus, CorpusRoundTrip,
+                         ::testing::Combine(::testing::ValuesIn(kTargets),
+                                            ::testing::Values("urdf", "sdf", "mjcf", "dmd")),
+                         [](const auto& info) {
+                           return fmt::format("{}_from_{}", std::get<0>(info.param).name,
+                                              std::get<1>(info.param));
+                         });
 
 }  // namespace
 }  // namespace mdlc
