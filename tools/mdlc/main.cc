@@ -5,6 +5,8 @@
 //                        [-Werror|--strict] [-Wno-GROUP] [-Werror=GROUP]
 //                        [--print-after=PASS] [--print-after-all] [--time-passes]
 //   mdlc convert FILE... --to urdf -o OUT [--copy-assets DIR] [--keep-package-uris]
+//   mdlc tree FILE... [--json]      each model instance's kinematic tree
+//   mdlc stats FILE... [--json]     mass properties and counts
 //   mdlc --list-passes
 //
 // Exit status: 0 on success, 1 when any error was reported, 2 on bad usage.
@@ -19,7 +21,9 @@
 #include "ir/printer.h"
 #include "mdlc/mdlc.h"
 #include "passes/pass_registry.h"
+#include "stats.h"
 #include "summary.h"
+#include "tree.h"
 #include "verify_diagnostics.h"
 
 namespace {
@@ -50,6 +54,8 @@ struct CliOptions {
   std::string to;
   std::string copy_assets_dir;
   bool keep_package_uris = false;
+  // tree, stats
+  bool json_output = false;
 };
 
 // -Werror, -Werror=GROUP, -Wno-GROUP, -WGROUP (enable: the default)
@@ -237,6 +243,28 @@ int RunConvert(CliOptions cli) {
   return WriteOutput(cli, *text);
 }
 
+/// `mdlc tree` and `mdlc stats`: compile, then print what `format` makes of
+/// the model (text, or JSON with --json).
+int RunInspect(CliOptions cli, std::string (*text)(const mdlc::backend::CompiledModel&),
+               std::string (*json)(const mdlc::backend::CompiledModel&)) {
+  cli.emit = "none";
+  mdlc::Options options;
+  if (int status = PrepareOptions(cli, options)) return status;
+  const bool color = cli.color == "always" || (cli.color == "auto" && isatty(STDERR_FILENO));
+  options.on_diagnostic = [&](const mdlc::Diagnostic& d, const mdlc::SourceManager& s) {
+    fmt::print(stderr, "{}", mdlc::FormatDiagnosticText(d, s, color));
+  };
+  std::vector<mdlc::Input> inputs;
+  for (const std::string& file : cli.files) inputs.push_back(mdlc::Input::File(file));
+  const mdlc::Result& result = *new mdlc::Result(mdlc::Compile(inputs, options));  // see RunCompile
+  if (!result.ok()) {
+    fmt::print(stderr, "{} error{} generated.\n", result.error_count(),
+               result.error_count() == 1 ? "" : "s");
+    return 1;
+  }
+  return WriteOutput(cli, cli.json_output ? json(result.model()) : text(result.model()));
+}
+
 /// The options of every subcommand that compiles.
 void AddCompileOptions(CLI::App* command, CliOptions& cli) {
   command->add_option("files", cli.files, "Model files (.urdf, .sdf, .xml, .dmd.yaml)")
@@ -303,6 +331,15 @@ int main(int argc, char** argv) {
   convert->add_flag("--keep-package-uris", cli.keep_package_uris,
                     "Keep package:// URIs as written instead of naming the files");
 
+  CLI::App* tree = app.add_subcommand("tree", "Print each model instance's kinematic tree");
+  AddCompileOptions(tree, cli);
+  tree->add_flag("--json", cli.json_output, "Print JSON instead of text");
+  tree->add_option("-o,--output", cli.output, "Write the output here instead of stdout");
+  CLI::App* stats = app.add_subcommand("stats", "Print mass properties and counts");
+  AddCompileOptions(stats, cli);
+  stats->add_flag("--json", cli.json_output, "Print JSON instead of text");
+  stats->add_option("-o,--output", cli.output, "Write the output here instead of stdout");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -316,6 +353,12 @@ int main(int argc, char** argv) {
   }
   if (compile->parsed()) return RunCompile(cli);
   if (convert->parsed()) return RunConvert(cli);
+  if (tree->parsed()) {
+    return RunInspect(cli, mdlc::tools::FormatTree, mdlc::tools::FormatTreeJson);
+  }
+  if (stats->parsed()) {
+    return RunInspect(cli, mdlc::tools::FormatStats, mdlc::tools::FormatStatsJson);
+  }
   fmt::print("{}", app.help());
   return 2;
 }

@@ -1,0 +1,143 @@
+// inspect_test.cc - `mdlc tree` and `mdlc stats` (issue 15), run as a user
+// runs them; stats are checked against the command's own plant-json.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct Outcome {
+  int status = -1;
+  std::string out, err;
+};
+
+class InspectTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           fmt::format("mdlc_inspect_{}_{}", ::getpid(),
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  static std::string Read(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  }
+  Outcome Mdlc(const std::string& args) {
+    const fs::path out = dir_ / "out", err = dir_ / "err";
+    const int raw = std::system(fmt::format("{} {} >{} 2>{} </dev/null", MDLC_BINARY, args,
+                                            out.string(), err.string())
+                                    .c_str());
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), Read(out), Read(err)};
+  }
+  fs::path Write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+    return dir_ / name;
+  }
+
+  fs::path dir_;
+};
+
+const std::string kScara = std::string(MDLC_EXAMPLES_DIR) + "/urdf/scara_arm.urdf";
+const std::string kArm = std::string(MDLC_EXAMPLES_DIR) + "/mjcf/arm_with_gripper.xml";
+
+TEST_F(InspectTest, TreeShowsEachJointUnderItsParent) {
+  Outcome r = Mdlc("tree " + kScara);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out,
+            "model instance 'scara_arm': 5 bodies, 4 dofs\n"
+            "  column <- weld joint 'base_weld' (on world)\n"
+            "  └─ carriage <- prismatic joint 'lift', axis [0 0 1], limits [0, 0.4]\n"
+            "     └─ upper_arm <- revolute joint 'shoulder', axis [0 0 1], limits [-2.5, 2.5]\n"
+            "        └─ forearm <- revolute joint 'elbow', axis [0 0 1], limits [-2.6, 2.6]\n"
+            "           └─ tool <- revolute joint 'wrist', axis [0 0 1]\n");
+}
+
+TEST_F(InspectTest, TreeJsonAgreesWithPlantJson) {
+  Outcome tree = Mdlc("tree --json " + kArm);
+  Outcome plant = Mdlc("compile --emit=plant-json " + kArm);
+  ASSERT_EQ(tree.status, 0) << tree.err;
+  ASSERT_EQ(plant.status, 0) << plant.err;
+  const json t = json::parse(tree.out), p = json::parse(plant.out);
+  // every joint of the plant is the inbound joint of the body it moves
+  std::map<std::string, std::string> joint_of;
+  for (const auto& b : t["bodies"]) {
+    if (b.contains("joint")) joint_of[b["name"]] = b["joint"];
+  }
+  size_t dofs = 0;
+  for (const auto& j : p["joints"]) {
+    EXPECT_EQ(joint_of[j["child"].get<std::string>()],
+              j["model_instance"].get<std::string>() + "::" + j["name"].get<std::string>())
+        << j.dump();
+    dofs += j["lower"].size();  // one entry per velocity
+  }
+  EXPECT_EQ(t["dofs"].get<size_t>(), dofs);
+}
+
+TEST_F(InspectTest, TreeOfADeepChainStaysReadable) {
+  std::string urdf = "<robot name='chain'><link name='l0'/>";
+  for (int i = 1; i <= 2000; ++i) {
+    urdf += fmt::format(
+        "<link name='l{0}'><inertial><mass value='1'/><inertia ixx='1' iyy='1' izz='1' ixy='0' "
+        "ixz='0' iyz='0'/></inertial></link><joint name='j{0}' type='continuous'><parent "
+        "link='l{1}'/><child link='l{0}'/><axis xyz='0 0 1'/></joint>",
+        i, i - 1);
+  }
+  Outcome r = Mdlc("tree " + Write("chain.urdf", urdf + "</robot>").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("[depth 2000] l2000 <- revolute joint 'j2000'"), std::string::npos);
+  // the drawing stops widening past 32 levels
+  size_t widest = 0;
+  std::istringstream lines(r.out);
+  for (std::string line; std::getline(lines, line);) widest = std::max(widest, line.size());
+  EXPECT_LT(widest, 200u);
+}
+
+TEST_F(InspectTest, StatsAreThePlantsMassProperties) {
+  Outcome stats = Mdlc("stats --json " + kArm);
+  Outcome plant = Mdlc("compile --emit=plant-json " + kArm);
+  ASSERT_EQ(stats.status, 0) << stats.err;
+  ASSERT_EQ(plant.status, 0) << plant.err;
+  const json s = json::parse(stats.out), p = json::parse(plant.out);
+  double total = 0;
+  size_t compared = 0;
+  for (const auto& b : p["bodies"]) {
+    if (b["name"] == "world") continue;
+    const std::string name = b["model_instance"].get<std::string>() + "::" +
+                             b["name"].get<std::string>();
+    for (const auto& sb : s["bodies"]) {
+      if (sb["name"] != name) continue;
+      EXPECT_EQ(sb["mass"].get<double>(), b["mass"].get<double>()) << name;
+      EXPECT_EQ(sb["com"], b["com"]) << name;
+      EXPECT_TRUE(sb["physically_valid"].get<bool>()) << name;
+      ++compared;
+    }
+    total += b["mass"].get<double>();
+  }
+  EXPECT_EQ(compared, s["bodies"].size());
+  EXPECT_DOUBLE_EQ(s["total"]["mass"].get<double>(), total);
+  EXPECT_EQ(s["total"]["actuators"].get<int>(), static_cast<int>(p["actuators"].size()));
+  Outcome text = Mdlc("stats " + kArm);
+  EXPECT_NE(text.out.find("total: 6 bodies"), std::string::npos) << text.out;
+}
+
+TEST_F(InspectTest, ExitCodes) {
+  EXPECT_EQ(Mdlc("tree").status, 2);
+  EXPECT_EQ(Mdlc("stats " + Write("bad.urdf", "<robot name='r'><link/></robot>").string()).status,
+            1);
+}
+
+}  // namespace

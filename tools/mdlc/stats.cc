@@ -1,0 +1,192 @@
+// stats.cc - see stats.h.
+#include "stats.h"
+
+#include <fmt/format.h>
+
+#include <Eigen/Eigenvalues>
+#include <map>
+#include <variant>
+
+#include "backend/json_writer.h"
+#include "backend/kinematics.h"
+#include "backend/positions.h"
+
+namespace mdlc::tools {
+namespace {
+
+using backend::Plant;
+
+/// Principal moments non-negative and satisfying the triangle inequality,
+/// to a tolerance relative to their size: what a rigid body can have.
+bool CouldBePhysical(double mass, const Eigen::Matrix3d& I) {
+  if (!(mass >= 0) || !I.allFinite()) return false;
+  const Eigen::Vector3d m = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I).eigenvalues();
+  const double tolerance = 1e-14 * std::max(1.0, m.cwiseAbs().maxCoeff());
+  return m.minCoeff() >= -tolerance && m[0] + m[1] >= m[2] - tolerance;
+}
+
+/// What one group of bodies (an instance, or all) adds up to.
+struct Totals {
+  int bodies = 0;
+  double mass = 0;
+  Eigen::Vector3d first_moment = Eigen::Vector3d::Zero();  // sum m p_WBcm
+  std::map<std::string, int> joints, geometries, shapes;
+  int actuators = 0, constraints = 0, cameras = 0;
+  Eigen::Vector3d com() const {
+    return mass > 0 ? Eigen::Vector3d(first_moment / mass) : Eigen::Vector3d::Zero();
+  }
+};
+
+std::string ShapeName(const ir::Shape& shape) { return std::string(ir::ShapeTypeName(shape)); }
+
+class Stats {
+ public:
+  explicit Stats(const backend::CompiledModel& model)
+      : model_(model),
+        plant_(model.plant),
+        X_WB_(backend::BodyPosesInWorld(plant_, backend::DefaultPositions(plant_))),
+        per_instance_(plant_.model_instances.size()) {
+    for (size_t b = 1; b < plant_.bodies.size(); ++b) {
+      const auto& body = plant_.bodies[b];
+      for (Totals* t : {&per_instance_[body.model.index()], &total_}) {
+        ++t->bodies;
+        t->mass += body.mass;
+        t->first_moment += body.mass * (X_WB_[b] * body.p_BoBcm_B);
+      }
+    }
+    for (const auto& j : plant_.joints) {
+      for (Totals* t : {&per_instance_[j.model.index()], &total_}) {
+        ++t->joints[std::string(ir::JointTypeName(j.type))];
+      }
+    }
+    for (const auto& g : model.scene.geometries) {
+      for (Totals* t : {&per_instance_[g.model.index()], &total_}) {
+        if (g.roles & ir::kProximityRole) ++t->geometries["proximity"];
+        if (g.roles & ir::kIllustrationRole) ++t->geometries["illustration"];
+        if (g.roles & ir::kPerceptionRole) ++t->geometries["perception"];
+        ++t->shapes[ShapeName(g.shape)];
+      }
+    }
+    for (const auto& a : plant_.actuators) {
+      ++per_instance_[a.model.index()].actuators;
+      ++total_.actuators;
+    }
+    for (const auto& c : plant_.constraints) {
+      ++per_instance_[c.model.index()].constraints;
+      ++total_.constraints;
+    }
+    for (const auto& c : model.scene.cameras) {
+      ++per_instance_[c.model.index()].cameras;
+      ++total_.cameras;
+    }
+  }
+
+  std::string Text() const {
+    std::string out;
+    for (size_t b = 1; b < plant_.bodies.size(); ++b) {
+      const auto& body = plant_.bodies[b];
+      const Eigen::Matrix3d& I = body.I_BBcm_B;
+      out += fmt::format(
+          "body {}: mass {} kg, com [{} {} {}], inertia about com [ixx {} iyy {} izz {} ixy {} "
+          "ixz {} iyz {}]{}\n",
+          body.scoped_name, body.mass, body.p_BoBcm_B.x(), body.p_BoBcm_B.y(),
+          body.p_BoBcm_B.z(), I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2),
+          CouldBePhysical(body.mass, I) ? "" : "  (not physically valid)");
+    }
+    for (size_t m = 0; m < per_instance_.size(); ++m) {
+      if (per_instance_[m].bodies == 0) continue;
+      out += Summary(fmt::format("model instance '{}'", plant_.model_instances[m]),
+                     per_instance_[m]);
+    }
+    out += Summary("total", total_);
+    return out;
+  }
+
+  std::string Json() const {
+    backend::JsonWriter w(2);
+    w.BeginObject();
+    w.Key("bodies").BeginArray();
+    for (size_t b = 1; b < plant_.bodies.size(); ++b) {
+      const auto& body = plant_.bodies[b];
+      w.BeginObject(backend::JsonWriter::Layout::Compact);
+      w.Key("name").String(body.scoped_name);
+      w.Key("mass").Number(body.mass);
+      w.Key("com").BeginArray(backend::JsonWriter::Layout::Compact);
+      for (int k = 0; k < 3; ++k) w.Number(body.p_BoBcm_B[k]);
+      w.EndArray();
+      w.Key("inertia").BeginArray(backend::JsonWriter::Layout::Compact);
+      const Eigen::Matrix3d& I = body.I_BBcm_B;
+      for (double v : {I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2)}) w.Number(v);
+      w.EndArray();
+      w.Key("physically_valid").Bool(CouldBePhysical(body.mass, I));
+      w.EndObject();
+    }
+    w.EndArray();
+    w.Key("model_instances").BeginArray();
+    for (size_t m = 0; m < per_instance_.size(); ++m) {
+      if (per_instance_[m].bodies == 0) continue;
+      JsonTotals(w, plant_.model_instances[m], per_instance_[m]);
+    }
+    w.EndArray();
+    w.Key("total");
+    JsonTotals(w, "", total_);
+    w.EndObject();
+    return w.Take() + "\n";
+  }
+
+ private:
+  static std::string Counts(const std::map<std::string, int>& counts) {
+    std::string out;
+    for (const auto& [name, n] : counts) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", n, name);
+    return out.empty() ? "none" : out;
+  }
+
+  std::string Summary(const std::string& what, const Totals& t) const {
+    const Eigen::Vector3d com = t.com();
+    return fmt::format(
+        "{}: {} bodies, mass {} kg, com in world [{} {} {}]\n  joints: {}\n  geometries: {} "
+        "(shapes: {})\n  actuators {}, constraints {}, cameras {}\n",
+        what, t.bodies, t.mass, com.x(), com.y(), com.z(), Counts(t.joints), Counts(t.geometries),
+        Counts(t.shapes), t.actuators, t.constraints, t.cameras);
+  }
+
+  static void JsonCounts(backend::JsonWriter& w, const std::map<std::string, int>& counts) {
+    w.BeginObject(backend::JsonWriter::Layout::Compact);
+    for (const auto& [name, n] : counts) w.Key(name).Int(n);
+    w.EndObject();
+  }
+
+  void JsonTotals(backend::JsonWriter& w, const std::string& name, const Totals& t) const {
+    w.BeginObject();
+    if (!name.empty()) w.Key("name").String(name);
+    w.Key("bodies").Int(t.bodies);
+    w.Key("mass").Number(t.mass);
+    const Eigen::Vector3d com = t.com();
+    w.Key("com_in_world").BeginArray(backend::JsonWriter::Layout::Compact);
+    for (int k = 0; k < 3; ++k) w.Number(com[k]);
+    w.EndArray();
+    w.Key("joints");
+    JsonCounts(w, t.joints);
+    w.Key("geometries");
+    JsonCounts(w, t.geometries);
+    w.Key("shapes");
+    JsonCounts(w, t.shapes);
+    w.Key("actuators").Int(t.actuators);
+    w.Key("constraints").Int(t.constraints);
+    w.Key("cameras").Int(t.cameras);
+    w.EndObject();
+  }
+
+  const backend::CompiledModel& model_;
+  const Plant& plant_;
+  std::vector<Transform> X_WB_;
+  std::vector<Totals> per_instance_;
+  Totals total_;
+};
+
+}  // namespace
+
+std::string FormatStats(const backend::CompiledModel& model) { return Stats(model).Text(); }
+std::string FormatStatsJson(const backend::CompiledModel& model) { return Stats(model).Json(); }
+
+}  // namespace mdlc::tools

@@ -1,0 +1,20 @@
+// stats.h - `mdlc stats`: mass properties and counts (issue 15), as
+// `gz sdf --inertial-stats` gives for SDFormat models, for every format and
+// for worlds too.
+#pragma once
+
+#include <string>
+
+#include "backend/compiled_model.h"
+
+namespace mdlc::tools {
+
+/// Per body: mass, center of mass and inertia about it in the body frame, at
+/// full precision, and whether they could be physical; per model instance
+/// and in total: mass, center of mass in the world at the default
+/// configuration, and counts of bodies, joints by type, geometries by role
+/// and shape, actuators, constraints and cameras.
+std::string FormatStats(const backend::CompiledModel& model);
+std::string FormatStatsJson(const backend::CompiledModel& model);
+
+}  // namespace mdlc::tools

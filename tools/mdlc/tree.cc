@@ -1,0 +1,171 @@
+// tree.cc - `mdlc tree`: the kinematic tree of each model instance, as
+// check_urdf prints it for URDF, for every format (issue 15).
+#include "tree.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <variant>
+
+#include "backend/json_writer.h"
+
+namespace mdlc::tools {
+namespace {
+
+using backend::Plant;
+using backend::PlantJoint;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+std::string Number(double v) { return fmt::format("{:.6g}", v); }
+
+std::string Limits(const PlantJoint& j) {
+  std::string out;
+  for (int k = 0; k < j.nv; ++k) {
+    if (j.lower[k] == -kInf && j.upper[k] == kInf) continue;
+    out += fmt::format("{}[{}, {}]", out.empty() ? "" : " ", Number(j.lower[k]),
+                       Number(j.upper[k]));
+  }
+  return out;
+}
+
+/// The couplers that make joint `id` follow another: "mimics 'x' (2 q + 0.1)".
+std::string Couplers(const Plant& plant, JointId id) {
+  std::string out;
+  for (const auto& c : plant.constraints) {
+    const auto* k = std::get_if<backend::CouplerConstraint>(&c.payload);
+    if (!k || k->joint0 != id) continue;
+    out += fmt::format(", mimics '{}' ({} q {} {})", plant.joint(k->joint1).scoped_name,
+                       Number(k->gear_ratio), k->offset < 0 ? "-" : "+",
+                       Number(std::abs(k->offset)));
+  }
+  return out;
+}
+
+class TreePrinter {
+ public:
+  explicit TreePrinter(const backend::CompiledModel& model)
+      : plant_(model.plant), children_(plant_.bodies.size()) {
+    for (size_t b = 1; b < plant_.bodies.size(); ++b) {
+      const auto& body = plant_.bodies[b];
+      if (body.parent.valid()) children_[body.parent.index()].push_back(BodyId(b));
+    }
+  }
+
+  std::string Text() {
+    std::string out;
+    for (size_t m = 0; m < plant_.model_instances.size(); ++m) {
+      std::vector<BodyId> roots;  // this instance's bodies whose parent is elsewhere
+      int bodies = 0, dofs = 0;
+      for (size_t b = 1; b < plant_.bodies.size(); ++b) {
+        const auto& body = plant_.bodies[b];
+        if (body.model.index() != m) continue;
+        ++bodies;
+        if (!body.parent.valid() || plant_.body(body.parent).model.index() != m) {
+          roots.push_back(BodyId(b));
+        }
+      }
+      for (const auto& j : plant_.joints) dofs += j.model.index() == m ? j.nv : 0;
+      if (bodies == 0) continue;
+      out += fmt::format("model instance '{}': {} bod{}, {} dof{}\n", plant_.model_instances[m],
+                         bodies, bodies == 1 ? "y" : "ies", dofs, dofs == 1 ? "" : "s");
+      for (BodyId root : roots) {
+        const auto& body = plant_.body(root);
+        out += fmt::format("  {} (on {})\n", Describe(root),
+                           body.parent.valid() ? plant_.body(body.parent).scoped_name : "nothing");
+        Children(root, "  ", out);
+      }
+      for (const auto& f : plant_.frames) {
+        if (f.model.index() != m || f.unnamed) continue;
+        out += fmt::format("  frame '{}' on {}\n", f.name, plant_.body(f.body).scoped_name);
+      }
+    }
+    return out;
+  }
+
+  std::string Json() {
+    backend::JsonWriter w(2);
+    w.BeginObject();
+    w.Key("bodies").BeginArray();
+    for (size_t b = 1; b < plant_.bodies.size(); ++b) {
+      const auto& body = plant_.bodies[b];
+      w.BeginObject(backend::JsonWriter::Layout::Compact);
+      w.Key("name").String(body.scoped_name);
+      w.Key("model_instance").String(plant_.model_instances[body.model.index()]);
+      w.Key("parent").String(body.parent.valid() ? plant_.body(body.parent).scoped_name : "");
+      if (body.inbound_joint.valid()) {
+        const PlantJoint& j = plant_.joint(body.inbound_joint);
+        w.Key("joint").String(j.scoped_name);
+        w.Key("type").String(ir::JointTypeName(j.type));
+        w.Key("dofs").Int(j.nv);
+      }
+      w.EndObject();
+    }
+    w.EndArray();
+    w.Key("dofs").Int(plant_.num_velocities);
+    w.EndObject();
+    return w.Take() + "\n";
+  }
+
+ private:
+  std::string Describe(BodyId id) const {
+    const auto& body = plant_.body(id);
+    if (!body.inbound_joint.valid()) return fmt::format("{}", body.scoped_name);
+    const PlantJoint& j = plant_.joint(body.inbound_joint);
+    std::string joint = fmt::format("{} joint '{}'", ir::JointTypeName(j.type), j.name);
+    if (j.nv == 1 && j.type != ir::JointType::Weld) {
+      joint += fmt::format(", axis [{} {} {}]", Number(j.axis.x()), Number(j.axis.y()),
+                           Number(j.axis.z()));
+    }
+    if (const std::string limits = Limits(j); !limits.empty()) joint += ", limits " + limits;
+    joint += Couplers(plant_, body.inbound_joint);
+    return fmt::format("{} <- {}", body.name, joint);
+  }
+
+  // depth-first, without recursion (a chain may be thousands deep); past
+  // kMaxDrawnDepth levels the branch lines give way to the depth in numbers
+  static constexpr size_t kMaxDrawnDepth = 32;
+  void Children(BodyId root, const std::string& indent, std::string& out) {
+    struct Item {
+      BodyId body;
+      std::string prefix;  // the drawn branches above this body
+      size_t depth;
+      bool last;
+    };
+    std::vector<Item> stack;
+    auto push_children = [&](BodyId parent, const std::string& prefix, size_t depth) {
+      const auto& kids = children_[parent.index()];
+      for (size_t i = kids.size(); i-- > 0;) {
+        stack.push_back({kids[i], prefix, depth, i + 1 == kids.size()});
+      }
+    };
+    push_children(root, indent, 1);
+    while (!stack.empty()) {
+      Item item = std::move(stack.back());
+      stack.pop_back();
+      if (item.depth <= kMaxDrawnDepth) {
+        out += fmt::format("{}{}{}\n", item.prefix, item.last ? "└─ " : "├─ ",
+                           Describe(item.body));
+      } else {
+        out += fmt::format("{}[depth {}] {}\n", item.prefix, item.depth, Describe(item.body));
+      }
+      const std::string prefix = item.depth < kMaxDrawnDepth
+                                     ? item.prefix + (item.last ? "   " : "│  ")
+                                     : item.prefix;
+      push_children(item.body, prefix, item.depth + 1);
+    }
+  }
+
+  const Plant& plant_;
+  std::vector<std::vector<BodyId>> children_;
+};
+
+}  // namespace
+
+std::string FormatTree(const backend::CompiledModel& model) { return TreePrinter(model).Text(); }
+std::string FormatTreeJson(const backend::CompiledModel& model) {
+  return TreePrinter(model).Json();
+}
+
+}  // namespace mdlc::tools
