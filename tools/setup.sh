@@ -27,9 +27,10 @@ runtime_packages=(cmake ninja-build g++ pkg-config libeigen3-dev libxml2-dev lib
 # the Python module (built and tested by `test`)
 python_packages=(python3-dev python3-numpy pybind11-dev)
 # what its tests need besides: GoogleTest, Google Benchmark, and the reference
-# implementations the differential tests compare against (test-only)
+# implementations the differential tests compare against, and Graphviz to
+# check that `mdlc graph -o x.svg` renders (test-only)
 test_packages=(libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
-               liburdfdom-dev libsdformat-dev libmujoco-dev)
+               liburdfdom-dev libsdformat-dev libmujoco-dev graphviz)
 
 packages=("${runtime_packages[@]}")
 if [ "$mode" = test ]; then

@@ -140,4 +140,42 @@ TEST_F(InspectTest, ExitCodes) {
             1);
 }
 
+TEST_F(InspectTest, GraphDrawsOneEdgePerJoint) {
+  Outcome dot = Mdlc("graph " + kScara);
+  ASSERT_EQ(dot.status, 0) << dot.err;
+  EXPECT_EQ(dot.out.rfind("digraph kinematic {", 0), 0u) << dot.out;
+  EXPECT_NE(dot.out.find("\"scara_arm::upper_arm\" -> \"scara_arm::forearm\" "
+                         "[label=\"scara_arm::elbow\\nrevolute\", style=solid];"),
+            std::string::npos)
+      << dot.out;
+  Outcome graph = Mdlc("graph --format json " + kArm);
+  Outcome plant = Mdlc("compile --emit=plant-json " + kArm);
+  ASSERT_EQ(graph.status, 0) << graph.err;
+  const json g = json::parse(graph.out), p = json::parse(plant.out);
+  EXPECT_EQ(g["edges"].size(), p["joints"].size());
+  EXPECT_EQ(g["nodes"].size(), p["bodies"].size() + 1);  // plant-json lists no world body
+}
+
+TEST_F(InspectTest, FrameGraphHangsEachFrameOnItsBody) {
+  Outcome frames = Mdlc("graph --kind frames --format json " + kArm);
+  Outcome plant = Mdlc("compile --emit=plant-json " + kArm);
+  ASSERT_EQ(frames.status, 0) << frames.err;
+  const json g = json::parse(frames.out), p = json::parse(plant.out);
+  // bodies, explicit frames and each joint's F and M; an edge per frame, and
+  // three per joint (F on the parent, M on the child, F to M)
+  EXPECT_EQ(g["nodes"].size(),
+            p["bodies"].size() + 1 + p["frames"].size() + 2 * p["joints"].size());
+  EXPECT_EQ(g["edges"].size(), p["frames"].size() + 3 * p["joints"].size());
+}
+
+TEST_F(InspectTest, GraphRendersWithGraphvizWhenItIsThere) {
+  if (std::system("command -v dot >/dev/null 2>&1") != 0) {
+    GTEST_SKIP() << "Graphviz's dot is not installed (the test set-up installs it)";
+  }
+  const fs::path svg = dir_ / "tree.svg";
+  Outcome r = Mdlc("graph " + kScara + " -o " + svg.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(Read(svg).find("<svg"), std::string::npos);
+}
+
 }  // namespace

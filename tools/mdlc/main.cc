@@ -7,6 +7,7 @@
 //   mdlc convert FILE... --to urdf -o OUT [--copy-assets DIR] [--keep-package-uris]
 //   mdlc tree FILE... [--json]      each model instance's kinematic tree
 //   mdlc stats FILE... [--json]     mass properties and counts
+//   mdlc graph FILE... [--kind kinematic|frames] [--format dot|json] [-o OUT(.dot|.svg|.png)]
 //   mdlc --list-passes
 //
 // Exit status: 0 on success, 1 when any error was reported, 2 on bad usage.
@@ -21,6 +22,7 @@
 #include "ir/printer.h"
 #include "mdlc/mdlc.h"
 #include "passes/pass_registry.h"
+#include "graph.h"
 #include "stats.h"
 #include "summary.h"
 #include "tree.h"
@@ -56,6 +58,9 @@ struct CliOptions {
   bool keep_package_uris = false;
   // tree, stats
   bool json_output = false;
+  // graph
+  std::string graph_kind = "kinematic";
+  std::string graph_format = "dot";
 };
 
 // -Werror, -Werror=GROUP, -Wno-GROUP, -WGROUP (enable: the default)
@@ -265,6 +270,52 @@ int RunInspect(CliOptions cli, std::string (*text)(const mdlc::backend::Compiled
   return WriteOutput(cli, cli.json_output ? json(result.model()) : text(result.model()));
 }
 
+/// `dot -T<format> -o OUT`, fed `text`; false (reported) when it fails.
+bool RenderWithGraphviz(const std::string& text, const std::string& output) {
+  const std::string format = output.substr(output.rfind('.') + 1);
+  std::string quoted = "'";
+  for (char c : output) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  quoted += "'";
+  FILE* dot = popen(fmt::format("dot -T{} -o {} 2>/dev/null", format, quoted).c_str(), "w");
+  if (dot) std::fwrite(text.data(), 1, text.size(), dot);
+  const int status = dot ? pclose(dot) : -1;
+  if (status != 0) {
+    fmt::print(stderr, "mdlc: error: rendering '{}' needs Graphviz's dot, which failed or is "
+                       "not on the PATH; write a .dot file instead (-o graph.dot)\n",
+               output);
+    return false;
+  }
+  return true;
+}
+
+int RunGraph(CliOptions cli) {
+  cli.emit = "none";
+  mdlc::Options options;
+  if (int status = PrepareOptions(cli, options)) return status;
+  const bool color = cli.color == "always" || (cli.color == "auto" && isatty(STDERR_FILENO));
+  options.on_diagnostic = [&](const mdlc::Diagnostic& d, const mdlc::SourceManager& s) {
+    fmt::print(stderr, "{}", mdlc::FormatDiagnosticText(d, s, color));
+  };
+  std::vector<mdlc::Input> inputs;
+  for (const std::string& file : cli.files) inputs.push_back(mdlc::Input::File(file));
+  const mdlc::Result& result = *new mdlc::Result(mdlc::Compile(inputs, options));  // see RunCompile
+  if (!result.ok()) {
+    fmt::print(stderr, "{} error{} generated.\n", result.error_count(),
+               result.error_count() == 1 ? "" : "s");
+    return 1;
+  }
+  const auto kind = cli.graph_kind == "frames" ? mdlc::tools::GraphKind::Frames
+                                               : mdlc::tools::GraphKind::Kinematic;
+  if (cli.graph_format == "json") {
+    return WriteOutput(cli, mdlc::tools::FormatGraphJson(result.model(), kind));
+  }
+  const std::string dot = mdlc::tools::FormatGraphDot(result.model(), kind);
+  for (const char* rendered : {".svg", ".png", ".pdf"}) {
+    if (cli.output.ends_with(rendered)) return RenderWithGraphviz(dot, cli.output) ? 0 : 1;
+  }
+  return WriteOutput(cli, dot);
+}
+
 /// The options of every subcommand that compiles.
 void AddCompileOptions(CLI::App* command, CliOptions& cli) {
   command->add_option("files", cli.files, "Model files (.urdf, .sdf, .xml, .dmd.yaml)")
@@ -340,6 +391,15 @@ int main(int argc, char** argv) {
   stats->add_flag("--json", cli.json_output, "Print JSON instead of text");
   stats->add_option("-o,--output", cli.output, "Write the output here instead of stdout");
 
+  CLI::App* graph = app.add_subcommand("graph", "Print the kinematic or frame graph (DOT, JSON)");
+  AddCompileOptions(graph, cli);
+  graph->add_option("--kind", cli.graph_kind, "kinematic (default) or frames")
+      ->check(CLI::IsMember({"kinematic", "frames"}));
+  graph->add_option("--format", cli.graph_format, "dot (default) or json")
+      ->check(CLI::IsMember({"dot", "json"}));
+  graph->add_option("-o,--output", cli.output,
+                    "Write here instead of stdout; .svg, .png or .pdf render with Graphviz");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -353,6 +413,7 @@ int main(int argc, char** argv) {
   }
   if (compile->parsed()) return RunCompile(cli);
   if (convert->parsed()) return RunConvert(cli);
+  if (graph->parsed()) return RunGraph(cli);
   if (tree->parsed()) {
     return RunInspect(cli, mdlc::tools::FormatTree, mdlc::tools::FormatTreeJson);
   }
