@@ -178,4 +178,30 @@ TEST_F(InspectTest, GraphRendersWithGraphvizWhenItIsThere) {
   EXPECT_NE(Read(svg).find("<svg"), std::string::npos);
 }
 
+TEST_F(InspectTest, AssetsListsWhatWasFoundAndWhyTheRestWasNot) {
+  const fs::path mesh = fs::path(MDLC_TEST_MODELS) / "meshes" / "box.obj";
+  const fs::path robot = Write("r.urdf", fmt::format(R"(<robot name="r">
+  <link name="a">
+    <visual><geometry><mesh filename="{}"/></geometry></visual>
+    <collision><geometry><mesh filename="package://nowhere/box.stl"/></geometry></collision>
+  </link>
+</robot>)",
+                                                     mesh.string()));
+  Outcome r = Mdlc("assets --json " + robot.string());
+  EXPECT_EQ(r.status, 1);  // one file is missing
+  const json list = json::parse(r.out);
+  ASSERT_EQ(list.size(), 3u) << r.out;
+  EXPECT_EQ(list[0]["kind"], "model");
+  EXPECT_EQ(list[1]["kind"], "mesh");
+  EXPECT_EQ(list[1]["format"], "obj");
+  EXPECT_EQ(list[1]["bytes"].get<uintmax_t>(), fs::file_size(mesh));
+  EXPECT_EQ(list[2]["uri"], "package://nowhere/box.stl");
+  EXPECT_NE(list[2]["error"].get<std::string>().find("nowhere"), std::string::npos) << r.out;
+  // the text form, and the error on stderr with its location
+  Outcome text = Mdlc("assets " + robot.string());
+  EXPECT_NE(text.out.find("mesh     package://nowhere/box.stl: "), std::string::npos) << text.out;
+  EXPECT_NE(text.err.find("r.urdf:4:"), std::string::npos) << text.err;
+  EXPECT_EQ(Mdlc("assets " + kScara).status, 0);
+}
+
 }  // namespace

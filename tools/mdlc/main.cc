@@ -8,6 +8,7 @@
 //   mdlc tree FILE... [--json]      each model instance's kinematic tree
 //   mdlc stats FILE... [--json]     mass properties and counts
 //   mdlc graph FILE... [--kind kinematic|frames] [--format dot|json] [-o OUT(.dot|.svg|.png)]
+//   mdlc assets FILE... [--json]    every file the model uses, found or not
 //   mdlc --list-passes
 //
 // Exit status: 0 on success, 1 when any error was reported, 2 on bad usage.
@@ -22,6 +23,7 @@
 #include "ir/printer.h"
 #include "mdlc/mdlc.h"
 #include "passes/pass_registry.h"
+#include "assets.h"
 #include "graph.h"
 #include "stats.h"
 #include "summary.h"
@@ -316,6 +318,25 @@ int RunGraph(CliOptions cli) {
   return WriteOutput(cli, dot);
 }
 
+/// `mdlc assets`: lists what was read and named even when the compile
+/// failed (a missing mesh is the usual reason to run it); exit 1 when any
+/// file is missing or the model has errors.
+int RunAssets(CliOptions cli) {
+  cli.emit = "none";
+  mdlc::Options options;
+  if (int status = PrepareOptions(cli, options)) return status;
+  options.skip_backend = true;  // the files are known once the passes ran
+  std::vector<mdlc::Input> inputs;
+  for (const std::string& file : cli.files) inputs.push_back(mdlc::Input::File(file));
+  const mdlc::Result& result = *new mdlc::Result(mdlc::Compile(inputs, options));  // see RunCompile
+  for (const mdlc::Diagnostic& d : result.diagnostics()) {
+    if (d.severity == mdlc::Severity::Error) fmt::print(stderr, "{}", result.FormatText(d));
+  }
+  const mdlc::tools::AssetReport report = mdlc::tools::ListAssets(result, cli.json_output);
+  if (int status = WriteOutput(cli, report.text)) return status;
+  return report.all_found && result.ok() ? 0 : 1;
+}
+
 /// The options of every subcommand that compiles.
 void AddCompileOptions(CLI::App* command, CliOptions& cli) {
   command->add_option("files", cli.files, "Model files (.urdf, .sdf, .xml, .dmd.yaml)")
@@ -400,6 +421,11 @@ int main(int argc, char** argv) {
   graph->add_option("-o,--output", cli.output,
                     "Write here instead of stdout; .svg, .png or .pdf render with Graphviz");
 
+  CLI::App* assets = app.add_subcommand("assets", "List every file a model uses, found or not");
+  AddCompileOptions(assets, cli);
+  assets->add_flag("--json", cli.json_output, "Print JSON instead of text");
+  assets->add_option("-o,--output", cli.output, "Write the output here instead of stdout");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -414,6 +440,7 @@ int main(int argc, char** argv) {
   if (compile->parsed()) return RunCompile(cli);
   if (convert->parsed()) return RunConvert(cli);
   if (graph->parsed()) return RunGraph(cli);
+  if (assets->parsed()) return RunAssets(cli);
   if (tree->parsed()) {
     return RunInspect(cli, mdlc::tools::FormatTree, mdlc::tools::FormatTreeJson);
   }
