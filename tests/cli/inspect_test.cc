@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -202,6 +203,82 @@ TEST_F(InspectTest, AssetsListsWhatWasFoundAndWhyTheRestWasNot) {
   EXPECT_NE(text.out.find("mesh     package://nowhere/box.stl: "), std::string::npos) << text.out;
   EXPECT_NE(text.err.find("r.urdf:4:"), std::string::npos) << text.err;
   EXPECT_EQ(Mdlc("assets " + kScara).status, 0);
+}
+
+// --- mdlc check ---
+
+class CheckTest : public InspectTest {
+ protected:
+  void SetUp() override {
+    InspectTest::SetUp();
+    fs::create_directories(dir_ / "models" / "sub");
+    std::ofstream(dir_ / "models" / "good.urdf") << "<robot name='good'><link name='a'/></robot>";
+    std::ofstream(dir_ / "models" / "sub" / "bad.urdf") << "<robot name='bad'><link/></robot>";
+    std::ofstream(dir_ / "models" / "sub" / "warn.urdf")
+        << "<robot name='warn'><link name='a'><bogus/></link></robot>";
+    std::ofstream(dir_ / "models" / "sub" / "arm.xml")
+        << "<mujoco model='arm'><worldbody><body name='b'><geom size='0.1'/></body>"
+           "</worldbody></mujoco>";
+    std::ofstream(dir_ / "models" / "package.xml") << "<package><name>p</name></package>";
+  }
+  std::string Models() const { return (dir_ / "models").string(); }
+};
+
+TEST_F(CheckTest, OneVerdictPerFileAndASummary) {
+  Outcome r = Mdlc("check " + Models());
+  EXPECT_EQ(r.status, 1) << r.out;  // bad.urdf has an error
+  // the folder is walked: URDF files and the MJCF file, not package.xml
+  EXPECT_NE(r.out.find("good.urdf: ok\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("sub/warn.urdf: ok, 1 warning\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("sub/bad.urdf: 1 error, 0 warnings\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("sub/arm.xml: ok"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("package.xml"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("4 files: 3 ok, 1 with errors, 1 warning\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("bad.urdf:1:19: error:"), std::string::npos) << r.out;
+}
+
+TEST_F(CheckTest, ParallelRunsReportTheSameInFileOrder) {
+  Outcome serial = Mdlc("check --format json -j 1 " + Models());
+  Outcome parallel = Mdlc("check --format json -j 3 " + Models());
+  EXPECT_EQ(serial.out, parallel.out);
+  std::istringstream lines(parallel.out);
+  int n = 0;
+  for (std::string line; std::getline(lines, line); ++n) {
+    const json j = json::parse(line);  // JSON Lines: one object per file
+    EXPECT_TRUE(j.contains("file") && j.contains("ok") && j.contains("diagnostics")) << line;
+  }
+  EXPECT_EQ(n, 4);
+}
+
+TEST_F(CheckTest, SkipOkResumesFromAnEarlierReport) {
+  Outcome first = Mdlc("check --format json " + Models() + " -o " + (dir_ / "r.jsonl").string());
+  EXPECT_EQ(first.status, 1);
+  Outcome again = Mdlc("check --format json --skip-ok " + (dir_ / "r.jsonl").string() + " " +
+                       Models());
+  // only the file with errors is compiled again
+  EXPECT_EQ(std::count(again.out.begin(), again.out.end(), '\n'), 1) << again.out;
+  EXPECT_NE(again.out.find("bad.urdf"), std::string::npos);
+  EXPECT_NE(again.err.find("3 skipped as ok before"), std::string::npos) << again.err;
+}
+
+TEST_F(CheckTest, SarifForCodeHosts) {
+  Outcome r = Mdlc("check --format sarif " + Models());
+  const json sarif = json::parse(r.out);
+  EXPECT_EQ(sarif["version"], "2.1.0");
+  const json& results = sarif["runs"][0]["results"];
+  ASSERT_EQ(results.size(), 2u) << r.out;  // bad.urdf's error, warn.urdf's warning
+  bool error_seen = false;
+  for (const json& res : results) {
+    const json& where = res["locations"][0]["physicalLocation"];
+    EXPECT_GT(where["region"]["startLine"].get<int>(), 0);
+    if (res["level"] == "error") {
+      error_seen = true;
+      EXPECT_NE(where["artifactLocation"]["uri"].get<std::string>().find("bad.urdf"),
+                std::string::npos);
+      EXPECT_EQ(res["ruleId"], "missing-attribute");
+    }
+  }
+  EXPECT_TRUE(error_seen);
 }
 
 }  // namespace

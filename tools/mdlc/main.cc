@@ -9,6 +9,7 @@
 //   mdlc stats FILE... [--json]     mass properties and counts
 //   mdlc graph FILE... [--kind kinematic|frames] [--format dot|json] [-o OUT(.dot|.svg|.png)]
 //   mdlc assets FILE... [--json]    every file the model uses, found or not
+//   mdlc check PATH... [-j N] [--format text|json|sarif] [--skip-ok REPORT.jsonl]
 //   mdlc --list-passes
 //
 // Exit status: 0 on success, 1 when any error was reported, 2 on bad usage.
@@ -19,11 +20,13 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <thread>
 
 #include "ir/printer.h"
 #include "mdlc/mdlc.h"
 #include "passes/pass_registry.h"
 #include "assets.h"
+#include "check.h"
 #include "graph.h"
 #include "stats.h"
 #include "summary.h"
@@ -60,6 +63,10 @@ struct CliOptions {
   bool keep_package_uris = false;
   // tree, stats
   bool json_output = false;
+  // check
+  int jobs = 1;
+  std::string check_format = "text";
+  std::string skip_ok_from;
   // graph
   std::string graph_kind = "kinematic";
   std::string graph_format = "dot";
@@ -337,6 +344,35 @@ int RunAssets(CliOptions cli) {
   return report.all_found && result.ok() ? 0 : 1;
 }
 
+int RunCheck(CliOptions cli) {
+  cli.emit = "none";
+  mdlc::tools::CheckOptions check;
+  if (int status = PrepareOptions(cli, check.compile)) return status;
+  check.paths = cli.files;
+  check.jobs = cli.jobs > 0 ? cli.jobs : static_cast<int>(std::thread::hardware_concurrency());
+  check.format = cli.check_format == "json"    ? mdlc::tools::CheckFormat::JsonLines
+                 : cli.check_format == "sarif" ? mdlc::tools::CheckFormat::Sarif
+                                               : mdlc::tools::CheckFormat::Text;
+  check.skip_ok_from = cli.skip_ok_from;
+  check.progress = isatty(STDERR_FILENO) && !isatty(STDOUT_FILENO);
+  check.color = cli.color == "always" ||
+                (cli.color == "auto" && isatty(STDOUT_FILENO) && cli.output.empty());
+  std::FILE* out = stdout;
+  if (!cli.output.empty() && cli.output != "-") {
+    out = std::fopen(cli.output.c_str(), "wb");
+    if (!out) {
+      fmt::print(stderr, "mdlc: error: cannot write '{}'\n", cli.output);
+      return 1;
+    }
+  }
+  const int status = mdlc::tools::RunCheck(check, [&](std::string_view text) {
+    std::fwrite(text.data(), 1, text.size(), out);
+    std::fflush(out);
+  });
+  if (out != stdout) std::fclose(out);
+  return status;
+}
+
 /// The options of every subcommand that compiles.
 void AddCompileOptions(CLI::App* command, CliOptions& cli) {
   command->add_option("files", cli.files, "Model files (.urdf, .sdf, .xml, .dmd.yaml)")
@@ -426,6 +462,15 @@ int main(int argc, char** argv) {
   assets->add_flag("--json", cli.json_output, "Print JSON instead of text");
   assets->add_option("-o,--output", cli.output, "Write the output here instead of stdout");
 
+  CLI::App* check = app.add_subcommand("check", "Compile many models, each on its own, and report");
+  AddCompileOptions(check, cli);
+  check->add_option("-j,--jobs", cli.jobs, "Compile this many files at once (0: one per core)");
+  check->add_option("--format", cli.check_format, "text, json (JSON Lines) or sarif (2.1.0)")
+      ->check(CLI::IsMember({"text", "json", "sarif"}));
+  check->add_option("--skip-ok", cli.skip_ok_from,
+                    "Skip the files an earlier --format=json report lists as ok");
+  check->add_option("-o,--output", cli.output, "Write the report here instead of stdout");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -441,6 +486,7 @@ int main(int argc, char** argv) {
   if (convert->parsed()) return RunConvert(cli);
   if (graph->parsed()) return RunGraph(cli);
   if (assets->parsed()) return RunAssets(cli);
+  if (check->parsed()) return RunCheck(cli);
   if (tree->parsed()) {
     return RunInspect(cli, mdlc::tools::FormatTree, mdlc::tools::FormatTreeJson);
   }
