@@ -53,7 +53,7 @@ std::vector<YAML::Node> YamlSchemaReader::MergedMaps(const YAML::Node& map) cons
   for (size_t i = 0; i < maps.size() && maps.size() < kMaxMaps; ++i) {
     for (auto it = maps[i].begin(); it != maps[i].end(); ++it) {
       if (!it->first.IsScalar() || it->first.Scalar() != "<<") continue;
-      const YAML::Node& merged = it->second;
+      const YAML::Node merged = it->second;
       if (merged.IsMap()) maps.push_back(merged);
       if (merged.IsSequence()) {
         for (const YAML::Node& m : merged) {
@@ -80,7 +80,7 @@ bool YamlSchemaReader::CheckMap(const YAML::Node& node, std::string_view what,
   for (size_t m = 0; m < maps.size(); ++m) {
     std::vector<std::string_view> seen;
     for (auto it = maps[m].begin(); it != maps[m].end(); ++it) {
-      const YAML::Node& key = it->first;
+      const YAML::Node key = it->first;  // a copy: it-> yields a temporary
       const Loc key_loc = LocOf(key, LocOf(maps[m], fallback));
       if (!key.IsScalar()) {
         diags_.Report(DiagKind::BadValue, key_loc,
@@ -89,7 +89,7 @@ bool YamlSchemaReader::CheckMap(const YAML::Node& node, std::string_view what,
       }
       const std::string& name = key.Scalar();
       if (name == "<<") {
-        const YAML::Node& merged = it->second;
+        const YAML::Node merged = it->second;
         bool maps_only = merged.IsMap() || merged.IsSequence();
         if (merged.IsSequence()) {
           for (const YAML::Node& item : merged) maps_only = maps_only && item.IsMap();
