@@ -161,11 +161,12 @@ void DirectivesReader::RunDirective(YamlSchemaReader& r, const YAML::Node& direc
                                      directive.size()));
     return;
   }
-  const auto entry = directive.begin();
-  const std::string& kind = entry->first.Scalar();
-  const YAML::Node& body = entry->second;
+  // copies: the iterator's -> yields a temporary pair
+  const YAML::Node key = directive.begin()->first;
+  const YAML::Node body = directive.begin()->second;
+  const std::string kind = key.Scalar();
   // what a directive lacks is reported at its kind ("add_model:")
-  const Loc kind_loc = r.LocOf(entry->first, loc);
+  const Loc kind_loc = r.LocOf(key, loc);
   if (kind == "add_model") AddModel(r, body, kind_loc, ns);
   else if (kind == "add_model_instance") AddModelInstanceDirective(r, body, kind_loc, ns);
   else if (kind == "add_frame") AddFrame(r, body, kind_loc, ns);

@@ -41,7 +41,7 @@ std::vector<Asset> Collect(const Result& result) {
   std::vector<Asset> assets;
   const SourceManager& sources = result.sources();
   for (size_t f = 0; f < sources.FileCount(); ++f) {
-    const FileId id(f);
+    const FileId id{static_cast<uint32_t>(f)};
     assets.push_back({"model", sources.Path(id), sources.Path(id), sources.IncludedFrom(id), 1, {}});
   }
   std::map<std::pair<std::string, std::string>, size_t> index;  // (kind, uri) -> asset

@@ -91,6 +91,17 @@ bool ApplyWarningFlags(const CliOptions& cli, mdlc::DiagnosticPolicy& policy, st
   return true;
 }
 
+// A compile's result is deliberately never freed: the process exits right
+// after, and tearing down a large model's DOM and IR would only cost time
+// (clang's -disable-free, for the same reason). It stays reachable from here,
+// so leak checkers do not count it.
+mdlc::Result* volatile g_kept_result = nullptr;  // volatile: the store must stay
+mdlc::Result& KeepUntilExit(mdlc::Result result) {
+  auto* kept = new mdlc::Result(std::move(result));
+  g_kept_result = kept;
+  return *kept;
+}
+
 int WriteOutput(const CliOptions& cli, const std::string& text) {
   if (cli.output.empty() || cli.output == "-") {
     std::fwrite(text.data(), 1, text.size(), stdout);
@@ -175,10 +186,7 @@ int RunCompile(const CliOptions& cli) {
 
   std::vector<mdlc::Input> inputs;
   for (const std::string& file : cli.files) inputs.push_back(mdlc::Input::File(file));
-  // The result is deliberately never freed: the process exits right after,
-  // and tearing down a large model's DOM and IR would only cost time (clang's
-  // -disable-free, for the same reason).
-  const mdlc::Result& result = *new mdlc::Result(mdlc::Compile(inputs, options));
+  const mdlc::Result& result = KeepUntilExit(mdlc::Compile(inputs, options));
 
   if (cli.time_passes) fmt::print(stderr, "{}", result.timing_report());
   if (cli.verify_diagnostics) {
@@ -237,7 +245,7 @@ int RunConvert(CliOptions cli) {
   };
   std::vector<mdlc::Input> inputs;
   for (const std::string& file : cli.files) inputs.push_back(mdlc::Input::File(file));
-  mdlc::Result& result = *new mdlc::Result(mdlc::Compile(inputs, options));  // see RunCompile
+  mdlc::Result& result = KeepUntilExit(mdlc::Compile(inputs, options));
   std::optional<std::string> text;
   if (result.ok()) {
     mdlc::ConvertOptions convert;
@@ -270,7 +278,7 @@ int RunInspect(CliOptions cli, std::string (*text)(const mdlc::backend::Compiled
   };
   std::vector<mdlc::Input> inputs;
   for (const std::string& file : cli.files) inputs.push_back(mdlc::Input::File(file));
-  const mdlc::Result& result = *new mdlc::Result(mdlc::Compile(inputs, options));  // see RunCompile
+  const mdlc::Result& result = KeepUntilExit(mdlc::Compile(inputs, options));
   if (!result.ok()) {
     fmt::print(stderr, "{} error{} generated.\n", result.error_count(),
                result.error_count() == 1 ? "" : "s");
@@ -307,7 +315,7 @@ int RunGraph(CliOptions cli) {
   };
   std::vector<mdlc::Input> inputs;
   for (const std::string& file : cli.files) inputs.push_back(mdlc::Input::File(file));
-  const mdlc::Result& result = *new mdlc::Result(mdlc::Compile(inputs, options));  // see RunCompile
+  const mdlc::Result& result = KeepUntilExit(mdlc::Compile(inputs, options));
   if (!result.ok()) {
     fmt::print(stderr, "{} error{} generated.\n", result.error_count(),
                result.error_count() == 1 ? "" : "s");
@@ -335,7 +343,7 @@ int RunAssets(CliOptions cli) {
   options.skip_backend = true;  // the files are known once the passes ran
   std::vector<mdlc::Input> inputs;
   for (const std::string& file : cli.files) inputs.push_back(mdlc::Input::File(file));
-  const mdlc::Result& result = *new mdlc::Result(mdlc::Compile(inputs, options));  // see RunCompile
+  const mdlc::Result& result = KeepUntilExit(mdlc::Compile(inputs, options));
   for (const mdlc::Diagnostic& d : result.diagnostics()) {
     if (d.severity == mdlc::Severity::Error) fmt::print(stderr, "{}", result.FormatText(d));
   }

@@ -594,7 +594,8 @@ TEST(UrdfDrakeJointTest, CurvilinearJointPoseInThePlant) {  // EXT-001, EXT-003
   EXPECT_TRUE(X.p.isApprox(Eigen::Vector3d(1.5, 0.5, 0.5), 1e-12)) << X.p.transpose();
   EXPECT_TRUE(X.R.isApprox(Rz(kPi / 2), 1e-12));
   // an open path limits q to [0, length]
-  for (const auto& joint : c.PlantJson({})["joints"]) {
+  const auto json = c.PlantJson({});  // kept: the loop reads into it
+  for (const auto& joint : json["joints"]) {
     if (joint["name"] != "track") continue;
     EXPECT_EQ(joint["lower"][0], 0.0);
     EXPECT_DOUBLE_EQ(joint["upper"][0].get<double>(), 1 + 0.5 * kPi / 2);

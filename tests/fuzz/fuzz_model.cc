@@ -1,0 +1,39 @@
+// fuzz_model.cc - a libFuzzer harness per model format (issue 16): the
+// input is a model file's text, compiled as mdlc compiles a file, through
+// every frontend, pass and the backend. Any crash, leak, sanitizer report or
+// hang is a bug: bad input must only ever give diagnostics.
+//
+// MDLC_FUZZ_FORMAT (a compile definition) picks the format; CMake builds one
+// fuzzer per format from this file.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "mdlc/mdlc.h"
+
+namespace {
+constexpr mdlc::Format kFormat = mdlc::Format::MDLC_FUZZ_FORMAT;
+
+const char* FileName() {
+  switch (kFormat) {
+    case mdlc::Format::Urdf: return "fuzz.urdf";
+    case mdlc::Format::Sdf: return "fuzz.sdf";
+    case mdlc::Format::Mjcf: return "fuzz.xml";
+    case mdlc::Format::Directives: return "fuzz.dmd.yaml";
+  }
+  return "fuzz";
+}
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  mdlc::Options options;
+  options.diagnostics.max_errors = 50;  // a long tail of errors adds nothing
+  const mdlc::Result result = mdlc::Compile(
+      mdlc::Input::Text(std::string(reinterpret_cast<const char*>(data), size), FileName(),
+                        kFormat),
+      options);
+  // exercise what a user reads after a compile
+  for (const mdlc::Diagnostic& d : result.diagnostics()) (void)result.FormatText(d);
+  if (result.has_model()) (void)result.PlantJson(result.DefaultPositions());
+  return 0;
+}
