@@ -191,7 +191,9 @@ class SdfWriter {
 
   /// A name SDFormat accepts and that is free in `scope`: "::" and reserved
   /// names are replaced, a taken name gets a suffix; each change reported.
-  std::string Claim(ModelNode& scope, const std::string& name, std::string_view kind, Loc loc) {
+  /// A compiler-made name (`named` false) changes without a word.
+  std::string Claim(ModelNode& scope, const std::string& name, std::string_view kind, Loc loc,
+                    bool named = true) {
     std::string out = name;
     for (size_t at; (at = out.find("::")) != std::string::npos;) out.replace(at, 2, "__");
     if (out.empty()) out = std::string(kind);
@@ -201,7 +203,7 @@ class SdfWriter {
       out = base;
       for (int n = 1; scope.names.count(out); ++n) out = fmt::format("{}_{}", base, n);
     }
-    if (out != name) {
+    if (out != name && named) {
       diags_.Report(DiagKind::Lossy, loc,
                     fmt::format("{} '{}' is written as '{}': SDFormat forbids '::' and reserved "
                                 "names, and a model's links, joints, frames and nested models "
@@ -249,7 +251,7 @@ class SdfWriter {
       if (joint.parent.index() == 0) scope = BodyScope(joint.child);
       joint_scope_[j] = scope;
       ModelNode& node = Scope(scope);
-      joint_names_[j] = Claim(node, joint.name, "joint", JointLoc(JointId(j)));
+      joint_names_[j] = Claim(node, joint.name, "joint", JointLoc(JointId(j)), !joint.unnamed);
       node.joints.push_back(JointId(j));
     }
     frame_names_.resize(plant_.frames.size());
