@@ -1,9 +1,11 @@
 // sdf_writer.cc - the compiled model as SDFormat 1.9, with Drake's drake:
 // extensions for what SDFormat itself cannot hold.
 //
-// Frames: no model is given a pose, so every model frame is the world frame
-// and each link's <pose> is its pose in the world with every joint at zero
-// (q = 0, identity quaternions; a free body at its default pose). A joint's
+// Frames: every pose is taken with every joint at zero (q = 0, identity
+// quaternions; a free body at its default pose). A model is posed where the
+// plant's `__model__` frame of its instance is (on its canonical link; a
+// model without one sits on its parent's frame), and each link's <pose> is
+// its pose in its model's frame. A joint's
 // <pose> is X_CM (its frame M in the child link, SDFormat's default
 // relative_to), so the parent frame F that SDFormat implies (the joint frame
 // at the links' poses) is X_PF = X_WP^-1 * X_WC * X_CM, the plant's X_PF.
@@ -98,6 +100,11 @@ struct ModelNode {
   std::vector<std::string> children;  // scoped names of nested models
   std::vector<std::function<void()>> elements;  // drake: elements, written last
   std::set<std::string> names;        // the model's one namespace
+  /// The plant's frame for this model's `__model__`, when it is on one of
+  /// the model's links: the model is posed there (X_WM, at q = 0) and its
+  /// canonical link is that link, so the frame is SDFormat's own.
+  std::optional<size_t> model_frame;
+  Transform X_WM;
 };
 
 class SdfWriter {
@@ -113,6 +120,7 @@ class SdfWriter {
   std::string Write() {
     LinkPoses();
     BuildModels();
+    ModelPoses();
     BuildElements();
     out_.Open("sdf").Attr("version", "1.9").Attr("xmlns:drake", "http://drake.mit.edu");
     std::vector<std::string> tops;
@@ -259,6 +267,15 @@ class SdfWriter {
       const backend::PlantFrame& frame = plant_.frames[f];
       if (frame.unnamed) continue;
       const std::string scope = BodyScope(frame.body);
+      if (frame.name == "__model__" && frame.model.index() > 0 && frame.body.index() != 0 &&
+          models_.count(plant_.model_instances[frame.model.index()]) &&
+          Within(plant_.model_instances[frame.model.index()], scope)) {
+        ModelNode& model = models_.at(plant_.model_instances[frame.model.index()]);
+        if (!model.model_frame) {
+          model.model_frame = f;
+          continue;
+        }
+      }
       ModelNode& node = Scope(scope);
       frame_names_[f] = Claim(node, frame.name, "frame", FrameLoc(f));
       node.frames.push_back(f);
@@ -440,6 +457,27 @@ class SdfWriter {
     Value(prefix + "_p_BQ", p_BQ);
   }
 
+  /// Model poses: a parent's comes first (a prefix sorts first).
+  void ModelPoses() {
+    for (auto& [scoped, node] : models_) {
+      const auto parts = Split(scoped);
+      const Transform X_WP =
+          parts.size() > 1
+              ? models_.at(Join(std::vector<std::string>(parts.begin(), parts.end() - 1))).X_WM
+              : Transform{};
+      node.X_WM = X_WP;
+      if (node.model_frame) {
+        const backend::PlantFrame& frame = plant_.frames[*node.model_frame];
+        node.X_WM = X_WB_[frame.body.index()] * frame.X_BF;
+      }
+    }
+  }
+  Transform ParentModelPose(const std::string& scoped) const {
+    const auto parts = Split(scoped);
+    if (parts.size() <= 1) return {};
+    return models_.at(Join(std::vector<std::string>(parts.begin(), parts.end() - 1))).X_WM;
+  }
+
   std::string BodyScope(BodyId body) const {
     if (body.index() == 0) return "";
     return body_scope_.at(body.index());
@@ -492,6 +530,11 @@ class SdfWriter {
 
   void WriteModel(const ModelNode& node) {
     out_.Open("model").Attr("name", node.name);
+    if (node.model_frame) {
+      const BodyId body = plant_.frames[*node.model_frame].body;
+      out_.Attr("canonical_link", Relative(node.scoped, BodyScope(body), link_names_[body.index()]));
+    }
+    Pose(ParentModelPose(node.scoped).inverse() * node.X_WM);
     for (BodyId b : node.links) WriteLink(b);
     for (JointId j : node.joints) WriteJoint(j, node.scoped);
     for (size_t f : node.frames) WriteFrame(f, node.scoped);
@@ -505,7 +548,7 @@ class SdfWriter {
   void WriteLink(BodyId body) {
     const PlantBody& b = plant_.body(body);
     out_.Open("link").Attr("name", link_names_[body.index()]);
-    Pose(X_WB_[body.index()]);
+    Pose(models_.at(BodyScope(body)).X_WM.inverse() * X_WB_[body.index()]);
     if (b.deformable) {
       diags_.Report(DiagKind::Lossy, BodyLoc(body),
                     fmt::format("link '{}' is deformable; its deformable properties are not "
