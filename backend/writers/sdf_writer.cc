@@ -687,7 +687,24 @@ class SdfWriter {
   void Material(const backend::SceneGeometry& g, Loc loc) {
     const ir::Property* diffuse = Find(g, "phong/diffuse");
     const ir::Property* texture = Find(g, "phong/diffuse_map");
+    // SDFormat's other material colors, as the reader takes them
+    static constexpr std::string_view kColors[] = {"ambient", "specular", "emissive"};
+    auto is_color = [&](std::string_view key) {
+      return std::any_of(std::begin(kColors), std::end(kColors),
+                         [&](std::string_view c) { return key == fmt::format("phong/{}", c); });
+    };
+    bool colors = false;
     for (const ir::Property& p : g.properties) {
+      if (is_color(p.key)) {
+        const auto* rgba = std::get_if<std::vector<double>>(&p.value);
+        colors = colors || (rgba && rgba->size() == 4);
+      }
+    }
+    for (const ir::Property& p : g.properties) {
+      if (is_color(p.key)) {
+        const auto* rgba = std::get_if<std::vector<double>>(&p.value);
+        if (rgba && rgba->size() == 4) continue;
+      }
       if ((p.key.starts_with("phong/") && p.key != "phong/diffuse" &&
            p.key != "phong/diffuse_map") ||
           (p.key.starts_with("renderer/") && p.key != "renderer/accepting") ||
@@ -698,8 +715,15 @@ class SdfWriter {
                                   p.key, g.name));
       }
     }
-    if (!diffuse && !texture) return;
+    if (!diffuse && !texture && !colors) return;
     out_.Open("material");
+    for (std::string_view c : kColors) {
+      const ir::Property* p = Find(g, fmt::format("phong/{}", c));
+      const auto* rgba = p ? std::get_if<std::vector<double>>(&p->value) : nullptr;
+      if (rgba && rgba->size() == 4) {
+        Value(c, VectorText(Eigen::Map<const Eigen::Vector4d>(rgba->data())));
+      }
+    }
     if (diffuse) {
       if (const auto* rgba = std::get_if<std::vector<double>>(&diffuse->value);
           rgba && rgba->size() == 4) {
