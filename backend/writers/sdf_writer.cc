@@ -121,6 +121,7 @@ class SdfWriter {
     LinkPoses();
     BuildModels();
     ModelPoses();
+    LinkFrameRefs();
     BuildElements();
     out_.Open("sdf").Attr("version", "1.9").Attr("xmlns:drake", "http://drake.mit.edu");
     std::vector<std::string> tops;
@@ -455,6 +456,14 @@ class SdfWriter {
     Value(prefix + "_p_AP", p_AP);
     Value(prefix + "_body_B", LinkRef(scope, B));
     Value(prefix + "_p_BQ", p_BQ);
+  }
+
+  /// A bushing may name a link's own frame ("instance::link").
+  void LinkFrameRefs() {
+    for (size_t b = 1; b < plant_.bodies.size(); ++b) {
+      frame_refs_.emplace(plant_.bodies[b].scoped_name,
+                          FrameRef{body_scope_.at(b), link_names_[b]});
+    }
   }
 
   /// Model poses: a parent's comes first (a prefix sorts first).
@@ -888,7 +897,7 @@ class SdfWriter {
     }
     if (type != "fixed") {
       MultiDofLimits(j, loc);
-      ActuatorParameters(id, scope);
+      ActuatorParameters(id);
       MimicElements(id);
     }
     out_.Close();
@@ -1006,7 +1015,7 @@ class SdfWriter {
   }
 
   // drake:rotor_inertia, drake:gear_ratio, drake:controller_gains (SDF-021)
-  void ActuatorParameters(JointId id, const std::string& scope) {
+  void ActuatorParameters(JointId id) {
     const PlantJoint& j = plant_.joint(id);
     int count = 0;
     for (size_t i = 0; i < plant_.actuators.size(); ++i) {
@@ -1044,7 +1053,6 @@ class SdfWriter {
                                   a.name, a.kp ? "proportional" : "derivative"));
       }
     }
-    (void)scope;
   }
 
   // a coupler whose follower is this joint becomes its <drake:mimic> (EXT-010)
