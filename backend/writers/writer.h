@@ -43,4 +43,8 @@ std::optional<std::string> WriteUrdf(const backend::CompiledModel& model,
                                      const ir::Module& module, const WriteOptions& options,
                                      DiagnosticEngine& diags);
 
+std::optional<std::string> WriteSdf(const backend::CompiledModel& model,
+                                    const ir::Module& module, const WriteOptions& options,
+                                    DiagnosticEngine& diags);
+
 }  // namespace mdlc::writers

@@ -422,11 +422,15 @@ TEST_F(CliTest, ConvertNeedsATarget) {
   const fs::path in = Write("p.urdf", kPendulum);
   EXPECT_EQ(Run("convert " + in.string() + " -o " + (dir_ / "p.txt").string()).status, 2);
   EXPECT_EQ(Run("convert " + in.string() + " --to step -o -").status, 2);
-  // an SDFormat or MJCF writer does not exist yet, and says so
+  // the target follows from the output's extension
   Result sdf = Run("convert " + in.string() + " -o " + (dir_ / "p.sdf").string());
-  EXPECT_EQ(sdf.status, 1);
-  EXPECT_NE(sdf.err.find("converting to SDFormat is not implemented yet"), std::string::npos)
-      << sdf.err;
+  EXPECT_EQ(sdf.status, 0) << sdf.err;
+  EXPECT_NE(ReadFile(dir_ / "p.sdf").find("<sdf version=\"1.9\""), std::string::npos);
+  // an MJCF writer does not exist yet, and says so
+  Result mjcf = Run("convert " + in.string() + " -o " + (dir_ / "p.xml").string() + " --to mjcf");
+  EXPECT_EQ(mjcf.status, 1);
+  EXPECT_NE(mjcf.err.find("converting to MJCF is not implemented yet"), std::string::npos)
+      << mjcf.err;
 }
 
 TEST_F(CliTest, ConvertNamesMeshesFromTheOutputAndCopiesThemOnce) {
