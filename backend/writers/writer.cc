@@ -13,9 +13,12 @@ std::optional<std::string> Write(const backend::CompiledModel& model, const ir::
     case Format::Urdf:
       text = WriteUrdf(model, module, options, diags);
       break;
+    case Format::Mjcf:
+      text = WriteMjcf(model, module, options, diags);
+      break;
     default:
       diags.Report(DiagKind::NotImplemented, Loc{},
-                   fmt::format("converting to {} is not implemented yet; only urdf is",
+                   fmt::format("converting to {} is not implemented yet; only urdf and mjcf are",
                                FormatName(options.to)));
       return std::nullopt;
   }

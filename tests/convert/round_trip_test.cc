@@ -139,10 +139,39 @@ size_t CountLossy(const Result& r, std::string_view text) {
 
 enum class Outcome { Compared, Approximated, Rejected };
 
+/// Where a writer puts the converted body's frame: its pose in the
+/// original body B, given B's inbound joint.
+using LinkFrame = Transform (*)(const backend::PlantJoint& inbound);
+
+/// URDF: the link frame is the joint's child frame M.
+Transform UrdfLinkFrame(const backend::PlantJoint& j) { return j.X_CM; }
+/// MJCF: the body frame, except under a ball joint (rotated as M, since
+/// MJCF's ball turns about the body's axes) and a floating joint (M).
+Transform MjcfLinkFrame(const backend::PlantJoint& j) {
+  if (j.type == ir::JointType::QuaternionFloating && j.parent.index() == 0) return j.X_CM;
+  if (j.type == ir::JointType::Ball) return Transform::FromRotation(j.X_CM.R);
+  return {};
+}
+
+/// The formats `mdlc convert` writes; a new writer adds its line here.
+struct Target {
+  Format format;
+  const char* extension;  // of the converted file
+  const char* name;       // in test names
+  LinkFrame link_frame;
+  bool writes_half_spaces;    // else dropped, with a -Wlossy warning
+  bool writes_world_filters;  // collision filters against the world
+};
+constexpr Target kTargets[] = {
+    {Format::Urdf, "urdf", "Urdf", UrdfLinkFrame, false, false},
+    {Format::Mjcf, "xml", "Mjcf", MjcfLinkFrame, true, true},
+};
+
 /// The converted model against the original; failures are gtest failures.
 class Comparison {
  public:
-  Comparison(const Result& a, const Result& b) : a_(a), b_(b), pa_(a.plant()), pb_(b.plant()) {}
+  Comparison(const Result& a, const Result& b, const Target& to)
+      : a_(a), b_(b), pa_(a.plant()), pb_(b.plant()), to_(to) {}
 
   /// False when the kinematic structure could not be mapped.
   bool MapStructure(std::string* why) {
@@ -216,10 +245,10 @@ class Comparison {
     const auto X_WA = a_.BodyPoses(q);
     const auto X_WB = b_.BodyPoses(qb);
     for (size_t i = 1; i < pa_.bodies.size(); ++i) {
-      // the converted link's frame is the original joint's child frame M
+      // the converted body's frame, as the target's writer places it
       Transform expected = X_WA[i];
       if (pa_.bodies[i].inbound_joint.valid()) {
-        expected = expected * pa_.joint(pa_.bodies[i].inbound_joint).X_CM;
+        expected = expected * to_.link_frame(pa_.joint(pa_.bodies[i].inbound_joint));
       }
       const Transform& got = X_WB[body_map_[i].index()];
       const double scale = expected.p.cwiseAbs().maxCoeff();
@@ -251,6 +280,7 @@ class Comparison {
   }
 
   void CompareGeometryAndFilters(size_t dropped_half_spaces) {
+    const bool drops = !to_.writes_half_spaces;
     auto count = [](const backend::SceneGraph& s, uint8_t roles) {
       size_t n = 0;
       for (const auto& g : s.geometries) n += (g.roles & roles) ? 1 : 0;
@@ -260,7 +290,7 @@ class Comparison {
     const auto& sb = b_.scene_graph();
     size_t half_space_proximity = 0, half_space_visual = 0;
     for (const auto& g : sa.geometries) {
-      if (!std::holds_alternative<ir::HalfSpace>(g.shape)) continue;
+      if (!drops || !std::holds_alternative<ir::HalfSpace>(g.shape)) continue;
       half_space_proximity += (g.roles & ir::kProximityRole) ? 1 : 0;
       half_space_visual += (g.roles & (ir::kIllustrationRole | ir::kPerceptionRole)) ? 1 : 0;
     }
@@ -271,7 +301,7 @@ class Comparison {
     // filters against the world cannot be written in URDF (reported)
     std::set<std::pair<size_t, size_t>> fa, fb;
     for (const auto& [x, y] : sa.collision_filters) {
-      if (x.index() == 0 || y.index() == 0) {
+      if (!to_.writes_world_filters && (x.index() == 0 || y.index() == 0)) {
         EXPECT_GT(CountLossy(a_, "and the world is dropped"), 0u);
         continue;
       }
@@ -289,19 +319,12 @@ class Comparison {
   const Result& b_;
   const backend::Plant& pa_;
   const backend::Plant& pb_;
+  const Target& to_;
   std::vector<BodyId> body_map_;
   std::vector<JointId> joint_map_;
 };
 
-/// The formats `mdlc convert` writes; a new writer adds its line here.
-struct Target {
-  Format format;
-  const char* extension;  // of the converted file
-  const char* name;       // in test names
-};
-constexpr Target kTargets[] = {
-    {Format::Urdf, "urdf", "Urdf"},
-};
+
 void PrintTo(const Target& t, std::ostream* os) { *os << t.name; }
 
 Outcome RoundTrip(const ModelCase& mc, const Target& to, const fs::path& dir) {
@@ -323,7 +346,7 @@ Outcome RoundTrip(const ModelCase& mc, const Target& to, const fs::path& dir) {
                       << *text;
   if (!b.ok()) return Outcome::Compared;
 
-  Comparison cmp(a, b);
+  Comparison cmp(a, b, to);
   std::string why;
   if (!cmp.MapStructure(&why)) {
     // only a conversion that said it changed the structure may do so
