@@ -17,8 +17,9 @@
 //   weld -> no joint; revolute -> hinge; prismatic -> slide; ball -> ball;
 //   quaternion floating on a root body -> <freejoint/> (its default pose is
 //   the body's pose); other joint types -> no joint (fixed at their default
-//   positions). Inertia -> <inertial fullinertia> (every body; a massless
-//   one has mass 0). Geometry -> <geom>: visual and collision by default,
+//   positions). Inertia -> <inertial> with diaginertia or fullinertia
+//   (every body; a massless one has mass 0, which MuJoCo refuses when the
+//   body moves). Geometry -> <geom>: visual and collision by default,
 //   visual only with contype=conaffinity=0, collision only with group 3
 //   (mdlc and Drake register a group-3 geom for proximity only). Frames ->
 //   <site>; cameras -> <camera>; actuators -> <motor>, <position> (kp, kv)
@@ -258,13 +259,17 @@ class MjcfWriter {
     const Transform X_LB = X_BL_[body.index()].inverse();
     const Eigen::Vector3d p = X_LB * b.p_BoBcm_B;
     const Eigen::Matrix3d I = X_LB.R * b.I_BBcm_B * X_LB.R.transpose();
-    out_.Open("inertial")
-        .Attr("pos", p)
-        .Attr("mass", b.mass)
-        .Attr("fullinertia", VectorText((Eigen::VectorXd(6) << I(0, 0), I(1, 1), I(2, 2),
-                                         I(0, 1), I(0, 2), I(1, 2))
-                                            .finished()))
-        .Close();
+    out_.Open("inertial").Attr("pos", p).Attr("mass", b.mass);
+    // both read exactly; MuJoCo rejects a fullinertia without positive
+    // eigenvalues (a massless body's zero), not the same diaginertia
+    if (I(0, 1) == 0 && I(0, 2) == 0 && I(1, 2) == 0) {
+      out_.Attr("diaginertia", Eigen::Vector3d(I.diagonal()));
+    } else {
+      out_.Attr("fullinertia", VectorText((Eigen::VectorXd(6) << I(0, 0), I(1, 1), I(2, 2),
+                                           I(0, 1), I(0, 2), I(1, 2))
+                                              .finished()));
+    }
+    out_.Close();
   }
 
   void WriteJoint(JointId id, Kind kind, const Eigen::VectorXd& q0) {

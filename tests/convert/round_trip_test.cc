@@ -161,10 +161,14 @@ struct Target {
   LinkFrame link_frame;
   bool writes_half_spaces;    // else dropped, with a -Wlossy warning
   bool writes_world_filters;  // collision filters against the world
+  /// Each converted model in a folder of its own, beside copies of its
+  /// meshes (MuJoCo's reference loads a model's folder, not its mesh paths
+  /// that reach up and out of it).
+  bool own_folder;
 };
 constexpr Target kTargets[] = {
-    {Format::Urdf, "urdf", "Urdf", UrdfLinkFrame, false, false},
-    {Format::Mjcf, "xml", "Mjcf", MjcfLinkFrame, true, true},
+    {Format::Urdf, "urdf", "Urdf", UrdfLinkFrame, false, false, false},
+    {Format::Mjcf, "xml", "Mjcf", MjcfLinkFrame, true, true, true},
 };
 
 /// The converted model against the original; failures are gtest failures.
@@ -332,8 +336,14 @@ Outcome RoundTrip(const ModelCase& mc, const Target& to, const fs::path& dir) {
   options.package_paths = {Corpus().string()};
   Result a = Compile(Input::File(mc.path.string()), options);
   if (!a.ok()) return Outcome::Rejected;  // which models are rejected is the corpus tests'
-  const fs::path out = dir / OutputName(mc, to.extension);
+  fs::path out = dir / OutputName(mc, to.extension);
   ConvertOptions convert;
+  if (to.own_folder) {
+    const fs::path folder = dir / to.extension / out.stem();
+    fs::create_directories(folder);
+    out = folder / out.filename();
+    convert.copy_assets_dir = (folder / "assets").string();
+  }
   convert.to = to.format;
   convert.output = out.string();
   const std::optional<std::string> text = a.Convert(convert);
