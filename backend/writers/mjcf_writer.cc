@@ -298,17 +298,7 @@ class MjcfWriter {
     if (kind != Kind::Ball) {
       out_.Attr("axis", Eigen::Vector3d(X_LM.R * j.axis));
       if (q0[0] != 0) out_.Attr("ref", q0[0]);
-      if (j.lower[0] != -kInf || j.upper[0] != kInf) {
-        if (j.lower[0] == -kInf || j.upper[0] == kInf) {
-          diags_.Report(DiagKind::Lossy, loc,
-                        fmt::format("joint '{}' is bounded on one side only; MJCF's range has "
-                                    "two bounds, so the unbounded one is the largest double",
-                                    j.name));
-        }
-        const double big = std::numeric_limits<double>::max();
-        out_.Attr("range", VectorText(Eigen::Vector2d(std::max(j.lower[0], -big),
-                                                      std::min(j.upper[0], big))));
-      }
+      Range(j, loc);
     } else if (std::any_of(j.lower.begin(), j.lower.end(), [](double v) { return v != -kInf; }) ||
                std::any_of(j.upper.begin(), j.upper.end(), [](double v) { return v != kInf; })) {
       diags_.Report(DiagKind::Lossy, loc,
@@ -328,6 +318,33 @@ class MjcfWriter {
     Spring(id);
     out_.Close();
     DropUnwritableLimits(id, loc);
+  }
+
+  /// MJCF's range has two finite bounds, and MuJoCo's limit constraints
+  /// overflow on bounds near the largest double (Gazebo's "unbounded"
+  /// 1.79769e308): a bound beyond kFar is unbounded, and a range with one
+  /// unbounded side is written with that side at -+kFar.
+  void Range(const PlantJoint& j, Loc loc) {
+    constexpr double kFar = 1e10;
+    const bool low = j.lower[0] > -kFar, high = j.upper[0] < kFar;
+    if (!low && !high) {
+      if (j.lower[0] != -kInf || j.upper[0] != kInf) {
+        diags_.Report(DiagKind::Lossy, loc,
+                      fmt::format("joint '{}' has limits [{}, {}], beyond what MuJoCo computes "
+                                  "with; it is written unbounded",
+                                  j.name, j.lower[0], j.upper[0]));
+      }
+      return;
+    }
+    if (!low || !high) {
+      diags_.Report(DiagKind::Lossy, loc,
+                    fmt::format("joint '{}' is bounded on one side only ([{}, {}]); MJCF's "
+                                "range has two finite bounds, so the other one is written as "
+                                "{}",
+                                j.name, j.lower[0], j.upper[0], low ? kFar : -kFar));
+    }
+    out_.Attr("range", VectorText(Eigen::Vector2d(low ? j.lower[0] : -kFar,
+                                                  high ? j.upper[0] : kFar)));
   }
 
   // velocity, acceleration and (without an actuator) effort limits: MJCF

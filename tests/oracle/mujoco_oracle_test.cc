@@ -402,12 +402,11 @@ const char* ConvertedRejection(const std::string& error) {
        "a moving body is massless in the plant, which MuJoCo refuses"},
       {"inertia must have positive eigenvalues",
        "a body's inertia is singular in the plant, which MuJoCo refuses"},
+      {"inertia must satisfy A + B >= C",
+       "a body's inertia fails MuJoCo's triangle inequality, which the plant accepts"},
       {"rank-deficient sparse Hessian",
        "a degree of freedom has no inertia in the plant, so MuJoCo cannot factor its mass "
        "matrix"},
-      {"qM layout check failed at",
-       "a degree of freedom has no inertia in the plant (MuJoCo's mass matrix holds a "
-       "denormal where the plant's is 0)"},
       // the plant reads meshes MuJoCo does not
       {"unknown or unsupported mesh file",
        "MuJoCo reads STL, OBJ and MSH meshes only, and the model has a DAE, glTF or VTK one"},
