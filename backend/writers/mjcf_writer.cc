@@ -336,6 +336,14 @@ class MjcfWriter {
       }
       return;
     }
+    if (low && high && j.lower[0] >= j.upper[0]) {
+      // MJCF reads range="0 0" as no range, and rejects an empty one
+      diags_.Report(DiagKind::Lossy, loc,
+                    fmt::format("joint '{}' has limits [{}, {}]; MJCF's range must be a "
+                                "non-empty interval, so it is written unbounded",
+                                j.name, j.lower[0], j.upper[0]));
+      return;
+    }
     if (!low || !high) {
       diags_.Report(DiagKind::Lossy, loc,
                     fmt::format("joint '{}' is bounded on one side only ([{}, {}]); MJCF's "
