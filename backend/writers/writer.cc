@@ -16,9 +16,12 @@ std::optional<std::string> Write(const backend::CompiledModel& model, const ir::
     case Format::Sdf:
       text = WriteSdf(model, module, options, diags);
       break;
+    case Format::Mjcf:
+      text = WriteMjcf(model, module, options, diags);
+      break;
     default:
       diags.Report(DiagKind::NotImplemented, Loc{},
-                   fmt::format("converting to {} is not implemented yet; only urdf and sdf are",
+                   fmt::format("mdlc cannot write {}; it writes urdf, sdf and mjcf",
                                FormatName(options.to)));
       return std::nullopt;
   }

@@ -42,6 +42,9 @@ std::optional<std::string> Write(const backend::CompiledModel& model, const ir::
 std::optional<std::string> WriteUrdf(const backend::CompiledModel& model,
                                      const ir::Module& module, const WriteOptions& options,
                                      DiagnosticEngine& diags);
+std::optional<std::string> WriteMjcf(const backend::CompiledModel& model,
+                                     const ir::Module& module, const WriteOptions& options,
+                                     DiagnosticEngine& diags);
 
 std::optional<std::string> WriteSdf(const backend::CompiledModel& model,
                                     const ir::Module& module, const WriteOptions& options,

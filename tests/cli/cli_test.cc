@@ -426,11 +426,11 @@ TEST_F(CliTest, ConvertNeedsATarget) {
   Result sdf = Run("convert " + in.string() + " -o " + (dir_ / "p.sdf").string());
   EXPECT_EQ(sdf.status, 0) << sdf.err;
   EXPECT_NE(ReadFile(dir_ / "p.sdf").find("<sdf version=\"1.9\""), std::string::npos);
-  // an MJCF writer does not exist yet, and says so
-  Result mjcf = Run("convert " + in.string() + " -o " + (dir_ / "p.xml").string() + " --to mjcf");
-  EXPECT_EQ(mjcf.status, 1);
-  EXPECT_NE(mjcf.err.find("converting to MJCF is not implemented yet"), std::string::npos)
-      << mjcf.err;
+  Result mjcf = Run("convert " + in.string() + " -o " + (dir_ / "p.xml").string());
+  EXPECT_EQ(mjcf.status, 0) << mjcf.err;
+  EXPECT_NE(ReadFile(dir_ / "p.xml").find("<mujoco model=\"pendulum\""), std::string::npos);
+  // directives are read, not written
+  EXPECT_EQ(Run("convert " + in.string() + " -o " + (dir_ / "p.dmd.yaml").string()).status, 2);
 }
 
 TEST_F(CliTest, ConvertNamesMeshesFromTheOutputAndCopiesThemOnce) {

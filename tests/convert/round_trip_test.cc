@@ -139,24 +139,57 @@ size_t CountLossy(const Result& r, std::string_view text) {
 
 enum class Outcome { Compared, Approximated, Rejected };
 
+/// Where a writer puts the converted body's frame: its pose in the
+/// original body B, given B's inbound joint.
+using LinkFrame = Transform (*)(const backend::PlantJoint& inbound);
+
+/// URDF: the link frame is the joint's child frame M.
+Transform UrdfLinkFrame(const backend::PlantJoint& j) { return j.X_CM; }
+/// SDFormat: body frames stay where they are.
+Transform SdfLinkFrame(const backend::PlantJoint&) { return {}; }
+/// MJCF: the body frame, except under a ball joint (rotated as M, since
+/// MJCF's ball turns about the body's axes) and a floating joint (M).
+Transform MjcfLinkFrame(const backend::PlantJoint& j) {
+  if (j.type == ir::JointType::QuaternionFloating && j.parent.index() == 0) return j.X_CM;
+  if (j.type == ir::JointType::Ball) return Transform::FromRotation(j.X_CM.R);
+  return {};
+}
+
+/// The geometry a writer drops (with a -Wlossy warning): half spaces in
+/// URDF, geometry on the world in SDFormat, none in MJCF.
+using Drops = bool (*)(const backend::SceneGeometry& g);
+bool UrdfDrops(const backend::SceneGeometry& g) {
+  return std::holds_alternative<ir::HalfSpace>(g.shape);
+}
+bool SdfDrops(const backend::SceneGeometry& g) { return g.body.index() == 0; }
+bool DropsNothing(const backend::SceneGeometry&) { return false; }  // MJCF
+
 /// The formats `mdlc convert` writes; a new writer adds its line here.
 struct Target {
   Format format;
   const char* extension;  // of the converted file
   const char* name;       // in test names
-  /// URDF puts a link's frame at its joint's child frame M; SDFormat keeps
-  /// body frames where they are.
-  bool link_frame_at_joint_child;
-  /// URDF flattens instances into one robot ("instance/name"); SDFormat
-  /// keeps them, so a body keeps its scoped name.
+  LinkFrame link_frame;
+  /// URDF and MJCF flatten instances into one model ("instance/name");
+  /// SDFormat keeps them, so a body keeps its scoped name.
   bool keeps_instances;
-  /// URDF visuals have both illustration and perception; SDFormat writes
-  /// each role as it is.
+  /// SDFormat writes each role as it is; a URDF or MJCF visual is both
+  /// illustration and perception.
   bool exact_roles;
+  Drops drops;
+  const char* drop_warning;   // what the writer's -Wlossy warning for it says
+  bool writes_world_filters;  // collision filters against the world
+  /// Each converted model in a folder of its own, beside copies of its
+  /// meshes (MuJoCo's reference loads a model's folder, not its mesh paths
+  /// that reach up and out of it).
+  bool own_folder;
 };
 constexpr Target kTargets[] = {
-    {Format::Urdf, "urdf", "Urdf", true, false, false},
-    {Format::Sdf, "sdf", "Sdf", false, true, true},
+    {Format::Urdf, "urdf", "Urdf", UrdfLinkFrame, false, false, UrdfDrops, "half space", false,
+     false},
+    {Format::Sdf, "sdf", "Sdf", SdfLinkFrame, true, true, SdfDrops, "on the world is dropped",
+     false, false},
+    {Format::Mjcf, "xml", "Mjcf", MjcfLinkFrame, false, false, DropsNothing, "", true, true},
 };
 
 /// The converted model against the original; failures are gtest failures.
@@ -240,10 +273,10 @@ class Comparison {
     const auto X_WA = a_.BodyPoses(q);
     const auto X_WB = b_.BodyPoses(qb);
     for (size_t i = 1; i < pa_.bodies.size(); ++i) {
-      // the converted link's frame is the original joint's child frame M
+      // the converted body's frame, as the target's writer places it
       Transform expected = X_WA[i];
-      if (to_.link_frame_at_joint_child && pa_.bodies[i].inbound_joint.valid()) {
-        expected = expected * pa_.joint(pa_.bodies[i].inbound_joint).X_CM;
+      if (pa_.bodies[i].inbound_joint.valid()) {
+        expected = expected * to_.link_frame(pa_.joint(pa_.bodies[i].inbound_joint));
       }
       const Transform& got = X_WB[body_map_[i].index()];
       const double scale = expected.p.cwiseAbs().maxCoeff();
@@ -277,36 +310,29 @@ class Comparison {
   void CompareGeometryAndFilters() {
     const auto& sa = a_.scene_graph();
     const auto& sb = b_.scene_graph();
-    // what the target cannot hold and the writer reported dropping: half
-    // spaces in URDF, geometry on the world in SDFormat
-    auto dropped = [&](const backend::SceneGeometry& g) {
-      if (to_.format == Format::Urdf) return std::holds_alternative<ir::HalfSpace>(g.shape);
-      return g.body.index() == 0;
-    };
-    auto count = [](const backend::SceneGraph& s, uint8_t roles, auto&& skip) {
+    auto count = [](const backend::SceneGraph& s, uint8_t roles, Drops skip) {
       size_t n = 0;
       for (const auto& g : s.geometries) n += (g.roles & roles) && !skip(g) ? 1 : 0;
       return n;
     };
-    auto none = [](const backend::SceneGeometry&) { return false; };
     size_t n_dropped = 0;
-    for (const auto& g : sa.geometries) n_dropped += dropped(g) ? 1 : 0;
-    const size_t reported =
-        CountLossy(a_, to_.format == Format::Urdf ? "half space" : "on the world is dropped");
-    EXPECT_EQ(n_dropped > 0, reported > 0);
-    EXPECT_EQ(count(sb, ir::kProximityRole, none), count(sa, ir::kProximityRole, dropped));
+    for (const auto& g : sa.geometries) n_dropped += to_.drops(g) ? 1 : 0;
+    if (n_dropped > 0) EXPECT_GT(CountLossy(a_, to_.drop_warning), 0u);
+    EXPECT_EQ(count(sb, ir::kProximityRole, DropsNothing),
+              count(sa, ir::kProximityRole, to_.drops));
     if (to_.exact_roles) {
-      EXPECT_EQ(count(sb, ir::kIllustrationRole, none),
-                count(sa, ir::kIllustrationRole, dropped));
-      EXPECT_EQ(count(sb, ir::kPerceptionRole, none), count(sa, ir::kPerceptionRole, dropped));
+      EXPECT_EQ(count(sb, ir::kIllustrationRole, DropsNothing),
+                count(sa, ir::kIllustrationRole, to_.drops));
+      EXPECT_EQ(count(sb, ir::kPerceptionRole, DropsNothing),
+                count(sa, ir::kPerceptionRole, to_.drops));
     } else {
-      EXPECT_EQ(count(sb, ir::kIllustrationRole, none),
-                count(sa, ir::kIllustrationRole | ir::kPerceptionRole, dropped));
+      EXPECT_EQ(count(sb, ir::kIllustrationRole, DropsNothing),
+                count(sa, ir::kIllustrationRole | ir::kPerceptionRole, to_.drops));
     }
-    // filters against the world cannot be written in URDF (reported)
+    // filters against the world cannot be written in URDF or SDFormat (reported)
     std::set<std::pair<size_t, size_t>> fa, fb;
     for (const auto& [x, y] : sa.collision_filters) {
-      if (x.index() == 0 || y.index() == 0) {
+      if (!to_.writes_world_filters && (x.index() == 0 || y.index() == 0)) {
         EXPECT_GT(CountLossy(a_, "and the world is dropped"), 0u);
         continue;
       }
@@ -354,8 +380,14 @@ Outcome RoundTrip(const ModelCase& mc, const Target& to, const fs::path& dir) {
   options.package_paths = {Corpus().string()};
   Result a = Compile(Input::File(mc.path.string()), options);
   if (!a.ok()) return Outcome::Rejected;  // which models are rejected is the corpus tests'
-  const fs::path out = dir / OutputName(mc, to.extension);
+  fs::path out = dir / OutputName(mc, to.extension);
   ConvertOptions convert;
+  if (to.own_folder) {
+    const fs::path folder = dir / to.extension / out.stem();
+    fs::create_directories(folder);
+    out = folder / out.filename();
+    convert.copy_assets_dir = (folder / "assets").string();
+  }
   convert.to = to.format;
   convert.output = out.string();
   const std::optional<std::string> text = a.Convert(convert);

@@ -99,7 +99,7 @@ struct Options {
 
 /// What `mdlc convert` writes (Result::Convert).
 struct ConvertOptions {
-  /// The target: urdf (sdf and mjcf are not written yet).
+  /// The target: urdf or mjcf (sdf is not written yet).
   Format to = Format::Urdf;
   /// The file the text will be written to: mesh paths are written relative
   /// to its folder (empty: the current directory).
