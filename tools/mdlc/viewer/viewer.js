@@ -7,7 +7,7 @@
 // The page exposes window.mdlcBodyPoses(q) (X_WB of every body) and
 // window.mdlcSetPositions(q) so that tests can hold it to the plant; opened
 // as model.html#selftest=JSON it runs those checks and writes the results
-// into <pre id="mdlc-selftest"> (tests/cli/view_test.py).
+// into the pre element "mdlc-selftest" (tests/cli/view_test.py).
 
 const model = JSON.parse(document.getElementById('mdlc-model').textContent);
 
