@@ -349,11 +349,11 @@ body {{ display: flex; }}
 #view {{ flex: 1; position: relative; min-width: 0; }}
 #view canvas {{ display: block; }}
 h1 {{ font-size: 15px; margin: 0 0 6px; }} h2 {{ font-size: 13px; margin: 10px 0 4px; }}
-.note {{ color: #8a5a00; }} .slider {{ display: grid; grid-template-columns: 1fr 90px 56px;
+.note {{ color: #8a5a00; }} .slider {{ display: grid; grid-template-columns: minmax(0, 1fr) 110px 48px;
   gap: 4px; align-items: center; }} .slider span {{ overflow: hidden; text-overflow: ellipsis; }}
 #tree ul {{ list-style: none; padding-left: 12px; margin: 0; }}
 #tree .body {{ cursor: pointer; }} #tree .body.selected {{ background: #ffe28a; }}
-#tree .joint {{ color: #666; }} #info {{ white-space: pre-wrap; font-family: monospace;
+#tree .joint {{ color: #666; }} #toggles {{ display: flex; flex-wrap: wrap; gap: 2px 10px; }} #toggles label {{ white-space: nowrap; }} #info {{ white-space: pre; overflow-x: auto; font-family: monospace;
   font-size: 11px; background: #fff; border: 1px solid #ddd; padding: 4px; }}
 </style>
 </head>

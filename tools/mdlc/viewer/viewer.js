@@ -168,7 +168,7 @@ function shapeObject(shape) {
                             new THREE.Matrix4().makeRotationX(Math.PI / 2)];
     case 'ellipsoid': return [new THREE.SphereGeometry(1, 32, 16),
                               new THREE.Matrix4().makeScale(shape.a, shape.b, shape.c)];
-    case 'half_space': return [new THREE.PlaneGeometry(4, 4), null];
+    case 'half_space': return [new THREE.PlaneGeometry(1, 1), null];  // sized to the model below
     case 'mesh': case 'convex':
       if (shape.mesh < 0) return [null, null];
       return [meshGeometries[shape.mesh], new THREE.Matrix4().makeScale(...shape.scale)];
@@ -200,6 +200,7 @@ for (const g of model.geometries) {
   object.matrix.copy(matrixOf(g.X_BG));
   if (shapeMatrix) object.matrix.multiply(shapeMatrix);
   object.userData.body = g.body;
+  object.userData.halfSpace = g.shape.type === 'half_space';
   object.name = g.name;
   bodyGroups[g.body].add(object);
   for (const role of g.roles) byRole[role]?.push(object);
@@ -210,9 +211,16 @@ const bounds = new THREE.Box3();
 function fitBounds() {
   scene.updateMatrixWorld(true);
   bounds.makeEmpty();
-  for (const group of bodyGroups) bounds.expandByObject(group);
+  // a half space is drawn as a finite floor; it says nothing of the model's size
+  for (const group of bodyGroups) {
+    for (const object of group.children) if (!object.userData.halfSpace) bounds.expandByObject(object);
+  }
   if (bounds.isEmpty()) bounds.set(new THREE.Vector3(-0.5, -0.5, -0.5), new THREE.Vector3(0.5, 0.5, 0.5));
 }
+
+// names without their model instance when the page shows only one
+const instances = new Set(model.bodies.filter((b) => b.parent >= 0).map((b) => b.model));
+const label = (entity) => (instances.size === 1 ? entity.name : entity.scoped_name);
 
 // ---- positions, sliders and the poses shown
 let q = defaultPositions();
@@ -224,6 +232,11 @@ function show() {
 show();
 fitBounds();
 const size = bounds.getSize(new THREE.Vector3()).length() || 1;
+for (const group of bodyGroups) {
+  for (const object of group.children) {
+    if (object.userData.halfSpace) object.matrix.multiply(new THREE.Matrix4().makeScale(size, size, 1));
+  }
+}
 // each body's own frame, then the model's named frames
 const triads = model.bodies.map((body, index) => ({ name: body.scoped_name, body: index,
                                                      X_BF: identity() }));
@@ -271,8 +284,8 @@ for (const id of model.joint_order) {
     row.className = 'slider';
     const name = document.createElement('span');
     const coordinate = coordinateNames[joint.type]?.[k];
-    name.textContent = joint.scoped_name + (coordinate ? `.${coordinate}` : '');
-    name.title = `${joint.type} joint, q[${index}]` + (joint.source ? `, ${joint.source}` : '') +
+    name.textContent = label(joint) + (coordinate ? `.${coordinate}` : '');
+    name.title = `${joint.scoped_name}: ${joint.type} joint, q[${index}]` + (joint.source ? `, ${joint.source}` : '') +
                  (joint.type === 'curvilinear' ? ' (shown at rest)' : '');
     const input = document.createElement('input');
     input.type = 'range';
@@ -301,7 +314,7 @@ const hasIllustration = byRole.illustration.length > 0;
 for (const [role, shown] of [['illustration', hasIllustration], ['proximity', !hasIllustration],
                              ['perception', false], ['frames', true]]) {
   if (byRole[role].length === 0) continue;
-  const label = document.createElement('label');
+  const row = document.createElement('label');
   const box = document.createElement('input');
   box.type = 'checkbox';
   box.checked = shown;
@@ -315,8 +328,8 @@ for (const [role, shown] of [['illustration', hasIllustration], ['proximity', !h
     }
   };
   box.addEventListener('change', apply);
-  label.append(box, ` ${role} (${byRole[role].length}) `);
-  toggles.append(label);
+  row.append(box, ` ${role} (${byRole[role].length}) `);
+  toggles.append(row);
 }
 for (const objects of Object.values(byRole)) for (const o of objects) o.visible = false;
 for (const box of toggles.querySelectorAll('input')) box.dispatchEvent(new Event('change'));
@@ -336,19 +349,20 @@ let selected = -1;
 function buildTree(index) {
   const body = model.bodies[index];
   const li = document.createElement('li');
-  const label = document.createElement('span');
-  label.className = 'body';
-  label.textContent = body.scoped_name;
-  label.addEventListener('click', () => select(index));
-  li.append(label);
+  const item = document.createElement('span');
+  item.className = 'body';
+  item.textContent = index === 0 ? 'world' : label(body);
+  item.title = body.scoped_name;
+  item.addEventListener('click', () => select(index));
+  li.append(item);
   if (body.joint >= 0) {
     const joint = model.joints[body.joint];
     const j = document.createElement('span');
     j.className = 'joint';
-    j.textContent = ` \u2190 ${joint.scoped_name} (${joint.type})`;
+    j.textContent = ` \u2190 ${label(joint)} (${joint.type})`;
     li.append(j);
   }
-  treeItems.set(index, label);
+  treeItems.set(index, item);
   const children = model.bodies.map((b, i) => [b, i]).filter(([b]) => b.parent === index);
   if (children.length) {
     const ul = document.createElement('ul');
@@ -372,14 +386,13 @@ function showSelection() {
   const X = bodyPoses(q)[selected];
   info.textContent = [
     body.scoped_name,
-    `mass     ${fmtNum(body.mass)} kg`,
-    `com      ${fmtVec(body.com)} m (in the body frame)`,
-    `inertia  ${fmtVec(I.slice(0, 3))}`,
-    `about com${fmtVec(I.slice(3, 6))} kg m^2`,
-    `         ${fmtVec(I.slice(6, 9))}`,
-    `p_WB     ${fmtVec(X.p)} m`,
-    body.joint >= 0 ? `joint    ${model.joints[body.joint].scoped_name} (${model.joints[body.joint].type})` : 'the world',
-    `source   ${body.source || 'none'}`,
+    `mass    ${fmtNum(body.mass)} kg`,
+    `com     ${fmtVec(body.com)} m, in B`,
+    `I_Bcm   Ixx Iyy Izz ${fmtVec([I[0], I[4], I[8]])}`,
+    `(kg m2) Ixy Ixz Iyz ${fmtVec([I[1], I[2], I[5]])}`,
+    `p_WB    ${fmtVec(X.p)} m`,
+    body.joint >= 0 ? `joint   ${model.joints[body.joint].scoped_name} (${model.joints[body.joint].type})` : 'the world',
+    `source  ${body.source || 'none'}`,
   ].join('\n');
 }
 function select(index) {
@@ -406,6 +419,14 @@ renderer.domElement.addEventListener('pointerup', (e) => {
                                                                       h.object.isMesh);
   if (hit) select(hit.object.userData.body);
 });
+
+// page.html#select=BODY opens with that body (scoped or local name) selected
+const preselect = /^#select=(.*)$/.exec(window.location.hash);
+if (preselect) {
+  const name = decodeURIComponent(preselect[1]);
+  const index = model.bodies.findIndex((b) => b.scoped_name === name || b.name === name);
+  if (index >= 0) select(index);
+}
 
 // ---- rendering
 function resize() {
