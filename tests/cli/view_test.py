@@ -10,6 +10,9 @@ For each model: write the page, open it (file://, no network) and check
 - its forward kinematics are the plant's: window.mdlcBodyPoses(q) equals
   `mdlc compile --emit=plant-json --q JOINT=VALUE ...` X_WB to 1e-9 at
   several q;
+- where the Python module mdlc is importable, the same at random q that set
+  every coordinate, multi-dof joints (ball, universal, planar, floating)
+  included, against Model.body_poses(q);
 - moving one joint's slider (a real input event) moves exactly the bodies
   downstream of that joint, as the scene shows them.
 The page runs the checks itself when opened as page.html#selftest=JSON and
@@ -22,6 +25,7 @@ import html
 import json
 import math
 import os
+import random
 import re
 import shutil
 import struct
@@ -128,7 +132,10 @@ def test_model(mdlc, browser, model_path, work):
     model = embedded_model(page)
     bodies, joints = model["bodies"], model["joints"]
     movable = [j for j in (joints[i] for i in model["joint_order"]) if j["nq"] == 1]
-    check(movable, f"{name}: no 1-dof joint to move")
+    # a joint whose first coordinate moves its child: a 1-dof one where there
+    # is one (a quaternion's w alone would not turn anything)
+    sliding = movable or [j for j in joints if j["nq"] > 0 and j["type"] != "quaternion_floating"]
+    check(sliding, f"{name}: no joint to move")
 
     # q: the defaults, then each 1-dof joint set away from zero within its limits
     def q_with(values):
@@ -164,11 +171,20 @@ def test_model(mdlc, browser, model_path, work):
             out |= downstream(child)
         return out
 
-    slider = max(movable, key=lambda j: len(downstream(j["child"])))
+    slider = max(sliding, key=lambda j: len(downstream(j["child"])))
     expected_moved = sorted(bodies[b]["scoped_name"] for b in downstream(slider["child"]))
-    slider_value = inside(slider, 0.9)
+    slider_value = inside(slider, 0.9) if slider["nq"] == 1 else 0.7
 
-    request = {"qs": qs, "slider": slider["scoped_name"], "value": slider_value}
+    # random q over every coordinate, for the Python module's body_poses
+    try:
+        import mdlc as mdlc_python
+    except ImportError:
+        mdlc_python = None
+    generator = random.Random(15)
+    random_qs = [[generator.uniform(-1.5, 1.5) for _ in range(model["num_positions"])]
+                 for _ in range(3)] if mdlc_python else []
+
+    request = {"qs": qs + random_qs, "slider": slider["scoped_name"], "value": slider_value}
     url = "file://" + page_path + "#selftest=" + urllib.parse.quote(json.dumps(request))
     dom = run_browser(browser, url, "--dump-dom")
     errors = re.search(r'<pre id="mdlc-errors"[^>]*>(.*?)</pre>', dom, re.S)
@@ -202,6 +218,16 @@ def test_model(mdlc, browser, model_path, work):
             worst = max(worst, error)
             check(error <= TOLERANCE, f"{name}: body {bodies[b]['scoped_name']} at q={q}: "
                   f"page {got} vs plant {expected['X_WB']} (error {error:g})")
+    if mdlc_python:
+        compiled = mdlc_python.compile(model_path)
+        for q, poses in zip(random_qs, report["poses"][len(qs):]):
+            for b, expected in enumerate(compiled.body_poses(q)):
+                R = [float(x) for row in expected.R for x in row]
+                error = max([abs(x - y) for x, y in zip(poses[b]["R"], R)] +
+                            [abs(x - float(y)) for x, y in zip(poses[b]["p"], expected.p)])
+                worst = max(worst, error)
+                check(error <= TOLERANCE, f"{name}: body {bodies[b]['scoped_name']} at random "
+                      f"q={q}: page {poses[b]} vs body_poses (error {error:g})")
     check(sorted(report["moved"]) == expected_moved,
           f"{name}: moving {slider['scoped_name']} moved {report['moved']}, expected {expected_moved}")
 
@@ -216,7 +242,8 @@ def test_model(mdlc, browser, model_path, work):
             colours.add(row[x * channels:x * channels + 3])
     check(len(colours) >= 20, f"{name}: the 3D view looks blank ({len(colours)} colours)")
 
-    print(f"ok {name}: {len(bodies) - 1} bodies, {len(qs)} configurations, worst pose error "
+    print(f"ok {name}: {len(bodies) - 1} bodies, {len(qs)} configurations against plant-json and "
+          f"{len(random_qs)} random ones against body_poses, worst pose error "
           f"{worst:.1e}; slider {slider['scoped_name']} moved {len(report['moved'])} bodies; "
           f"screenshot {width}x{height} with {len(colours)} colours in the 3D view")
 

@@ -135,8 +135,10 @@ std::optional<std::vector<double>> Diffuse(const backend::SceneGeometry& g) {
 }
 
 /// Keeps the page's text out of the HTML parser's way: "</script" (any case)
-/// would end the script element it sits in.
-std::string EscapeForScript(std::string_view text) {
+/// would end the script element it sits in, so no "</" is left. In JSON and
+/// in JavaScript strings, regular expressions and comments "<\/" reads as
+/// "</". (This and EscapeHtml are unused in a build without the viewer.)
+[[maybe_unused]] std::string EscapeForScript(std::string_view text) {
   std::string out;
   out.reserve(text.size());
   for (size_t i = 0; i < text.size(); ++i) {
@@ -150,7 +152,7 @@ std::string EscapeForScript(std::string_view text) {
   return out;
 }
 
-std::string EscapeHtml(std::string_view text) {
+[[maybe_unused]] std::string EscapeHtml(std::string_view text) {
   std::string out;
   for (char c : text) {
     switch (c) {
