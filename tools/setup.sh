@@ -27,10 +27,11 @@ runtime_packages=(cmake ninja-build g++ pkg-config libeigen3-dev libxml2-dev lib
 # the Python module (built and tested by `test`)
 python_packages=(python3-dev python3-numpy pybind11-dev)
 # what its tests need besides: GoogleTest, Google Benchmark, and the reference
-# implementations the differential tests compare against, and Graphviz to
-# check that `mdlc graph -o x.svg` renders (test-only)
+# implementations the differential tests compare against, Graphviz to
+# check that `mdlc graph -o x.svg` renders, and Chromium to open the pages
+# `mdlc view` writes (test-only)
 test_packages=(libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
-               liburdfdom-dev libsdformat-dev libmujoco-dev graphviz)
+               liburdfdom-dev libsdformat-dev libmujoco-dev graphviz chromium)
 
 packages=("${runtime_packages[@]}")
 if [ "$mode" = test ]; then
@@ -82,6 +83,13 @@ if [ "$mode" = test ]; then
   else
     echo "note: npm not found; the MuJoCo 3.3.8 oracle tests will be skipped" >&2
   fi
+fi
+
+# `mdlc view` embeds three.js, which CMake installs with npm (pinned by
+# tools/mdlc/viewer/package-lock.json) when it configures; without npm, mdlc
+# is built without the viewer and `mdlc view` says so.
+if ! command -v npm >/dev/null 2>&1; then
+  echo "note: npm not found; mdlc is built without its viewer (mdlc view)" >&2
 fi
 
 echo "==> configuring and building in $build_dir"

@@ -282,3 +282,62 @@ TEST_F(CheckTest, SarifForCodeHosts) {
 }
 
 }  // namespace
+
+// `mdlc view`: the page itself (the browser test, view_test.py, opens it)
+class ViewTest : public InspectTest {
+ protected:
+  /// The model JSON the page embeds.
+  json PageModel(const std::string& page) {
+    const std::string open = R"(<script type="application/json" id="mdlc-model">)";
+    const size_t begin = page.find(open);
+    EXPECT_NE(begin, std::string::npos);
+    const size_t end = page.find("</script>", begin);
+    return json::parse(page.substr(begin + open.size(), end - begin - open.size()));
+  }
+};
+
+TEST_F(ViewTest, WritesOneSelfContainedPage) {
+  const fs::path page_path = dir_ / "scara.html";
+  Outcome r = Mdlc(fmt::format("view {} -o {}", kScara, page_path.string()));
+  if (r.status == 1 && r.err.find("without the viewer") != std::string::npos) {
+    GTEST_SKIP() << r.err;
+  }
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string page = Read(page_path);
+  EXPECT_TRUE(page.starts_with("<!DOCTYPE html>"));
+  // nothing is fetched when it is viewed
+  EXPECT_EQ(page.find("http://"), std::string::npos);
+  EXPECT_EQ(page.find("https://"), std::string::npos);
+  EXPECT_NE(page.find(R"(id="mdlc-three")"), std::string::npos);
+  const json model = PageModel(page);
+  ASSERT_EQ(model["bodies"].size(), 6u);  // world and five links
+  EXPECT_EQ(model["bodies"][0]["scoped_name"], "world");
+  EXPECT_EQ(model["num_positions"], 4);
+  bool found_shoulder = false;
+  for (const json& joint : model["joints"]) {
+    if (joint["name"] != "shoulder") continue;
+    found_shoulder = true;
+    EXPECT_EQ(joint["type"], "revolute");
+    EXPECT_EQ(joint["nq"], 1);
+    EXPECT_TRUE(joint["source"].get<std::string>().find("scara_arm.urdf:") != std::string::npos);
+  }
+  EXPECT_TRUE(found_shoulder);
+  for (const json& body : model["bodies"]) {
+    if (body["scoped_name"] == "world") continue;
+    EXPECT_TRUE(body["source"].get<std::string>().find("scara_arm.urdf:") != std::string::npos)
+        << body["scoped_name"];
+  }
+  EXPECT_GE(model["geometries"].size(), 5u);
+}
+
+TEST_F(ViewTest, NeedsAnOutputFile) {
+  EXPECT_EQ(Mdlc("view " + kScara).status, 2);
+}
+
+TEST_F(ViewTest, ABrokenModelWritesNoPage) {
+  const fs::path bad = Write("bad.urdf", "<robot name='r'><link name='a'/><joint/></robot>");
+  Outcome r = Mdlc(fmt::format("view {} -o {}", bad.string(), (dir_ / "bad.html").string()));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("error:"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "bad.html"));
+}

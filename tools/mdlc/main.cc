@@ -9,6 +9,7 @@
 //   mdlc stats FILE... [--json]     mass properties and counts
 //   mdlc graph FILE... [--kind kinematic|frames] [--format dot|json] [-o OUT(.dot|.svg|.png)]
 //   mdlc assets FILE... [--json]    every file the model uses, found or not
+//   mdlc view FILE... -o model.html   the model in 3D, in one offline HTML page
 //   mdlc check PATH... [-j N] [--format text|json|sarif] [--skip-ok REPORT.jsonl]
 //   mdlc --list-passes
 //
@@ -31,6 +32,7 @@
 #include "stats.h"
 #include "summary.h"
 #include "tree.h"
+#include "view.h"
 #include "verify_diagnostics.h"
 
 namespace {
@@ -352,6 +354,37 @@ int RunAssets(CliOptions cli) {
   return report.all_found && result.ok() ? 0 : 1;
 }
 
+/// `mdlc view`: the page needs a file to go to (it is too big for a
+/// terminal), and a build with the viewer.
+int RunView(CliOptions cli) {
+  if (!mdlc::tools::ViewerAvailable()) {
+    fmt::print(stderr, "mdlc: error: this mdlc was built without the viewer (three.js is "
+                       "embedded at build time and needs npm then); rebuild with npm installed\n");
+    return 1;
+  }
+  cli.emit = "none";
+  mdlc::Options options;
+  if (int status = PrepareOptions(cli, options)) return status;
+  const bool color = cli.color == "always" || (cli.color == "auto" && isatty(STDERR_FILENO));
+  options.on_diagnostic = [&](const mdlc::Diagnostic& d, const mdlc::SourceManager& s) {
+    fmt::print(stderr, "{}", mdlc::FormatDiagnosticText(d, s, color));
+  };
+  std::vector<mdlc::Input> inputs;
+  for (const std::string& file : cli.files) inputs.push_back(mdlc::Input::File(file));
+  const mdlc::Result& result = *new mdlc::Result(mdlc::Compile(inputs, options));  // see RunCompile
+  if (!result.ok()) {
+    fmt::print(stderr, "{} error{} generated.\n", result.error_count(),
+               result.error_count() == 1 ? "" : "s");
+    return 1;
+  }
+  std::string title;
+  for (const std::string& file : cli.files) {
+    if (!title.empty()) title += ", ";
+    title += file.substr(file.find_last_of('/') + 1);
+  }
+  return WriteOutput(cli, mdlc::tools::ViewPage(result, title));
+}
+
 int RunCheck(CliOptions cli) {
   cli.emit = "none";
   mdlc::tools::CheckOptions check;
@@ -470,6 +503,10 @@ int main(int argc, char** argv) {
   assets->add_flag("--json", cli.json_output, "Print JSON instead of text");
   assets->add_option("-o,--output", cli.output, "Write the output here instead of stdout");
 
+  CLI::App* view = app.add_subcommand("view", "Write the model as one offline HTML page to view in 3D");
+  AddCompileOptions(view, cli);
+  view->add_option("-o,--output", cli.output, "The page to write (model.html)")->required();
+
   CLI::App* check = app.add_subcommand("check", "Compile many models, each on its own, and report");
   AddCompileOptions(check, cli);
   check->add_option("-j,--jobs", cli.jobs, "Compile this many files at once (0: one per core)");
@@ -495,6 +532,7 @@ int main(int argc, char** argv) {
   if (graph->parsed()) return RunGraph(cli);
   if (assets->parsed()) return RunAssets(cli);
   if (check->parsed()) return RunCheck(cli);
+  if (view->parsed()) return RunView(cli);
   if (tree->parsed()) {
     return RunInspect(cli, mdlc::tools::FormatTree, mdlc::tools::FormatTreeJson);
   }

@@ -1,0 +1,273 @@
+#!/usr/bin/env python3
+"""view_test.py - `mdlc view` in a real browser (headless Chromium).
+
+    view_test.py MDLC MODEL [MODEL...]
+
+For each model: write the page, open it (file://, no network) and check
+- the page meets no error (uncaught exceptions, rejected promises,
+  console.error), and finishes building its scene;
+- a screenshot of it is not blank: the 3D view holds many colours;
+- its forward kinematics are the plant's: window.mdlcBodyPoses(q) equals
+  `mdlc compile --emit=plant-json --q JOINT=VALUE ...` X_WB to 1e-9 at
+  several q;
+- where the Python module mdlc is importable, the same at random q that set
+  every coordinate, multi-dof joints (ball, universal, planar, floating)
+  included, against Model.body_poses(q);
+- moving one joint's slider (a real input event) moves exactly the bodies
+  downstream of that joint, as the scene shows them.
+The page runs the checks itself when opened as page.html#selftest=JSON and
+writes the results into <pre id="mdlc-selftest">, which --dump-dom prints.
+
+Exit status 0: passed; 77: skipped (no Chromium, or an mdlc built without the
+viewer), with the reason on stdout; 1: failed.
+"""
+import html
+import json
+import math
+import os
+import random
+import re
+import shutil
+import struct
+import subprocess
+import sys
+import tempfile
+import urllib.parse
+import zlib
+
+TOLERANCE = 1e-9
+SKIP = 77
+
+
+def chromium():
+    for name in (os.environ.get("MDLC_CHROMIUM", ""), "chromium", "chromium-browser",
+                 "google-chrome"):
+        if name and shutil.which(name):
+            return shutil.which(name)
+    return None
+
+
+def run_browser(browser, url, *extra):
+    # --virtual-time-budget lets the page's asynchronous start-up (module
+    # imports) finish before the DOM is dumped or the screenshot taken;
+    # SwiftShader gives WebGL without a GPU
+    command = [browser, "--headless=new", "--no-sandbox", "--disable-gpu",
+               "--enable-unsafe-swiftshader", "--use-angle=swiftshader",
+               "--window-size=1200,800", "--virtual-time-budget=10000",
+               "--no-first-run", "--no-default-browser-check", *extra, url]
+    done = subprocess.run(command, capture_output=True, text=True, timeout=120)
+    return done.stdout
+
+
+def png_pixels(path):
+    """(width, height, rows of RGBA bytes) of an 8-bit RGB or RGBA PNG."""
+    data = open(path, "rb").read()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+    pos, idat = 8, b""
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            width, height, depth, color = struct.unpack(">IIBB", body[:10])
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + length
+    assert depth == 8 and color in (2, 6), f"unexpected PNG format {depth}/{color}"
+    channels = 4 if color == 6 else 3
+    raw = zlib.decompress(idat)
+    stride = width * channels
+    rows, previous = [], bytearray(stride)
+    for y in range(height):
+        line = raw[y * (stride + 1):(y + 1) * (stride + 1)]
+        kind, row = line[0], bytearray(line[1:])
+        for i in range(stride):  # undo the PNG row filter
+            a = row[i - channels] if i >= channels else 0
+            b = previous[i]
+            c = previous[i - channels] if i >= channels else 0
+            if kind == 1:
+                row[i] = (row[i] + a) & 255
+            elif kind == 2:
+                row[i] = (row[i] + b) & 255
+            elif kind == 3:
+                row[i] = (row[i] + (a + b) // 2) & 255
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                row[i] = (row[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(bytes(row))
+        previous = row
+    return width, height, channels, rows
+
+
+def rotation_of(quat):
+    w, x, y, z = quat
+    return [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
+            2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
+            2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]
+
+
+def embedded_model(page):
+    match = re.search(r'<script type="application/json" id="mdlc-model">(.*?)</script>', page, re.S)
+    return json.loads(match.group(1))
+
+
+class Failure(Exception):
+    pass
+
+
+def check(condition, message):
+    if not condition:
+        raise Failure(message)
+
+
+def test_model(mdlc, browser, model_path, work):
+    name = os.path.splitext(os.path.basename(model_path))[0]
+    page_path = os.path.join(work, name + ".html")
+    done = subprocess.run([mdlc, "view", model_path, "-o", page_path], capture_output=True, text=True)
+    if done.returncode != 0 and "without the viewer" in done.stderr:
+        print(f"skipped: {done.stderr.strip()}")
+        sys.exit(SKIP)
+    check(done.returncode == 0, f"mdlc view {model_path} failed: {done.stderr}")
+    page = open(page_path, encoding="utf-8").read()
+    model = embedded_model(page)
+    bodies, joints = model["bodies"], model["joints"]
+    movable = [j for j in (joints[i] for i in model["joint_order"]) if j["nq"] == 1]
+    # a joint whose first coordinate moves its child: a 1-dof one where there
+    # is one (a quaternion's w alone would not turn anything)
+    sliding = movable or [j for j in joints if j["nq"] > 0 and j["type"] != "quaternion_floating"]
+    check(sliding, f"{name}: no joint to move")
+
+    # q: the defaults, then each 1-dof joint set away from zero within its limits
+    def q_with(values):
+        q = [0.0] * model["num_positions"]
+        for joint in joints:
+            for k in range(joint["nq"]):
+                q[joint["q_start"] + k] = joint["default"][k] if k < len(joint["default"]) else 0.0
+        for joint in movable:
+            if joint["scoped_name"] in values:
+                q[joint["q_start"]] = values[joint["scoped_name"]]
+        return q
+
+    def inside(joint, x):
+        lo, hi = joint["lower"][0], joint["upper"][0]
+        lo = lo if lo is not None else -math.pi
+        hi = hi if hi is not None else math.pi
+        return lo + (hi - lo) * x
+
+    settings = [{}]
+    for fraction in (0.3, 0.8, 0.55):
+        settings.append({j["scoped_name"]: inside(j, (fraction + 0.17 * i) % 1)
+                         for i, j in enumerate(movable)})
+    qs = [q_with(setting) for setting in settings]
+
+    # the slider: the first movable joint with the most bodies below it
+    children = {}
+    for joint in joints:
+        children.setdefault(joint["parent"], []).append(joint["child"])
+
+    def downstream(body):
+        out = {body}
+        for child in children.get(body, []):
+            out |= downstream(child)
+        return out
+
+    slider = max(sliding, key=lambda j: len(downstream(j["child"])))
+    expected_moved = sorted(bodies[b]["scoped_name"] for b in downstream(slider["child"]))
+    slider_value = inside(slider, 0.9) if slider["nq"] == 1 else 0.7
+
+    # random q over every coordinate, for the Python module's body_poses
+    try:
+        import mdlc as mdlc_python
+    except ImportError:
+        mdlc_python = None
+    generator = random.Random(15)
+    random_qs = [[generator.uniform(-1.5, 1.5) for _ in range(model["num_positions"])]
+                 for _ in range(3)] if mdlc_python else []
+
+    request = {"qs": qs + random_qs, "slider": slider["scoped_name"], "value": slider_value}
+    url = "file://" + page_path + "#selftest=" + urllib.parse.quote(json.dumps(request))
+    dom = run_browser(browser, url, "--dump-dom")
+    errors = re.search(r'<pre id="mdlc-errors"[^>]*>(.*?)</pre>', dom, re.S)
+    check(not errors or not errors.group(1).strip(), f"{name}: the page reported errors: "
+          f"{errors.group(1) if errors else ''}")
+    # the last match: the viewer script's own text names the element too
+    matches = re.findall(r'<pre id="mdlc-selftest">([^<]*)</pre>', dom)
+    check(matches, f"{name}: the page did not finish its self-test (it never got to run?)")
+    try:
+        report = json.loads(html.unescape(matches[-1]))
+    except ValueError:
+        raise Failure(f"{name}: the self-test wrote no JSON: {matches[-1][:300]}")
+    check(report["errors"] == [], f"{name}: errors in the page: {report['errors']}")
+    check('data-ready="true"' in dom, f"{name}: the page did not finish building its scene")
+
+    # the page's poses against plant-json's, body by body
+    worst = 0.0
+    for setting, q, poses in zip(settings, qs, report["poses"]):
+        command = [mdlc, "compile", model_path, "--emit=plant-json"]
+        for key, value in setting.items():
+            command += ["--q", f"{key}={value!r}"]
+        plant = json.loads(subprocess.run(command, capture_output=True, text=True,
+                                          check=True).stdout)
+        check(len(plant["bodies"]) == len(bodies) - 1, f"{name}: body counts differ")
+        for b, expected in enumerate(plant["bodies"], start=1):
+            check(bodies[b]["name"] == expected["name"], f"{name}: body {b} is named differently")
+            R = rotation_of(expected["X_WB"]["q"])
+            got = poses[b]
+            error = max([abs(x - y) for x, y in zip(got["R"], R)] +
+                        [abs(x - y) for x, y in zip(got["p"], expected["X_WB"]["p"])])
+            worst = max(worst, error)
+            check(error <= TOLERANCE, f"{name}: body {bodies[b]['scoped_name']} at q={q}: "
+                  f"page {got} vs plant {expected['X_WB']} (error {error:g})")
+    if mdlc_python:
+        compiled = mdlc_python.compile(model_path)
+        for q, poses in zip(random_qs, report["poses"][len(qs):]):
+            for b, expected in enumerate(compiled.body_poses(q)):
+                R = [float(x) for row in expected.R for x in row]
+                error = max([abs(x - y) for x, y in zip(poses[b]["R"], R)] +
+                            [abs(x - float(y)) for x, y in zip(poses[b]["p"], expected.p)])
+                worst = max(worst, error)
+                check(error <= TOLERANCE, f"{name}: body {bodies[b]['scoped_name']} at random "
+                      f"q={q}: page {poses[b]} vs body_poses (error {error:g})")
+    check(sorted(report["moved"]) == expected_moved,
+          f"{name}: moving {slider['scoped_name']} moved {report['moved']}, expected {expected_moved}")
+
+    # a screenshot: the 3D view (right of the side panel) is not one colour
+    png = os.path.join(work, name + ".png")
+    run_browser(browser, "file://" + page_path, f"--screenshot={png}")
+    check(os.path.exists(png), f"{name}: no screenshot")
+    width, height, channels, rows = png_pixels(png)
+    colours = set()
+    for row in rows[::4]:
+        for x in range(400, width, 4):
+            colours.add(row[x * channels:x * channels + 3])
+    check(len(colours) >= 20, f"{name}: the 3D view looks blank ({len(colours)} colours)")
+
+    print(f"ok {name}: {len(bodies) - 1} bodies, {len(qs)} configurations against plant-json and "
+          f"{len(random_qs)} random ones against body_poses, worst pose error "
+          f"{worst:.1e}; slider {slider['scoped_name']} moved {len(report['moved'])} bodies; "
+          f"screenshot {width}x{height} with {len(colours)} colours in the 3D view")
+
+
+def main():
+    if len(sys.argv) < 3:
+        print(__doc__)
+        return 2
+    mdlc, models = sys.argv[1], sys.argv[2:]
+    browser = chromium()
+    if not browser:
+        print("skipped: no Chromium on the PATH (Debian: apt-get install chromium)")
+        return SKIP
+    failures = 0
+    with tempfile.TemporaryDirectory() as work:
+        for model in models:
+            try:
+                test_model(mdlc, browser, model, work)
+            except Failure as failure:
+                print(f"FAIL {failure}")
+                failures += 1
+    print(f"{len(models) - failures} passed, {failures} failed")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
