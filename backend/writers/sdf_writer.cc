@@ -410,7 +410,8 @@ class SdfWriter {
           f);
     }
     int n = 0;
-    for (const auto& [a, b] : scene_.collision_filters) {
+    for (const auto& pair : scene_.collision_filters) {
+      const BodyId a = pair.first, b = pair.second;  // named copies: lambdas capture them
       if (a.index() == 0 || b.index() == 0) {
         const BodyId other = a.index() == 0 ? b : a;
         diags_.Report(DiagKind::Lossy, BodyLoc(other),
