@@ -11,6 +11,8 @@
 #include <map>
 #include <tuple>
 
+#include "passes/mesh/ply_header.h"
+
 namespace mdlc::mesh {
 namespace {
 
@@ -47,6 +49,9 @@ MeshOrError LoadMesh(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
     return {nullptr, fmt::format("cannot read mesh file '{}'", path)};
+  }
+  if (auto problem = CheckPlyHeader(path)) {
+    return {nullptr, fmt::format("cannot read mesh file '{}': {}", path, *problem)};
   }
   Assimp::Importer importer;
   // assimp turns a Collada file's Z_UP into Y_UP by rotating the scene;

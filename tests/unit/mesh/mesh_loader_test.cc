@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+
 #include "passes/mesh/mass_properties.h"
 #include "tests/unit/mesh/mesh_test_util.h"
 
@@ -42,6 +45,23 @@ TEST(MeshLoaderTest, GarbageIsAnError) {  // BEYOND-001
   const mesh::MeshOrError m = mesh::LoadMesh(MeshPath("garbage.stl"));
   EXPECT_FALSE(m.ok());
   EXPECT_FALSE(m.error.empty());
+}
+
+// A malformed PLY header on which assimp's reader never returns (found by
+// fuzz_mesh: tests/fuzz/regressions/mesh/ply_header_hang, whose first byte
+// is the harness's file-type selector) is an error, not a hang.
+TEST(MeshLoaderTest, MalformedPlyHeaderIsAnErrorNotAHang) {  // BEYOND-001
+  std::ifstream in(std::string(MDLC_TEST_MODELS) + "/../fuzz/regressions/mesh/ply_header_hang",
+                   std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GT(bytes.size(), 1u);
+  const std::string path = ::testing::TempDir() + "mdlc_ply_header_hang.ply";
+  std::ofstream(path, std::ios::binary) << bytes.substr(1);
+  const mesh::MeshOrError m = mesh::LoadMesh(path);
+  EXPECT_FALSE(m.ok());
+  EXPECT_NE(m.error.find("gives no element count"), std::string::npos) << m.error;
+  // a well-formed PLY still loads
+  EXPECT_TRUE(mesh::LoadMesh(MeshPath("box.ply")).ok());
 }
 
 TEST(MeshLoaderTest, NoTrianglesIsAnError) {  // BEYOND-001
