@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "ir/load_report.h"
+
 namespace mdlc::frontend {
 
 std::optional<ModelId> ReadModelFile(const std::string& path, FrontendContext& ctx,
@@ -14,10 +16,10 @@ std::optional<ModelId> ReadModelFile(const std::string& path, FrontendContext& c
                                  path));
     return std::nullopt;
   }
-  std::string error;
+  LoadError error;
   auto file = ctx.sources.LoadFile(path, {}, &error);
   if (!file) {
-    ctx.diags.Report(DiagKind::FileNotFound, {}, fmt::format("cannot read '{}': {}", path, error));
+    ReportLoadError(ctx.diags, {}, error, fmt::format("cannot read '{}'", path));
     return std::nullopt;
   }
   return ReadModel(*file, *format, ctx);

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
-#include <sstream>
+
+#include <fmt/format.h>
 
 namespace mdlc {
 
@@ -12,6 +14,7 @@ struct SourceManager::Buffer {
   std::string path;
   std::string contents;
   Loc included_from;
+  uint32_t include_depth = 0;
   // offsets of the first byte of each line; built on first use
   mutable std::vector<size_t> line_starts;
   // the line of the last lookup: frontends ask in nearly increasing order
@@ -36,19 +39,45 @@ SourceManager::SourceManager() = default;
 SourceManager::~SourceManager() = default;
 
 std::optional<FileId> SourceManager::LoadFile(const std::string& path, Loc included_from,
-                                              std::string* error) {
+                                              LoadError* error) {
+  auto fail = [&](bool over_limit, std::string message) -> std::optional<FileId> {
+    if (error) *error = {over_limit, std::move(message)};
+    return std::nullopt;
+  };
+  const uint32_t depth = included_from.valid() ? IncludeDepth(included_from.file) + 1 : 0;
+  if (depth > limits_.include_depth) {
+    return fail(true, fmt::format("'{}' would be included {} files deep, over the include-depth "
+                                  "limit of {} (raise it with --limit include-depth=N)",
+                                  path, depth, limits_.include_depth));
+  }
+  // a FIFO or a device would be read forever; a folder is no model
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) return fail(false, std::strerror(ENOENT));
+  if (!std::filesystem::is_regular_file(status)) return fail(false, "not a regular file");
+  const uint64_t size = std::filesystem::file_size(path, ec);
+  if (ec) return fail(false, ec.message());
+  if (size > limits_.file_size) {
+    return fail(true, fmt::format("'{}' is {}, over the file-size limit of {} (raise it with "
+                                  "--limit file-size=BYTES)",
+                                  path, FormatBytes(size), FormatBytes(limits_.file_size)));
+  }
+  if (loaded_bytes_ + size > limits_.total_size) {
+    return fail(true, fmt::format("reading '{}' would bring the model files of this compile to "
+                                  "{}, over the total-size limit of {} (raise it with --limit "
+                                  "total-size=BYTES)",
+                                  path, FormatBytes(loaded_bytes_ + size),
+                                  FormatBytes(limits_.total_size)));
+  }
   std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    if (error) *error = std::strerror(errno);
-    return std::nullopt;
-  }
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) {
-    if (error) *error = "read error";
-    return std::nullopt;
-  }
-  return AddBuffer(path, std::move(ss).str(), included_from);
+  if (!in) return fail(false, std::strerror(errno));
+  std::string contents(size, '\0');
+  in.read(contents.data(), static_cast<std::streamsize>(size));
+  // the file may have changed since its size was taken: keep what was read
+  contents.resize(static_cast<size_t>(in.gcount()));
+  if (in.bad()) return fail(false, "read error");
+  loaded_bytes_ += contents.size();
+  return AddBuffer(path, std::move(contents), included_from);
 }
 
 FileId SourceManager::AddBuffer(std::string name, std::string contents, Loc included_from) {
@@ -56,6 +85,7 @@ FileId SourceManager::AddBuffer(std::string name, std::string contents, Loc incl
   buffer->path = std::move(name);
   buffer->contents = std::move(contents);
   buffer->included_from = included_from;
+  buffer->include_depth = included_from.valid() ? IncludeDepth(included_from.file) + 1 : 0;
   buffers_.push_back(std::move(buffer));
   return FileId{static_cast<uint32_t>(buffers_.size() - 1)};
 }
@@ -65,6 +95,7 @@ const SourceManager::Buffer& SourceManager::Get(FileId id) const { return *buffe
 std::string_view SourceManager::Contents(FileId id) const { return Get(id).contents; }
 const std::string& SourceManager::Path(FileId id) const { return Get(id).path; }
 Loc SourceManager::IncludedFrom(FileId id) const { return Get(id).included_from; }
+uint32_t SourceManager::IncludeDepth(FileId id) const { return Get(id).include_depth; }
 size_t SourceManager::FileCount() const { return buffers_.size(); }
 
 Loc SourceManager::LocForOffset(FileId id, size_t offset) const {

@@ -14,9 +14,17 @@
 #include <string_view>
 #include <vector>
 
+#include "ir/limits.h"
 #include "ir/location.h"
 
 namespace mdlc {
+
+/// Why LoadFile failed: the file could not be read, or it is over one of
+/// the input limits (ir/limits.h), which callers report as limit-exceeded.
+struct LoadError {
+  bool over_limit = false;
+  std::string message;
+};
 
 class SourceManager {
  public:
@@ -26,10 +34,17 @@ class SourceManager {
   SourceManager& operator=(const SourceManager&) = delete;
 
   /// Reads `path` into a new buffer. Returns nullopt (and fills `error`, if
-  /// given) when the file cannot be read. `included_from` records the include
-  /// site for "in file included from" notes.
+  /// given) when the file cannot be read, is not a regular file, or would
+  /// pass the file-size, total-size or include-depth limit. `included_from`
+  /// records the include site for "in file included from" notes.
   std::optional<FileId> LoadFile(const std::string& path, Loc included_from = {},
-                                 std::string* error = nullptr);
+                                 LoadError* error = nullptr);
+
+  /// The limits LoadFile holds files to, and the XML reader documents to.
+  const Limits& limits() const { return limits_; }
+  void set_limits(const Limits& limits) { limits_ = limits; }
+  /// How many files deep `id` is included: 0 for a file nothing included.
+  uint32_t IncludeDepth(FileId id) const;
 
   /// Adds an in-memory buffer under a display name.
   FileId AddBuffer(std::string name, std::string contents, Loc included_from = {});
@@ -50,6 +65,8 @@ class SourceManager {
   struct Buffer;
   const Buffer& Get(FileId id) const;
   std::vector<std::unique_ptr<Buffer>> buffers_;
+  Limits limits_;
+  uint64_t loaded_bytes_ = 0;  // by LoadFile, against limits_.total_size
 };
 
 }  // namespace mdlc

@@ -64,7 +64,7 @@ class LoadMeshesPass : public Pass {
       if (!reported.emplace(u.path, u.loc.file.value, u.loc.line, u.loc.column).second) {
         continue;
       }
-      ctx.diags.Report(DiagKind::BadMesh, u.loc, m.error);
+      ctx.diags.Report(m.over_limit ? DiagKind::LimitExceeded : DiagKind::BadMesh, u.loc, m.error);
     }
     return ctx.diags.error_count() == errors_before;
   }

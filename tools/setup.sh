@@ -4,7 +4,9 @@
 #   tools/setup.sh example   install what is missing, build the mdlc command only,
 #                            compile a bundled example
 #   tools/setup.sh test      install what is missing, build everything (libraries,
-#                            command, Python module, tests), run the whole test suite
+#                            command, Python module, tests), run the whole test suite,
+#                            then the sanitizer suite and each fuzzer for
+#                            FUZZ_SECONDS (default 60; tools/sanitize.sh)
 #
 # Installing needs root (apt-get); as another user the script prints the exact
 # apt-get line to run and stops. BUILD_DIR (default: build) and JOBS (default:
@@ -29,9 +31,11 @@ python_packages=(python3-dev python3-numpy pybind11-dev)
 # what its tests need besides: GoogleTest, Google Benchmark, and the reference
 # implementations the differential tests compare against, Graphviz to
 # check that `mdlc graph -o x.svg` renders, and Chromium to open the pages
-# `mdlc view` writes (test-only)
+# `mdlc view` writes, and clang with its sanitizer and libFuzzer runtimes for
+# the sanitizer suite and the fuzzers (test-only)
 test_packages=(libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
-               liburdfdom-dev libsdformat-dev libmujoco-dev graphviz chromium)
+               liburdfdom-dev libsdformat-dev libmujoco-dev graphviz chromium
+               clang libclang-rt-14-dev)
 
 packages=("${runtime_packages[@]}")
 if [ "$mode" = test ]; then
@@ -116,5 +120,11 @@ if [ "$mode" = example ]; then
 fi
 
 echo "==> running the test suite"
-cd "$build_dir"
-ctest --output-on-failure -j "$jobs" --timeout 600
+(cd "$build_dir" && ctest --output-on-failure -j "$jobs" --timeout 600)
+
+# the same tests again under AddressSanitizer and UBSan, in a build of their
+# own, then every fuzzer for a short fixed time; any report fails the run
+fuzz_seconds=${FUZZ_SECONDS:-60}
+BUILD_DIR="${SANITIZE_BUILD_DIR:-$build_dir-sanitize}" JOBS="$jobs" \
+  bash "$root/tools/sanitize.sh" "$fuzz_seconds"
+echo "==> passed: the test suite, the sanitizer suite and ${fuzz_seconds} s of each fuzzer"

@@ -10,6 +10,7 @@
 
 #include "frontend/xml/trim.h"
 #include "frontend/xml/xml_document.h"
+#include "ir/load_report.h"
 
 namespace mdlc::assets {
 namespace fs = std::filesystem;
@@ -43,10 +44,10 @@ bool PackageMap::Add(const std::string& name, const std::string& path, Diagnosti
 void PackageMap::AddFromManifest(const std::string& manifest, SourceManager& sources,
                                  DiagnosticEngine& diags) {
   // package.xml is read strictly (COMMON-014)
-  std::string error;
+  LoadError error;
   auto file = sources.LoadFile(manifest, {}, &error);
   if (!file) {
-    diags.Report(DiagKind::FileNotFound, {}, fmt::format("cannot read '{}': {}", manifest, error));
+    ReportLoadError(diags, {}, error, fmt::format("cannot read '{}'", manifest));
     return;
   }
   auto doc = xml::XmlDocument::Parse(*file, sources, diags);

@@ -20,6 +20,7 @@
 #include "frontend/frontend.h"
 #include "frontend/model_naming.h"
 #include "frontend/assets/package_map.h"
+#include "ir/load_report.h"
 #include "ir/scoped_name.h"
 
 namespace mdlc::frontend {
@@ -212,12 +213,9 @@ std::optional<std::string> DirectivesReader::ResolveFile(const LocatedString& fi
 }
 
 std::optional<FileId> DirectivesReader::Load(const std::string& path, Loc referenced_at) {
-  std::string error;
+  LoadError error;
   auto file = ctx_.sources.LoadFile(path, referenced_at, &error);
-  if (!file) {
-    diags().Report(DiagKind::FileNotFound, referenced_at,
-                   fmt::format("cannot read '{}': {}", path, error));
-  }
+  if (!file) ReportLoadError(diags(), referenced_at, error, fmt::format("cannot read '{}'", path));
   return file;
 }
 

@@ -14,6 +14,7 @@
 #include <unordered_set>
 
 #include "frontend/mjcf/mjcf_reader_detail.h"
+#include "ir/load_report.h"
 
 namespace mdlc::frontend::mjcf {
 namespace {
@@ -130,11 +131,11 @@ bool LoadIncludes(const xml::XmlElement& root, const std::string& main_dir, Fron
       continue;
     }
 
-    std::string error;
+    LoadError error;
     auto id = ctx.sources.LoadFile(path, file.loc, &error);
     if (!id) {
-      ctx.diags.Report(DiagKind::FileNotFound, file.loc,
-                       fmt::format("cannot read the included file '{}': {}", name, error));
+      ReportLoadError(ctx.diags, file.loc, error,
+                      fmt::format("cannot read the included file '{}'", name));
       continue;
     }
     std::shared_ptr<const xml::XmlDocument> doc =

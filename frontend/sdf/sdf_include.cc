@@ -17,6 +17,7 @@
 #include "frontend/assets/package_map.h"
 #include "frontend/sdf/sdf_reader_detail.h"
 #include "frontend/xml/trim.h"
+#include "ir/load_report.h"
 
 namespace mdlc::frontend::sdf {
 namespace {
@@ -49,9 +50,10 @@ std::optional<std::string> SdfReader::ModelFileInFolder(const std::string& dir, 
                                dir));
     return std::nullopt;
   }
-  auto file = ctx_.sources.LoadFile(config, loc);
+  LoadError error;
+  auto file = ctx_.sources.LoadFile(config, loc, &error);
   if (!file) {
-    diags().Report(DiagKind::FileNotFound, loc, fmt::format("cannot read '{}'", config));
+    ReportLoadError(diags(), loc, error, fmt::format("cannot read '{}'", config));
     return std::nullopt;
   }
   std::shared_ptr<const xml::XmlDocument> doc =
@@ -138,9 +140,10 @@ void SdfReader::ReadInclude(const xml::XmlElement& e, const SdfFile& file, Model
     overrides.placement_frame = {module().Intern(*pf), e.Child("placement_frame").GetLoc()};
   }
 
-  auto file_id = ctx_.sources.LoadFile(*path, uri_loc);
+  LoadError error;
+  auto file_id = ctx_.sources.LoadFile(*path, uri_loc, &error);
   if (!file_id) {
-    diags().Report(DiagKind::FileNotFound, uri_loc, fmt::format("cannot read '{}'", *path));
+    ReportLoadError(diags(), uri_loc, error, fmt::format("cannot read '{}'", *path));
     return;
   }
   if (EndsWith(*path, ".urdf")) {

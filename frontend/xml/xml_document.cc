@@ -4,6 +4,8 @@
 #include <libxml/tree.h>
 #include <libxml/xmlerror.h>
 
+#include <fmt/format.h>
+
 #include <array>
 #include <cstring>
 #include <mutex>
@@ -163,12 +165,15 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
   result->doc_ = doc;
   result->file_ = file;
   result->sources_ = &sources;
-  result->AssignOffsets();
+  if (!result->AssignOffsets(diags)) return nullptr;
   return result;
 }
 
-void XmlDocument::AssignOffsets() {
+bool XmlDocument::AssignOffsets(DiagnosticEngine& diags) {
   std::string_view text = sources_->Contents(file_);
+  const Limits& limits = sources_->limits();
+  uint64_t elements = 0;
+  uint64_t depth = 1;  // of `node`, the root element being 1 deep
   size_t pos = 0;
   // iterative pre-order walk over element nodes: document order
   xmlNode* node = xmlDocGetRootElement(doc_);
@@ -177,6 +182,17 @@ void XmlDocument::AssignOffsets() {
       pos = NextStartTag(text, pos, nullptr);
       if (pos == std::string_view::npos) break;  // defensive: keep unknown offsets
       SetOffset(node->_private, pos);
+      if (++elements > limits.elements || depth > limits.depth) {
+        const bool too_many = elements > limits.elements;
+        diags.Report(DiagKind::LimitExceeded, sources_->LocForOffset(file_, pos),
+                     too_many ? fmt::format("the document has more than {} elements, the elements "
+                                            "limit (raise it with --limit elements=N)",
+                                            limits.elements)
+                              : fmt::format("element nested {} deep, over the depth limit of {} "
+                                            "(raise it with --limit depth=N)",
+                                            depth, limits.depth));
+        return false;
+      }
       // the start tag: "<name attr='v' ...>"
       size_t i = pos + 1;
       while (i < text.size() && IsNameChar(text[i])) ++i;
@@ -202,20 +218,24 @@ void XmlDocument::AssignOffsets() {
       pos = i;
       if (node->children) {
         node = node->children;
+        ++depth;
         continue;
       }
     } else if (node->type != XML_ENTITY_REF_NODE && node->children &&
                node->type != XML_ATTRIBUTE_NODE) {
       node = node->children;
+      ++depth;
       continue;
     }
     // climb until a sibling exists
     while (node && !node->next) {
       node = node->parent;
+      --depth;
       if (node && node->type == XML_DOCUMENT_NODE) node = nullptr;
     }
     if (node) node = node->next;
   }
+  return true;
 }
 
 XmlElement XmlDocument::Root() const { return XmlElement(this, xmlDocGetRootElement(doc_)); }

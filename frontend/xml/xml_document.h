@@ -107,7 +107,10 @@ class XmlDocument {
 
  private:
   XmlDocument() = default;
-  void AssignOffsets();
+  /// Records each element's and attribute's offset, counting elements and
+  /// nesting depth on the way; reports the first element over the elements
+  /// or depth limit (sources.limits()) and returns false there.
+  bool AssignOffsets(DiagnosticEngine& diags);
 
   _xmlDoc* doc_ = nullptr;
   // joined prefixed names by (prefix, name) pointers, which libxml2 interns;

@@ -8,7 +8,8 @@
 
 namespace mdlc::mesh {
 
-MeshCache::MeshCache() : loader_(LoadMesh) {}
+MeshCache::MeshCache(const Limits& limits)
+    : loader_([limits](const std::string& path) { return LoadMesh(path, limits); }) {}
 
 std::shared_ptr<MeshCache::Entry> MeshCache::EntryFor(const std::string& path) {
   std::lock_guard lock(mutex_);

@@ -18,6 +18,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "ir/limits.h"
 #include "passes/mesh/triangle_mesh.h"
 
 namespace mdlc::mesh {
@@ -26,8 +27,8 @@ class MeshCache {
  public:
   using Loader = std::function<MeshOrError(const std::string& path)>;
 
-  /// A cache that reads files with LoadMesh (mesh_loader.h).
-  MeshCache();
+  /// A cache that reads files with LoadMesh (mesh_loader.h), within `limits`.
+  explicit MeshCache(const Limits& limits = {});
   /// A cache with another loader (tests).
   explicit MeshCache(Loader loader) : loader_(std::move(loader)) {}
   MeshCache(const MeshCache&) = delete;

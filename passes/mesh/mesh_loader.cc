@@ -45,10 +45,17 @@ void Collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent
 
 }  // namespace
 
-MeshOrError LoadMesh(const std::string& path) {
+MeshOrError LoadMesh(const std::string& path, const Limits& limits) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
     return {nullptr, fmt::format("cannot read mesh file '{}'", path)};
+  }
+  if (const uint64_t size = std::filesystem::file_size(path, ec); !ec && size > limits.file_size) {
+    return {nullptr,
+            fmt::format("mesh file '{}' is {}, over the file-size limit of {} (raise it with "
+                        "--limit file-size=BYTES)",
+                        path, FormatBytes(size), FormatBytes(limits.file_size)),
+            true};
   }
   if (auto problem = CheckPlyHeader(path)) {
     return {nullptr, fmt::format("cannot read mesh file '{}': {}", path, *problem)};
@@ -63,6 +70,15 @@ MeshOrError LoadMesh(const std::string& path) {
   if (!scene || !scene->mRootNode) {
     return {nullptr,
             fmt::format("cannot read mesh file '{}': {}", path, importer.GetErrorString())};
+  }
+  uint64_t vertices = 0;
+  for (unsigned i = 0; i < scene->mNumMeshes; ++i) vertices += scene->mMeshes[i]->mNumVertices;
+  if (vertices > limits.mesh_vertices) {
+    return {nullptr,
+            fmt::format("mesh file '{}' has {} vertices, over the mesh-vertices limit of {} "
+                        "(raise it with --limit mesh-vertices=N)",
+                        path, vertices, limits.mesh_vertices),
+            true};
   }
   auto mesh = std::make_shared<TriangleMesh>();
   std::map<std::tuple<double, double, double>, int> index;

@@ -11,12 +11,13 @@
 
 #include <string>
 
+#include "ir/limits.h"
 #include "passes/mesh/triangle_mesh.h"
 
 namespace mdlc::mesh {
 
-/// The mesh in `path`; an error when the file cannot be read or parsed, or
-/// holds no triangles.
-MeshOrError LoadMesh(const std::string& path);
+/// The mesh in `path`; an error when the file cannot be read or parsed,
+/// holds no triangles, or is over the file-size or mesh-vertices limit.
+MeshOrError LoadMesh(const std::string& path, const Limits& limits = {});
 
 }  // namespace mdlc::mesh

@@ -28,6 +28,7 @@ struct TriangleMesh {
 struct MeshOrError {
   std::shared_ptr<const TriangleMesh> mesh;
   std::string error;  // set when `mesh` is null
+  bool over_limit = false;  // the error is an input limit (ir/limits.h)
   bool ok() const { return mesh != nullptr; }
 };
 

@@ -252,6 +252,25 @@ TEST_F(CliTest, DeeplyNestedXmlDoesNotCrash) {
   EXPECT_EQ(r.status, 0) << r.err.substr(0, 500);
 }
 
+TEST_F(CliTest, LimitsAreSetOnTheCommandLine) {  // issue 16
+  std::string deep = "<robot name=\"r\"><link name=\"a\"/>";
+  for (int i = 0; i < 100; ++i) deep += "\n<x>";
+  for (int i = 0; i < 100; ++i) deep += "</x>";
+  deep += "</robot>";
+  const std::string path = Write("deep.urdf", deep).string();
+  Result r = Run("compile --emit=none --limit depth=50 " + path);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("deep.urdf:51:1: error: element nested 51 deep, over the depth limit of "
+                       "50 (raise it with --limit depth=N)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(Run("compile --emit=none --limit depth=101 " + path).status, 0);
+  r = Run("compile --limit depht=50 " + path);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("unknown limit 'depht'"), std::string::npos) << r.err;
+  EXPECT_EQ(Run("compile --limit depth=lots " + path).status, 2);
+}
+
 TEST_F(CliTest, ConstraintsCannotReachIntoAnotherModel) {  // EXT-052, COMMON-022
   fs::path first = Write("first.urdf", R"(<robot name="first"><link name="l"/></robot>)");
   fs::path second = Write("second.urdf", R"(<robot name="second" xmlns:drake="http://drake.mit.edu">

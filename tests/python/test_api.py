@@ -164,6 +164,21 @@ class Diagnostics(unittest.TestCase):
         with self.assertRaises(mdlc.CompileError):
             mdlc.compile(noisy, format="urdf", error_warnings=[group])
 
+    def test_limits_bound_the_input(self):  # issue 16
+        with self.assertRaises(mdlc.CompileError) as caught:
+            mdlc.compile(PENDULUM, name="p.urdf", limits={"depth": 2})
+        error = caught.exception.diagnostics[0]
+        self.assertEqual(error.severity, "error")
+        self.assertEqual(error.group, "limits")
+        self.assertIn("over the depth limit of 2", error.message)
+        self.assertEqual(error.line, PENDULUM.splitlines().index("  <link name=\"arm\">") + 2)
+        deep_enough = mdlc.compile(PENDULUM, name="p.urdf", limits={"depth": 5, "file_size": "1K"})
+        self.assertEqual(deep_enough.num_positions, 1)
+        with self.assertRaises(ValueError):
+            mdlc.compile(PENDULUM, name="p.urdf", limits={"dept": 4})
+        with self.assertRaises(ValueError):
+            mdlc.compile(PENDULUM, name="p.urdf", limits={"depth": "deep"})
+
     def test_missing_file_is_a_compile_error(self):
         with self.assertRaises(mdlc.CompileError) as caught:
             mdlc.compile("no/such/robot.urdf")

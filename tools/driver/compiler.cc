@@ -51,6 +51,7 @@ bool Compilation::RunPasses() {
     }
   }
   passes::PassContext ctx{module, diags, sources, packages};
+  ctx.meshes = std::make_shared<mesh::MeshCache>(sources.limits());
   const bool ok = pm.Run(ctx);
   if (options.instrumentation.time_passes) timing_report_ = pm.TimingReport();
   return ok && !diags.has_errors();

@@ -70,6 +70,7 @@ Result Compile(const std::vector<Input>& inputs, const Options& options) {
   c->options.instrumentation.time_passes = options.time_passes;
   c->options.instrumentation.verify_each = options.verify_each;
   c->options.skip_backend = options.skip_backend;
+  c->sources.set_limits(options.limits);
   DefinePackages(options, *c);
   if (c->Run()) CheckJointPositions(options, *c);
   return Result(std::move(c), options.joint_positions);

@@ -46,6 +46,7 @@ struct CliOptions {
   std::vector<std::string> warning_flags;  // -W<...>
   bool strict = false;
   size_t max_errors = 0;
+  std::vector<std::string> limits;  // --limit NAME=VALUE
   std::vector<std::string> print_after;
   bool print_after_all = false;
   bool time_passes = false;
@@ -157,6 +158,12 @@ int PrepareOptions(const CliOptions& cli, mdlc::Options& options) {
     return 2;
   }
   if (!ParseJointPositions(cli, options) || !ParsePackages(cli, options)) return 2;
+  for (const std::string& setting : cli.limits) {
+    if (auto problem = mdlc::SetLimit(options.limits, setting)) {
+      fmt::print(stderr, "mdlc: error: --limit: {}\n", *problem);
+      return 2;
+    }
+  }
   options.model_name = cli.model_name;
   options.auto_rename = cli.auto_rename;
   options.passes = cli.passes;
@@ -427,6 +434,10 @@ void AddCompileOptions(CLI::App* command, CliOptions& cli) {
   command->add_flag("--strict", cli.strict, "Warnings are errors (Drake's strict parsing)");
   command->add_option("--max-errors", cli.max_errors,
                       "Stop reporting after N errors (0: no limit)");
+  command->add_option("--limit", cli.limits,
+                      "Set an input limit NAME=VALUE: file-size, total-size, elements, depth, "
+                      "include-depth, mesh-vertices (see the README)")
+      ->allow_extra_args(false);
   command->add_option("--model-name", cli.model_name, "Name the model instance this");
   command->add_flag("--auto-rename", cli.auto_rename,
                     "Rename a model whose name is taken to NAME_1, NAME_2, ...");

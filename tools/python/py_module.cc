@@ -108,8 +108,12 @@ PYBIND11_MODULE(_mdlc, m) {
          const std::vector<std::string>& package_paths, bool use_ros_package_path, bool strict,
          const std::vector<std::string>& disabled_warnings,
          const std::vector<std::string>& error_warnings, std::optional<std::string> model_name,
-         bool auto_rename, const std::vector<std::pair<std::string, double>>& joint_positions) {
+         bool auto_rename, const std::vector<std::pair<std::string, double>>& joint_positions,
+         const std::vector<std::string>& limits) {
         Options options;
+        for (const std::string& setting : limits) {
+          if (auto problem = SetLimit(options.limits, setting)) throw py::value_error(*problem);
+        }
         options.packages = packages;
         options.package_paths = package_paths;
         options.use_ros_package_path = use_ros_package_path;
@@ -125,5 +129,5 @@ PYBIND11_MODULE(_mdlc, m) {
       py::arg("inputs"), py::arg("format"), py::arg("packages"), py::arg("package_paths"),
       py::arg("use_ros_package_path"), py::arg("strict"), py::arg("disabled_warnings"),
       py::arg("error_warnings"), py::arg("model_name"), py::arg("auto_rename"),
-      py::arg("joint_positions"));
+      py::arg("joint_positions"), py::arg("limits"));
 }

@@ -28,9 +28,10 @@ TEST(SourceManagerTest, ReturnsLineTextWithoutNewlineOrCarriageReturn) {
 
 TEST(SourceManagerTest, MissingFileReportsError) {
   SourceManager sm;
-  std::string error;
+  LoadError error;
   EXPECT_FALSE(sm.LoadFile("/nonexistent/definitely/not/here.urdf", {}, &error));
-  EXPECT_FALSE(error.empty());
+  EXPECT_FALSE(error.message.empty());
+  EXPECT_FALSE(error.over_limit);
 }
 
 TEST(SourceManagerTest, RecordsIncludeSite) {

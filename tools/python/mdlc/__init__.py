@@ -40,7 +40,8 @@ def _looks_like_text(source):
 
 def compile(source, format=None, *, name=None, packages=None, package_paths=(),
             use_ros_package_path=False, strict=False, disabled_warnings=(),
-            error_warnings=(), model_name=None, auto_rename=False, joint_positions=None):
+            error_warnings=(), model_name=None, auto_rename=False, joint_positions=None,
+            limits=None):
     """Compiles one model, or several into one plant, and returns a Model.
 
     source: a path (str or os.PathLike), model text (str with markup), or a
@@ -57,6 +58,8 @@ def compile(source, format=None, *, name=None, packages=None, package_paths=(),
         silenced / made errors.
     model_name, auto_rename: as --model-name and --auto-rename.
     joint_positions: {joint name: value} applied by default_positions().
+    limits: {limit name: value} as --limit NAME=VALUE, e.g. {"depth": 500,
+        "file_size": "64M"}; ValueError for an unknown name or a bad value.
 
     Raises CompileError (with every diagnostic) when the model has errors.
     """
@@ -74,7 +77,8 @@ def compile(source, format=None, *, name=None, packages=None, package_paths=(),
     model, diagnostics = _mdlc._compile(
         inputs, format, sorted((packages or {}).items()), [os.fspath(p) for p in package_paths],
         use_ros_package_path, strict, list(disabled_warnings), list(error_warnings), model_name,
-        auto_rename, list((joint_positions or {}).items()))
+        auto_rename, list((joint_positions or {}).items()),
+        [f"{k.replace('_', '-')}={v}" for k, v in (limits or {}).items()])
     if model is None:
         raise CompileError(diagnostics)
     return model

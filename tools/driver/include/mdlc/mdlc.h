@@ -27,6 +27,7 @@
 #include "backend/plant_json.h"
 #include "ir/diagnostics.h"
 #include "ir/format.h"
+#include "ir/limits.h"
 #include "ir/module.h"
 #include "ir/source_manager.h"
 #include "ir/transform.h"
@@ -95,6 +96,11 @@ struct Options {
   bool verify_each = false;
   /// Stop after the passes: the IR module only, no plant (`--emit=ir`).
   bool skip_backend = false;
+
+  // -- input limits
+  /// Bounds on file sizes, document size and depth, include depth and mesh
+  /// size (ir/limits.h; `--limit NAME=VALUE`). Over one is an error.
+  Limits limits;
 };
 
 /// What `mdlc convert` writes (Result::Convert).
