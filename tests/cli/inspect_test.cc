@@ -141,6 +141,27 @@ TEST_F(InspectTest, ExitCodes) {
             1);
 }
 
+// every compiling subcommand reports diagnostics the same way (one
+// CompileForCli): --diagnostics-format=json gives one JSON object per line
+// and no "N errors generated." line for a reader to skip
+TEST_F(InspectTest, EverySubcommandHonoursTheDiagnosticsFormat) {
+  const std::string bad = Write("bad.urdf", "<robot name='r'><link/></robot>").string();
+  for (const char* subcommand : {"tree", "stats", "graph", "compile"}) {
+    Outcome r = Mdlc(fmt::format("{} --diagnostics-format=json {}", subcommand, bad));
+    EXPECT_EQ(r.status, 1) << subcommand;
+    std::istringstream lines(r.err);
+    int n = 0;
+    for (std::string line; std::getline(lines, line); ++n) {
+      const json d = json::parse(line);
+      EXPECT_EQ(d["kind"], "missing-attribute") << subcommand;
+    }
+    EXPECT_EQ(n, 1) << subcommand << ": " << r.err;
+    Outcome text = Mdlc(fmt::format("{} {}", subcommand, bad));
+    EXPECT_NE(text.err.find("bad.urdf:1:17: error:"), std::string::npos) << text.err;
+    EXPECT_NE(text.err.find("1 error generated.\n"), std::string::npos) << text.err;
+  }
+}
+
 TEST_F(InspectTest, GraphDrawsOneEdgePerJoint) {
   Outcome dot = Mdlc("graph " + kScara);
   ASSERT_EQ(dot.status, 0) << dot.err;

@@ -1,0 +1,69 @@
+// check_command.cc - `mdlc check`: compile many models, each on its own, and
+// report a verdict per file (check.h does the work).
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <memory>
+#include <thread>
+
+#include "check.h"
+#include "cli_compile.h"
+#include "subcommands.h"
+
+namespace mdlc::cli {
+namespace {
+
+struct CheckFlags {
+  CompileFlags compile;
+  std::string output;
+  int jobs = 1;
+  std::string format = "text";
+  std::string skip_ok_from;
+};
+
+int Run(const CheckFlags& flags) {
+  tools::CheckOptions check;
+  if (int status = ToOptions(flags.compile, check.compile)) return status;
+  check.paths = flags.compile.files;
+  check.jobs = flags.jobs > 0 ? flags.jobs : static_cast<int>(std::thread::hardware_concurrency());
+  check.format = flags.format == "json"    ? tools::CheckFormat::JsonLines
+                 : flags.format == "sarif" ? tools::CheckFormat::Sarif
+                                           : tools::CheckFormat::Text;
+  check.skip_ok_from = flags.skip_ok_from;
+  check.progress = isatty(STDERR_FILENO) && !isatty(STDOUT_FILENO);
+  check.color = flags.compile.color == "always" ||
+                (flags.compile.color == "auto" && isatty(STDOUT_FILENO) && flags.output.empty());
+  std::FILE* out = stdout;
+  if (!flags.output.empty() && flags.output != "-") {
+    out = std::fopen(flags.output.c_str(), "wb");
+    if (!out) {
+      fmt::print(stderr, "mdlc: error: cannot write '{}'\n", flags.output);
+      return 1;
+    }
+  }
+  const int status = tools::RunCheck(check, [&](std::string_view text) {
+    std::fwrite(text.data(), 1, text.size(), out);
+    std::fflush(out);
+  });
+  if (out != stdout) std::fclose(out);
+  return status;
+}
+
+}  // namespace
+
+Subcommand AddCheckCommand(CLI::App& app) {
+  auto flags = std::make_shared<CheckFlags>();
+  CLI::App* check =
+      app.add_subcommand("check", "Compile many models, each on its own, and report");
+  AddCompileFlags(check, flags->compile);
+  check->add_option("-j,--jobs", flags->jobs, "Compile this many files at once (0: one per core)");
+  check->add_option("--format", flags->format, "text, json (JSON Lines) or sarif (2.1.0)")
+      ->check(CLI::IsMember({"text", "json", "sarif"}));
+  check->add_option("--skip-ok", flags->skip_ok_from,
+                    "Skip the files an earlier --format=json report lists as ok");
+  check->add_option("-o,--output", flags->output, "Write the report here instead of stdout");
+  return {check, [flags] { return Run(*flags); }};
+}
+
+}  // namespace mdlc::cli

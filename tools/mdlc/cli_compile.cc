@@ -1,0 +1,166 @@
+// cli_compile.cc - see cli_compile.h.
+#include "cli_compile.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+
+namespace mdlc::cli {
+namespace {
+
+// -Werror, -Werror=GROUP, -Wno-GROUP, -WGROUP (enable: the default)
+bool ApplyWarningFlags(const CompileFlags& flags, DiagnosticPolicy& policy, std::string* bad) {
+  policy.warnings_as_errors = flags.strict;
+  policy.max_errors = flags.max_errors;
+  for (const std::string& flag : flags.warning_flags) {
+    if (flag == "error") {
+      policy.warnings_as_errors = true;
+    } else if (flag.starts_with("error=")) {
+      policy.error_groups.insert(flag.substr(6));
+    } else if (flag.starts_with("no-")) {
+      policy.disabled_groups.insert(flag.substr(3));
+    } else if (flag.empty()) {
+      *bad = "-W needs a value";
+      return false;
+    }
+  }
+  return true;
+}
+
+// --package NAME=DIR, --package-path DIR, and ROS_PACKAGE_PATH
+bool ParsePackages(const CompileFlags& flags, Options& options) {
+  for (const std::string& definition : flags.packages) {
+    const size_t eq = definition.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      fmt::print(stderr, "mdlc: error: --package expects NAME=DIR, got '{}'\n", definition);
+      return false;
+    }
+    options.packages.emplace_back(definition.substr(0, eq), definition.substr(eq + 1));
+  }
+  options.package_paths = flags.package_paths;
+  options.use_ros_package_path = true;
+  return true;
+}
+
+// A compile's result is deliberately never freed: the process exits right
+// after, and tearing down a large model's DOM and IR would only cost time
+// (clang's -disable-free, for the same reason). It stays reachable from here,
+// so leak checkers do not count it.
+Result* volatile g_kept_result = nullptr;  // volatile: the store must stay
+Result& KeepUntilExit(Result result) {
+  auto* kept = new Result(std::move(result));
+  g_kept_result = kept;
+  return *kept;
+}
+
+}  // namespace
+
+void AddCompileFlags(CLI::App* command, CompileFlags& flags) {
+  command->add_option("files", flags.files, "Model files (.urdf, .sdf, .xml, .dmd.yaml)")
+      ->required();
+  command->add_option("--diagnostics-format", flags.diagnostics_format, "text or json")
+      ->check(CLI::IsMember({"text", "json"}));
+  command
+      ->add_option("-W", flags.warning_flags,
+                   "-Werror: warnings are errors; -Werror=GROUP; -Wno-GROUP silences a group")
+      ->allow_extra_args(false);
+  command->add_flag("--strict", flags.strict, "Warnings are errors (Drake's strict parsing)");
+  command->add_option("--max-errors", flags.max_errors,
+                      "Stop reporting after N errors (0: no limit)");
+  command->add_option("--limit", flags.limits,
+                      "Set an input limit NAME=VALUE: file-size, total-size, elements, depth, "
+                      "include-depth, mesh-vertices (see the README)")
+      ->allow_extra_args(false);
+  command->add_option("--model-name", flags.model_name, "Name the model instance this");
+  command->add_flag("--auto-rename", flags.auto_rename,
+                    "Rename a model whose name is taken to NAME_1, NAME_2, ...");
+  command->add_option("--package-path", flags.package_paths, "Search DIR for package.xml files")
+      ->allow_extra_args(false);
+  command->add_option("--package", flags.packages, "Define package NAME=DIR")
+      ->allow_extra_args(false);
+  command->add_option("--color", flags.color, "Color diagnostics: auto, always or never")
+      ->check(CLI::IsMember({"auto", "always", "never"}));
+}
+
+int ToOptions(const CompileFlags& flags, Options& options) {
+  std::string bad;
+  if (!ApplyWarningFlags(flags, options.diagnostics, &bad)) {
+    fmt::print(stderr, "mdlc: error: {}\n", bad);
+    return 2;
+  }
+  if (!ParsePackages(flags, options)) return 2;
+  for (const std::string& setting : flags.limits) {
+    if (auto problem = SetLimit(options.limits, setting)) {
+      fmt::print(stderr, "mdlc: error: --limit: {}\n", *problem);
+      return 2;
+    }
+  }
+  options.model_name = flags.model_name;
+  options.auto_rename = flags.auto_rename;
+  return 0;
+}
+
+CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup) {
+  Options options;
+  if (int status = ToOptions(flags, options)) return {status, nullptr};
+  if (setup.adjust) setup.adjust(options);
+
+  const bool json = flags.diagnostics_format == "json";
+  const bool color =
+      flags.color == "always" || (flags.color == "auto" && isatty(STDERR_FILENO) && !json);
+  switch (setup.diagnostics) {
+    case DiagnosticOutput::Stream:
+      options.on_diagnostic = [json, color](const Diagnostic& d, const SourceManager& s) {
+        if (json) {
+          fmt::print(stderr, "{}\n", FormatDiagnosticJson(d, s));
+        } else {
+          fmt::print(stderr, "{}", FormatDiagnosticText(d, s, color));
+        }
+      };
+      break;
+    case DiagnosticOutput::Collect:
+      options.on_diagnostic = [&setup](const Diagnostic& d, const SourceManager&) {
+        setup.collected->push_back(d);
+      };
+      break;
+    case DiagnosticOutput::ErrorsAfter:
+      break;  // the Result keeps them
+  }
+
+  std::vector<Input> inputs;
+  for (const std::string& file : flags.files) inputs.push_back(Input::File(file));
+  Result& result = KeepUntilExit(Compile(inputs, options));
+  if (setup.diagnostics == DiagnosticOutput::ErrorsAfter) {
+    for (const Diagnostic& d : result.diagnostics()) {
+      if (d.severity == Severity::Error) fmt::print(stderr, "{}", result.FormatText(d));
+    }
+  }
+  if (!result.ok() && !setup.keep_failed) return {ReportFailure(flags, result), &result};
+  return {0, &result};
+}
+
+int ReportFailure(const CompileFlags& flags, const Result& result) {
+  if (flags.diagnostics_format != "json") {
+    fmt::print(stderr, "{} error{} generated.\n", result.error_count(),
+               result.error_count() == 1 ? "" : "s");
+  }
+  return 1;
+}
+
+int WriteOutput(const std::string& output, const std::string& text) {
+  if (output.empty() || output == "-") {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    return 0;
+  }
+  std::ofstream out(output, std::ios::binary);
+  out << text;
+  if (!out) {
+    fmt::print(stderr, "mdlc: error: cannot write '{}'\n", output);
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace mdlc::cli

@@ -1,0 +1,74 @@
+// cli_compile.h - what every compiling subcommand of the command line shares:
+// the compile flags, turning them into Options, and CompileForCli, which
+// compiles the files, reports diagnostics on standard error and says
+// "N errors generated." when it failed.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mdlc/mdlc.h"
+
+namespace mdlc::cli {
+
+/// The flags of every subcommand that compiles (AddCompileFlags).
+struct CompileFlags {
+  std::vector<std::string> files;
+  std::string diagnostics_format = "text";
+  std::vector<std::string> warning_flags;  // -W<...>
+  bool strict = false;
+  size_t max_errors = 0;
+  std::vector<std::string> limits;  // --limit NAME=VALUE
+  std::optional<std::string> model_name;
+  bool auto_rename = false;
+  std::vector<std::string> package_paths;
+  std::vector<std::string> packages;
+  std::string color = "auto";
+};
+
+void AddCompileFlags(CLI::App* command, CompileFlags& flags);
+
+/// Sets `options` from the flags; 0, or the exit status of bad usage (2,
+/// reported).
+int ToOptions(const CompileFlags& flags, Options& options);
+
+/// Where a compile's diagnostics go.
+enum class DiagnosticOutput {
+  Stream,       // to standard error as each is reported (--diagnostics-format)
+  Collect,      // into CompileSetup::collected (--verify-diagnostics)
+  ErrorsAfter,  // kept in the Result; its errors printed after the compile
+};
+
+/// What a subcommand asks of CompileForCli beyond the flags.
+struct CompileSetup {
+  DiagnosticOutput diagnostics = DiagnosticOutput::Stream;
+  std::vector<Diagnostic>* collected = nullptr;
+  /// Hand back a failed compile instead of reporting it (the caller does).
+  bool keep_failed = false;
+  /// Called on the options after the flags set them.
+  std::function<void(Options&)> adjust;
+};
+
+/// The outcome: `status` 0 with `result` set, 1 when the compile failed
+/// (reported, unless keep_failed) or 2 on bad usage.
+struct CliCompile {
+  int status = 0;
+  Result* result = nullptr;
+};
+
+/// Compiles flags.files as one model. The Result lives until the process
+/// exits.
+CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup = {});
+
+/// "N errors generated." on standard error (not with JSON diagnostics, whose
+/// reader counts them); returns 1, the exit status of a failed compile.
+int ReportFailure(const CompileFlags& flags, const Result& result);
+
+/// Writes `text` to `output` (standard output when empty or '-'); 0, or 1
+/// (reported) when the file cannot be written.
+int WriteOutput(const std::string& output, const std::string& text);
+
+}  // namespace mdlc::cli
