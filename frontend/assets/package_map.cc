@@ -41,13 +41,14 @@ bool PackageMap::Add(const std::string& name, const std::string& path, Diagnosti
   return true;
 }
 
-void PackageMap::AddFromManifest(const std::string& manifest, SourceManager& sources,
+void PackageMap::AddFromManifest(const ManifestFile& manifest, SourceManager& sources,
                                  DiagnosticEngine& diags) {
   // package.xml is read strictly (COMMON-014)
+  // read by this compile, within its own limits (only the walk is shared)
   LoadError error;
-  auto file = sources.LoadFile(manifest, {}, &error);
+  auto file = sources.LoadFile(manifest.path, {}, &error);
   if (!file) {
-    ReportLoadError(diags, {}, error, fmt::format("cannot read '{}'", manifest));
+    ReportLoadError(diags, {}, error, fmt::format("cannot read '{}'", manifest.path));
     return;
   }
   auto doc = xml::XmlDocument::Parse(*file, sources, diags);
@@ -64,9 +65,7 @@ void PackageMap::AddFromManifest(const std::string& manifest, SourceManager& sou
   if (auto exp = root.Child("export")) {
     if (auto dep = exp.Child("deprecated")) deprecated = dep.Text();
   }
-  const std::string dir = fs::path(manifest).parent_path().string();
-  std::error_code ec;
-  const std::string normal = fs::weakly_canonical(dir, ec).string();
+  const std::string& normal = manifest.dir;
   auto it = packages_.find(text);
   if (it != packages_.end()) {
     if (it->second.path != normal) {
@@ -84,51 +83,23 @@ void PackageMap::AddFromManifest(const std::string& manifest, SourceManager& sou
 
 void PackageMap::PopulateFromFolder(const std::string& root, SourceManager& sources,
                                     DiagnosticEngine& diags) {
-  std::error_code ec;
-  if (!fs::is_directory(root, ec)) {
+  PopulateFromScan(ScanFolder(root), sources, diags);
+}
+
+void PackageMap::PopulateFromScan(const FolderScan& scan, SourceManager& sources,
+                                  DiagnosticEngine& diags) {
+  if (!scan.is_directory) {
     diags.Report(DiagKind::FileNotFound, {},
-                 fmt::format("package path '{}' is not a directory", root));
+                 fmt::format("package path '{}' is not a directory", scan.root));
     return;
   }
-  searched_.push_back(root);
-  // the recursive iterator keeps its own stack: no recursion per folder level
-  auto is_ignored = [](const fs::path& dir) {
-    std::error_code e;
-    return fs::exists(dir / "COLCON_IGNORE", e) || fs::exists(dir / "AMENT_IGNORE", e) ||
-           fs::exists(dir / "CATKIN_IGNORE", e);
-  };
-  if (is_ignored(root)) return;
-  if (fs::exists(fs::path(root) / "package.xml", ec)) {
-    AddFromManifest((fs::path(root) / "package.xml").string(), sources, diags);
-  }
-  // visit folders in sorted order, so "the first one found" is deterministic
-  std::vector<fs::path> dirs;
-  for (fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, ec),
-       end;
-       it != end; it.increment(ec)) {
-    if (ec) break;
-    if (!it->is_directory(ec) || it->is_symlink(ec)) continue;
-    if (is_ignored(it->path())) {
-      it.disable_recursion_pending();
-      continue;
-    }
-    dirs.push_back(it->path());
-  }
-  std::sort(dirs.begin(), dirs.end());
-  for (const fs::path& dir : dirs) {
-    if (fs::exists(dir / "package.xml", ec)) AddFromManifest((dir / "package.xml").string(), sources, diags);
-  }
+  searched_.push_back(scan.root);
+  for (const ManifestFile& manifest : scan.manifests) AddFromManifest(manifest, sources, diags);
 }
 
 void PackageMap::PopulateFromPathList(std::string_view paths, SourceManager& sources,
                                       DiagnosticEngine& diags) {
-  size_t start = 0;
-  while (start <= paths.size()) {
-    size_t end = paths.find(':', start);
-    if (end == std::string_view::npos) end = paths.size();
-    if (end > start) PopulateFromFolder(std::string(paths.substr(start, end - start)), sources, diags);
-    start = end + 1;
-  }
+  for (const std::string& root : SplitPathList(paths)) PopulateFromFolder(root, sources, diags);
 }
 
 const PackageMap::Package* PackageMap::Find(std::string_view name) const {

@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "frontend/assets/package_scan.h"
 #include "ir/diagnostics.h"
 #include "ir/source_manager.h"
 
@@ -41,6 +42,10 @@ class PackageMap {
   /// PopulateFromFolder for each entry of a colon-separated list.
   void PopulateFromPathList(std::string_view paths, SourceManager& sources,
                             DiagnosticEngine& diags);
+  /// PopulateFromFolder from a walk made before (ScanFolder, or one of a
+  /// PackageScan shared by many compiles): the same packages, diagnostics
+  /// and "searched" folders, without walking the folder again.
+  void PopulateFromScan(const FolderScan& scan, SourceManager& sources, DiagnosticEngine& diags);
 
   const Package* Find(std::string_view name) const;
   size_t size() const { return packages_.size(); }
@@ -49,7 +54,7 @@ class PackageMap {
   const std::vector<std::string>& searched() const { return searched_; }
 
  private:
-  void AddFromManifest(const std::string& manifest, SourceManager& sources,
+  void AddFromManifest(const ManifestFile& manifest, SourceManager& sources,
                        DiagnosticEngine& diags);
 
   std::map<std::string, Package, std::less<>> packages_;

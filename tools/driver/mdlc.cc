@@ -10,6 +10,7 @@
 #include "backend/mass_matrix.h"
 #include "backend/positions.h"
 #include "backend/writers/writer.h"
+#include "frontend/assets/package_scan.h"
 #include "tools/driver/compiler.h"
 
 namespace mdlc {
@@ -24,16 +25,27 @@ Input Input::Text(std::string text, std::string name, std::optional<Format> form
 
 namespace {
 
-void DefinePackages(const Options& options, Compilation& c) {
-  for (const auto& [name, dir] : options.packages) c.packages.Add(name, dir, c.diags);
-  for (const std::string& dir : options.package_paths) {
-    c.packages.PopulateFromFolder(dir, c.sources, c.diags);
-  }
+/// The folders a compile with `options` walks for packages, in order.
+std::vector<std::string> PackageFolders(const Options& options) {
+  std::vector<std::string> folders = options.package_paths;
   if (options.use_ros_package_path) {
     if (const char* ros = std::getenv("ROS_PACKAGE_PATH")) {
-      c.packages.PopulateFromPathList(ros, c.sources, c.diags);
+      for (std::string& dir : assets::SplitPathList(ros)) folders.push_back(std::move(dir));
     }
   }
+  return folders;
+}
+
+void DefinePackages(const Options& options, Compilation& c) {
+  for (const auto& [name, dir] : options.packages) c.packages.Add(name, dir, c.diags);
+  const std::vector<std::string> folders = PackageFolders(options);
+  if (options.package_scan && options.package_scan->roots() == folders) {
+    for (const assets::FolderScan& folder : options.package_scan->folders()) {
+      c.packages.PopulateFromScan(folder, c.sources, c.diags);
+    }
+    return;
+  }
+  for (const std::string& dir : folders) c.packages.PopulateFromFolder(dir, c.sources, c.diags);
 }
 
 void CheckJointPositions(const Options& options, Compilation& c) {
@@ -50,6 +62,10 @@ void CheckJointPositions(const Options& options, Compilation& c) {
 }
 
 }  // namespace
+
+std::shared_ptr<const assets::PackageScan> ScanPackages(const Options& options) {
+  return std::make_shared<const assets::PackageScan>(PackageFolders(options));
+}
 
 Result Compile(const std::vector<Input>& inputs, const Options& options) {
   auto c = std::make_unique<Compilation>(options.diagnostics);

@@ -77,8 +77,8 @@ std::string SarifResult(const Diagnostic& d, const SourceManager& sources,
   return w.Take();
 }
 
-void CheckOne(const CheckOptions& options, FileResult& r) {
-  const Result result = Compile(Input::File(r.path), options.compile);
+void CheckOne(const CheckOptions& options, const Options& compile, FileResult& r) {
+  const Result result = Compile(Input::File(r.path), compile);
   r.ok = result.ok();
   r.errors = result.error_count();
   r.warnings = result.warning_count();
@@ -188,13 +188,16 @@ int RunCheck(const CheckOptions& options, const std::function<void(std::string_v
     results[i].path = files[i];
     results[i].skipped = skip.count(files[i]) > 0;
   }
+  // every file has the same package path: walk its folders once, not per file
+  Options compile = options.compile;
+  if (!compile.package_scan) compile.package_scan = ScanPackages(compile);
   // workers take files in order; the report is written in file order
   std::mutex mutex;
   std::condition_variable ready;
   std::atomic<size_t> next{0};
   auto work = [&] {
     for (size_t i; (i = next++) < results.size();) {
-      if (!results[i].skipped) CheckOne(options, results[i]);
+      if (!results[i].skipped) CheckOne(options, compile, results[i]);
       std::lock_guard lock(mutex);
       results[i].done = true;
       ready.notify_all();

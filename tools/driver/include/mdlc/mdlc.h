@@ -36,6 +36,9 @@
 namespace mdlc {
 
 class Compilation;
+namespace assets {
+class PackageScan;
+}
 
 /// One model to compile: a file, or text held in memory.
 struct Input {
@@ -62,6 +65,11 @@ struct Options {
   /// Also search the folders of the ROS_PACKAGE_PATH environment variable
   /// (the command line does; a library reads the environment only if asked).
   bool use_ros_package_path = false;
+  /// The folders above, walked once before (ScanPackages) and shared by many
+  /// compiles, e.g. from several threads: the compile reads the packages
+  /// from it instead of walking the folders again. Used only when it was made
+  /// for the same folders; otherwise the folders are walked.
+  std::shared_ptr<const assets::PackageScan> package_scan;
 
   // -- diagnostics
   /// Strictness and warning groups: warnings_as_errors (`--strict`,
@@ -179,6 +187,11 @@ class Result {
   std::unique_ptr<Compilation> compilation_;
   std::vector<std::pair<std::string, double>> joint_positions_;
 };
+
+/// Walks the package folders of `options` (package_paths, then those of
+/// ROS_PACKAGE_PATH when use_ros_package_path) once, for
+/// Options::package_scan. The scan never changes: share it among threads.
+std::shared_ptr<const assets::PackageScan> ScanPackages(const Options& options);
 
 /// Compiles the inputs into one plant, as `mdlc compile` does. Never throws
 /// for a bad model: problems are diagnostics, and ok() is false.
