@@ -7,6 +7,8 @@
 
 #include <filesystem>
 #include <algorithm>
+#include <array>
+#include <set>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -133,6 +135,84 @@ TEST_F(InspectTest, StatsAreThePlantsMassProperties) {
   EXPECT_EQ(s["total"]["actuators"].get<int>(), static_cast<int>(p["actuators"].size()));
   Outcome text = Mdlc("stats " + kArm);
   EXPECT_NE(text.out.find("total: 6 bodies"), std::string::npos) << text.out;
+}
+
+/// An OBJ file's size counted here, without mdlc: distinct vertex
+/// positions, and the triangles its faces split into (n - 2 per n-gon).
+std::pair<size_t, size_t> ObjSize(const fs::path& obj) {
+  std::set<std::array<double, 3>> positions;
+  size_t triangles = 0;
+  std::ifstream in(obj);
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream words(line);
+    std::string tag;
+    words >> tag;
+    if (tag == "v") {
+      std::array<double, 3> p{};
+      words >> p[0] >> p[1] >> p[2];
+      positions.insert(p);
+    } else if (tag == "f") {
+      size_t corners = 0;
+      for (std::string corner; words >> corner;) ++corners;
+      triangles += corners - 2;
+    }
+  }
+  return {positions.size(), triangles};
+}
+
+TEST_F(InspectTest, StatsCountEachMeshsVerticesAndTriangles) {  // issue 15
+  const fs::path meshes = fs::path(MDLC_TEST_MODELS) / "meshes";
+  const fs::path robot = Write("r.urdf", fmt::format(R"(<robot name="r">
+  <link name="a">
+    <visual><geometry><mesh filename="{0}/lshape.obj" scale="2 2 2"/></geometry></visual>
+    <collision><geometry><mesh filename="{0}/box.obj"/></geometry></collision>
+  </link>
+  <link name="b">
+    <visual><geometry><mesh filename="{0}/lshape.obj"/></geometry></visual>
+    <visual><geometry><box size="1 1 1"/></geometry></visual>
+  </link>
+  <joint name="j" type="revolute"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/>
+    <limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+</robot>)",
+                                                     meshes.string()));
+  const auto [lshape_vertices, lshape_triangles] = ObjSize(meshes / "lshape.obj");
+  const auto [box_vertices, box_triangles] = ObjSize(meshes / "box.obj");
+  ASSERT_GT(lshape_triangles, 0u);
+
+  Outcome r = Mdlc("stats --json " + robot.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json s = json::parse(r.out);
+  ASSERT_EQ(s["meshes"].size(), 3u) << r.out;
+  size_t vertices = 0, triangles = 0;
+  for (const json& m : s["meshes"]) {
+    const bool lshape = m["file"].get<std::string>().ends_with("lshape.obj");
+    EXPECT_EQ(m["vertices"].get<size_t>(), lshape ? lshape_vertices : box_vertices) << m.dump();
+    EXPECT_EQ(m["triangles"].get<size_t>(), lshape ? lshape_triangles : box_triangles)
+        << m.dump();
+    vertices += m["vertices"].get<size_t>();
+    triangles += m["triangles"].get<size_t>();
+  }
+  const json& total = s["total"]["meshes"];
+  EXPECT_EQ(total["geometries"], 3);
+  EXPECT_EQ(total["files"], 2);
+  EXPECT_EQ(total["vertices"].get<size_t>(), 2 * lshape_vertices + box_vertices);
+  EXPECT_EQ(total["triangles"].get<size_t>(), 2 * lshape_triangles + box_triangles);
+  EXPECT_EQ(total["vertices"].get<size_t>(), vertices);
+  EXPECT_EQ(total["triangles"].get<size_t>(), triangles);
+  EXPECT_EQ(s["model_instances"][0]["meshes"], total);
+
+  Outcome text = Mdlc("stats " + robot.string());
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find(fmt::format("lshape.obj: {} vertices, {} triangles\n",
+                                      lshape_vertices, lshape_triangles)),
+            std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find(fmt::format("  meshes: 3 geometries of 2 files, {} vertices, {} "
+                                      "triangles\n",
+                                      2 * lshape_vertices + box_vertices,
+                                      2 * lshape_triangles + box_triangles)),
+            std::string::npos)
+      << text.out;
 }
 
 TEST_F(InspectTest, ExitCodes) {

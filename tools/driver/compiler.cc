@@ -50,8 +50,8 @@ bool Compilation::RunPasses() {
       pm.AddPass(std::move(pass));
     }
   }
-  passes::PassContext ctx{module, diags, sources, packages};
-  ctx.meshes = std::make_shared<mesh::MeshCache>(sources.limits());
+  meshes = std::make_shared<mesh::MeshCache>(sources.limits());  // read within the limits
+  passes::PassContext ctx{module, diags, sources, packages, meshes};
   const bool ok = pm.Run(ctx);
   if (options.instrumentation.time_passes) timing_report_ = pm.TimingReport();
   return ok && !diags.has_errors();

@@ -12,6 +12,7 @@
 // It is neither copyable nor movable, because those parts refer to each other.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -51,6 +52,9 @@ class Compilation {
   /// Packages for package:// and model:// URIs; fill before Run().
   assets::PackageMap packages;
   std::optional<backend::CompiledModel> model;
+  /// Mesh files read during the compile, each once (the passes fill it;
+  /// tools read it afterwards, e.g. Result::MeshSizes).
+  std::shared_ptr<mesh::MeshCache> meshes = std::make_shared<mesh::MeshCache>();
   /// Parsed source documents, released with the Compilation.
   frontend::RetainedDocuments documents;
 

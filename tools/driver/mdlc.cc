@@ -152,6 +152,23 @@ std::string Result::PlantJson(const Eigen::VectorXd& q,
 
 const std::string& Result::timing_report() const { return compilation_->timing_report(); }
 
+std::vector<MeshSize> Result::MeshSizes(const std::vector<std::string>& resolved_paths) const {
+  compilation_->meshes->Prefetch(resolved_paths);
+  std::vector<MeshSize> sizes;
+  sizes.reserve(resolved_paths.size());
+  for (const std::string& path : resolved_paths) {
+    const mesh::MeshOrError m = compilation_->meshes->Get(path);
+    MeshSize& size = sizes.emplace_back();
+    if (!m.ok()) {
+      size.error = m.error;
+      continue;
+    }
+    size.vertices = m.mesh->vertices.size();
+    size.triangles = m.mesh->triangles.size();
+  }
+  return sizes;
+}
+
 std::optional<std::string> Result::Convert(const ConvertOptions& options) {
   if (!has_model()) {
     throw std::logic_error("mdlc: nothing to convert; the compile did not make a model");

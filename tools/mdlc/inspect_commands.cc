@@ -10,7 +10,7 @@
 namespace mdlc::cli {
 namespace {
 
-using Formatter = std::string (*)(const backend::CompiledModel&);
+using Formatter = std::string (*)(const Result&);
 
 struct InspectFlags {
   CompileFlags compile;
@@ -28,16 +28,19 @@ Subcommand AddInspectCommand(CLI::App& app, const char* name, const char* descri
   return {command, [flags, text, json] {
             const CliCompile compiled = CompileForCli(flags->compile);
             if (compiled.status) return compiled.status;
-            const backend::CompiledModel& model = compiled.result->model();
-            return WriteOutput(flags->output, flags->json ? json(model) : text(model));
+            const Result& result = *compiled.result;
+            return WriteOutput(flags->output, flags->json ? json(result) : text(result));
           }};
 }
+
+std::string Tree(const Result& result) { return tools::FormatTree(result.model()); }
+std::string TreeJson(const Result& result) { return tools::FormatTreeJson(result.model()); }
 
 }  // namespace
 
 Subcommand AddTreeCommand(CLI::App& app) {
-  return AddInspectCommand(app, "tree", "Print each model instance's kinematic tree",
-                           tools::FormatTree, tools::FormatTreeJson);
+  return AddInspectCommand(app, "tree", "Print each model instance's kinematic tree", Tree,
+                           TreeJson);
 }
 
 Subcommand AddStatsCommand(CLI::App& app) {

@@ -5,6 +5,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <map>
+#include <set>
 #include <variant>
 
 #include "backend/json_writer.h"
@@ -32,6 +33,11 @@ struct Totals {
   Eigen::Vector3d first_moment = Eigen::Vector3d::Zero();  // sum m p_WBcm
   std::map<std::string, int> joints, geometries, shapes;
   int actuators = 0, constraints = 0, cameras = 0;
+  // mesh geometries, the distinct files they name, and their files' sizes
+  // summed over the geometries (a file drawn twice counts twice)
+  int meshes = 0, unreadable_meshes = 0;
+  std::set<std::string> mesh_files;
+  size_t vertices = 0, triangles = 0;
   Eigen::Vector3d com() const {
     return mass > 0 ? Eigen::Vector3d(first_moment / mass) : Eigen::Vector3d::Zero();
   }
@@ -39,11 +45,18 @@ struct Totals {
 
 std::string ShapeName(const ir::Shape& shape) { return std::string(ir::ShapeTypeName(shape)); }
 
+/// A mesh geometry and its file's size.
+struct MeshUse {
+  const backend::SceneGeometry* geometry;
+  const ir::Mesh* mesh;
+  MeshSize size;
+};
+
 class Stats {
  public:
-  explicit Stats(const backend::CompiledModel& model)
-      : model_(model),
-        plant_(model.plant),
+  explicit Stats(const Result& result)
+      : model_(result.model()),
+        plant_(model_.plant),
         X_WB_(backend::BodyPosesInWorld(plant_, backend::DefaultPositions(plant_))),
         per_instance_(plant_.model_instances.size()) {
     for (size_t b = 1; b < plant_.bodies.size(); ++b) {
@@ -59,7 +72,7 @@ class Stats {
         ++t->joints[std::string(ir::JointTypeName(j.type))];
       }
     }
-    for (const auto& g : model.scene.geometries) {
+    for (const auto& g : model_.scene.geometries) {
       for (Totals* t : {&per_instance_[g.model.index()], &total_}) {
         if (g.roles & ir::kProximityRole) ++t->geometries["proximity"];
         if (g.roles & ir::kIllustrationRole) ++t->geometries["illustration"];
@@ -75,10 +88,11 @@ class Stats {
       ++per_instance_[c.model.index()].constraints;
       ++total_.constraints;
     }
-    for (const auto& c : model.scene.cameras) {
+    for (const auto& c : model_.scene.cameras) {
       ++per_instance_[c.model.index()].cameras;
       ++total_.cameras;
     }
+    CountMeshes(result);
   }
 
   std::string Text() const {
@@ -92,6 +106,13 @@ class Stats {
           body.scoped_name, body.mass, body.p_BoBcm_B.x(), body.p_BoBcm_B.y(),
           body.p_BoBcm_B.z(), I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2),
           CouldBePhysical(body.mass, I) ? "" : "  (not physically valid)");
+    }
+    for (const MeshUse& use : meshes_) {
+      out += fmt::format("mesh {} on {}: {}: ", use.geometry->name, BodyName(*use.geometry),
+                         use.mesh->resolved);
+      out += use.size.ok() ? fmt::format("{} vertices, {} triangles\n", use.size.vertices,
+                                         use.size.triangles)
+                           : fmt::format("not readable ({})\n", use.size.error);
     }
     for (size_t m = 0; m < per_instance_.size(); ++m) {
       if (per_instance_[m].bodies == 0) continue;
@@ -122,6 +143,22 @@ class Stats {
       w.EndObject();
     }
     w.EndArray();
+    w.Key("meshes").BeginArray();
+    for (const MeshUse& use : meshes_) {
+      w.BeginObject(backend::JsonWriter::Layout::Compact);
+      w.Key("geometry").String(use.geometry->name);
+      w.Key("body").String(BodyName(*use.geometry));
+      w.Key("uri").String(use.mesh->uri);
+      w.Key("file").String(use.mesh->resolved);
+      if (use.size.ok()) {
+        w.Key("vertices").Int(static_cast<int64_t>(use.size.vertices));
+        w.Key("triangles").Int(static_cast<int64_t>(use.size.triangles));
+      } else {
+        w.Key("error").String(use.size.error);
+      }
+      w.EndObject();
+    }
+    w.EndArray();
     w.Key("model_instances").BeginArray();
     for (size_t m = 0; m < per_instance_.size(); ++m) {
       if (per_instance_[m].bodies == 0) continue;
@@ -135,6 +172,44 @@ class Stats {
   }
 
  private:
+  const std::string& BodyName(const backend::SceneGeometry& g) const {
+    return plant_.bodies[g.body.index()].scoped_name;
+  }
+
+  /// The size of every mesh geometry's file, read in parallel where the
+  /// compile did not read it already.
+  void CountMeshes(const Result& result) {
+    std::vector<std::string> paths;
+    for (const auto& g : model_.scene.geometries) {
+      if (const auto* mesh = std::get_if<ir::Mesh>(&g.shape)) {
+        meshes_.push_back({&g, mesh, {}});
+        paths.push_back(mesh->resolved);
+      }
+    }
+    const std::vector<MeshSize> sizes = result.MeshSizes(paths);
+    for (size_t i = 0; i < meshes_.size(); ++i) {
+      MeshUse& use = meshes_[i];
+      use.size = sizes[i];
+      for (Totals* t : {&per_instance_[use.geometry->model.index()], &total_}) {
+        ++t->meshes;
+        t->mesh_files.insert(use.mesh->resolved);
+        t->vertices += use.size.vertices;
+        t->triangles += use.size.triangles;
+        if (!use.size.ok()) ++t->unreadable_meshes;
+      }
+    }
+  }
+
+  static std::string MeshCounts(const Totals& t) {
+    if (t.meshes == 0) return "none";
+    return fmt::format("{} geometr{} of {} file{}, {} vertices, {} triangles{}", t.meshes,
+                       t.meshes == 1 ? "y" : "ies", t.mesh_files.size(),
+                       t.mesh_files.size() == 1 ? "" : "s", t.vertices, t.triangles,
+                       t.unreadable_meshes
+                           ? fmt::format(" ({} not readable)", t.unreadable_meshes)
+                           : "");
+  }
+
   static std::string Counts(const std::map<std::string, int>& counts) {
     std::string out;
     for (const auto& [name, n] : counts) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", n, name);
@@ -145,9 +220,9 @@ class Stats {
     const Eigen::Vector3d com = t.com();
     return fmt::format(
         "{}: {} bodies, mass {} kg, com in world [{} {} {}]\n  joints: {}\n  geometries: {} "
-        "(shapes: {})\n  actuators {}, constraints {}, cameras {}\n",
+        "(shapes: {})\n  meshes: {}\n  actuators {}, constraints {}, cameras {}\n",
         what, t.bodies, t.mass, com.x(), com.y(), com.z(), Counts(t.joints), Counts(t.geometries),
-        Counts(t.shapes), t.actuators, t.constraints, t.cameras);
+        Counts(t.shapes), MeshCounts(t), t.actuators, t.constraints, t.cameras);
   }
 
   static void JsonCounts(backend::JsonWriter& w, const std::map<std::string, int>& counts) {
@@ -171,6 +246,13 @@ class Stats {
     JsonCounts(w, t.geometries);
     w.Key("shapes");
     JsonCounts(w, t.shapes);
+    w.Key("meshes").BeginObject(backend::JsonWriter::Layout::Compact);
+    w.Key("geometries").Int(t.meshes);
+    w.Key("files").Int(static_cast<int64_t>(t.mesh_files.size()));
+    w.Key("vertices").Int(static_cast<int64_t>(t.vertices));
+    w.Key("triangles").Int(static_cast<int64_t>(t.triangles));
+    w.Key("not_readable").Int(t.unreadable_meshes);
+    w.EndObject();
     w.Key("actuators").Int(t.actuators);
     w.Key("constraints").Int(t.constraints);
     w.Key("cameras").Int(t.cameras);
@@ -182,11 +264,12 @@ class Stats {
   std::vector<Transform> X_WB_;
   std::vector<Totals> per_instance_;
   Totals total_;
+  std::vector<MeshUse> meshes_;
 };
 
 }  // namespace
 
-std::string FormatStats(const backend::CompiledModel& model) { return Stats(model).Text(); }
-std::string FormatStatsJson(const backend::CompiledModel& model) { return Stats(model).Json(); }
+std::string FormatStats(const Result& result) { return Stats(result).Text(); }
+std::string FormatStatsJson(const Result& result) { return Stats(result).Json(); }
 
 }  // namespace mdlc::tools

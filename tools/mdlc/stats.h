@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "backend/compiled_model.h"
+#include "mdlc/mdlc.h"
 
 namespace mdlc::tools {
 
@@ -13,8 +13,10 @@ namespace mdlc::tools {
 /// full precision, and whether they could be physical; per model instance
 /// and in total: mass, center of mass in the world at the default
 /// configuration, and counts of bodies, joints by type, geometries by role
-/// and shape, actuators, constraints and cameras.
-std::string FormatStats(const backend::CompiledModel& model);
-std::string FormatStatsJson(const backend::CompiledModel& model);
+/// and shape, actuators, constraints and cameras; per mesh geometry, its
+/// file's vertex and triangle counts, and per instance and in total their
+/// sums (Result::MeshSizes: the meshes the compile read, the rest read now).
+std::string FormatStats(const Result& result);
+std::string FormatStatsJson(const Result& result);
 
 }  // namespace mdlc::tools

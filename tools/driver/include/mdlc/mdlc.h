@@ -111,6 +111,16 @@ struct Options {
   Limits limits;
 };
 
+/// How big a mesh file is, as the compile's mesh reader sees it
+/// (Result::MeshSizes): vertices at the same position count once, polygons
+/// count as the triangles they are split into.
+struct MeshSize {
+  size_t vertices = 0;
+  size_t triangles = 0;
+  std::string error;  // set when the file could not be read as a mesh
+  bool ok() const { return error.empty(); }
+};
+
 /// What `mdlc convert` writes (Result::Convert).
 struct ConvertOptions {
   /// The target: urdf or mjcf (sdf is not written yet).
@@ -172,6 +182,11 @@ class Result {
 
   /// The --time-passes report (Options::time_passes).
   const std::string& timing_report() const;
+
+  /// The sizes of mesh files the model names (ir::Mesh::resolved paths),
+  /// from the meshes this compile read: a file the passes read is not read
+  /// again; the others are read now, in parallel.
+  std::vector<MeshSize> MeshSizes(const std::vector<std::string>& resolved_paths) const;
 
   /// The compiled model written as options.to (`mdlc convert`). What the
   /// target cannot hold is reported as -Wlossy warnings, added to
