@@ -8,6 +8,7 @@
 // (fit_to_mesh cleared), so running the pass again changes nothing.
 #include <fmt/format.h>
 
+#include "passes/mesh/cached_properties.h"
 #include "passes/mesh/mesh_fit.h"
 #include "passes/pass_registry.h"
 
@@ -31,8 +32,9 @@ class FitToMeshPass : public Pass {
       const mesh::MeshOrError loaded = ctx.meshes->Get(fit.mesh.resolved);
       if (!loaded.ok()) continue;  // load-meshes reported it
       std::string why;
-      auto props = mesh::MujocoMeshMassProperties(mesh::Scaled(*loaded.mesh, fit.mesh.scale),
-                                                  fit.mesh_inertia, &why);
+      auto props = mesh::CachedMujocoMeshMassProperties(ctx.derived_meshes.get(),
+                                                        fit.mesh.resolved, *loaded.mesh,
+                                                        fit.mesh.scale, fit.mesh_inertia, &why);
       std::optional<mesh::FittedPrimitive> fitted;
       if (props) fitted = mesh::FitPrimitive(*props, g.shape, fit.aabb, fit.fitscale, &why);
       if (!fitted) {

@@ -15,6 +15,7 @@
 // reported and left out.
 #include <fmt/format.h>
 
+#include "passes/mesh/cached_properties.h"
 #include "passes/mesh/convex_hull.h"
 #include "passes/mesh/mass_properties.h"
 #include "passes/pass_registry.h"
@@ -46,27 +47,21 @@ std::optional<mesh::MassProperties> InertiaFromCollisionsPass::MeshSolid(PassCon
   if (m.resolved.empty()) return std::nullopt;  // resolve-assets reported it
   const mesh::MeshOrError loaded = ctx.meshes->Get(m.resolved);
   if (!loaded.ok()) return std::nullopt;  // load-meshes reported it
-  const mesh::TriangleMesh scaled = mesh::Scaled(*loaded.mesh, m.scale);
-  if (!m.convex) {
-    const mesh::MeshTopology topo = mesh::AnalyzeTopology(scaled);
-    if (topo.closed && topo.consistently_oriented) {
-      mesh::MassProperties solid = mesh::SolidMassProperties(scaled);
-      if (solid.measure > 0) return solid;
-    }
+  const mesh::CollisionSolid solid = mesh::CachedCollisionSolid(
+      ctx.derived_meshes.get(), m.resolved, *loaded.mesh, m.scale, m.convex);
+  if (solid.used_hull && !m.convex) {
     ctx.diags.Report(DiagKind::MeshNotClosed, m.uri_loc.valid() ? m.uri_loc : g.loc,
                      fmt::format("mesh '{}' of collision '{}' is not a closed, outward-oriented "
                                  "surface; its convex hull is used for the mass properties",
                                  m.uri, ctx.module.Text(g.name)));
   }
-  std::string why;
-  auto hull = mesh::ConvexHull(scaled.vertices, &why);
-  if (!hull) {
+  if (!solid.mass) {
     ctx.diags.Report(DiagKind::BadMassProperties, g.loc,
                      fmt::format("collision '{}': mesh '{}' encloses no volume ({})",
-                                 ctx.module.Text(g.name), m.uri, why));
+                                 ctx.module.Text(g.name), m.uri, solid.error));
     return std::nullopt;
   }
-  return mesh::SolidMassProperties(*hull);
+  return solid.mass;
 }
 
 bool InertiaFromCollisionsPass::Run(PassContext& ctx) {

@@ -31,6 +31,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "passes/mesh/cached_properties.h"
 #include "passes/mesh/mass_properties.h"
 #include "passes/pass_registry.h"
 #include "passes/shape_mass.h"
@@ -86,8 +87,9 @@ std::optional<MassFromGeometryPass::Part> MassFromGeometryPass::PartOf(PassConte
     const mesh::MeshOrError loaded = ctx.meshes->Get(mesh->resolved);
     if (!loaded.ok()) return std::nullopt;  // load-meshes reported it
     std::string why;
-    auto props = mesh::MujocoMeshMassProperties(mesh::Scaled(*loaded.mesh, mesh->scale),
-                                                c.mesh_inertia, &why);
+    auto props = mesh::CachedMujocoMeshMassProperties(ctx.derived_meshes.get(), mesh->resolved,
+                                                      *loaded.mesh, mesh->scale, c.mesh_inertia,
+                                                      &why);
     if (!props) {
       ctx.diags
           .Report(DiagKind::BadMassProperties, g.loc,

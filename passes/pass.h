@@ -14,6 +14,7 @@
 #include "ir/module.h"
 #include "ir/source_manager.h"
 #include "ir/verifier.h"
+#include "passes/mesh/derived_cache.h"
 #include "passes/mesh/mesh_cache.h"
 
 namespace mdlc::passes {
@@ -28,6 +29,9 @@ struct PassContext {
   /// fit-to-mesh, mass-from-geometry and inertia-from-collisions read it).
   /// An embedder may share one cache between compiles of the same files.
   std::shared_ptr<mesh::MeshCache> meshes = std::make_shared<mesh::MeshCache>();
+  /// Derived mesh data kept on disk between compiles (hulls, mass
+  /// properties); null: computed every time.
+  std::shared_ptr<mesh::DerivedMeshCache> derived_meshes;
 };
 
 class Pass {

@@ -51,9 +51,18 @@ bool Compilation::RunPasses() {
     }
   }
   meshes = std::make_shared<mesh::MeshCache>(sources.limits());  // read within the limits
-  passes::PassContext ctx{module, diags, sources, packages, meshes};
+  passes::PassContext ctx{module, diags, sources, packages, meshes, derived_meshes};
   const bool ok = pm.Run(ctx);
-  if (options.instrumentation.time_passes) timing_report_ = pm.TimingReport();
+  if (options.instrumentation.time_passes) {
+    timing_report_ = pm.TimingReport();
+    if (derived_meshes) {
+      timing_report_ += fmt::format("  mesh cache: {} hits, {} misses ({})\n",
+                                    derived_meshes->hits(), derived_meshes->misses(),
+                                    derived_meshes->directory());
+    } else {
+      timing_report_ += "  mesh cache: off\n";
+    }
+  }
   return ok && !diags.has_errors();
 }
 

@@ -55,6 +55,8 @@ class Compilation {
   /// Mesh files read during the compile, each once (the passes fill it;
   /// tools read it afterwards, e.g. Result::MeshSizes).
   std::shared_ptr<mesh::MeshCache> meshes = std::make_shared<mesh::MeshCache>();
+  /// Derived mesh data on disk (CompileOptions::mesh_cache_dir); null: none.
+  std::shared_ptr<mesh::DerivedMeshCache> derived_meshes;
   /// Parsed source documents, released with the Compilation.
   frontend::RetainedDocuments documents;
 

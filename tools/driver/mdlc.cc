@@ -63,6 +63,8 @@ void CheckJointPositions(const Options& options, Compilation& c) {
 
 }  // namespace
 
+std::string DefaultMeshCacheDirectory() { return mesh::DerivedMeshCache::DefaultDirectory(); }
+
 std::shared_ptr<const assets::PackageScan> ScanPackages(const Options& options) {
   return std::make_shared<const assets::PackageScan>(PackageFolders(options));
 }
@@ -87,6 +89,9 @@ Result Compile(const std::vector<Input>& inputs, const Options& options) {
   c->options.instrumentation.verify_each = options.verify_each;
   c->options.skip_backend = options.skip_backend;
   c->sources.set_limits(options.limits);
+  if (!options.mesh_cache_dir.empty()) {
+    c->derived_meshes = std::make_shared<mesh::DerivedMeshCache>(options.mesh_cache_dir);
+  }
   DefinePackages(options, *c);
   if (c->Run()) CheckJointPositions(options, *c);
   return Result(std::move(c), options.joint_positions);

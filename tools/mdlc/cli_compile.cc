@@ -82,6 +82,10 @@ void AddCompileFlags(CLI::App* command, CompileFlags& flags) {
       ->allow_extra_args(false);
   command->add_option("--color", flags.color, "Color diagnostics: auto, always or never")
       ->check(CLI::IsMember({"auto", "always", "never"}));
+  command->add_option("--cache-dir", flags.cache_dir,
+                      "Keep derived mesh data here (default: $MDLC_CACHE_DIR, "
+                      "$XDG_CACHE_HOME/mdlc or ~/.cache/mdlc)");
+  command->add_flag("--no-cache", flags.no_cache, "Compute derived mesh data every time");
 }
 
 int ToOptions(const CompileFlags& flags, Options& options) {
@@ -99,6 +103,9 @@ int ToOptions(const CompileFlags& flags, Options& options) {
   }
   options.model_name = flags.model_name;
   options.auto_rename = flags.auto_rename;
+  if (!flags.no_cache) {
+    options.mesh_cache_dir = flags.cache_dir.empty() ? DefaultMeshCacheDirectory() : flags.cache_dir;
+  }
   return 0;
 }
 

@@ -27,6 +27,8 @@ struct CompileFlags {
   std::vector<std::string> package_paths;
   std::vector<std::string> packages;
   std::string color = "auto";
+  std::string cache_dir;  // empty: DefaultMeshCacheDirectory()
+  bool no_cache = false;
 };
 
 void AddCompileFlags(CLI::App* command, CompileFlags& flags);

@@ -109,7 +109,18 @@ struct Options {
   /// Bounds on file sizes, document size and depth, include depth and mesh
   /// size (ir/limits.h; `--limit NAME=VALUE`). Over one is an error.
   Limits limits;
+
+  // -- caching
+  /// Keep derived mesh data (convex hulls, mass properties) in this folder
+  /// between compiles, keyed by the mesh file's content and the options
+  /// (empty: no cache). The command line uses $MDLC_CACHE_DIR, else
+  /// $XDG_CACHE_HOME/mdlc, else ~/.cache/mdlc (`--cache-dir`, `--no-cache`).
+  std::string mesh_cache_dir;
 };
+
+/// The folder the command line keeps its mesh cache in by default (see
+/// Options::mesh_cache_dir); empty when no environment variable names one.
+std::string DefaultMeshCacheDirectory();
 
 /// How big a mesh file is, as the compile's mesh reader sees it
 /// (Result::MeshSizes): vertices at the same position count once, polygons

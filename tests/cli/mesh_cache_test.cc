@@ -1,0 +1,138 @@
+// The on-disk cache of derived mesh data (issue 16): a second compile of a
+// mesh-heavy model takes its mass properties from the cache (and
+// --time-passes says so), the results are the same bytes with and without
+// it, and damaged entries are ignored. Every command here names its cache
+// folder, inside the test's own folder.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+namespace {
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int status = -1;
+  std::string out, err;
+};
+
+class MeshCacheTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           fmt::format("mdlc_mesh_cache_{}_{}", ::getpid(),
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+    cache_ = dir_ / "cache";
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  static std::string Read(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  }
+  /// mdlc with `args`, its environment's MDLC_CACHE_DIR set to `env_cache`.
+  Outcome Mdlc(const std::string& args, const fs::path& env_cache) {
+    const fs::path out = dir_ / "out", err = dir_ / "err";
+    const int raw = std::system(fmt::format("MDLC_CACHE_DIR={} {} {} >{} 2>{} </dev/null",
+                                            env_cache.string(), MDLC_BINARY, args,
+                                            out.string(), err.string())
+                                    .c_str());
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), Read(out), Read(err)};
+  }
+  /// A compile of the mesh model to plant-json, timing its passes.
+  Outcome Compile(const std::string& cache_flags) {
+    return Mdlc(fmt::format("compile {} --emit=plant-json --time-passes {}", kModel, cache_flags),
+                dir_ / "unused");
+  }
+  /// (hits, misses) from the --time-passes report.
+  static std::pair<int, int> HitsAndMisses(const std::string& report) {
+    std::smatch m;
+    const std::regex line("mesh cache: ([0-9]+) hits, ([0-9]+) misses");
+    if (!std::regex_search(report, m, line)) {
+      ADD_FAILURE() << "no mesh cache line in:\n" << report;
+      return {-1, -1};
+    }
+    return {std::stoi(m[1]), std::stoi(m[2])};
+  }
+  size_t Entries() const {
+    size_t n = 0;
+    for (const auto& e : fs::directory_iterator(cache_)) n += e.is_regular_file();
+    return n;
+  }
+
+  // MJCF mesh geoms whose bodies' mass properties come from the meshes
+  const std::string kModel = std::string(MDLC_TEST_MODELS) + "/mjcf/oracle/mesh_geoms.xml";
+  fs::path dir_, cache_;
+};
+
+TEST_F(MeshCacheTest, ASecondCompileHitsTheCacheAndGivesTheSameBytes) {
+  const std::string flags = "--cache-dir " + cache_.string();
+  Outcome first = Compile(flags);
+  ASSERT_EQ(first.status, 0) << first.err;
+  const auto [first_hits, first_misses] = HitsAndMisses(first.err);
+  EXPECT_GT(first_misses, 0);
+  EXPECT_EQ(Entries(), static_cast<size_t>(first_misses));
+
+  Outcome second = Compile(flags);
+  ASSERT_EQ(second.status, 0) << second.err;
+  const auto [hits, misses] = HitsAndMisses(second.err);
+  EXPECT_EQ(misses, 0);
+  EXPECT_EQ(hits, first_hits + first_misses);
+  EXPECT_EQ(second.out, first.out);
+
+  Outcome uncached = Compile("--no-cache");
+  ASSERT_EQ(uncached.status, 0) << uncached.err;
+  EXPECT_NE(uncached.err.find("mesh cache: off"), std::string::npos) << uncached.err;
+  EXPECT_EQ(uncached.out, first.out);
+}
+
+TEST_F(MeshCacheTest, DamagedEntriesAreIgnoredAndRewritten) {
+  const std::string flags = "--cache-dir " + cache_.string();
+  Outcome first = Compile(flags);
+  ASSERT_EQ(first.status, 0) << first.err;
+  ASSERT_GE(Entries(), 2u);
+  // one entry cut short (a write that stopped), one with a changed byte,
+  // and a stray temporary file of a writer that died
+  int damaged = 0;
+  for (const auto& e : fs::directory_iterator(cache_)) {
+    std::string bytes = Read(e.path());
+    if (damaged == 0) {
+      bytes.resize(bytes.size() / 2);
+    } else if (damaged == 1) {
+      bytes[bytes.size() - 20] ^= 0x5a;
+    } else {
+      break;
+    }
+    std::ofstream(e.path(), std::ios::binary | std::ios::trunc) << bytes;
+    ++damaged;
+  }
+  std::ofstream(cache_ / ".partial.tmp") << "mdlc-derived";
+
+  Outcome again = Compile(flags);
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_EQ(again.out, first.out);
+  const auto [hits, misses] = HitsAndMisses(again.err);
+  EXPECT_EQ(misses, damaged);
+  // the damaged entries were computed again and replaced
+  Outcome repaired = Compile(flags);
+  EXPECT_EQ(HitsAndMisses(repaired.err).second, 0);
+  EXPECT_EQ(repaired.out, first.out);
+}
+
+TEST_F(MeshCacheTest, TheEnvironmentNamesTheDefaultFolder) {
+  Outcome r = Mdlc(fmt::format("compile {} --emit=none --time-passes", kModel), cache_);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("(" + cache_.string() + ")"), std::string::npos) << r.err;
+  EXPECT_GT(Entries(), 0u);
+}
+
+}  // namespace
