@@ -31,7 +31,7 @@ struct PassContext {
   std::shared_ptr<mesh::MeshCache> meshes = std::make_shared<mesh::MeshCache>();
   /// Derived mesh data kept on disk between compiles (hulls, mass
   /// properties); null: computed every time.
-  std::shared_ptr<mesh::DerivedMeshCache> derived_meshes;
+  std::shared_ptr<mesh::DerivedMeshCache> derived_meshes = nullptr;
 };
 
 class Pass {
