@@ -462,7 +462,7 @@ class SdfWriter {
   /// A bushing may name a link's own frame ("instance::link").
   void LinkFrameRefs() {
     for (size_t b = 1; b < plant_.bodies.size(); ++b) {
-      frame_refs_.emplace(plant_.bodies[b].scoped_name,
+      frame_refs_.emplace(plant_.ScopedName(plant_.bodies[b]),
                           FrameRef{body_scope_.at(b), link_names_[b]});
     }
   }
