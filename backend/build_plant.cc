@@ -30,7 +30,7 @@ class PlantBuilder {
       return std::nullopt;
     }
     for (const ir::ModelInstance& model : m_.models) {
-      plant_.model_instances.emplace_back(m_.Text(model.name));
+      plant_.model_instances.Add(std::string(m_.Text(model.local_name)), model.parent);
     }
     if (m_.gravity) plant_.gravity = *m_.gravity;
     if (m_.time_step) plant_.time_step = *m_.time_step;
@@ -87,7 +87,6 @@ class PlantBuilder {
       CheckEntityModel(src.model, src.loc);
       PlantBody& body = plant_.bodies.emplace_back();
       body.name = m_.Text(src.name);
-      body.scoped_name = src.is_world ? "world" : Scoped(src.model, src.name);
       body.model = src.model;
       body.is_world = src.is_world;
       body.surface_velocity_axis = src.surface_velocity_axis;
@@ -157,7 +156,6 @@ class PlantBuilder {
     CheckEntityModel(src.model, src.loc);
     PlantJoint& joint = plant_.joints.emplace_back();
     joint.name = m_.Text(src.name);
-    joint.scoped_name = Scoped(src.model, src.name);
     joint.model = src.model;
     joint.type = src.type;
     joint.parent = ResolveBody(src.parent, src.loc);
@@ -177,7 +175,8 @@ class PlantBuilder {
     const double norm = src.axis.norm();
     if (uses_axis && !(norm > 0 && std::isfinite(norm))) {
       diags_.Report(DiagKind::ZeroAxis, src.loc,
-                    fmt::format("joint '{}' has a zero or non-finite axis", joint.scoped_name));
+                    fmt::format("joint '{}' has a zero or non-finite axis",
+                                plant_.ScopedName(joint)));
       Fail();
     } else if (uses_axis) {
       joint.axis = src.axis / norm;
@@ -208,7 +207,7 @@ class PlantBuilder {
     if (values.size() != static_cast<size_t>(joint.nv)) {
       diags_.Report(DiagKind::BadLimits, loc,
                     fmt::format("joint '{}' has {} {} but {} degrees of freedom",
-                                joint.scoped_name, values.size(), what, joint.nv));
+                                plant_.ScopedName(joint), values.size(), what, joint.nv));
       Fail();
     }
     return values;
@@ -221,7 +220,7 @@ class PlantBuilder {
     if (!src.default_positions.empty()) {
       diags_.Report(DiagKind::BadValue, src.loc,
                     fmt::format("joint '{}' has {} default positions but {} positions",
-                                joint.scoped_name, src.default_positions.size(), joint.nq));
+                                plant_.ScopedName(joint), src.default_positions.size(), joint.nq));
       Fail();
     }
     std::vector<double> q(joint.nq, 0.0);

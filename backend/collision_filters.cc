@@ -43,12 +43,18 @@ class PairCollector {
 
   /// Orders each pair and the list by scoped body name; drops duplicates.
   std::vector<std::pair<BodyId, BodyId>> Finish(const Plant& plant) {
-    // rank of each body by scoped name, so the sort compares integers
-    std::vector<uint32_t> by_name(plant.bodies.size());
-    std::iota(by_name.begin(), by_name.end(), 0);
-    std::stable_sort(by_name.begin(), by_name.end(), [&](uint32_t a, uint32_t b) {
-      return plant.bodies[a].scoped_name < plant.bodies[b].scoped_name;
-    });
+    // rank of each body that can be in a pair (one with proximity geometry)
+    // by scoped name, so the sort compares integers; names are built for
+    // those bodies only, as the plant keeps them unscoped (issue 16)
+    std::vector<uint32_t> by_name;
+    std::vector<std::string> names(plant.bodies.size());
+    for (uint32_t b = 0; b < plant.bodies.size(); ++b) {
+      if (!has_proximity_[b]) continue;
+      by_name.push_back(b);
+      names[b] = plant.ScopedName(plant.bodies[b]);
+    }
+    std::stable_sort(by_name.begin(), by_name.end(),
+                     [&](uint32_t a, uint32_t b) { return names[a] < names[b]; });
     std::vector<uint32_t> rank(plant.bodies.size());
     for (uint32_t r = 0; r < by_name.size(); ++r) rank[by_name[r]] = r;
 

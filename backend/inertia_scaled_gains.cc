@@ -92,7 +92,7 @@ class ModelGains {
                     fmt::format("the joint-space inertia of model '{}' at qpos0 is singular "
                                 "(two joints move it alike, or a moving body has no mass): "
                                 "springdamper cannot be computed",
-                                m_.Text(m_[g_.model].name)));
+                                m_.ModelName(g_.model)));
       return false;
     }
     for (const auto& s : g_.spring_dampers) {

@@ -21,6 +21,7 @@
 #include <variant>
 #include <vector>
 
+#include "backend/model_instance_names.h"
 #include "ir/entities.h"
 #include "ir/ids.h"
 #include "ir/transform.h"
@@ -28,8 +29,7 @@
 namespace mdlc::backend {
 
 struct PlantBody {
-  std::string name;         // local name
-  std::string scoped_name;  // "instance::name"; just "world" for the world body
+  std::string name;  // local name; Plant::ScopedName gives "instance::name"
   ModelId model;
   double mass = 0;
   Eigen::Vector3d p_BoBcm_B = Eigen::Vector3d::Zero();  // center of mass in B
@@ -60,8 +60,7 @@ struct PlantFrame {
 /// gave none) and `default_positions` has `nq` (zero, or the identity
 /// quaternion [1, 0, 0, 0] for quaternion_floating, where the IR gave none).
 struct PlantJoint {
-  std::string name;
-  std::string scoped_name;
+  std::string name;  // local name; Plant::ScopedName gives "instance::name"
   ModelId model;
   ir::JointType type = ir::JointType::Weld;
   BodyId parent, child;
@@ -144,7 +143,7 @@ struct JointSpring {  // revolute_spring or prismatic_spring, by the joint's typ
 using ForceElement = std::variant<LinearBushingRpy, LinearSpringDamper, JointSpring>;
 
 struct Plant {
-  std::vector<std::string> model_instances;  // names, by ModelId
+  ModelInstanceNames model_instances;        // names, by ModelId
   std::vector<PlantBody> bodies;             // by BodyId; 0 is world
   std::vector<PlantFrame> frames;            // by FrameId
   std::vector<PlantJoint> joints;            // by JointId
@@ -165,6 +164,15 @@ struct Plant {
 
   const PlantBody& body(BodyId id) const { return bodies[id.index()]; }
   const PlantJoint& joint(JointId id) const { return joints[id.index()]; }
+
+  /// "instance::name" of a body ("world" for the world body) or a joint,
+  /// built on each call (O(nesting depth)): names are stored unscoped.
+  std::string ScopedName(const PlantBody& b) const {
+    return b.is_world ? std::string("world") : model_instances.Scoped(b.model, b.name);
+  }
+  std::string ScopedName(const PlantJoint& j) const {
+    return model_instances.Scoped(j.model, j.name);
+  }
 };
 
 }  // namespace mdlc::backend

@@ -97,11 +97,10 @@ class PlantJsonEmitter {
 
   // -- names
 
-  const std::string& Instance(ModelId model) const {
-    return plant_.model_instances[model.index()];
-  }
-  const std::string& BodyName(BodyId body) const { return plant_.body(body).scoped_name; }
-  const std::string& JointName(JointId joint) const { return plant_.joint(joint).scoped_name; }
+  // built as they are written: the plant keeps names unscoped (issue 16)
+  std::string Instance(ModelId model) const { return plant_.model_instances[model.index()]; }
+  std::string BodyName(BodyId body) const { return plant_.ScopedName(plant_.body(body)); }
+  std::string JointName(JointId joint) const { return plant_.ScopedName(plant_.joint(joint)); }
   void NameAndInstance(const std::string& name, ModelId model) {
     w_.Key("name").String(name);
     w_.Key("model_instance").String(Instance(model));

@@ -17,7 +17,10 @@ JointLookup FindJointByName(const Plant& plant, std::string_view name) {
     JointLookup found;
     for (size_t j = 0; j < plant.joints.size(); ++j) {
       const PlantJoint& joint = plant.joints[j];
-      if ((pass == 0 ? joint.scoped_name : joint.name) != name) continue;
+      if (pass == 0 ? !name.ends_with(joint.name) || plant.ScopedName(joint) != name
+                    : joint.name != name) {
+        continue;
+      }
       if (found.status == JointLookupStatus::Found) return {JointLookupStatus::Ambiguous, {}};
       found = {JointLookupStatus::Found, JointId(j)};
     }

@@ -18,19 +18,19 @@ bool LinkChildren(const ir::Module& module, Plant& plant, DiagnosticEngine& diag
     PlantBody& child = plant.bodies[joint.child.index()];
     if (joint.parent == joint.child) {
       diags.Report(DiagKind::SelfJoint, loc,
-                   fmt::format("joint '{}' connects body '{}' to itself", joint.scoped_name,
-                               child.scoped_name));
+                   fmt::format("joint '{}' connects body '{}' to itself", plant.ScopedName(joint),
+                               plant.ScopedName(child)));
       ok = false;
     } else if (child.is_world) {
       diags.Report(DiagKind::KinematicLoop, loc,
-                   fmt::format("joint '{}' has the world as its child", joint.scoped_name));
+                   fmt::format("joint '{}' has the world as its child", plant.ScopedName(joint)));
       ok = false;
     } else if (child.inbound_joint.valid()) {
       const JointId first = child.inbound_joint;
       diags.Report(DiagKind::MultipleParents, loc,
                    fmt::format("body '{}' is the child of joints '{}' and '{}'",
-                               child.scoped_name, plant.joint(first).scoped_name,
-                               joint.scoped_name))
+                               plant.ScopedName(child), plant.ScopedName(plant.joint(first)),
+                               plant.ScopedName(joint)))
           .Note(module.joints[first.index()].loc, "first joint declared here");
       ok = false;
     } else {
@@ -44,7 +44,7 @@ bool LinkChildren(const ir::Module& module, Plant& plant, DiagnosticEngine& diag
     diags.Report(DiagKind::VerifierFailure, module.bodies[b].loc,
                  fmt::format("body '{}' is not the child of any joint (internal: a floating "
                              "joint should have been added)",
-                             body.scoped_name));
+                             plant.ScopedName(body)));
     ok = false;
   }
   return ok;
@@ -83,7 +83,7 @@ bool AssignLevels(const ir::Module& module, Plant& plant, DiagnosticEngine& diag
   std::vector<JointId> joints;
   for (size_t b = 0; b < num_bodies; ++b) {
     if (reached[b]) continue;
-    names.push_back("'" + plant.bodies[b].scoped_name + "'");
+    names.push_back("'" + plant.ScopedName(plant.bodies[b]) + "'");
     joints.push_back(plant.bodies[b].inbound_joint);
   }
   constexpr size_t kMaxListed = 8;
@@ -96,7 +96,8 @@ bool AssignLevels(const ir::Module& module, Plant& plant, DiagnosticEngine& diag
                   names.size() > listed ? ", ..." : ""));
   for (size_t k = 0; k < listed; ++k) {
     diag.Note(module.joints[joints[k].index()].loc,
-              fmt::format("joint '{}' is part of the loop", plant.joint(joints[k]).scoped_name));
+              fmt::format("joint '{}' is part of the loop",
+                          plant.ScopedName(plant.joint(joints[k]))));
   }
   return false;
 }

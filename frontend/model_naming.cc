@@ -5,12 +5,7 @@
 namespace mdlc::frontend {
 
 std::optional<ModelId> FindModelInstance(const ir::Module& module, std::string_view name) {
-  Symbol s = module.symbols.Find(name);
-  if (s.empty()) return std::nullopt;
-  for (size_t i = 0; i < module.models.size(); ++i) {
-    if (module.models[i].name == s) return ModelId(i);
-  }
-  return std::nullopt;
+  return module.FindModel(name);
 }
 
 std::optional<ModelId> AddModelInstance(std::string_view requested, Loc loc,

@@ -8,7 +8,7 @@
 
 namespace mdlc::frontend {
 
-/// The model instance named exactly `name`, if any.
+/// The model instance whose full name is exactly `name`, if any.
 std::optional<ModelId> FindModelInstance(const ir::Module& module, std::string_view name);
 
 /// Adds a model instance named `requested` (or the caller's override), after

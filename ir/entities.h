@@ -47,11 +47,18 @@ struct MassAdjustments {
   std::optional<double> total_mass;  // compiler@settotalmass (> 0): scale all masses and inertias
 };
 
+/// A model instance's name is stored as its parent's plus its own local
+/// part, never spelled out in full, so that N nested instances cost O(N)
+/// memory (issue 16); Module::ModelName builds the full "a::b::c" on demand.
 struct ModelInstance {
-  Symbol name;
+  /// The name below `parent` ("c" of "a::b::c"); a top-level instance's whole
+  /// name, which may itself hold "::" (a Model Directives namespace)
+  Symbol local_name;
   Loc loc;
   SourceFormat format = SourceFormat::Internal;
   std::optional<MassAdjustments> mass_adjustments;  // MJCF only
+  /// The instance this one is nested in (SDFormat nested models); invalid at top level
+  ModelId parent;
 };
 
 /// Mass properties exactly as the file gave them: mass, the pose of the

@@ -1,10 +1,29 @@
 #include "ir/module.h"
 
+#include <algorithm>
+#include <vector>
+
 namespace mdlc::ir {
+namespace {
+
+uint64_t ChildKey(ModelId parent, Symbol local) {
+  return (uint64_t{parent.value} << 32) | local.value;
+}
+
+size_t CountSeparators(std::string_view name) {
+  size_t count = 0;
+  for (size_t pos = name.find("::"); pos != std::string_view::npos;
+       pos = name.find("::", pos + 2)) {
+    ++count;
+  }
+  return count;
+}
+
+}  // namespace
 
 Module::Module() {
-  models.push_back({Intern("WorldModelInstance"), {}, SourceFormat::Internal, {}});
-  models.push_back({Intern("DefaultModelInstance"), {}, SourceFormat::Internal, {}});
+  Add(ModelInstance{Intern("WorldModelInstance"), {}, SourceFormat::Internal, {}, {}});
+  Add(ModelInstance{Intern("DefaultModelInstance"), {}, SourceFormat::Internal, {}, {}});
   Body world;
   world.name = Intern("world");
   world.model = kWorldModel;
@@ -12,8 +31,103 @@ Module::Module() {
   bodies.push_back(world);
 }
 
+ModelId Module::Add(ModelInstance m) {
+  const ModelId id(models.size());
+  model_by_parent_.emplace(ChildKey(m.parent, m.local_name), id);
+  if (!m.parent.valid()) {
+    max_top_level_separators_ =
+        std::max(max_top_level_separators_, CountSeparators(Text(m.local_name)));
+  }
+  models.push_back(std::move(m));
+  return id;
+}
+
+void Module::RenameModel(ModelId model, ModelId parent, Symbol local) {
+  ModelInstance& m = models[model.index()];
+  if (auto it = model_by_parent_.find(ChildKey(m.parent, m.local_name));
+      it != model_by_parent_.end() && it->second == model) {
+    model_by_parent_.erase(it);
+  }
+  m.parent = parent;
+  m.local_name = local;
+  model_by_parent_.emplace(ChildKey(parent, local), model);
+  if (!parent.valid()) {
+    max_top_level_separators_ = std::max(max_top_level_separators_, CountSeparators(Text(local)));
+  }
+}
+
+void Module::RemoveLastModel() {
+  const ModelId last(models.size() - 1);
+  const ModelInstance& m = models.back();
+  if (auto it = model_by_parent_.find(ChildKey(m.parent, m.local_name));
+      it != model_by_parent_.end() && it->second == last) {
+    model_by_parent_.erase(it);
+  }
+  models.pop_back();
+}
+
+std::string Module::ModelName(ModelId model) const {
+  // the chain from the top-level ancestor down to `model`
+  std::vector<ModelId> chain;
+  size_t size = 0;
+  for (ModelId m = model; m.valid(); m = models[m.index()].parent) {
+    chain.push_back(m);
+    size += Text(models[m.index()].local_name).size() + 2;
+  }
+  std::string out;
+  out.reserve(size);
+  for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+    if (!out.empty()) out += "::";
+    out += Text(models[it->index()].local_name);
+  }
+  return out;
+}
+
+std::optional<ModelId> Module::FindChildModel(ModelId parent, Symbol local) const {
+  if (local.empty()) return std::nullopt;
+  auto it = model_by_parent_.find(ChildKey(parent, local));
+  if (it == model_by_parent_.end()) return std::nullopt;
+  return it->second;
+}
+
+std::optional<ModelId> Module::FindModel(std::string_view scoped, ModelId within) const {
+  if (scoped.empty()) return std::nullopt;
+  // walks `rest` ("b::c") down from `from`, one local name at a time
+  auto walk = [this](ModelId from, std::string_view rest) -> std::optional<ModelId> {
+    ModelId at = from;
+    while (!rest.empty()) {
+      const size_t sep = rest.find("::");
+      const std::string_view part = rest.substr(0, sep);
+      auto child = FindChildModel(at, symbols.Find(part));
+      if (!child) return std::nullopt;
+      at = *child;
+      rest = sep == std::string_view::npos ? std::string_view() : rest.substr(sep + 2);
+    }
+    return at;
+  };
+  if (within.valid()) {
+    if (auto found = walk(within, scoped)) return found;
+    // a top-level instance named "<within>::..." (a Model Directives
+    // namespace, or a test's hand-made module) is nested by its name
+    if (max_top_level_separators_ == 0) return std::nullopt;
+    return FindModel(ModelName(within) + "::" + std::string(scoped));
+  }
+  // a top-level name may itself hold "::": try each first component that long
+  size_t end = 0;
+  for (size_t separators = 0; separators <= max_top_level_separators_; ++separators) {
+    end = scoped.find("::", separators == 0 ? 0 : end + 2);
+    const std::string_view first = scoped.substr(0, end);
+    if (auto top = FindChildModel(ModelId(), symbols.Find(first))) {
+      if (end == std::string_view::npos) return top;
+      if (auto found = walk(*top, scoped.substr(end + 2))) return found;
+    }
+    if (end == std::string_view::npos) break;
+  }
+  return std::nullopt;
+}
+
 std::string Module::ScopedName(ModelId model, Symbol local) const {
-  std::string out(Text(models[model.index()].name));
+  std::string out = ModelName(model);
   out += "::";
   out += Text(local);
   return out;

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "ir/entities.h"
@@ -67,7 +68,7 @@ struct Module {
   const Actuator& operator[](ActuatorId id) const { return actuators[id.index()]; }
 
   // adding entities returns their id
-  ModelId Add(ModelInstance m) { models.push_back(std::move(m)); return ModelId(models.size() - 1); }
+  ModelId Add(ModelInstance m);
   BodyId Add(Body b) { bodies.push_back(std::move(b)); return BodyId(bodies.size() - 1); }
   FrameId Add(Frame f) { frames.push_back(std::move(f)); return FrameId(frames.size() - 1); }
   JointId Add(Joint j) { joints.push_back(std::move(j)); return JointId(joints.size() - 1); }
@@ -86,6 +87,30 @@ struct Module {
   std::string ScopedName(ModelId model, Symbol local) const;
   std::string ScopedName(BodyId body) const;
   std::string ScopedName(JointId joint) const;
+
+  /// The full name of a model instance: its ancestors' local names and its
+  /// own, joined by "::". Built on each call (O(depth)): for printing.
+  std::string ModelName(ModelId model) const;
+  /// The model instance whose full name is `scoped` ("a::b::c"); with
+  /// `within`, the one named `scoped` relative to it ("<within>::a::b::c").
+  /// Walks nested instances by local name, so its cost grows with the
+  /// length of `scoped`, not with the depth of `within` or the module's size
+  /// (unless a top-level name holds "::" and the walk fails: then the full
+  /// name is looked up too).
+  std::optional<ModelId> FindModel(std::string_view scoped, ModelId within = ModelId()) const;
+  /// The instance nested directly in `parent` (invalid: the top level) as `local`.
+  std::optional<ModelId> FindChildModel(ModelId parent, Symbol local) const;
+  /// Renames model instance `model` to `local` below `parent` (invalid: top level).
+  void RenameModel(ModelId model, ModelId parent, Symbol local);
+  /// Removes the last model instance added (nothing may refer to it any more).
+  void RemoveLastModel();
+
+ private:
+  // (parent, local name) -> the first instance added so; kept by Add
+  std::unordered_map<uint64_t, ModelId> model_by_parent_;
+  // the most "::" in a top-level instance's local name: FindModel tries that
+  // many longer first components before walking down
+  size_t max_top_level_separators_ = 0;
 };
 
 }  // namespace mdlc::ir

@@ -49,7 +49,7 @@ class Printer {
   }
   std::string Name(Symbol s) const { return fmt::format("\"{}\"", m_.Text(s)); }
   std::string Model(ModelId id) const {
-    return id.valid() && id.index() < m_.models.size() ? std::string(m_.Text(m_[id].name))
+    return id.valid() && id.index() < m_.models.size() ? m_.ModelName(id)
                                                        : "<invalid>";
   }
   template <typename IdT>
@@ -206,7 +206,8 @@ void Printer::PrintFrameGraph() {
 std::string Printer::Run() {
   out_ += "module {\n";
   for (size_t i = 0; i < m_.models.size(); ++i) {
-    out_ += fmt::format("  model #{} {}{}\n", i, Name(m_.models[i].name), Where(m_.models[i].loc));
+    out_ += fmt::format("  model #{} \"{}\"{}\n", i, m_.ModelName(ModelId(i)),
+                        Where(m_.models[i].loc));
   }
   for (size_t i = 0; i < m_.bodies.size(); ++i) {
     const Body& b = m_.bodies[i];

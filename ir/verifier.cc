@@ -172,7 +172,7 @@ class Verifier {
       for (uint64_t scope : scopes_of(e)) {
         if (!seen.insert({scope, e.name.value}).second) {
           Fail(e.loc, fmt::format("two {} entities are named '{}' in model instance '{}'", what,
-                                  m_.Text(e.name), m_.Text(m_.models[e.model.index()].name)));
+                                  m_.Text(e.name), m_.ModelName(e.model)));
           break;
         }
       }

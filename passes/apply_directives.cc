@@ -99,10 +99,11 @@ std::optional<ModelId> ApplyDirectivesPass::LookupModel(PassContext& ctx, std::s
       model ? fmt::format("{}: model instance '{}' is only added by a later directive", user, name)
             : fmt::format("{}: no model instance named '{}'", user, name));
   if (!model) {
-    std::vector<std::string_view> names;
+    std::vector<std::string> full_names;
     for (uint32_t i = 0; i < visible_models && i < m.models.size(); ++i) {
-      names.push_back(m.Text(m.models[i].name));
+      full_names.push_back(m.ModelName(ModelId(i)));
     }
+    const std::vector<std::string_view> names(full_names.begin(), full_names.end());
     if (auto best = ClosestName(name, names)) diag.Note(loc, fmt::format("did you mean '{}'?", *best));
   }
   return std::nullopt;
@@ -183,7 +184,7 @@ void ApplyDirectivesPass::Apply(PassContext& ctx, const ir::AddFrameEdit& e, uin
     ctx.diags
         .Report(DiagKind::DuplicateName, e.name_loc,
                 fmt::format("model instance '{}' already has a frame named '{}'",
-                            m.Text(m[model].name), m.Text(e.name)))
+                            m.ModelName(model), m.Text(e.name)))
         .Note(frames_[it->second].loc, "the existing frame is defined here");
     return;
   }
@@ -210,7 +211,7 @@ void ApplyDirectivesPass::Apply(PassContext& ctx, const ir::AddWeldEdit& e, uint
     ctx.diags
         .Report(DiagKind::DuplicateName, e.loc,
                 fmt::format("model instance '{}' already has a joint named '{}'",
-                            m.Text(m[child->model].name), m.Text(name)))
+                            m.ModelName(child->model), m.Text(name)))
         .Note(m[*existing].loc, "the existing joint is defined here");
     return;
   }
@@ -237,7 +238,7 @@ void ApplyDirectivesPass::Apply(PassContext& ctx, const ir::DefaultJointPosition
     auto diag = ctx.diags.Report(
         DiagKind::UnknownReference, e.loc,
         fmt::format("default_joint_positions: model instance '{}' has no joint named '{}'",
-                    m.Text(m[e.model].name), m.Text(e.joint)));
+                    m.ModelName(e.model), m.Text(e.joint)));
     std::vector<std::string_view> names;
     for (const ir::Joint& j : m.joints) {
       if (j.model == e.model) names.push_back(m.Text(j.name));
@@ -264,7 +265,7 @@ void ApplyDirectivesPass::Apply(PassContext& ctx, const ir::DefaultJointPosition
 void ApplyDirectivesPass::Apply(PassContext& ctx, const ir::DefaultFreeBodyPoseEdit& e,
                                 uint32_t visible) {
   ir::Module& m = ctx.module;
-  const std::string model_name(m.Text(m[e.model].name));
+  const std::string model_name(m.ModelName(e.model));
   // the frame to pose: an unscoped name in the added model, or "" for its
   // only body (DMD-012)
   std::optional<SceneFrame> child;

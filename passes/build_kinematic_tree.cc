@@ -29,6 +29,13 @@ class BuildKinematicTreePass : public Pass {
  private:
   void ReportLoop(PassContext& ctx, const std::vector<JointId>& inboard, size_t start);
   void AddFloatingJoint(PassContext& ctx, BodyId body);
+
+  static uint64_t Key(ModelId model, Symbol name) {
+    return (uint64_t{model.value} << 32) | name.value;
+  }
+  // every joint's (model, name): a free body's joint name is checked against
+  // it, not against every joint (which made a world of N free models O(N^2))
+  std::unordered_set<uint64_t> joint_names_;
 };
 
 bool BuildKinematicTreePass::Run(PassContext& ctx) {
@@ -89,6 +96,8 @@ bool BuildKinematicTreePass::Run(PassContext& ctx) {
   }
   if (ctx.diags.error_count() != errors_before) return false;
 
+  joint_names_.clear();
+  for (const ir::Joint& j : m.joints) joint_names_.insert(Key(j.model, j.name));
   for (size_t b = 1; b < inboard.size(); ++b) {
     if (!inboard[b].valid()) AddFloatingJoint(ctx, BodyId(b));
   }
@@ -128,13 +137,11 @@ void BuildKinematicTreePass::AddFloatingJoint(PassContext& ctx, BodyId body) {
   const ir::Body& b = m[body];
   const std::string name = FloatingJointName(m.Text(b.name), [&](const std::string& n) {
     Symbol s = m.symbols.Find(n);
-    if (s.empty()) return false;
-    for (const ir::Joint& j : m.joints) {
-      if (j.model == b.model && j.name == s) return true;
-    }
-    return false;
+    return !s.empty() && joint_names_.contains(Key(b.model, s));
   });
-  m.Add(MakeFloatingJoint(m, m.Intern(name), b.loc, ir::kWorldBody, {}, body, {}, b.default_pose));
+  const Symbol symbol = m.Intern(name);
+  joint_names_.insert(Key(b.model, symbol));
+  m.Add(MakeFloatingJoint(m, symbol, b.loc, ir::kWorldBody, {}, body, {}, b.default_pose));
 }
 
 }  // namespace

@@ -54,11 +54,16 @@ void CheckModelElementsPass::CheckWithin(PassContext& ctx, ModelId own, ModelId 
   // elements of the global scope (world or default instance) may name anything
   if (own == ir::kWorldModel || own == ir::kDefaultModel || target_model == own) return;
   if (own.index() >= m.models.size() || target_model.index() >= m.models.size()) return;
-  const std::string_view own_name = m.Text(m[own].name);
-  const std::string_view target_name = m.Text(m[target_model].name);
+  for (ModelId up = m[target_model].parent; up.valid(); up = m[up].parent) {
+    if (up == own) return;  // nested in the element's instance
+  }
+  // a top-level instance may be named "<own>::..." too (a Model Directives
+  // namespace): nested by its name
+  const std::string own_name = m.ModelName(own);
+  const std::string target_name = m.ModelName(target_model);
   if (target_name.size() > own_name.size() + 2 && target_name.starts_with(own_name) &&
       target_name.substr(own_name.size(), 2) == "::") {
-    return;  // nested in the element's instance
+    return;
   }
   ctx.diags.Report(DiagKind::UnknownReference, loc,
                    fmt::format("{} '{}' belongs to model instance '{}': it must be in the "

@@ -35,14 +35,20 @@ class NameIndex {
   std::unordered_map<uint64_t, IdT> map_;
 };
 
-/// Model instances by full name.
+/// Model instances by full name, or by a name relative to another instance;
+/// found by walking nested instances (Module::FindModel), never through a
+/// table of full names, which would grow with the square of the nesting depth.
 class ModelIndex {
  public:
-  explicit ModelIndex(const ir::Module& module);
-  std::optional<ModelId> Find(std::string_view name) const;
+  explicit ModelIndex(const ir::Module& module) : module_(&module) {}
+  std::optional<ModelId> Find(std::string_view name) const { return module_->FindModel(name); }
+  /// "<within>::name"
+  std::optional<ModelId> Find(std::string_view name, ModelId within) const {
+    return module_->FindModel(name, within);
+  }
 
  private:
-  std::unordered_map<std::string, ModelId> map_;
+  const ir::Module* module_;
 };
 
 }  // namespace mdlc::passes

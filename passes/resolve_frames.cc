@@ -88,7 +88,7 @@ std::string ResolveFramesPass::NodeName(FrameNodeId n) const {
   const FrameScope& s = g()[node.scope];
   std::string name(m().Text(node.name));
   if (s.is_world) return name;
-  return fmt::format("{}::{}", m().Text(m()[s.model].name), name);
+  return m().ScopedName(s.model, node.name);
 }
 
 std::optional<FrameNodeId> ResolveFramesPass::Lookup(FrameScopeId scope, const ir::NameRef& ref,

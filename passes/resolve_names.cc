@@ -53,8 +53,7 @@ class ResolveNamesPass : public Pass {
 std::optional<ModelId> ResolveNamesPass::ScopeFor(PassContext& ctx, ModelId own,
                                                   std::string_view scope) const {
   if (scope.empty()) return own;
-  std::string nested = fmt::format("{}::{}", ctx.module.Text(ctx.module[own].name), scope);
-  if (auto m = models_->Find(nested)) return m;
+  if (auto m = models_->Find(scope, own)) return m;
   return models_->Find(scope);
 }
 
@@ -92,7 +91,7 @@ void ResolveNamesPass::Resolve(PassContext& ctx, ir::Ref<IdT>& ref, ModelId scop
   auto diag = ctx.diags.Report(
       DiagKind::UnknownReference, ref.loc,
       fmt::format("{} names unknown {} '{}': Could not find {} '{}' in model '{}'", user(),
-                  kind, text, kind, split->element, m.Text(m[*model].name)));
+                  kind, text, kind, split->element, m.ModelName(*model)));
   std::vector<std::string_view> candidates;
   for (const auto& entity : table) {
     if (entity.model == *model) candidates.push_back(m.Text(entity.name));
@@ -151,8 +150,7 @@ void ResolveNamesPass::ResolveForGroup(PassContext& ctx, ir::Ref<IdT>& ref,
   std::optional<ModelId> model = group.model;
   if (!split->scope.empty()) {
     model = global ? models_->Find(split->scope)
-                   : models_->Find(fmt::format("{}::{}", m.Text(m[group.model].name),
-                                               split->scope));
+                   : models_->Find(split->scope, group.model);
   }
   if (model) {
     const Symbol element = m.symbols.Find(split->element);
@@ -162,9 +160,9 @@ void ResolveNamesPass::ResolveForGroup(PassContext& ctx, ir::Ref<IdT>& ref,
     }
   }
   // Drake qualifies the name with the group's instance before looking it up
-  const std::string full = model    ? fmt::format("{}::{}", m.Text(m[*model].name), split->element)
+  const std::string full = model    ? fmt::format("{}::{}", m.ModelName(*model), split->element)
                            : global ? std::string(text)
-                                    : fmt::format("{}::{}", m.Text(m[group.model].name), text);
+                                    : fmt::format("{}::{}", m.ModelName(group.model), text);
   auto diag = ctx.diags.Report(
       DiagKind::UnknownReference, ref.loc,
       fmt::format("collision filter group '{}' names unknown {} '{}': {} with name '{}' not found",

@@ -122,7 +122,7 @@ class UniqueNamesPass : public Pass {
           ctx.diags.Report(DiagKind::SynthesizedNameTaken, e.loc,
                            fmt::format("the {} name '{}' that mdlc made is already used in "
                                        "model instance '{}'; this {} is named '{}'",
-                                       what, made, m.Text(m.models[e.model.index()].name), what,
+                                       what, made, m.ModelName(e.model), what,
                                        m.Text(renamed)));
           last_note = std::pair{e.loc, renamed};
         }

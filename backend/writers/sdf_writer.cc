@@ -159,11 +159,11 @@ class SdfWriter {
  private:
   // -- where everything goes
 
-  const std::string& InstanceOf(BodyId body) const {
-    static const std::string kWorld;
-    if (body.index() == 0) return kWorld;
+  // by value: the plant builds instance names as they are asked for
+  std::string InstanceOf(BodyId body) const {
+    if (body.index() == 0) return {};
     const size_t m = plant_.body(body).model.index();
-    return m == 0 ? kWorld : plant_.model_instances[m];
+    return m == 0 ? std::string() : plant_.model_instances[m];
   }
   ModelNode& Scope(const std::string& scoped) {
     if (scoped.empty()) return world_;
@@ -462,7 +462,7 @@ class SdfWriter {
   /// A bushing may name a link's own frame ("instance::link").
   void LinkFrameRefs() {
     for (size_t b = 1; b < plant_.bodies.size(); ++b) {
-      frame_refs_.emplace(plant_.bodies[b].scoped_name,
+      frame_refs_.emplace(plant_.ScopedName(plant_.bodies[b]),
                           FrameRef{body_scope_.at(b), link_names_[b]});
     }
   }

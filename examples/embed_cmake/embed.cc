@@ -45,7 +45,7 @@ void PrintModel(const mdlc::Result& result, const char* what) {
     const mdlc::backend::PlantBody& body = plant.body(id);
     if (body.is_world) continue;
     const Eigen::Vector3d& p = X_WB[id.index()].p;
-    std::printf("  %-28s mass %8.4g kg  at (%.4f, %.4f, %.4f) m\n", body.scoped_name.c_str(),
+    std::printf("  %-28s mass %8.4g kg  at (%.4f, %.4f, %.4f) m\n", plant.ScopedName(body).c_str(),
                 body.mass, p.x(), p.y(), p.z());
   }
   // M(q) is nv x nv; print it only when it is small

@@ -52,7 +52,7 @@ std::optional<ModelId> Read(FileId file, FrontendContext& ctx) {
   auto model = AddModelInstance(name, root.GetLoc(), ir::SourceFormat::Mjcf, ctx);
   if (!model) return std::nullopt;
   r.model = *model;
-  r.model_name = std::string(ctx.module.Text(ctx.module[*model].name));
+  r.model_name = ctx.module.ModelName(*model);
 
   const std::vector<xml::XmlElement> top = r.Children(root);
   // phase 2: settings, defaults and assets, wherever they stand

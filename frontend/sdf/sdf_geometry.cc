@@ -721,7 +721,7 @@ void SdfReader::ReadSensor(const xml::XmlElement& e, ModelScope& s, BodyId body,
 
   // SDF-044: libsdformat's defaults where the file says nothing
   ir::Camera camera;
-  camera.name = module().Intern(fmt::format("{}/{}", module().Text(module()[s.model].name), *name));
+  camera.name = module().Intern(fmt::format("{}/{}", module().ModelName(s.model), *name));
   camera.model = s.model;
   camera.loc = e.GetLoc();
   camera.body = {link_name, e.GetLoc(), body};

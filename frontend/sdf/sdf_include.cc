@@ -241,14 +241,18 @@ void SdfReader::IncludeUrdf(FileId file, ModelScope parent, const ModelOverrides
   urdf_ctx.options.auto_rename = false;
   urdf_ctx.options.name_prefix.clear();
   if (!graph()[parent.scope].is_world) {
-    urdf_ctx.options.name_prefix = std::string(module().Text(module()[parent.model].name)) + "::";
+    urdf_ctx.options.name_prefix = module().ModelName(parent.model) + "::";
   }
   const size_t first_body = module().bodies.size();
   const size_t first_frame = module().frames.size();
   auto model = ReadUrdf(file, urdf_ctx);
   if (!model) return;
-  std::string local(module().Text(module()[*model].name));
-  if (!urdf_ctx.options.name_prefix.empty()) local = local.substr(urdf_ctx.options.name_prefix.size());
+  std::string local(module().Text(module()[*model].local_name));
+  if (!urdf_ctx.options.name_prefix.empty()) {
+    // the URDF reader named the instance in full: name it below its parent instead
+    local = local.substr(urdf_ctx.options.name_prefix.size());
+    module().RenameModel(*model, parent.model, module().Intern(local));
+  }
   if (!CheckDefinedName(local, overrides.loc, "model")) return;
 
   if (merge) {
@@ -269,7 +273,7 @@ void SdfReader::IncludeUrdf(FileId file, ModelScope parent, const ModelOverrides
     rehome(module().force_elements);
     rehome(module().filter_groups);
     rehome(module().cameras);
-    module().models.pop_back();
+    module().RemoveLastModel();
     model = parent.model;
   }
 

@@ -344,8 +344,9 @@ std::optional<ModelId> SdfReader::ReadModel(const xml::XmlElement& e, const SdfF
     plain.options.model_name.reset();
     model = AddModelInstance(local_name, loc, ir::SourceFormat::Sdf, plain);
   } else {
-    std::string scoped = module().ScopedName(parent.model, module().Intern(local_name));
-    model = module().Add(ir::ModelInstance{module().Intern(scoped), loc, ir::SourceFormat::Sdf, {}});
+    // named by its parent and its own name: never spelled out in full (issue 16)
+    model = module().Add(ir::ModelInstance{module().Intern(local_name), loc, ir::SourceFormat::Sdf,
+                                           {}, parent.model});
   }
   if (!model) return std::nullopt;
   if (!first_model_) first_model_ = model;

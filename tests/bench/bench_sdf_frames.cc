@@ -4,7 +4,8 @@
 // XML parse, and how does it compare with libsdformat?
 //
 // For the models of model_gen_sdf.h (frame_chain, nested_models, sdf_chain)
-// of N = 10, 100, 1000, 10000, each stage is timed on an in-memory buffer;
+// of N = 10, 100, 1000, 10000, and worlds of N = 1000, 10000, 100000
+// one-link models, each stage is timed on an in-memory buffer;
 // from xml_document down each stage includes the ones above it:
 //
 //   libxml2_parse     xmlReadMemory + xmlFreeDoc with mdlc's options: the floor
@@ -36,6 +37,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
 
 #include "tools/driver/compiler.h"
@@ -50,8 +52,15 @@ namespace mdlc::bench {
 namespace {
 
 constexpr int kSizes[] = {10, 100, 1000, 10000};
+// worlds of many one-link models: does the cost per model stay flat up to 100k?
+constexpr int kWorldSizes[] = {1000, 10000, 100000};
 constexpr SdfFamily kFamilies[] = {SdfFamily::FrameChain, SdfFamily::NestedModels,
-                                   SdfFamily::SdfChain};
+                                   SdfFamily::SdfChain, SdfFamily::World};
+
+std::span<const int> SizesFor(SdfFamily family) {
+  if (family == SdfFamily::World) return kWorldSizes;
+  return kSizes;
+}
 int sdformat_max_n = 1000;
 
 // keep in step with frontend/xml/xml_document.cc (as bench_compile.cc)
@@ -187,11 +196,11 @@ void RegisterAll() {
     int max_n;
   };
   const Stage stages[] = {
-      {"libxml2_parse", BM_Libxml2Parse, kSizes[3]},
-      {"xml_document", BM_XmlDocument, kSizes[3]},
-      {"frontend", BM_Frontend, kSizes[3]},
-      {"frontend_passes", BM_FrontendPasses, kSizes[3]},
-      {"compile", BM_Compile, kSizes[3]},
+      {"libxml2_parse", BM_Libxml2Parse, kWorldSizes[2]},
+      {"xml_document", BM_XmlDocument, kWorldSizes[2]},
+      {"frontend", BM_Frontend, kWorldSizes[2]},
+      {"frontend_passes", BM_FrontendPasses, kWorldSizes[2]},
+      {"compile", BM_Compile, kWorldSizes[2]},
 #ifdef MDLC_BENCH_HAVE_SDFORMAT
       {"libsdformat_load", BM_LibsdformatLoad, sdformat_max_n},
 #endif
@@ -208,7 +217,7 @@ void RegisterAll() {
           family == SdfFamily::NestedModels) {
         max_n = std::min(max_n, kSizes[0]);
       }
-      for (int n : kSizes) {
+      for (int n : SizesFor(family)) {
         if (n <= max_n) b->Arg(n);
       }
       b->Unit(benchmark::kMillisecond)->Complexity(benchmark::oN);
@@ -220,7 +229,7 @@ int WriteModels(const std::filesystem::path& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   for (SdfFamily family : kFamilies) {
-    for (int n : kSizes) {
+    for (int n : SizesFor(family)) {
       const std::filesystem::path path = dir / FileName(family, n);
       std::ofstream out(path, std::ios::binary);
       out << Model(family, n);

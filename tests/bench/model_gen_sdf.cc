@@ -255,6 +255,31 @@ std::string SdfChain(const std::string& name, int n) {
   return out;
 }
 
+// ---------------------------------------------------------------- world
+
+std::string World(const std::string& name, int n) {
+  Rng rng(Fnv1a(name + "/20240611"));
+  std::string out;
+  out.reserve(static_cast<size_t>(n) * 700 + 1024);
+  out += "<?xml version=\"1.0\"?>\n<sdf version=\"1.9\">\n  <world name=\"" + name + "\">\n";
+  for (int i = 1; i <= n; ++i) {
+    out += "    <model name=\"" + Numbered("m", i) + "\">\n";
+    // spread over a grid so the models do not overlap
+    const Vec3 xyz = {static_cast<double>(i % 100), static_cast<double>(i / 100 % 100),
+                      static_cast<double>(i / 10000) + rng.Uniform(0.1, 0.5)};
+    AppendPose(out, "      ", xyz, SmallRotation(rng));
+    out += "      <link name=\"link\">\n";
+    AppendRandomInertial(out, "        ", rng);
+    const Vec3 size = {rng.Uniform(0.05, 0.3), rng.Uniform(0.05, 0.3), rng.Uniform(0.05, 0.3)};
+    out += "        <collision name=\"box\"><geometry><box><size>";
+    AppendVector(out, size.data(), 3);
+    out += "</size></box></geometry></collision>\n";
+    out += "      </link>\n    </model>\n";
+  }
+  out += "  </world>\n</sdf>\n";
+  return out;
+}
+
 }  // namespace
 
 std::string_view SdfFamilyName(SdfFamily family) {
@@ -265,6 +290,8 @@ std::string_view SdfFamilyName(SdfFamily family) {
       return "nested_models";
     case SdfFamily::SdfChain:
       return "sdf_chain";
+    case SdfFamily::World:
+      return "world";
   }
   return "?";
 }
@@ -278,6 +305,8 @@ std::string GenerateSdf(SdfFamily family, int n) {
       return NestedModels(name, n);
     case SdfFamily::SdfChain:
       return SdfChain(name, n);
+    case SdfFamily::World:
+      return World(name, n);
   }
   return {};
 }

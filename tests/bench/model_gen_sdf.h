@@ -27,6 +27,10 @@
 //                  (the URDF joint origin), link i relative to joint i (the
 //                  URDF convention), so the relative_to graph is a chain 2N
 //                  deep; link_0 is welded to the world.
+//   world          a <world> of N one-link models m1 ... mN (a scene of many
+//                  small models, issue 16): each model posed in the world,
+//                  its link "link" with random mass properties and a box
+//                  collision. Its top element is the world "world_nN".
 //
 // Output is deterministic: same arguments, same bytes.
 #pragma once
@@ -36,9 +40,9 @@
 
 namespace mdlc::bench {
 
-enum class SdfFamily { FrameChain, NestedModels, SdfChain };
+enum class SdfFamily { FrameChain, NestedModels, SdfChain, World };
 
-/// "frame_chain", "nested_models", "sdf_chain".
+/// "frame_chain", "nested_models", "sdf_chain", "world".
 std::string_view SdfFamilyName(SdfFamily family);
 
 /// The SDFormat text of the `family` model of size `n` (>= 1), with model

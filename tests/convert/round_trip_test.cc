@@ -207,7 +207,7 @@ class Comparison {
     }();
     std::map<std::string, BodyId> by_name;
     for (size_t i = 1; i < pb_.bodies.size(); ++i) {
-      by_name[to_.keeps_instances ? pb_.bodies[i].scoped_name : pb_.bodies[i].name] = BodyId(i);
+      by_name[to_.keeps_instances ? pb_.ScopedName(pb_.bodies[i]) : pb_.bodies[i].name] = BodyId(i);
     }
     body_map_.assign(pa_.bodies.size(), BodyId());
     body_map_[0] = ir::kWorldBody;
@@ -218,10 +218,10 @@ class Comparison {
                              ? body.name
                              : pa_.model_instances[body.model.index()] + "/" + body.name;
       for (size_t at; (at = name.find("::")) != std::string::npos;) name.replace(at, 2, "/");
-      if (to_.keeps_instances) name = body.scoped_name;
+      if (to_.keeps_instances) name = pa_.ScopedName(body);
       auto it = by_name.find(name);
       if (it == by_name.end()) {
-        *why = fmt::format("body '{}' is missing (looked for '{}')", body.scoped_name, name);
+        *why = fmt::format("body '{}' is missing (looked for '{}')", pa_.ScopedName(body), name);
         return false;
       }
       body_map_[i] = it->second;
@@ -235,13 +235,14 @@ class Comparison {
       const BodyId child = body_map_[ja.child.index()];
       const JointId mapped = pb_.body(child).inbound_joint;
       if (!mapped.valid()) {
-        *why = fmt::format("joint '{}' is missing", ja.scoped_name);
+        *why = fmt::format("joint '{}' is missing", pa_.ScopedName(ja));
         return false;
       }
       const auto& jb = pb_.joint(mapped);
       if (jb.type != ja.type || jb.parent != body_map_[ja.parent.index()]) {
-        *why = fmt::format("joint '{}' ({}) became '{}' ({})", ja.scoped_name,
-                           ir::JointTypeName(ja.type), jb.scoped_name, ir::JointTypeName(jb.type));
+        *why = fmt::format("joint '{}' ({}) became '{}' ({})", pa_.ScopedName(ja),
+                           ir::JointTypeName(ja.type), pb_.ScopedName(jb),
+                           ir::JointTypeName(jb.type));
         return false;
       }
       joint_map_.push_back(mapped);
@@ -285,7 +286,7 @@ class Comparison {
         same = same && Near(got.p[r], expected.p[r], scale);
         for (int c = 0; c < 3; ++c) same = same && Near(got.R(r, c), expected.R(r, c), 1);
       }
-      EXPECT_TRUE(same) << label << ": pose of body '" << pa_.bodies[i].scoped_name
+      EXPECT_TRUE(same) << label << ": pose of body '" << pa_.ScopedName(pa_.bodies[i])
                         << "' differs:\n  expected p " << expected.p.transpose() << "\n  got p "
                         << got.p.transpose();
       if (!same) return;

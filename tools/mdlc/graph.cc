@@ -30,11 +30,14 @@ std::string Pose(const Transform& X) {
 Graph Build(const backend::CompiledModel& model, GraphKind kind) {
   const backend::Plant& plant = model.plant;
   Graph g;
-  for (const auto& b : plant.bodies) g.nodes.push_back({b.scoped_name, b.scoped_name, "box"});
+  for (const auto& b : plant.bodies) {
+    g.nodes.push_back({plant.ScopedName(b), plant.ScopedName(b), "box"});
+  }
   if (kind == GraphKind::Kinematic) {
     for (const auto& j : plant.joints) {
-      g.edges.push_back({plant.body(j.parent).scoped_name, plant.body(j.child).scoped_name,
-                         fmt::format("{}\n{}", j.scoped_name, ir::JointTypeName(j.type)),
+      g.edges.push_back({plant.ScopedName(plant.body(j.parent)),
+                         plant.ScopedName(plant.body(j.child)),
+                         fmt::format("{}\n{}", plant.ScopedName(j), ir::JointTypeName(j.type)),
                          j.type == ir::JointType::Weld ? "dashed" : "solid"});
     }
     return g;
@@ -42,15 +45,15 @@ Graph Build(const backend::CompiledModel& model, GraphKind kind) {
   for (const auto& f : plant.frames) {
     const std::string id = fmt::format("{}::{}", plant.model_instances[f.model.index()], f.name);
     g.nodes.push_back({id, id, "ellipse"});
-    g.edges.push_back({plant.body(f.body).scoped_name, id, Pose(f.X_BF), "solid"});
+    g.edges.push_back({plant.ScopedName(plant.body(f.body)), id, Pose(f.X_BF), "solid"});
   }
   // the joints' frames F and M, each fixed on its body
   for (const auto& j : plant.joints) {
-    const std::string F = j.scoped_name + " (F)", M = j.scoped_name + " (M)";
+    const std::string F = plant.ScopedName(j) + " (F)", M = plant.ScopedName(j) + " (M)";
     g.nodes.push_back({F, F, "ellipse"});
     g.nodes.push_back({M, M, "ellipse"});
-    g.edges.push_back({plant.body(j.parent).scoped_name, F, Pose(j.X_PF), "solid"});
-    g.edges.push_back({plant.body(j.child).scoped_name, M, Pose(j.X_CM), "solid"});
+    g.edges.push_back({plant.ScopedName(plant.body(j.parent)), F, Pose(j.X_PF), "solid"});
+    g.edges.push_back({plant.ScopedName(plant.body(j.child)), M, Pose(j.X_CM), "solid"});
     g.edges.push_back({F, M, std::string(ir::JointTypeName(j.type)), "dashed"});
   }
   return g;

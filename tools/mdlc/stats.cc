@@ -103,7 +103,7 @@ class Stats {
       out += fmt::format(
           "body {}: mass {} kg, com [{} {} {}], inertia about com [ixx {} iyy {} izz {} ixy {} "
           "ixz {} iyz {}]{}\n",
-          body.scoped_name, body.mass, body.p_BoBcm_B.x(), body.p_BoBcm_B.y(),
+          plant_.ScopedName(body), body.mass, body.p_BoBcm_B.x(), body.p_BoBcm_B.y(),
           body.p_BoBcm_B.z(), I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2),
           CouldBePhysical(body.mass, I) ? "" : "  (not physically valid)");
     }
@@ -130,7 +130,7 @@ class Stats {
     for (size_t b = 1; b < plant_.bodies.size(); ++b) {
       const auto& body = plant_.bodies[b];
       w.BeginObject(backend::JsonWriter::Layout::Compact);
-      w.Key("name").String(body.scoped_name);
+      w.Key("name").String(plant_.ScopedName(body));
       w.Key("mass").Number(body.mass);
       w.Key("com").BeginArray(backend::JsonWriter::Layout::Compact);
       for (int k = 0; k < 3; ++k) w.Number(body.p_BoBcm_B[k]);

@@ -36,7 +36,7 @@ std::string Couplers(const Plant& plant, JointId id) {
   for (const auto& c : plant.constraints) {
     const auto* k = std::get_if<backend::CouplerConstraint>(&c.payload);
     if (!k || k->joint0 != id) continue;
-    out += fmt::format(", mimics '{}' ({} q {} {})", plant.joint(k->joint1).scoped_name,
+    out += fmt::format(", mimics '{}' ({} q {} {})", plant.ScopedName(plant.joint(k->joint1)),
                        Number(k->gear_ratio), k->offset < 0 ? "-" : "+",
                        Number(std::abs(k->offset)));
   }
@@ -72,13 +72,14 @@ class TreePrinter {
                          bodies, bodies == 1 ? "y" : "ies", dofs, dofs == 1 ? "" : "s");
       for (BodyId root : roots) {
         const auto& body = plant_.body(root);
-        out += fmt::format("  {} (on {})\n", Describe(root),
-                           body.parent.valid() ? plant_.body(body.parent).scoped_name : "nothing");
+        const std::string parent =
+            body.parent.valid() ? plant_.ScopedName(plant_.body(body.parent)) : "nothing";
+        out += fmt::format("  {} (on {})\n", Describe(root), parent);
         Children(root, "  ", out);
       }
       for (const auto& f : plant_.frames) {
         if (f.model.index() != m || f.unnamed) continue;
-        out += fmt::format("  frame '{}' on {}\n", f.name, plant_.body(f.body).scoped_name);
+        out += fmt::format("  frame '{}' on {}\n", f.name, plant_.ScopedName(plant_.body(f.body)));
       }
     }
     return out;
@@ -91,12 +92,13 @@ class TreePrinter {
     for (size_t b = 1; b < plant_.bodies.size(); ++b) {
       const auto& body = plant_.bodies[b];
       w.BeginObject(backend::JsonWriter::Layout::Compact);
-      w.Key("name").String(body.scoped_name);
+      w.Key("name").String(plant_.ScopedName(body));
       w.Key("model_instance").String(plant_.model_instances[body.model.index()]);
-      w.Key("parent").String(body.parent.valid() ? plant_.body(body.parent).scoped_name : "");
+      w.Key("parent").String(
+          body.parent.valid() ? plant_.ScopedName(plant_.body(body.parent)) : std::string());
       if (body.inbound_joint.valid()) {
         const PlantJoint& j = plant_.joint(body.inbound_joint);
-        w.Key("joint").String(j.scoped_name);
+        w.Key("joint").String(plant_.ScopedName(j));
         w.Key("type").String(ir::JointTypeName(j.type));
         w.Key("dofs").Int(j.nv);
       }
@@ -111,7 +113,7 @@ class TreePrinter {
  private:
   std::string Describe(BodyId id) const {
     const auto& body = plant_.body(id);
-    if (!body.inbound_joint.valid()) return fmt::format("{}", body.scoped_name);
+    if (!body.inbound_joint.valid()) return fmt::format("{}", plant_.ScopedName(body));
     const PlantJoint& j = plant_.joint(body.inbound_joint);
     std::string joint = fmt::format("{} joint '{}'", ir::JointTypeName(j.type), j.name);
     if (j.nv == 1 && j.type != ir::JointType::Weld) {

@@ -196,7 +196,7 @@ std::string ViewModelJson(const Result& result, const std::string& title) {
   for (size_t b = 0; b < plant.bodies.size(); ++b) {
     const backend::PlantBody& body = plant.bodies[b];
     w.BeginObject();
-    w.Key("name").String(body.name).Key("scoped_name").String(body.scoped_name);
+    w.Key("name").String(body.name).Key("scoped_name").String(plant.ScopedName(body));
     w.Key("model").Int(body.model.index());
     w.Key("mass").Number(body.mass).Key("com");
     Vector(w, body.p_BoBcm_B);
@@ -217,7 +217,7 @@ std::string ViewModelJson(const Result& result, const std::string& title) {
   for (size_t j = 0; j < plant.joints.size(); ++j) {
     const backend::PlantJoint& joint = plant.joints[j];
     w.BeginObject();
-    w.Key("name").String(joint.name).Key("scoped_name").String(joint.scoped_name);
+    w.Key("name").String(joint.name).Key("scoped_name").String(plant.ScopedName(joint));
     w.Key("type").String(ir::JointTypeName(joint.type));
     w.Key("parent").Int(joint.parent.index()).Key("child").Int(joint.child.index());
     w.Key("X_PF");
@@ -243,7 +243,7 @@ std::string ViewModelJson(const Result& result, const std::string& title) {
                                                 : joint.default_positions[0]));
       notes.push_back(fmt::format("curvilinear joint '{}' is shown at its default position, "
                                   "not moving with its slider",
-                                  joint.scoped_name));
+                                  plant.ScopedName(joint)));
     }
     w.EndObject();
   }

@@ -35,9 +35,9 @@ Eigen::VectorXd ToVector(const std::vector<double>& v) {
 class Names {
  public:
   explicit Names(const backend::Plant& plant) : plant_(plant) {}
-  const std::string& instance(ModelId id) const { return plant_.model_instances[id.index()]; }
-  const std::string& body(BodyId id) const { return plant_.body(id).scoped_name; }
-  const std::string& joint(JointId id) const { return plant_.joint(id).scoped_name; }
+  std::string instance(ModelId id) const { return plant_.model_instances[id.index()]; }
+  std::string body(BodyId id) const { return plant_.ScopedName(plant_.body(id)); }
+  std::string joint(JointId id) const { return plant_.ScopedName(plant_.joint(id)); }
 
  private:
   const backend::Plant& plant_;
@@ -142,17 +142,17 @@ Model MakeModel(std::shared_ptr<const Result> result, py::list diagnostics) {
   Model m;
   m.result = result;
   m.diagnostics = std::move(diagnostics);
-  m.model_instances = plant.model_instances;
+  m.model_instances = plant.model_instances.ToVector();
   for (size_t i = 0; i < plant.bodies.size(); ++i) {
     const backend::PlantBody& b = plant.bodies[i];
-    Body body{b.name, b.scoped_name, names.instance(b.model), b.mass, b.p_BoBcm_B, b.I_BBcm_B,
+    Body body{b.name, plant.ScopedName(b), names.instance(b.model), b.mass, b.p_BoBcm_B, b.I_BBcm_B,
               b.is_world, b.unnamed, std::nullopt, std::nullopt, static_cast<int>(i)};
     if (b.parent.valid()) body.parent = names.body(b.parent);
     if (b.inbound_joint.valid()) body.joint = names.joint(b.inbound_joint);
     m.bodies.push_back(std::move(body));
   }
   for (const backend::PlantJoint& j : plant.joints) {
-    m.joints.push_back(Joint{j.name, j.scoped_name, names.instance(j.model),
+    m.joints.push_back(Joint{j.name, plant.ScopedName(j), names.instance(j.model),
                              std::string(ir::JointTypeName(j.type)), names.body(j.parent),
                              names.body(j.child), MakePose(j.X_PF), MakePose(j.X_CM), j.axis,
                              ToVector(j.lower), ToVector(j.upper), ToVector(j.velocity_lower),

@@ -30,14 +30,14 @@ TEST(BackendBuildPlant, Common020ModelInstancesAndWorldBody) {
   auto model = test_util::InstantiateOk(b.module());
   ASSERT_TRUE(model);
   const Plant& plant = model->plant;
-  EXPECT_EQ(plant.model_instances,
+  EXPECT_EQ(plant.model_instances.ToVector(),
             (std::vector<std::string>{"WorldModelInstance", "DefaultModelInstance", "robot"}));
   ASSERT_EQ(plant.bodies.size(), 2u);
   EXPECT_TRUE(plant.bodies[0].is_world);
-  EXPECT_EQ(plant.bodies[0].scoped_name, "world");
+  EXPECT_EQ(plant.ScopedName(plant.bodies[0]), "world");
   EXPECT_EQ(plant.bodies[0].model, ir::kWorldModel);
-  EXPECT_EQ(plant.bodies[1].scoped_name, "robot::link");
-  EXPECT_EQ(plant.joints[0].scoped_name, "robot::j");
+  EXPECT_EQ(plant.ScopedName(plant.bodies[1]), "robot::link");
+  EXPECT_EQ(plant.ScopedName(plant.joints[0]), "robot::j");
 }
 
 // COMMON-042: mass properties end up about the COM, expressed in B.

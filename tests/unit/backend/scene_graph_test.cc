@@ -16,7 +16,8 @@ using Pairs = std::vector<std::pair<std::string, std::string>>;
 Pairs FilterNames(const CompiledModel& model) {
   Pairs out;
   for (const auto& [a, b] : model.scene.collision_filters) {
-    out.emplace_back(model.plant.body(a).scoped_name, model.plant.body(b).scoped_name);
+    const backend::Plant& plant = model.plant;
+    out.emplace_back(plant.ScopedName(plant.body(a)), plant.ScopedName(plant.body(b)));
   }
   return out;
 }

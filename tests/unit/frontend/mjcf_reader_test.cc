@@ -29,7 +29,7 @@ std::string Model(std::string_view body) {
 TEST(MjcfReader, Common021ModelNameAndBodyNames) {
   LoweredMjcf r(Model(R"(<worldbody><body><geom size="0.1"/><body><geom size="0.1"/></body></body></worldbody>)"));
   ASSERT_TRUE(r.ok()) << r.Messages();
-  EXPECT_EQ(r.module.Text(r.module[*r.model].name), "m");
+  EXPECT_EQ(r.module.ModelName(*r.model), "m");
   // MJCF-020: Drake's body<N> counts the plant's bodies (world is 0)
   ASSERT_NE(r.Body("body1"), nullptr);
   ASSERT_NE(r.Body("body2"), nullptr);
@@ -41,7 +41,7 @@ TEST(MjcfReader, Common021ModelNameAndBodyNames) {
 TEST(MjcfReader, Common021MissingModelNameUsesFileStemWithWarning) {
   LoweredMjcf r("<mujoco><worldbody/></mujoco>");
   ASSERT_TRUE(r.ok()) << r.Messages();
-  EXPECT_EQ(r.module.Text(r.module[*r.model].name), "model");
+  EXPECT_EQ(r.module.ModelName(*r.model), "model");
   EXPECT_NE(r.Find(DiagKind::MissingModelName), nullptr);
 }
 

@@ -14,9 +14,9 @@ TEST(UrdfReaderTest, RobotNameIsTheModelInstance) {  // COMMON-020, COMMON-021
   Lowered l;
   ASSERT_TRUE(l.Read("<robot name='arm'><link name='a'/></robot>")) << l.Messages();
   ASSERT_EQ(l.module.models.size(), 3u);
-  EXPECT_EQ(l.module.Text(l.module.models[0].name), "WorldModelInstance");
-  EXPECT_EQ(l.module.Text(l.module.models[1].name), "DefaultModelInstance");
-  EXPECT_EQ(l.module.Text(l.module.models[2].name), "arm");
+  EXPECT_EQ(l.module.ModelName(ModelId(uint32_t{0})), "WorldModelInstance");
+  EXPECT_EQ(l.module.ModelName(ModelId(uint32_t{1})), "DefaultModelInstance");
+  EXPECT_EQ(l.module.ModelName(ModelId(uint32_t{2})), "arm");
 }
 
 TEST(UrdfReaderTest, InstanceNameCollisionIsAnErrorUnlessAutoRenamed) {  // COMMON-022
@@ -30,8 +30,8 @@ TEST(UrdfReaderTest, InstanceNameCollisionIsAnErrorUnlessAutoRenamed) {  // COMM
   ASSERT_TRUE(r.Read("<robot name='arm'><link name='a'/></robot>", rename));
   ASSERT_TRUE(r.Read("<robot name='arm'><link name='a'/></robot>", rename));
   ASSERT_TRUE(r.Read("<robot name='arm'><link name='a'/></robot>", rename));
-  EXPECT_EQ(r.module.Text(r.module.models[3].name), "arm_1");
-  EXPECT_EQ(r.module.Text(r.module.models[4].name), "arm_2");
+  EXPECT_EQ(r.module.ModelName(ModelId(uint32_t{3})), "arm_1");
+  EXPECT_EQ(r.module.ModelName(ModelId(uint32_t{4})), "arm_2");
 }
 
 TEST(UrdfReaderTest, InertialKeepsItsFrameForTheBackend) {  // URDF-004, URDF-005

@@ -50,7 +50,7 @@ struct MassFixture {
   MassFixture() {
     file = sources.AddBuffer("model.xml", std::string(200, '\n'));
     ir::ModelInstance mi;
-    mi.name = module.Intern("m");
+    mi.local_name = module.Intern("m");
     mi.format = ir::SourceFormat::Mjcf;
     mi.loc = NextLoc();
     model = module.Add(mi);

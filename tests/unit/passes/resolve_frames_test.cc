@@ -17,14 +17,14 @@ constexpr double kTol = 1e-12;
 
 const ir::Body& BodyNamed(const ir::Module& m, std::string_view model, std::string_view name) {
   for (const ir::Body& b : m.bodies) {
-    if (m.Text(b.name) == name && m.Text(m[b.model].name) == model) return b;
+    if (m.Text(b.name) == name && m.ModelName(b.model) == model) return b;
   }
   ADD_FAILURE() << "no body " << model << "::" << name;
   return m.bodies[0];
 }
 const ir::Frame& FrameNamed(const ir::Module& m, std::string_view model, std::string_view name) {
   for (const ir::Frame& f : m.frames) {
-    if (m.Text(f.name) == name && m.Text(m[f.model].name) == model) return f;
+    if (m.Text(f.name) == name && m.ModelName(f.model) == model) return f;
   }
   ADD_FAILURE() << "no frame " << model << "::" << name;
   return m.frames[0];

@@ -1,0 +1,221 @@
+#!/usr/bin/env python3
+"""Runs the load-time benchmarks that issue 16's goals are about and prints
+a markdown table of ratios: compile time over the parse floor per format,
+growth per element from the small to the large size, worlds of many models,
+nesting depth, peak memory over the DOM's, and the comparison with
+libsdformat and MuJoCo 2.2.2.
+
+    python3 tools/bench_table.py [BUILD_DIR] [--repetitions=3] [--readme=README.md]
+
+BUILD_DIR (default: build) must hold mdlc, mdlc_bench, mdlc_bench_sdf and
+mdlc_bench_dmd. Each benchmark runs --repetitions times and the median CPU
+time is used. With --readme, the table between the bench-table markers of
+that file is replaced as well. Takes a few minutes.
+"""
+
+import argparse
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+BEGIN = "<!-- bench-table:begin -->"
+END = "<!-- bench-table:end -->"
+
+
+def run_benchmarks(exe, pattern, repetitions, min_time):
+    """{name: median cpu time in ms} for the benchmarks matching `pattern`."""
+    if not os.path.exists(exe):
+        print(f"bench_table: {exe} is not built; skipping it", file=sys.stderr)
+        return {}
+    out = subprocess.run(
+        [exe, f"--benchmark_filter={pattern}", f"--benchmark_repetitions={repetitions}",
+         "--benchmark_report_aggregates_only=true", f"--benchmark_min_time={min_time}",
+         "--benchmark_format=json"],
+        check=True, capture_output=True, text=True).stdout
+    scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
+    times = {}
+    for b in json.loads(out)["benchmarks"]:
+        if b.get("aggregate_name") != "median" or b.get("error_occurred"):
+            continue
+        times[b["run_name"]] = b["cpu_time"] * scale[b["time_unit"]]
+    return times
+
+
+def peak_rss_kb(command):
+    """Peak resident memory of `command` in kB (GNU time's %M)."""
+    result = subprocess.run(["/usr/bin/time", "-f", "%M"] + command, capture_output=True,
+                            text=True)
+    if result.returncode != 0:
+        raise RuntimeError(f"{' '.join(command)} failed: {result.stderr[-500:]}")
+    return int(result.stderr.strip().splitlines()[-1])
+
+
+def fmt_ms(t):
+    return "–" if t is None else (f"{t:.3g}" if t < 100 else f"{t:.0f}")
+
+
+def fmt_ratio(r):
+    return "–" if r is None else f"{r:.2f}x"
+
+
+def ratio(a, b):
+    return None if a is None or b is None or b == 0 else a / b
+
+
+def verdict(value, goal, at_most=True):
+    if value is None:
+        return "not measured"
+    ok = value <= goal if at_most else value >= goal
+    return "met" if ok else "**not met**"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("build", nargs="?", default="build")
+    parser.add_argument("--repetitions", type=int, default=3)
+    parser.add_argument("--min_time", default="0.1")
+    parser.add_argument("--readme", help="replace the table between the markers in this file")
+    args = parser.parse_args()
+
+    bench_dir = os.path.join(args.build, "tests", "bench")
+    mdlc = os.path.join(args.build, "tools", "mdlc", "mdlc")
+    reps, min_time = args.repetitions, args.min_time
+
+    t = {}
+    t.update(run_benchmarks(
+        os.path.join(bench_dir, "mdlc_bench"),
+        r"^(libxml2_parse|compile)/(chain|tree|mjcf_chain|mjcf_tree)/(1000|10000)$"
+        r"|^mujoco_load/mjcf_tree/1000$", reps, min_time))
+    t.update(run_benchmarks(
+        os.path.join(bench_dir, "mdlc_bench_sdf"),
+        r"^(libxml2_parse|compile)/(sdf_chain|nested_models)/(1000|10000)$"
+        r"|^(libxml2_parse|compile)/world/(1000|10000|100000)$"
+        r"|^libsdformat_load/(sdf_chain|world)/1000$", reps, min_time))
+    t.update(run_benchmarks(
+        os.path.join(bench_dir, "mdlc_bench_dmd"),
+        r"^(yaml_parse|compile)/dmd_chain/(100|1000)$", reps, min_time))
+    get = t.get
+
+    lines = []
+    add = lines.append
+    add("Compile time over the parse floor (the libxml2 or yaml-cpp parse of the same input; "
+        "goal ≤ 1.5x), and growth per element from the small to the large size "
+        "(goal ≤ 1.1x); median CPU time of "
+        f"{reps} runs.")
+    add("")
+    add("| input | floor, small / large (ms) | compile, small / large (ms) "
+        "| compile/floor, small | compile/floor, large | growth per element |")
+    add("|---|---|---|---|---|---|")
+    families = [
+        ("URDF chain", "chain", "libxml2_parse", 1000, 10000),
+        ("URDF tree", "tree", "libxml2_parse", 1000, 10000),
+        ("MJCF chain", "mjcf_chain", "libxml2_parse", 1000, 10000),
+        ("MJCF tree", "mjcf_tree", "libxml2_parse", 1000, 10000),
+        ("SDFormat chain", "sdf_chain", "libxml2_parse", 1000, 10000),
+        ("SDFormat nested models (N deep)", "nested_models", "libxml2_parse", 1000, 10000),
+        ("SDFormat world of N one-link models", "world", "libxml2_parse", 1000, 100000),
+        ("Model Directives, N three-link arms", "dmd_chain", "yaml_parse", 100, 1000),
+    ]
+    summary = {}
+    for label, family, floor, small, large in families:
+        fs, fl = get(f"{floor}/{family}/{small}"), get(f"{floor}/{family}/{large}")
+        cs, cl = get(f"compile/{family}/{small}"), get(f"compile/{family}/{large}")
+        growth = ratio(ratio(cl, large), ratio(cs, small))
+        summary[family] = (ratio(cs, fs), ratio(cl, fl), growth)
+        add(f"| {label}, N = {small} / {large} | {fmt_ms(fs)} / {fmt_ms(fl)} "
+            f"| {fmt_ms(cs)} / {fmt_ms(cl)} | {fmt_ratio(ratio(cs, fs))} "
+            f"| {fmt_ratio(ratio(cl, fl))} | {fmt_ratio(growth)} |")
+    add("")
+
+    # worlds: the per-model cost at each size
+    add("| world of N one-link models | N = 1000 | N = 10000 | N = 100000 |")
+    add("|---|---|---|---|")
+    sizes = (1000, 10000, 100000)
+    add("| compile (ms) | " + " | ".join(fmt_ms(get(f"compile/world/{n}")) for n in sizes) + " |")
+    add("| compile/floor | " + " | ".join(
+        fmt_ratio(ratio(get(f"compile/world/{n}"), get(f"libxml2_parse/world/{n}")))
+        for n in sizes) + " |")
+    per_model = [ratio(get(f"compile/world/{n}"), n / 1000.0) for n in sizes]
+    add("| compile per 1000 models (ms) | " + " | ".join(fmt_ms(p) for p in per_model) + " |")
+    add("")
+
+    # peak memory against the DOM's (xmllint's parse of the same file)
+    work = tempfile.mkdtemp(prefix="mdlc_bench_table_")
+    memory_rows = []
+    try:
+        for exe in ("mdlc_bench", "mdlc_bench_sdf"):
+            subprocess.run([os.path.join(bench_dir, exe), f"--write_models={work}"], check=True,
+                           capture_output=True)
+        xmllint = shutil.which("xmllint")
+        for label, name in [("URDF chain, N = 10000", "chain_n10000.urdf"),
+                            ("MJCF tree, N = 10000", "tree_n10000.mjcf.xml"),
+                            ("SDFormat chain, N = 10000", "sdf_chain_n10000.sdf"),
+                            ("SDFormat nested models, N = 1000", "nested_models_n1000.sdf"),
+                            ("SDFormat nested models, N = 10000", "nested_models_n10000.sdf"),
+                            ("SDFormat world, N = 100000", "world_n100000.sdf")]:
+            path = os.path.join(work, name)
+            if not os.path.exists(path) or not xmllint:
+                continue
+            compile_kb = peak_rss_kb([mdlc, "compile", path, "--emit=none"])
+            dom_kb = peak_rss_kb([xmllint, "--noout", "--huge", "--noblanks", path])
+            memory_rows.append((label, dom_kb, compile_kb))
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    add("Peak memory (resident set) of `mdlc compile --emit=none` against `xmllint --noout` "
+        "holding the file's DOM (goal ≤ 2x):")
+    add("")
+    add("| input | DOM (MB) | mdlc compile (MB) | ratio |")
+    add("|---|---|---|---|")
+    memory = {}
+    for label, dom_kb, compile_kb in memory_rows:
+        memory[label] = compile_kb / dom_kb
+        add(f"| {label} | {dom_kb / 1024:.0f} | {compile_kb / 1024:.0f} "
+            f"| {fmt_ratio(compile_kb / dom_kb)} |")
+    add("")
+
+    nest = ratio(get("compile/nested_models/10000"), get("compile/nested_models/1000"))
+    sdformat_chain = ratio(get("libsdformat_load/sdf_chain/1000"), get("compile/sdf_chain/1000"))
+    sdformat_world = ratio(get("libsdformat_load/world/1000"), get("compile/world/1000"))
+    mujoco = ratio(get("mujoco_load/mjcf_tree/1000"), get("compile/mjcf_tree/1000"))
+    world_growth = ratio(per_model[2], per_model[0])
+
+    add("| goal | measured | |")
+    add("|---|---|---|")
+    worst_large = max((v[1] for v in summary.values() if v[1] is not None), default=None)
+    add(f"| compile ≤ 1.5x the parse floor, every input at the large size | worst "
+        f"{fmt_ratio(worst_large)} | {verdict(worst_large, 1.5)} |")
+    worst_growth = max((v[2] for v in summary.values() if v[2] is not None), default=None)
+    add(f"| growth per element ≤ 1.1x, small to large | worst {fmt_ratio(worst_growth)} "
+        f"| {verdict(worst_growth, 1.1)} |")
+    add(f"| world: per-model time 1k to 100k ≤ 1.1x | {fmt_ratio(world_growth)} "
+        f"| {verdict(world_growth, 1.1)} |")
+    add(f"| nesting 10,000 deep vs 1,000 deep (linear: about 10x) | {fmt_ratio(nest)} "
+        f"| {verdict(nest, 12)} |")
+    worst_memory = max(memory.values(), default=None)
+    add(f"| peak memory ≤ 2x the DOM's | worst {fmt_ratio(worst_memory)} "
+        f"| {verdict(worst_memory, 2)} |")
+    add(f"| MJCF 1k-body tree ≥ 10x faster than MuJoCo 2.2.2 `mj_loadXML` | {fmt_ratio(mujoco)} "
+        f"| {verdict(mujoco, 10, at_most=False)} |")
+    add(f"| faster than libsdformat 12 (SDFormat chain / world, N = 1000) "
+        f"| {fmt_ratio(sdformat_chain)} / {fmt_ratio(sdformat_world)} | |")
+
+    table = "\n".join(lines)
+    print(table)
+    if args.readme:
+        with open(args.readme, encoding="utf-8") as f:
+            text = f.read()
+        pattern = re.compile(re.escape(BEGIN) + ".*?" + re.escape(END), re.S)
+        if not pattern.search(text):
+            sys.exit(f"bench_table: no {BEGIN} ... {END} markers in {args.readme}")
+        text = pattern.sub(lambda _: f"{BEGIN}\n{table}\n{END}", text)
+        with open(args.readme, "w", encoding="utf-8") as f:
+            f.write(text)
+
+
+if __name__ == "__main__":
+    main()
