@@ -172,8 +172,8 @@ class Stats {
   }
 
  private:
-  const std::string& BodyName(const backend::SceneGeometry& g) const {
-    return plant_.bodies[g.body.index()].scoped_name;
+  std::string BodyName(const backend::SceneGeometry& g) const {
+    return plant_.ScopedName(plant_.bodies[g.body.index()]);
   }
 
   /// The size of every mesh geometry's file, read in parallel where the
