@@ -48,7 +48,7 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # that need other targets (oracles, Python, the embed examples, corpus runs)
 # are left to the ordinary build
 (cd "$build_dir" && ctest --output-on-failure -j "$jobs" --timeout 900 \
-   -E 'oracle|Oracle|python|embed|corpus|Corpus|convert/|layers/|[Dd]eterminism|ReferenceRejects')
+   -E 'oracle|Oracle|python|embed|corpus|Corpus|convert/|layers/|[Dd]eterminism|ReferenceRejects|view_in_browser|readme')
 
 echo "==> fuzzing, ${seconds}s per harness"
 fuzz_root="$build_dir/fuzz"

@@ -6,7 +6,7 @@
 #   tools/setup.sh test      install what is missing, build everything (libraries,
 #                            command, Python module, tests), run the whole test suite,
 #                            then the sanitizer suite and each fuzzer for
-#                            FUZZ_SECONDS (default 60; tools/sanitize.sh)
+#                            FUZZ_SECONDS (default 30; tools/sanitize.sh)
 #
 # Installing needs root (apt-get); as another user the script prints the exact
 # apt-get line to run and stops. BUILD_DIR (default: build) and JOBS (default:
@@ -124,7 +124,7 @@ echo "==> running the test suite"
 
 # the same tests again under AddressSanitizer and UBSan, in a build of their
 # own, then every fuzzer for a short fixed time; any report fails the run
-fuzz_seconds=${FUZZ_SECONDS:-60}
+fuzz_seconds=${FUZZ_SECONDS:-30}
 BUILD_DIR="${SANITIZE_BUILD_DIR:-$build_dir-sanitize}" JOBS="$jobs" \
   bash "$root/tools/sanitize.sh" "$fuzz_seconds"
 echo "==> passed: the test suite, the sanitizer suite and ${fuzz_seconds} s of each fuzzer"
