@@ -3,6 +3,7 @@
 # Sanitizer, then each libFuzzer harness for a fixed time (issue 16).
 #
 #   tools/sanitize.sh [SECONDS]   SECONDS per fuzzer (default 60)
+#   FUZZERS="urdf sdf"            only these fuzzers (default: all five)
 #
 # Builds with clang in BUILD_DIR (default: build-sanitize), every library
 # instrumented for the sanitizers and for coverage; runs the unit,
@@ -44,6 +45,8 @@ cmake --build "$build_dir" -j "$jobs" --target "${targets[@]}"
 echo "==> the test suite under ASan and UBSan"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+# leaks inside third-party libraries, each one explained in the file
+export LSAN_OPTIONS=suppressions=$root/tests/fuzz/lsan_suppressions.txt
 # the targets built above discover their own tests; the script-driven ones
 # that need other targets (oracles, Python, the embed examples, corpus runs)
 # are left to the ordinary build
@@ -53,7 +56,7 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 echo "==> fuzzing, ${seconds}s per harness"
 fuzz_root="$build_dir/fuzz"
 status=0
-for fuzzer in urdf sdf mjcf directives mesh; do
+for fuzzer in ${FUZZERS:-urdf sdf mjcf directives mesh}; do
   case $fuzzer in
     urdf) seeds=("$root/tests/models/urdf" "$root/tests/diag/urdf" "$root/examples/urdf") ;;
     sdf) seeds=("$root/tests/models/sdf" "$root/tests/diag/sdf" "$root/examples/sdf") ;;

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <tuple>
 
 #include "passes/mesh/ply_header.h"
@@ -43,6 +44,23 @@ void Collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent
   }
 }
 
+/// The first face, if any, that names a vertex its mesh does not have.
+std::optional<std::string> FindBadFace(const aiScene& scene) {
+  for (unsigned i = 0; i < scene.mNumMeshes; ++i) {
+    const aiMesh& m = *scene.mMeshes[i];
+    for (unsigned f = 0; f < m.mNumFaces; ++f) {
+      const aiFace& face = m.mFaces[f];
+      for (unsigned k = 0; k < face.mNumIndices; ++k) {
+        if (face.mIndices[k] >= m.mNumVertices) {
+          return fmt::format("face {} names vertex {}, but there are only {} vertices", f,
+                             face.mIndices[k], m.mNumVertices);
+        }
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 MeshOrError LoadMesh(const std::string& path, const Limits& limits) {
@@ -64,9 +82,20 @@ MeshOrError LoadMesh(const std::string& path, const Limits& limits) {
   // assimp turns a Collada file's Z_UP into Y_UP by rotating the scene;
   // robot meshes mean their coordinates as written (as ROS tools read them)
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+  // read with no processing first: assimp's steps trust the faces' vertex
+  // indices, and a file whose faces name vertices it does not have would
+  // make them read out of bounds (found by fuzz_mesh)
+  const aiScene* scene = importer.ReadFile(path, 0);
+  if (!scene || !scene->mRootNode) {
+    return {nullptr,
+            fmt::format("cannot read mesh file '{}': {}", path, importer.GetErrorString())};
+  }
+  if (auto problem = FindBadFace(*scene)) {
+    return {nullptr, fmt::format("cannot read mesh file '{}': {}", path, *problem)};
+  }
   // Triangulate polygons (quads, n-gons); no other processing: normals,
   // texture coordinates and materials do not matter for geometry.
-  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
+  scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType);
   if (!scene || !scene->mRootNode) {
     return {nullptr,
             fmt::format("cannot read mesh file '{}': {}", path, importer.GetErrorString())};

@@ -64,6 +64,22 @@ TEST(MeshLoaderTest, MalformedPlyHeaderIsAnErrorNotAHang) {  // BEYOND-001
   EXPECT_TRUE(mesh::LoadMesh(MeshPath("box.ply")).ok());
 }
 
+// A PLY whose faces name vertices it does not have (found by fuzz_mesh:
+// tests/fuzz/regressions/mesh/ply_face_index_out_of_range) is an error;
+// assimp's triangulation would have read past the vertex array.
+TEST(MeshLoaderTest, FaceNamingAMissingVertexIsAnError) {  // BEYOND-001
+  std::ifstream in(
+      std::string(MDLC_TEST_MODELS) + "/../fuzz/regressions/mesh/ply_face_index_out_of_range",
+      std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GT(bytes.size(), 1u);
+  const std::string path = ::testing::TempDir() + "mdlc_ply_face_index.ply";
+  std::ofstream(path, std::ios::binary) << bytes.substr(1);
+  const mesh::MeshOrError m = mesh::LoadMesh(path);
+  EXPECT_FALSE(m.ok());
+  EXPECT_NE(m.error.find("but there are only 4 vertices"), std::string::npos) << m.error;
+}
+
 TEST(MeshLoaderTest, NoTrianglesIsAnError) {  // BEYOND-001
   const mesh::MeshOrError m = mesh::LoadMesh(MeshPath("empty.obj"));
   EXPECT_FALSE(m.ok());
