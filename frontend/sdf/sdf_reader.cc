@@ -19,10 +19,12 @@ std::optional<ModelId> ReadSdf(FileId file, FrontendContext& ctx) {
 
 namespace mdlc::frontend::sdf {
 namespace {
-// "1.9" -> 109; nullopt when it is not MAJOR.MINOR
+// "1.9" -> 109; nullopt when it is not MAJOR.MINOR, with at most four digits
+// of major and two of minor version (no overflow, found by fuzz_sdf)
 std::optional<int> ParseVersion(std::string_view text) {
   size_t dot = text.find('.');
   if (dot == std::string_view::npos || dot == 0 || dot + 1 >= text.size()) return std::nullopt;
+  if (dot > 4 || text.size() - dot - 1 > 2) return std::nullopt;
   int major = 0, minor = 0;
   for (size_t i = 0; i < dot; ++i) {
     if (text[i] < '0' || text[i] > '9') return std::nullopt;
