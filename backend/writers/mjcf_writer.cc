@@ -41,8 +41,9 @@
 #include <variant>
 
 #include "backend/kinematics.h"
-#include "backend/writers/asset_paths.h"
+#include "backend/writers/names.h"
 #include "backend/writers/writer.h"
+#include "backend/writers/writer_base.h"
 #include "backend/writers/xml_out.h"
 #include "ir/overloaded.h"
 
@@ -58,21 +59,17 @@ std::string QuatText(const Eigen::Matrix3d& R) {
   return VectorText(Eigen::Vector4d(q.w(), q.x(), q.y(), q.z()));
 }
 
-class MjcfWriter {
+class MjcfWriter : WriterBase {
  public:
   MjcfWriter(const backend::CompiledModel& model, const ir::Module& module,
              const WriteOptions& options, DiagnosticEngine& diags)
-      : plant_(model.plant),
-        scene_(model.scene),
-        m_(module),
-        diags_(diags),
-        assets_(options, diags) {}
+      : WriterBase(model, module, options, diags), names_(plant_) {}
 
   std::string Write() {
-    ChooseNames();
+    names_.ReportFlattening(m_, "MJCF model", diags_);
     ChooseLinkFrames();
     PrepareConstraintSites();
-    out_.Open("mujoco").Attr("model", model_name_);
+    out_.Open("mujoco").Attr("model", names_.model_name());
     out_.Open("compiler")
         .Attr("angle", "radian")
         .Attr("autolimits", "true")
@@ -102,32 +99,8 @@ class MjcfWriter {
  private:
   // -- names
 
-  void ChooseNames() {
-    std::set<size_t> instances;
-    for (size_t b = 1; b < plant_.bodies.size(); ++b) {
-      instances.insert(plant_.bodies[b].model.index());
-    }
-    prefix_instances_ = instances.size() > 1;
-    if (instances.empty()) {
-      model_name_ = "world";
-    } else if (!prefix_instances_) {
-      model_name_ = plant_.model_instances[*instances.begin()];
-    } else {
-      model_name_ = "scene";
-      const size_t first = *instances.begin();
-      diags_.Report(DiagKind::Lossy, first < m_.models.size() ? m_.models[first].loc : Loc{},
-                    fmt::format("the {} model instances are written as one MJCF model; each "
-                                "name is prefixed with its instance ('instance/name')",
-                                instances.size()));
-    }
-  }
   std::string Named(ModelId model, std::string_view name) const {
-    if (!prefix_instances_ || model.index() < 2) return Unscoped(std::string(name));
-    return Unscoped(fmt::format("{}/{}", plant_.model_instances[model.index()], name));
-  }
-  static std::string Unscoped(std::string name) {
-    for (size_t at; (at = name.find("::")) != std::string::npos;) name.replace(at, 2, "/");
-    return name;
+    return names_.Named(model, name);
   }
   std::string BodyName(BodyId body) const {
     if (body.index() == 0) return "world";
@@ -147,18 +120,9 @@ class MjcfWriter {
     }
     return unique;
   }
-  Loc BodyLoc(BodyId body) const {
-    return body.index() < m_.bodies.size() ? m_.bodies[body.index()].loc : Loc{};
-  }
-  Loc JointLoc(JointId joint) const {
-    return joint.index() < m_.joints.size() ? m_.joints[joint.index()].loc : Loc{};
-  }
 
   // -- body frames: X_BL per body
 
-  static bool IsFloating(const PlantJoint& j) {
-    return j.type == ir::JointType::QuaternionFloating || j.type == ir::JointType::RpyFloating;
-  }
   /// How the joint is written: hinge, slide, ball, free, or nothing.
   enum class Kind { None, Hinge, Slide, Ball, Free };
   Kind KindOf(const PlantJoint& j) const {
@@ -421,14 +385,10 @@ class MjcfWriter {
   // -- geometry
 
   void WriteMeshAssets() {
-    size_t ir_index = 0;
     bool open = false;
     for (size_t i = 0; i < scene_.geometries.size(); ++i) {
       const backend::SceneGeometry& g = scene_.geometries[i];
-      while (ir_index < m_.geometries.size() && m_.geometries[ir_index].roles == 0) ++ir_index;
-      const Loc loc = ir_index < m_.geometries.size() ? m_.geometries[ir_index].loc : Loc{};
-      ++ir_index;
-      geometry_locs_.push_back(loc);
+      const Loc loc = GeometryLoc(i);
       const auto* mesh = std::get_if<ir::Mesh>(&g.shape);
       if (!mesh) continue;
       if (!open) out_.Open("asset");
@@ -446,17 +406,10 @@ class MjcfWriter {
     if (open) out_.Close();
   }
 
-  static const ir::Property* Find(const backend::SceneGeometry& g, std::string_view key) {
-    for (const ir::Property& p : g.properties) {
-      if (p.key == key) return &p;
-    }
-    return nullptr;
-  }
-
   void WriteGeometries(BodyId body) {
     for (size_t i = 0; i < scene_.geometries.size(); ++i) {
       const backend::SceneGeometry& g = scene_.geometries[i];
-      if (g.body == body) WriteGeometry(i, g, geometry_locs_[i]);
+      if (g.body == body) WriteGeometry(i, g, GeometryLoc(i));
     }
   }
 
@@ -523,18 +476,14 @@ class MjcfWriter {
   }
 
   void Appearance(const backend::SceneGeometry& g, Loc loc) {
-    if (const ir::Property* diffuse = Find(g, "phong/diffuse")) {
+    if (const ir::Property* diffuse = FindProperty(g, "phong/diffuse")) {
       if (const auto* rgba = std::get_if<std::vector<double>>(&diffuse->value);
           rgba && rgba->size() == 4) {
         out_.Attr("rgba", VectorText(Eigen::Map<const Eigen::Vector4d>(rgba->data())));
       }
     }
     for (const ir::Property& p : g.properties) {
-      if (p.key == "phong/diffuse") continue;
-      if (!p.key.starts_with("phong/") && !p.key.starts_with("renderer/") &&
-          !p.key.starts_with("label/")) {
-        continue;
-      }
+      if (p.key == "phong/diffuse" || !IsAppearanceProperty(p)) continue;
       diags_.Report(DiagKind::Lossy, loc,
                     fmt::format("illustration property '{}' of geometry '{}' is not written "
                                 "(the MJCF writer writes a geom's rgba only)",
@@ -544,10 +493,7 @@ class MjcfWriter {
 
   void Friction(const backend::SceneGeometry& g, Loc loc) {
     for (const ir::Property& p : g.properties) {
-      if (p.key.starts_with("phong/") || p.key.starts_with("renderer/") ||
-          p.key.starts_with("label/")) {
-        continue;
-      }
+      if (IsAppearanceProperty(p)) continue;
       const auto* v = std::get_if<std::vector<double>>(&p.value);
       if (p.key == "material/coulomb_friction" && v && v->size() == 2) {
         out_.Attr("friction", (*v)[0]);
@@ -614,9 +560,6 @@ class MjcfWriter {
 
   // -- equality constraints
 
-  Loc ConstraintLoc(size_t i) const {
-    return i < m_.constraints.size() ? m_.constraints[i].loc : Loc{};
-  }
   /// The written default position (ref) of a 1-dof joint; nullopt when the
   /// joint is not written as a hinge or slide.
   std::optional<double> WrittenRef(JointId id) const {
@@ -770,7 +713,7 @@ class MjcfWriter {
     out_.Open("actuator");
     for (size_t i = 0; i < plant_.actuators.size(); ++i) {
       const backend::PlantActuator& a = plant_.actuators[i];
-      const Loc loc = i < m_.actuators.size() ? m_.actuators[i].loc : Loc{};
+      const Loc loc = ActuatorLoc(i);
       const PlantJoint& j = plant_.joint(a.joint);
       const Kind kind = KindOf(j);
       if (kind != Kind::Hinge && kind != Kind::Slide) {
@@ -799,7 +742,7 @@ class MjcfWriter {
 
   void WriteForceElements() {
     for (size_t i = 0; i < plant_.force_elements.size(); ++i) {
-      const Loc loc = i < m_.force_elements.size() ? m_.force_elements[i].loc : Loc{};
+      const Loc loc = ForceElementLoc(i);
       std::visit(ir::Overloaded{
                      [&](const backend::LinearBushingRpy& k) {
                        diags_.Report(DiagKind::Lossy, loc,
@@ -827,17 +770,9 @@ class MjcfWriter {
     }
   }
 
-  const backend::Plant& plant_;
-  const backend::SceneGraph& scene_;
-  const ir::Module& m_;
-  DiagnosticEngine& diags_;
-  AssetPaths assets_;
-  XmlOut out_;
-  std::string model_name_;
-  bool prefix_instances_ = false;
+  FlatNames names_;
   std::vector<Transform> X_BL_;
   std::map<size_t, std::vector<BodyId>> children_;
-  std::vector<Loc> geometry_locs_;
   std::map<size_t, std::string> mesh_names_;
   std::set<std::string> geom_names_, site_names_, camera_names_;
   std::map<size_t, std::vector<std::pair<std::string, Transform>>> extra_sites_;

@@ -27,6 +27,7 @@
 #include <set>
 #include <sstream>
 
+#include "backend/writers/names.h"
 #include "mdlc/mdlc.h"
 
 namespace mdlc {
@@ -200,11 +201,7 @@ class Comparison {
 
   /// False when the kinematic structure could not be mapped.
   bool MapStructure(std::string* why) {
-    const bool one_instance = [&] {
-      std::set<size_t> instances;
-      for (size_t i = 1; i < pa_.bodies.size(); ++i) instances.insert(pa_.bodies[i].model.index());
-      return instances.size() <= 1;
-    }();
+    const writers::FlatNames flat(pa_);  // how URDF and MJCF name them
     std::map<std::string, BodyId> by_name;
     for (size_t i = 1; i < pb_.bodies.size(); ++i) {
       by_name[to_.keeps_instances ? pb_.bodies[i].scoped_name : pb_.bodies[i].name] = BodyId(i);
@@ -213,12 +210,8 @@ class Comparison {
     body_map_[0] = ir::kWorldBody;
     for (size_t i = 1; i < pa_.bodies.size(); ++i) {
       const auto& body = pa_.bodies[i];
-      // "outer::inner" + "link" -> "outer/inner/link", as the URDF writer names
-      std::string name = one_instance
-                             ? body.name
-                             : pa_.model_instances[body.model.index()] + "/" + body.name;
-      for (size_t at; (at = name.find("::")) != std::string::npos;) name.replace(at, 2, "/");
-      if (to_.keeps_instances) name = body.scoped_name;
+      const std::string name =
+          to_.keeps_instances ? body.scoped_name : flat.Named(body.model, body.name);
       auto it = by_name.find(name);
       if (it == by_name.end()) {
         *why = fmt::format("body '{}' is missing (looked for '{}')", body.scoped_name, name);
