@@ -451,8 +451,9 @@ class MjcfWriter : WriterBase {
                    [&](const ir::HalfSpace&) {
                      out_.Attr("type", "plane").Attr("size", "0 0 1");
                    },
-                   [&](const ir::Mesh&) {
+                   [&](const ir::Mesh& s) {
                      out_.Attr("type", "mesh").Attr("mesh", mesh_names_[index]);
+                     if (s.convex && collision) ConvexLoss(g, loc);
                    },
                },
                g.shape);
@@ -462,6 +463,19 @@ class MjcfWriter : WriterBase {
     if (visual) Appearance(g, loc);
     if (collision) Friction(g, loc);
     out_.Close();
+  }
+
+  /// A collision mesh declared convex (drake:declare_convex): MuJoCo
+  /// collides with every mesh's convex hull, so MuJoCo's contact is what
+  /// the declaration asks for; but MJCF has no flag to carry it, and mdlc
+  /// and Drake read an MJCF mesh back as a mesh, not a convex shape.
+  void ConvexLoss(const backend::SceneGeometry& g, Loc loc) {
+    diags_.Report(DiagKind::Lossy, loc,
+                  fmt::format("the convex declaration of mesh geometry '{}' is dropped: MuJoCo "
+                              "collides with every mesh's convex hull, as declared, but MJCF "
+                              "has no flag for it, so the written geom reads back as a plain "
+                              "mesh",
+                              g.name));
   }
 
   /// MJCF needs positive sizes; Drake reads a zero-radius sphere as a point

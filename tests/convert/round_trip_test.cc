@@ -450,5 +450,101 @@ INSTANTIATE_TEST_SUITE_P(Corpus, CorpusRoundTrip,
                                               std::get<1>(info.param));
                          });
 
+// ---------------------------------------------------------------------------
+// Hand-made models pinning what a writer does with one construct
+// ---------------------------------------------------------------------------
+
+/// A model compiled from text, converted and compiled back from the written
+/// file (in a temporary folder).
+struct Conversion {
+  Result source;
+  std::optional<std::string> text;
+  std::optional<Result> back;
+  fs::path file;
+
+  /// The -Wlossy warnings of the conversion whose message holds `text`.
+  std::vector<const Diagnostic*> Lossy(std::string_view text) const {
+    std::vector<const Diagnostic*> out;
+    for (const Diagnostic& d : source.diagnostics()) {
+      if (d.kind == DiagKind::Lossy && d.message.find(text) != std::string::npos) out.push_back(&d);
+    }
+    return out;
+  }
+};
+
+Conversion ConvertText(const std::string& model, const std::string& name, ConvertOptions convert,
+                   const fs::path& dir) {
+  Conversion c{Compile(Input::Text(model, (dir / name).string())), {}, {}, {}};
+  EXPECT_TRUE(c.source.ok()) << Messages(c.source);
+  if (!c.source.ok()) return c;
+  c.file = dir / ("converted_" + fs::path(name).stem().string() +
+                  (convert.to == Format::Urdf ? ".urdf" : convert.to == Format::Sdf ? ".sdf" : ".xml"));
+  convert.output = c.file.string();
+  c.text = c.source.Convert(convert);
+  EXPECT_TRUE(c.text) << Messages(c.source);
+  if (!c.text) return c;
+  std::ofstream(c.file) << *c.text;
+  c.back = Compile(Input::File(c.file.string()));
+  EXPECT_TRUE(c.back->ok()) << Messages(*c.back) << "\n--- converted:\n" << *c.text;
+  return c;
+}
+
+ConvertOptions To(Format format) {
+  ConvertOptions options;
+  options.to = format;
+  return options;
+}
+
+// MuJoCo collides with the convex hull of every mesh, so a mesh declared
+// convex (drake:declare_convex) collides in MuJoCo as declared; but MJCF has
+// no flag to carry the declaration, and an MJCF mesh reads back as a plain
+// mesh: a -Wlossy warning at the geometry, and only for a collision mesh.
+TEST(MjcfWriter, ConvexMeshDeclarationIsALocatedLossyWarning) {
+  OutputDir dir;
+  const std::string mesh = (fs::path(MDLC_TEST_MODELS) / "meshes" / "box.obj").string();
+  const std::string urdf = fmt::format(R"(<robot name="r" xmlns:drake="http://drake.mit.edu">
+  <link name="base">
+    <inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0" ixz="0" iyz="0"/></inertial>
+    <visual name="look"><geometry><mesh filename="{0}"/></geometry></visual>
+    <collision name="hull">
+      <geometry><mesh filename="{0}"><drake:declare_convex/></mesh></geometry>
+    </collision>
+  </link>
+</robot>
+)",
+                                       mesh);
+  const Conversion c = ConvertText(urdf, "convex.urdf", To(Format::Mjcf), dir.path());
+  ASSERT_TRUE(c.back && c.back->ok());
+  const auto lossy = c.Lossy("convex");
+  ASSERT_EQ(lossy.size(), 1u) << Messages(c.source);
+  EXPECT_NE(lossy[0]->message.find("geometry 'hull'"), std::string::npos) << lossy[0]->message;
+  EXPECT_NE(lossy[0]->message.find("MuJoCo collides with every mesh's convex hull"),
+            std::string::npos)
+      << lossy[0]->message;
+  EXPECT_NE(c.source.FormatText(*lossy[0]).find("convex.urdf:5:"), std::string::npos)
+      << c.source.FormatText(*lossy[0]);
+  // the geom is a mesh MuJoCo takes the hull of; read back, a plain mesh
+  EXPECT_NE(c.text->find("type=\"mesh\""), std::string::npos) << *c.text;
+  size_t meshes = 0;
+  for (const auto& g : c.back->scene_graph().geometries) {
+    const auto* m = std::get_if<ir::Mesh>(&g.shape);
+    ASSERT_NE(m, nullptr);
+    EXPECT_FALSE(m->convex);
+    ++meshes;
+  }
+  EXPECT_EQ(meshes, 2u);
+  // URDF and SDFormat keep the declaration
+  for (Format to : {Format::Urdf, Format::Sdf}) {
+    const Conversion kept = ConvertText(urdf, "convex.urdf", To(to), dir.path());
+    ASSERT_TRUE(kept.back && kept.back->ok());
+    EXPECT_TRUE(kept.Lossy("convex").empty()) << Messages(kept.source);
+    for (const auto& g : kept.back->scene_graph().geometries) {
+      if (g.roles & ir::kProximityRole) {
+        EXPECT_TRUE(std::get<ir::Mesh>(g.shape).convex);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace mdlc
