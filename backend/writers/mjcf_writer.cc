@@ -30,6 +30,19 @@
 //   filters -> <contact><exclude>.
 // Several model instances become one model whose names carry their instance
 // ("arm/link1"), as the URDF writer does.
+//
+// Which plant bodies become <body> elements is mjcf_layout.h's: a chain of
+// massless bodies between hinges and slides (an MJCF body's stacked joints,
+// as mdlc reads them) is one <body> with several <joint>s, and with
+// --fuse-fixed a welded body is fused into its parent. For a body B with
+// joints j1..jn, each 1-dof, at default positions q0_k, the body's pose is
+//   X_PB0 = prod_k X_F_k * X_FM_k(q0_k) * X_CM_k^-1
+// (F_1 on the parent, F_k on the massless body before joint k), and joint k
+// is written at frame M_k's pose in B at the default positions,
+//   X_BM_k = (X_CM_k^-1 * prod_{i>k} X_F_i * X_FM_i(q0_i) * X_CM_i^-1)^-1,
+// with ref q0_k: MuJoCo turns B about each joint's axis through its pos, in
+// B's frame, in order, which is the chain's motion at every q (see
+// frontend/mjcf/mjcf_joint.cc, which reads it back into the chain).
 #include <fmt/format.h>
 
 #include <Eigen/Geometry>
@@ -41,6 +54,7 @@
 #include <variant>
 
 #include "backend/kinematics.h"
+#include "backend/writers/mjcf_layout.h"
 #include "backend/writers/names.h"
 #include "backend/writers/writer.h"
 #include "backend/writers/writer_base.h"
@@ -63,10 +77,13 @@ class MjcfWriter : WriterBase {
  public:
   MjcfWriter(const backend::CompiledModel& model, const ir::Module& module,
              const WriteOptions& options, DiagnosticEngine& diags)
-      : WriterBase(model, module, options, diags), names_(plant_) {}
+      : WriterBase(model, module, options, diags),
+        names_(plant_),
+        layout_(PlanMjcfBodies(plant_, scene_, options.fuse_fixed)) {}
 
   std::string Write() {
     names_.ReportFlattening(m_, "MJCF model", diags_);
+    ReportLayout();
     ChooseLinkFrames();
     PrepareConstraintSites();
     out_.Open("mujoco").Attr("model", names_.model_name());
@@ -79,10 +96,10 @@ class MjcfWriter : WriterBase {
     if (plant_.time_step > 0) out_.Attr("timestep", plant_.time_step);
     out_.Close();
     WriteMeshAssets();
-    // children of each body, in body order (parents first)
+    // the written children of each written body, in body order (parents first)
     for (BodyId b : plant_.body_order) {
-      const PlantBody& body = plant_.body(b);
-      if (b.index() != 0 && body.parent.valid()) children_[body.parent.index()].push_back(b);
+      if (b.index() == 0 || !layout_.written(b) || !layout_.parent[b.index()].valid()) continue;
+      children_[Owner(layout_.parent[b.index()]).index()].push_back(b);
     }
     out_.Open("worldbody");
     WriteBodyContents(ir::kWorldBody);
@@ -150,6 +167,56 @@ class MjcfWriter : WriterBase {
   Transform InLink(BodyId body, const Transform& X_BA) const {
     return X_BL_[body.index()].inverse() * X_BA;
   }
+
+  // -- the written bodies (mjcf_layout.h)
+
+  /// The written body that holds body b's content.
+  BodyId Owner(BodyId b) const { return layout_.owner[b.index()]; }
+  /// X_BA given in body b, as a pose in b's owner.
+  Transform InOwner(BodyId b, const Transform& X_BA) const {
+    if (layout_.role[b.index()] != MjcfBodyLayout::Role::Fused) return X_BA;
+    return layout_.X_OB[b.index()] * X_BA;
+  }
+  /// X_BA given in body b, in the frame L of the <body> that holds it.
+  Transform InWrittenLink(BodyId b, const Transform& X_BA) const {
+    return InLink(Owner(b), InOwner(b, X_BA));
+  }
+
+  /// What the layout merged away (named bodies only: a massless body mdlc
+  /// made between an MJCF body's stacked joints comes back as it was) and
+  /// fused (--fuse-fixed, a note per body).
+  void ReportLayout() {
+    for (size_t b = 1; b < plant_.bodies.size(); ++b) {
+      const PlantBody& body = plant_.bodies[b];
+      const BodyId owner = layout_.owner[b];
+      switch (layout_.role[b]) {
+        case MjcfBodyLayout::Role::Written:
+          break;
+        case MjcfBodyLayout::Role::Merged:
+          if (body.unnamed) break;
+          diags_.Report(DiagKind::Lossy, BodyLoc(BodyId(b)),
+                        fmt::format("body '{}' is massless and moves on joint '{}', which MuJoCo "
+                                    "refuses; it is not written, and its joints move body '{}' "
+                                    "instead, with the same motion",
+                                    body.name, plant_.joint(body.inbound_joint).name,
+                                    BodyName(owner)));
+          break;
+        case MjcfBodyLayout::Role::Fused:
+          fused_site_names_[b] = Unique(site_names_, BodyName(BodyId(b)));
+          diags_
+              .Report(DiagKind::FusedBody, BodyLoc(BodyId(b)),
+                      fmt::format("body '{}' is fused into body '{}' (--fuse-fixed): its fixed "
+                                  "joint '{}' is gone, its mass properties are added to '{}', its "
+                                  "geometry, frames and cameras are re-posed there, and its own "
+                                  "frame is kept as site '{}'",
+                                  body.name, BodyName(owner),
+                                  plant_.joint(body.inbound_joint).name, BodyName(owner),
+                                  fused_site_names_[b]));
+          ReportBodyLosses(BodyId(b));
+          break;
+      }
+    }
+  }
   Eigen::Vector3d PointInLink(BodyId body, const Eigen::Vector3d& p_BP) const {
     return InLink(body, Transform::FromTranslation(p_BP)).p;
   }
@@ -168,11 +235,8 @@ class MjcfWriter : WriterBase {
     for (BodyId child : children_[body.index()]) WriteBody(child);
   }
 
-  void WriteBody(BodyId body) {
-    const PlantBody& b = plant_.body(body);
-    const PlantJoint& j = plant_.joint(b.inbound_joint);
-    const Loc loc = JointLoc(b.inbound_joint);
-    Kind kind = KindOf(j);
+  /// The default positions of a joint as written (a ball's are dropped).
+  Eigen::VectorXd WrittenDefault(const PlantJoint& j, Kind kind, Loc loc) {
     Eigen::VectorXd q0 = Eigen::Map<const Eigen::VectorXd>(
         j.default_positions.data(), static_cast<Eigen::Index>(j.default_positions.size()));
     if (q0.size() != j.nq) q0 = Eigen::VectorXd::Zero(j.nq);
@@ -184,7 +248,7 @@ class MjcfWriter : WriterBase {
                                 j.type == ir::JointType::QuaternionFloating
                                     ? " (its parent is not the world)"
                                     : "",
-                                BodyName(body)));
+                                BodyName(j.child)));
     }
     if (kind == Kind::Ball && !q0.isZero(0)) {  // the plant's ball: roll-pitch-yaw
       diags_.Report(DiagKind::Lossy, loc,
@@ -193,11 +257,49 @@ class MjcfWriter : WriterBase {
                                 j.name));
       q0.setZero();
     }
-    // X_LpL at the default positions
-    const Transform X_PC0 = j.X_PF * backend::JointPose(j, q0) * j.X_CM.inverse();
-    const Transform X_LpL = X_BL_[j.parent.index()].inverse() * X_PC0 * X_BL_[body.index()];
+    return q0;
+  }
+
+  void WriteBody(BodyId body) {
+    const std::vector<JointId>& chain = layout_.joints[body.index()];
+    const size_t n = chain.size();
+    std::vector<Kind> kinds(n);
+    std::vector<Eigen::VectorXd> q0(n);
+    // X_{k-1,k}: the pose of the child of joint k in its parent at the
+    // default positions; the first parent is layout_.parent
+    std::vector<Transform> step(n);
+    for (size_t k = 0; k < n; ++k) {
+      const PlantJoint& j = plant_.joint(chain[k]);
+      kinds[k] = KindOf(j);
+      q0[k] = WrittenDefault(j, kinds[k], JointLoc(chain[k]));
+      step[k] = j.X_PF * backend::JointPose(j, q0[k]) * j.X_CM.inverse();
+    }
+    // X_PB0, then in the written parent's frame L_P
+    Transform X_PB0 = step[0];
+    for (size_t k = 1; k < n; ++k) X_PB0 = X_PB0 * step[k];
+    const BodyId parent = layout_.parent[body.index()];
+    const Transform X_LpL = X_BL_[Owner(parent).index()].inverse() * InOwner(parent, X_PB0) *
+                            X_BL_[body.index()];
     out_.Open("body").Attr("name", BodyName(body));
     Pose(X_LpL);
+    ReportBodyLosses(body);
+    WriteInertial(body);
+    // each joint at its frame M_k in B: X_BM_k = (X_CM_k^-1 * X_{C_k,B})^-1
+    Transform X_CkB;  // identity for the last joint
+    std::vector<Transform> X_BM(n);
+    for (size_t k = n; k-- > 0;) {
+      const PlantJoint& j = plant_.joint(chain[k]);
+      X_BM[k] = k + 1 == n ? j.X_CM : X_CkB.inverse() * j.X_CM;
+      X_CkB = step[k] * X_CkB;
+    }
+    for (size_t k = 0; k < n; ++k) WriteJoint(chain[k], kinds[k], q0[k], body, X_BM[k]);
+    WriteBodyContents(body);
+    out_.Close();
+  }
+
+  /// What MJCF cannot hold of a body itself.
+  void ReportBodyLosses(BodyId body) {
+    const PlantBody& b = plant_.body(body);
     if (b.deformable) {
       diags_.Report(DiagKind::Lossy, BodyLoc(body),
                     fmt::format("body '{}' is deformable; it is written as a massless rigid "
@@ -210,20 +312,17 @@ class MjcfWriter : WriterBase {
                                 "none",
                                 b.name));
     }
-    WriteInertial(body);
-    WriteJoint(b.inbound_joint, kind, q0);
-    WriteBodyContents(body);
-    out_.Close();
   }
 
   void WriteInertial(BodyId body) {
     // every body has one: with inertiafromgeom=false, a moving body without
     // one is an error (MuJoCo also rejects a moving body of mass 0)
-    const PlantBody& b = plant_.body(body);
-    const Transform X_LB = X_BL_[body.index()].inverse();
-    const Eigen::Vector3d p = X_LB * b.p_BoBcm_B;
-    const Eigen::Matrix3d I = X_LB.R * b.I_BBcm_B * X_LB.R.transpose();
-    out_.Open("inertial").Attr("pos", p).Attr("mass", b.mass);
+    // the body's own, with those of the bodies fused into it
+    const size_t i = body.index();
+    const Transform X_LB = X_BL_[i].inverse();
+    const Eigen::Vector3d p = X_LB * layout_.p_BoBcm_B[i];
+    const Eigen::Matrix3d I = X_LB.R * layout_.I_BBcm_B[i] * X_LB.R.transpose();
+    out_.Open("inertial").Attr("pos", p).Attr("mass", layout_.mass[i]);
     // both read exactly; MuJoCo rejects a fullinertia without positive
     // eigenvalues (a massless body's zero), not the same diaginertia
     if (I(0, 1) == 0 && I(0, 2) == 0 && I(1, 2) == 0) {
@@ -236,12 +335,14 @@ class MjcfWriter : WriterBase {
     out_.Close();
   }
 
-  void WriteJoint(JointId id, Kind kind, const Eigen::VectorXd& q0) {
+  /// Joint `id` in written body `body`, its frame M at X_BM in the body
+  /// (the joint's X_CM when `body` is its child).
+  void WriteJoint(JointId id, Kind kind, const Eigen::VectorXd& q0, BodyId body,
+                  const Transform& X_BM) {
     const PlantJoint& j = plant_.joint(id);
     const Loc loc = JointLoc(id);
     if (kind == Kind::None) return;
-    const PlantBody& child = plant_.body(j.child);
-    const Transform X_LM = X_BL_[j.child.index()].inverse() * j.X_CM;
+    const Transform X_LM = X_BL_[body.index()].inverse() * X_BM;
     if (kind == Kind::Free) {
       if (!j.X_PF.IsIdentity()) {
         diags_.Report(DiagKind::Lossy, loc,
@@ -253,7 +354,6 @@ class MjcfWriter : WriterBase {
       out_.Open("freejoint");
       if (!j.unnamed) out_.Attr("name", JointName(id));
       out_.Close();
-      (void)child;
       return;
     }
     out_.Open("joint").Attr("name", JointName(id));
@@ -406,10 +506,11 @@ class MjcfWriter : WriterBase {
     if (open) out_.Close();
   }
 
+  // the geometry of written body `body` and of the bodies fused into it
   void WriteGeometries(BodyId body) {
     for (size_t i = 0; i < scene_.geometries.size(); ++i) {
       const backend::SceneGeometry& g = scene_.geometries[i];
-      if (g.body == body) WriteGeometry(i, g, GeometryLoc(i));
+      if (Owner(g.body) == body) WriteGeometry(i, g, GeometryLoc(i));
     }
   }
 
@@ -457,7 +558,7 @@ class MjcfWriter : WriterBase {
                    },
                },
                g.shape);
-    Pose(InLink(g.body, g.X_BG));
+    Pose(InWrittenLink(g.body, g.X_BG));
     if (!collision) out_.Attr("contype", "0").Attr("conaffinity", "0");
     if (!visual) out_.Attr("group", "3");  // mdlc and Drake: no visual for group > 2
     if (visual) Appearance(g, loc);
@@ -529,12 +630,19 @@ class MjcfWriter : WriterBase {
 
   // -- sites (frames) and cameras
 
+  // the frames of written body `body` and of the bodies fused into it, the
+  // fused bodies' own frames, and the constraints' points
   void WriteSites(BodyId body) {
     for (size_t f = 0; f < plant_.frames.size(); ++f) {
       const backend::PlantFrame& frame = plant_.frames[f];
-      if (frame.unnamed || frame.body != body) continue;
+      if (frame.unnamed || Owner(frame.body) != body) continue;
       out_.Open("site").Attr("name", Unique(site_names_, Named(frame.model, frame.name)));
-      Pose(InLink(body, frame.X_BF));
+      Pose(InWrittenLink(frame.body, frame.X_BF));
+      out_.Close();
+    }
+    for (BodyId fused : layout_.fused[body.index()]) {
+      out_.Open("site").Attr("name", fused_site_names_.at(fused.index()));
+      Pose(InWrittenLink(fused, Transform()));
       out_.Close();
     }
     for (const auto& [name, p_LP] : extra_sites_[body.index()]) {
@@ -547,13 +655,13 @@ class MjcfWriter : WriterBase {
   void WriteCameras(BodyId body) {
     for (size_t i = 0; i < scene_.cameras.size(); ++i) {
       const backend::SceneCamera& c = scene_.cameras[i];
-      if (c.body != body) continue;
+      if (Owner(c.body) != body) continue;
       // Drake's camera looks along +z with +y down; MuJoCo's along -z with
       // +y up: a half turn about x between the two
       const Eigen::Matrix3d flip = Eigen::Vector3d(1, -1, -1).asDiagonal();
       out_.Open("camera");
       if (!c.unnamed) out_.Attr("name", Unique(camera_names_, Named(c.model, c.name)));
-      Pose(InLink(body, c.X_BC * Transform::FromRotation(flip)));
+      Pose(InWrittenLink(c.body, c.X_BC * Transform::FromRotation(flip)));
       out_.Attr("fovy", c.fov_y * 180.0 / M_PI);
       out_.Attr("resolution", fmt::format("{} {}", c.width, c.height));
       out_.Close();
@@ -563,13 +671,20 @@ class MjcfWriter : WriterBase {
   // -- contact excludes: every filtered pair (the adjacent ones MuJoCo and
   // mdlc filter anyway are harmless to repeat)
 
+  // (a pair of bodies fused into one is that body's own geometry: MuJoCo
+  // never collides a body with itself)
   void WriteContacts() {
-    if (scene_.collision_filters.empty()) return;
-    out_.Open("contact");
+    std::set<std::pair<size_t, size_t>> written;
     for (const auto& [a, b] : scene_.collision_filters) {
-      out_.Open("exclude").Attr("body1", BodyName(a)).Attr("body2", BodyName(b)).Close();
+      const BodyId x = Owner(a), y = Owner(b);
+      if (x == y || !written.insert({std::min(x.index(), y.index()), std::max(x.index(), y.index())})
+                         .second) {
+        continue;
+      }
+      if (written.size() == 1) out_.Open("contact");
+      out_.Open("exclude").Attr("body1", BodyName(x)).Attr("body2", BodyName(y)).Close();
     }
-    out_.Close();
+    if (!written.empty()) out_.Close();
   }
 
   // -- equality constraints
@@ -589,8 +704,8 @@ class MjcfWriter : WriterBase {
                                                       BodyId B, const Transform& X_BQ) {
     const std::string a = Unique(site_names_, fmt::format("constraint{}_P", i));
     const std::string b = Unique(site_names_, fmt::format("constraint{}_Q", i));
-    extra_sites_[A.index()].emplace_back(a, InLink(A, X_AP));
-    extra_sites_[B.index()].emplace_back(b, InLink(B, X_BQ));
+    extra_sites_[Owner(A).index()].emplace_back(a, InWrittenLink(A, X_AP));
+    extra_sites_[Owner(B).index()].emplace_back(b, InWrittenLink(B, X_BQ));
     return {a, b};
   }
 
@@ -785,6 +900,8 @@ class MjcfWriter : WriterBase {
   }
 
   FlatNames names_;
+  MjcfBodyLayout layout_;
+  std::map<size_t, std::string> fused_site_names_;
   std::vector<Transform> X_BL_;
   std::map<size_t, std::vector<BodyId>> children_;
   std::map<size_t, std::string> mesh_names_;

@@ -63,6 +63,7 @@ struct CliOptions {
   std::string to;
   std::string copy_assets_dir;
   bool keep_package_uris = false;
+  bool fuse_fixed = false;
   // tree, stats
   bool json_output = false;
   // check
@@ -255,6 +256,7 @@ int RunConvert(CliOptions cli) {
     convert.output = cli.output == "-" ? "" : cli.output;
     if (!cli.copy_assets_dir.empty()) convert.copy_assets_dir = cli.copy_assets_dir;
     convert.keep_package_uris = cli.keep_package_uris;
+    convert.fuse_fixed = cli.fuse_fixed;
     text = result.Convert(convert);
   }
   if (!result.ok() || !text) {
@@ -479,6 +481,8 @@ int main(int argc, char** argv) {
                       "Copy the meshes into DIR (one copy per distinct content) and name them");
   convert->add_flag("--keep-package-uris", cli.keep_package_uris,
                     "Keep package:// URIs as written instead of naming the files");
+  convert->add_flag("--fuse-fixed", cli.fuse_fixed,
+                    "MJCF: fuse each body welded to its parent into it");
 
   CLI::App* tree = app.add_subcommand("tree", "Print each model instance's kinematic tree");
   AddCompileOptions(tree, cli);
