@@ -29,7 +29,9 @@
 //   <weld> between two sites; tendon constraints -> fixed tendons; collision
 //   filters -> <contact><exclude>.
 // Several model instances become one model whose names carry their instance
-// ("arm/link1"), as the URDF writer does.
+// ("arm/link1"), as the URDF writer does; an element whose written name does
+// not give back its scoped name holds a comment naming its instance and name,
+// which mdlc's reader restores (ir/original_names.h).
 //
 // Which plant bodies become <body> elements is mjcf_layout.h's: a chain of
 // massless bodies between hinges and slides (an MJCF body's stacked joints,
@@ -118,6 +120,12 @@ class MjcfWriter : WriterBase {
 
   std::string Named(ModelId model, std::string_view name) const {
     return names_.Named(model, name);
+  }
+  /// Round-trip metadata inside the element just opened, after its
+  /// attributes: the entity's instance and name when the file does not say
+  /// them (names.h, ir/original_names.h).
+  void OriginalName(ModelId model, std::string_view name, std::string_view read_back) {
+    if (auto comment = names_.OriginalNameComment(model, name, read_back)) out_.Comment(*comment);
   }
   std::string BodyName(BodyId body) const {
     if (body.index() == 0) return "world";
@@ -282,6 +290,7 @@ class MjcfWriter : WriterBase {
                             X_BL_[body.index()];
     out_.Open("body").Attr("name", BodyName(body));
     Pose(X_LpL);
+    OriginalName(plant_.body(body).model, plant_.body(body).name, BodyName(body));
     ReportBodyLosses(body);
     WriteInertial(body);
     // each joint at its frame M_k in B: X_BM_k = (X_CM_k^-1 * X_{C_k,B})^-1
@@ -352,7 +361,11 @@ class MjcfWriter : WriterBase {
                                   j.name));
       }
       out_.Open("freejoint");
-      if (!j.unnamed) out_.Attr("name", JointName(id));
+      if (!j.unnamed) {
+        out_.Attr("name", JointName(id));
+        // the reader names a free joint after its body
+        OriginalName(j.model, j.name, BodyName(j.child));
+      }
       out_.Close();
       return;
     }
@@ -380,6 +393,7 @@ class MjcfWriter : WriterBase {
     }
     Armature(id, loc);
     Spring(id);
+    OriginalName(j.model, j.name, JointName(id));
     out_.Close();
     DropUnwritableLimits(id, loc);
   }
@@ -528,7 +542,8 @@ class MjcfWriter : WriterBase {
                                                                   : "perception"));
     }
     out_.Open("geom");
-    if (!g.unnamed) out_.Attr("name", Unique(geom_names_, Named(g.model, g.name)));
+    std::string name;
+    if (!g.unnamed) out_.Attr("name", name = Unique(geom_names_, Named(g.model, g.name)));
     std::visit(ir::Overloaded{
                    [&](const ir::Box& s) {
                      out_.Attr("type", "box").Attr("size", Eigen::Vector3d(s.size / 2));
@@ -563,6 +578,7 @@ class MjcfWriter : WriterBase {
     if (!visual) out_.Attr("group", "3");  // mdlc and Drake: no visual for group > 2
     if (visual) Appearance(g, loc);
     if (collision) Friction(g, loc);
+    if (!g.unnamed) OriginalName(g.model, g.name, name);
     out_.Close();
   }
 
@@ -636,8 +652,10 @@ class MjcfWriter : WriterBase {
     for (size_t f = 0; f < plant_.frames.size(); ++f) {
       const backend::PlantFrame& frame = plant_.frames[f];
       if (frame.unnamed || Owner(frame.body) != body) continue;
-      out_.Open("site").Attr("name", Unique(site_names_, Named(frame.model, frame.name)));
+      const std::string name = Unique(site_names_, Named(frame.model, frame.name));
+      out_.Open("site").Attr("name", name);
       Pose(InWrittenLink(frame.body, frame.X_BF));
+      OriginalName(frame.model, frame.name, name);
       out_.Close();
     }
     for (BodyId fused : layout_.fused[body.index()]) {
@@ -660,10 +678,13 @@ class MjcfWriter : WriterBase {
       // +y up: a half turn about x between the two
       const Eigen::Matrix3d flip = Eigen::Vector3d(1, -1, -1).asDiagonal();
       out_.Open("camera");
-      if (!c.unnamed) out_.Attr("name", Unique(camera_names_, Named(c.model, c.name)));
+      std::string name;
+      if (!c.unnamed) out_.Attr("name", name = Unique(camera_names_, Named(c.model, c.name)));
       Pose(InWrittenLink(c.body, c.X_BC * Transform::FromRotation(flip)));
       out_.Attr("fovy", c.fov_y * 180.0 / M_PI);
       out_.Attr("resolution", fmt::format("{} {}", c.width, c.height));
+      // the reader names a camera "model/camera"
+      if (!c.unnamed) OriginalName(c.model, c.name, names_.model_name() + "/" + name);
       out_.Close();
     }
   }
@@ -862,6 +883,7 @@ class MjcfWriter : WriterBase {
       double effort = a.effort_limit;
       if (effort == kInf && !j.effort.empty()) effort = j.effort[0];
       if (effort != kInf) out_.Attr("forcerange", VectorText(Eigen::Vector2d(-effort, effort)));
+      OriginalName(a.model, a.name, Named(a.model, a.name));
       out_.Close();
     }
     out_.Close();

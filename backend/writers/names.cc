@@ -5,6 +5,8 @@
 
 #include <set>
 
+#include "ir/original_names.h"
+
 namespace mdlc::writers {
 
 std::string Unscoped(std::string name) {
@@ -40,6 +42,13 @@ std::string FlatNames::NamedScoped(const std::string& scoped) const {
     return sep == std::string::npos ? scoped : scoped.substr(sep + 2);
   }
   return Prefixed(scoped.substr(0, sep), scoped.substr(sep + 2));
+}
+
+std::optional<std::string> FlatNames::OriginalNameComment(ModelId model, std::string_view name,
+                                                          std::string_view read_back) const {
+  const std::string& instance = plant_.model_instances[model.index()];
+  if (instance == model_name_ && read_back == name) return std::nullopt;
+  return ir::FormatOriginalNameComment(instance, name);
 }
 
 void FlatNames::ReportFlattening(const ir::Module& module, std::string_view what,

@@ -19,6 +19,9 @@
 //   -> one <drake:collision_filter_group> per filtered body pair.
 // Several model instances become one robot whose names carry their
 // instance ("arm/link1"; a nested instance "arm::hand" gives "arm/hand/link1").
+// A link, joint, frame or actuator whose written name does not give back its
+// scoped name holds a comment naming its instance and name, which mdlc's
+// reader restores (ir/original_names.h).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -84,6 +87,12 @@ class UrdfWriter : WriterBase {
   std::string Named(ModelId model, std::string_view name) const {
     return names_.Named(model, name);
   }
+  /// Round-trip metadata inside the element just opened, after its
+  /// attributes: the entity's instance and name when the file does not say
+  /// them (names.h, ir/original_names.h).
+  void OriginalName(ModelId model, std::string_view name, std::string_view written) {
+    if (auto comment = names_.OriginalNameComment(model, name, written)) out_.Comment(*comment);
+  }
   std::string LinkName(BodyId body) const {
     if (body.index() == 0) return "world";
     const PlantBody& b = plant_.body(body);
@@ -131,6 +140,7 @@ class UrdfWriter : WriterBase {
     const PlantBody& b = plant_.body(body);
     frame_names_.insert(LinkName(body));
     out_.Open("link").Attr("name", LinkName(body));
+    if (body.index() != 0) OriginalName(b.model, b.name, LinkName(body));
     if (b.deformable) {
       diags_.Report(DiagKind::Lossy, BodyLoc(body),
                     fmt::format("link '{}' is deformable; URDF has no deformable bodies, so "
@@ -308,6 +318,7 @@ class UrdfWriter : WriterBase {
         s = {"joint", "fixed"};
     }
     out_.Open(s.element).Attr("name", JointName(id)).Attr("type", s.type);
+    OriginalName(j.model, j.name, JointName(id));
     Origin(InLink(j.parent, j.X_PF));
     out_.Open("parent").Attr("link", LinkName(j.parent)).Close();
     out_.Open("child").Attr("link", LinkName(j.child)).Close();
@@ -471,12 +482,14 @@ class UrdfWriter : WriterBase {
       if (frame.unnamed) continue;
       const Transform X_LF = InLink(frame.body, frame.X_BF);
       const Loc loc = FrameLoc(f);
+      const std::string name = FrameName(frame, loc);
       out_.Open("frame")
-          .Attr("name", FrameName(frame, loc))
+          .Attr("name", name)
           .Attr("link", LinkName(frame.body))
           .Attr("xyz", X_LF.p)
-          .Attr("rpy", RpyFromRotation(X_LF.R))
-          .Close();
+          .Attr("rpy", RpyFromRotation(X_LF.R));
+      OriginalName(frame.model, frame.name, name);
+      out_.Close();
     }
   }
 
@@ -489,6 +502,7 @@ class UrdfWriter : WriterBase {
       out_.Open("hardwareInterface").Text("hardware_interface/EffortJointInterface").Close();
       out_.Close();
       out_.Open("actuator").Attr("name", Named(a.model, a.name));
+      OriginalName(a.model, a.name, Named(a.model, a.name));
       if (a.rotor_inertia != 0) {
         out_.Open("drake:rotor_inertia").Attr("value", a.rotor_inertia).Close();
       }

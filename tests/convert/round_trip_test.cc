@@ -1,7 +1,9 @@
 // round_trip_test.cc - `mdlc convert` round trips (issue 14): a model
 // compiled, converted to the target format, written beside a temporary
 // folder and compiled back is the same plant:
-//   - every body is there, under its mapped name;
+//   - every body is there, under its scoped name (URDF and MJCF hold one
+//     model; their writers leave comments from which mdlc's reader restores
+//     the instances and names);
 //   - every joint connects the mapped bodies with the same type;
 //   - at the default and at random configurations, every body's pose and
 //     the mass matrix agree to 1e-12 (relative to the quantity's scale);
@@ -27,7 +29,6 @@
 #include <set>
 #include <sstream>
 
-#include "backend/writers/names.h"
 #include "mdlc/mdlc.h"
 
 namespace mdlc {
@@ -171,9 +172,6 @@ struct Target {
   const char* extension;  // of the converted file
   const char* name;       // in test names
   LinkFrame link_frame;
-  /// URDF and MJCF flatten instances into one model ("instance/name");
-  /// SDFormat keeps them, so a body keeps its scoped name.
-  bool keeps_instances;
   /// SDFormat writes each role as it is; a URDF or MJCF visual is both
   /// illustration and perception.
   bool exact_roles;
@@ -186,11 +184,10 @@ struct Target {
   bool own_folder;
 };
 constexpr Target kTargets[] = {
-    {Format::Urdf, "urdf", "Urdf", UrdfLinkFrame, false, false, UrdfDrops, "half space", false,
+    {Format::Urdf, "urdf", "Urdf", UrdfLinkFrame, false, UrdfDrops, "half space", false, false},
+    {Format::Sdf, "sdf", "Sdf", SdfLinkFrame, true, SdfDrops, "on the world is dropped", false,
      false},
-    {Format::Sdf, "sdf", "Sdf", SdfLinkFrame, true, true, SdfDrops, "on the world is dropped",
-     false, false},
-    {Format::Mjcf, "xml", "Mjcf", MjcfLinkFrame, false, false, DropsNothing, "", true, true},
+    {Format::Mjcf, "xml", "Mjcf", MjcfLinkFrame, false, DropsNothing, "", true, true},
 };
 
 /// The converted model against the original; failures are gtest failures.
@@ -201,17 +198,17 @@ class Comparison {
 
   /// False when the kinematic structure could not be mapped.
   bool MapStructure(std::string* why) {
-    const writers::FlatNames flat(pa_);  // how URDF and MJCF name them
+    // every body keeps its scoped name: SDFormat keeps the instances as
+    // models; URDF and MJCF flatten them into one model ("instance/name",
+    // backend/writers/names.h) and leave comments from which mdlc's reader
+    // restores instances and names (ir/original_names.h)
     std::map<std::string, BodyId> by_name;
-    for (size_t i = 1; i < pb_.bodies.size(); ++i) {
-      by_name[to_.keeps_instances ? pb_.bodies[i].scoped_name : pb_.bodies[i].name] = BodyId(i);
-    }
+    for (size_t i = 1; i < pb_.bodies.size(); ++i) by_name[pb_.bodies[i].scoped_name] = BodyId(i);
     body_map_.assign(pa_.bodies.size(), BodyId());
     body_map_[0] = ir::kWorldBody;
     for (size_t i = 1; i < pa_.bodies.size(); ++i) {
       const auto& body = pa_.bodies[i];
-      const std::string name =
-          to_.keeps_instances ? body.scoped_name : flat.Named(body.model, body.name);
+      const std::string& name = body.scoped_name;
       auto it = by_name.find(name);
       if (it == by_name.end()) {
         *why = fmt::format("body '{}' is missing (looked for '{}')", body.scoped_name, name);
@@ -335,7 +332,7 @@ class Comparison {
     for (const auto& [x, y] : sb.collision_filters) {
       fb.insert({std::min(x.index(), y.index()), std::max(x.index(), y.index())});
     }
-    if (to_.keeps_instances) {
+    if (to_.format == Format::Sdf) {
       // a filter group is a model's: a filtered pair across top-level models
       // that is not filtered by the joints between them is reported dropped
       for (const auto& [x, y] : sa.collision_filters) {
@@ -473,12 +470,14 @@ struct Conversion {
 };
 
 Conversion ConvertText(const std::string& model, const std::string& name, ConvertOptions convert,
-                   const fs::path& dir) {
+                       const fs::path& dir) {
   Conversion c{Compile(Input::Text(model, (dir / name).string())), {}, {}, {}};
   EXPECT_TRUE(c.source.ok()) << Messages(c.source);
   if (!c.source.ok()) return c;
   c.file = dir / ("converted_" + fs::path(name).stem().string() +
-                  (convert.to == Format::Urdf ? ".urdf" : convert.to == Format::Sdf ? ".sdf" : ".xml"));
+                  (convert.to == Format::Urdf  ? ".urdf"
+                   : convert.to == Format::Sdf ? ".sdf"
+                                               : ".xml"));
   convert.output = c.file.string();
   c.text = c.source.Convert(convert);
   EXPECT_TRUE(c.text) << Messages(c.source);
@@ -767,6 +766,105 @@ TEST(MjcfWriter, FuseFixedCombinesMassPropertiesExactly) {
   }
   // the geometry is where it was, on the body that holds it now
   EXPECT_EQ(c.back->scene_graph().geometries.size(), c.source.scene_graph().geometries.size());
+}
+
+// Round-trip metadata: URDF and MJCF hold one model, so the writers prefix
+// each name with its instance; the comments they leave let mdlc's reader
+// give every entity back its instance and name. A caller who names the
+// model (--model-name) reads the file as written.
+TEST(Names, MultiInstanceRoundTripKeepsScopedNames) {
+  OutputDir dir;
+  const std::string sdf = R"(<sdf version="1.9">
+  <world name="w">
+    <model name="arm">
+      <link name="base">
+        <inertial><mass>2</mass><inertia><ixx>0.1</ixx><iyy>0.1</iyy><izz>0.1</izz></inertia></inertial>
+      </link>
+      <link name="link1">
+        <pose>0 0 0.5 0 0 0</pose>
+        <inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
+        <collision name="box"><geometry><box><size>0.1 0.1 0.1</size></box></geometry></collision>
+      </link>
+      <joint name="joint1" type="revolute">
+        <parent>base</parent><child>link1</child>
+        <axis><xyz>0 0 1</xyz><limit><effort>3</effort></limit></axis>
+      </joint>
+      <frame name="tool" attached_to="link1"><pose>0 0 0.1 0 0 0</pose></frame>
+      <model name="hand">
+        <pose>0 0 1 0 0 0</pose>
+        <link name="base">
+          <inertial><mass>0.5</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
+          <collision name="box"><geometry><box><size>0.05 0.05 0.05</size></box></geometry></collision>
+        </link>
+        <link name="finger">
+          <pose>0 0.05 0 0 0 0</pose>
+          <inertial><mass>0.1</mass><inertia><ixx>0.001</ixx><iyy>0.001</iyy><izz>0.001</izz></inertia></inertial>
+        </link>
+        <joint name="joint1" type="prismatic">
+          <parent>base</parent><child>finger</child><axis><xyz>0 1 0</xyz></axis>
+        </joint>
+      </model>
+      <joint name="wrist" type="revolute">
+        <parent>link1</parent><child>hand::base</child><axis><xyz>1 0 0</xyz></axis>
+      </joint>
+    </model>
+    <model name="table">
+      <static>true</static>
+      <link name="base">
+        <collision name="box"><geometry><box><size>1 1 0.1</size></box></geometry></collision>
+      </link>
+    </model>
+  </world>
+</sdf>
+)";
+  auto names = [](const Result& r) {
+    std::set<std::string> out;
+    const auto& p = r.plant();
+    for (const auto& b : p.bodies) out.insert("body " + b.scoped_name);
+    for (const auto& j : p.joints) {
+      if (!j.unnamed) out.insert("joint " + j.scoped_name);
+    }
+    for (const auto& f : p.frames) {
+      if (!f.unnamed) out.insert("frame " + p.model_instances[f.model.index()] + "::" + f.name);
+    }
+    for (const auto& a : p.actuators) {
+      out.insert("actuator " + p.model_instances[a.model.index()] + "::" + a.name);
+    }
+    return out;
+  };
+  for (Format to : {Format::Urdf, Format::Mjcf}) {
+    SCOPED_TRACE(FormatName(to));
+    const Conversion c = ConvertText(sdf, "scene.sdf", To(to), dir.path());
+    ASSERT_TRUE(c.back && c.back->ok());
+    // written flat, with the instance in each name...
+    EXPECT_NE(c.text->find("\"arm/hand/base\""), std::string::npos) << *c.text;
+    EXPECT_NE(c.text->find("<!-- mdlc:name model=\"arm::hand\" name=\"base\" -->"),
+              std::string::npos)
+        << *c.text;
+    // ...and read back under the scoped names it had
+    std::set<std::string> before = names(c.source), after = names(*c.back);
+    for (const std::string& n : before) EXPECT_TRUE(after.count(n)) << n << " is missing";
+    std::set<std::string> instances_before(c.source.plant().model_instances.begin(),
+                                           c.source.plant().model_instances.end());
+    std::set<std::string> instances_after(c.back->plant().model_instances.begin(),
+                                          c.back->plant().model_instances.end());
+    EXPECT_EQ(instances_after, instances_before);
+    // the plant is the same under those names
+    Comparison cmp(c.source, *c.back, to == Format::Urdf ? kTargets[0] : kTargets[2]);
+    std::string why;
+    ASSERT_TRUE(cmp.MapStructure(&why)) << why;
+    cmp.CompareAt(c.source.DefaultPositions(), "default q");
+    // naming the model reads the file as written: one instance, flat names
+    Options named;
+    named.model_name = "as_written";
+    const Result flat = Compile(Input::File(c.file.string()), named);
+    ASSERT_TRUE(flat.ok()) << Messages(flat);
+    bool found = false;
+    for (const auto& b : flat.plant().bodies) {
+      found = found || b.scoped_name == "as_written::arm/hand/base";
+    }
+    EXPECT_TRUE(found);
+  }
 }
 
 }  // namespace
