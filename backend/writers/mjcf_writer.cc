@@ -498,23 +498,29 @@ class MjcfWriter : WriterBase {
 
   // -- geometry
 
+  // one <mesh> asset per file and scale, shared by the geoms that use them
+  // (a link's visual and collision often name the same file)
   void WriteMeshAssets() {
     bool open = false;
+    std::map<std::pair<std::string, std::string>, std::string> assets;  // (file, scale) -> name
     for (size_t i = 0; i < scene_.geometries.size(); ++i) {
       const backend::SceneGeometry& g = scene_.geometries[i];
       const Loc loc = GeometryLoc(i);
       const auto* mesh = std::get_if<ir::Mesh>(&g.shape);
       if (!mesh) continue;
+      const std::optional<std::string> file =
+          assets_.Name(mesh->uri, mesh->resolved, mesh->uri_loc.valid() ? mesh->uri_loc : loc);
+      const std::string scale =
+          mesh->scale != Eigen::Vector3d::Ones() ? VectorText(mesh->scale) : std::string();
+      auto [it, added] =
+          assets.emplace(std::pair(file.value_or(""), scale), fmt::format("mesh{}", i));
+      mesh_names_[i] = it->second;
+      if (!added) continue;
       if (!open) out_.Open("asset");
       open = true;
-      const std::string name = fmt::format("mesh{}", i);
-      mesh_names_[i] = name;
-      out_.Open("mesh").Attr("name", name);
-      if (auto file = assets_.Name(mesh->uri, mesh->resolved,
-                                   mesh->uri_loc.valid() ? mesh->uri_loc : loc)) {
-        out_.Attr("file", *file);
-      }
-      if (mesh->scale != Eigen::Vector3d::Ones()) out_.Attr("scale", mesh->scale);
+      out_.Open("mesh").Attr("name", it->second);
+      if (file) out_.Attr("file", *file);
+      if (!scale.empty()) out_.Attr("scale", scale);
       out_.Close();
     }
     if (open) out_.Close();

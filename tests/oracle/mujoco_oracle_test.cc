@@ -281,7 +281,9 @@ struct ModelCase {
   std::string skip_reason;
   double inertia_floor = 0;  // kg m^2: see kMujocoEigenResidualFiles
   bool converted = false;    // written by `mdlc convert` (ConvertedCases)
-  // extra arguments for mdlc (a converted file: read as written)
+  // what mdlc compiles instead of `path` (a converted file against its
+  // source: MDLC_ORACLE_MDLC_SOURCE), and extra arguments for it
+  std::string mdlc_path;
   std::vector<std::string> mdlc_args;
 };
 
@@ -338,10 +340,14 @@ std::vector<ModelCase> HandMadeCases() {
 }
 
 // Ad-hoc models for investigating a discrepancy: MDLC_ORACLE_EXTRA_MODELS is
-// a ':'-separated list of .xml files or directories of them.
+// a ':'-separated list of .xml files or directories of them. With
+// MDLC_ORACLE_MDLC_SOURCE=FILE, mdlc compiles FILE instead of each of them:
+// MuJoCo's reading of a converted model against mdlc's of its source (the
+// README's walk-through, tests/convert).
 std::vector<ModelCase> ExtraCases() {
   std::vector<ModelCase> cases;
   const char* env = std::getenv("MDLC_ORACLE_EXTRA_MODELS");
+  const char* source = std::getenv("MDLC_ORACLE_MDLC_SOURCE");
   std::stringstream ss(env ? env : "");
   for (std::string item; std::getline(ss, item, ':');) {
     if (item.empty()) continue;
@@ -353,6 +359,7 @@ std::vector<ModelCase> ExtraCases() {
       c.id = Sanitize(f.stem().string());
       c.path = fs::absolute(f).string();
       c.display = f.string();
+      if (source && *source) c.mdlc_path = fs::absolute(source).string();
       cases.push_back(c);
     }
   }
@@ -1254,7 +1261,7 @@ TEST_P(MujocoOracle, CompiledModelMatches) {
     rep.SetContext("config " + std::to_string(c) + ", " + DescribeQ(q));
     Plant plant;
     const MdlcRun run =
-        RunMdlc(mc.path, q, &plant, mc.mdlc_args);
+        RunMdlc(mc.mdlc_path.empty() ? mc.path : mc.mdlc_path, q, &plant, mc.mdlc_args);
     if (!run.ok) {
       if (c == 0 && mujoco2 && run.result.exit_code == 1 && HasLocatedError(run.result.err)) {
         // MuJoCo 3 rejects it and mdlc rejects it with a located diagnostic:
