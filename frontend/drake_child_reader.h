@@ -17,14 +17,12 @@
 #include "frontend/xml/xml_document.h"
 #include "ir/diagnostics.h"
 #include "ir/module.h"
+#include "ir/proximity_properties.h"
 
 namespace mdlc::frontend {
 
-/// Where a drake: child writes its value or name.
-enum class ValueSpelling {
-  Attribute,  // URDF: @value for numbers, @name (or @link) for names
-  Text,       // SDFormat: the element's text
-};
+/// Where a drake: child writes its value or name (shared with the writers).
+using ir::ValueSpelling;
 
 /// The sign a number must have.
 enum class Sign { Any, Positive, NonNegative };

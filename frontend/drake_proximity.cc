@@ -7,6 +7,8 @@
 #include <array>
 #include <string_view>
 
+#include "ir/proximity_properties.h"
+
 namespace mdlc::frontend {
 
 /// Reports `e` as a repeat of `first` that is ignored.
@@ -21,7 +23,7 @@ void ReportRepeatedElement(DiagnosticEngine& diags, const xml::XmlElement& e,
 }
 
 namespace {
-constexpr std::string_view kProximityTag = "drake:proximity_properties";
+constexpr std::string_view kProximityTag = ir::kProximityPropertiesTag;
 }  // namespace
 
 
@@ -53,39 +55,15 @@ std::optional<std::vector<double>> CoulombFriction(DiagnosticEngine& diags, cons
   return std::vector<double>{mu_static.value, mu_dynamic.value};
 }
 
-// <drake:proximity_properties> children that carry a number in @value, with
-// the range each must be in and the property it becomes, in Drake's order
-// of properties.
-enum ValueTag {
-  kResolutionHint,
-  kModulus,
-  kDissipation,
-  kStiffness,
-  kMuDynamic,
-  kMuStatic,
-  kRelaxationTime,
-  kMargin,
-  kValueTagCount
-};
-struct ValueTagInfo {
-  std::string_view tag;
-  bool zero_allowed;      // else the value must be positive; never negative
-  std::string_view what;  // for messages
-  std::string_view key;   // the property; empty for friction (two tags, one key)
-};
-constexpr std::array<ValueTagInfo, kValueTagCount> kValueTags = {{
-    {"drake:mesh_resolution_hint", false, "mesh resolution hint", "hydroelastic/resolution_hint"},
-    {"drake:hydroelastic_modulus", false, "hydroelastic modulus",
-     "hydroelastic/hydroelastic_modulus"},
-    {"drake:hunt_crossley_dissipation", true, "Hunt-Crossley dissipation",
-     "material/hunt_crossley_dissipation"},
-    {"drake:point_contact_stiffness", false, "point contact stiffness",
-     "material/point_contact_stiffness"},
-    {"drake:mu_dynamic", true, "dynamic friction coefficient", ""},
-    {"drake:mu_static", true, "static friction coefficient", ""},
-    {"drake:relaxation_time", true, "relaxation time", "material/relaxation_time"},
-    {"drake:hydroelastic_margin", true, "hydroelastic margin", "hydroelastic/margin"},
-}};
+// <drake:proximity_properties> children that carry a number, with the range
+// each must be in and the property it becomes, in Drake's order of
+// properties: ir/proximity_properties.h, which the writers share.
+using ir::kProximityValueTags;
+using ir::ProximityValueTag;
+constexpr size_t kValueTagCount = ir::kProximityValueTagCount;
+using ir::kMuDynamic;
+using ir::kMuStatic;
+using ir::kModulus;
 
 /// EXT-020: the children of one <drake:proximity_properties>. Each problem
 /// is reported in document order; the properties are added in Drake's order.
@@ -94,8 +72,8 @@ void ReadDrakeProximityProperties(const xml::XmlElement& e, ir::Geometry& g,
                                   const ProximityValueReader& read_value) {
   attrs.WarnUnknownAttributes(e, {});
   // Drake reads the first of each, wherever it is
-  const xml::XmlElement rigid = e.Child("drake:rigid_hydroelastic");
-  const xml::XmlElement compliant = e.Child("drake:compliant_hydroelastic");
+  const xml::XmlElement rigid = e.Child(ir::kRigidHydroelasticTag);
+  const xml::XmlElement compliant = e.Child(ir::kCompliantHydroelasticTag);
   std::array<xml::XmlElement, kValueTagCount> elements;
   std::array<std::optional<Located>, kValueTagCount> values;  // each one in range
   bool friction_ok = true;
@@ -108,8 +86,8 @@ void ReadDrakeProximityProperties(const xml::XmlElement& e, ir::Geometry& g,
                    "<drake:compliant_hydroelastic>");
       continue;
     }
-    if (tag == "drake:rigid_hydroelastic" || tag == "drake:compliant_hydroelastic") {
-      const xml::XmlElement& first = tag == "drake:rigid_hydroelastic" ? rigid : compliant;
+    if (tag == ir::kRigidHydroelasticTag || tag == ir::kCompliantHydroelasticTag) {
+      const xml::XmlElement& first = tag == ir::kRigidHydroelasticTag ? rigid : compliant;
       if (first.raw() != c.raw()) {
         ReportRepeatedElement(diags, c, first);
         continue;
@@ -117,7 +95,7 @@ void ReadDrakeProximityProperties(const xml::XmlElement& e, ir::Geometry& g,
       attrs.WarnUnknownAttributes(c, {});
       if (marker_seen) {
         // the other one came first
-        const xml::XmlElement& other = tag == "drake:rigid_hydroelastic" ? compliant : rigid;
+        const xml::XmlElement& other = tag == ir::kRigidHydroelasticTag ? compliant : rigid;
         diags
             .Report(DiagKind::BadValue, c.GetLoc(),
                     "<drake:rigid_hydroelastic> and <drake:compliant_hydroelastic> are mutually "
@@ -127,14 +105,14 @@ void ReadDrakeProximityProperties(const xml::XmlElement& e, ir::Geometry& g,
       marker_seen = true;
       continue;
     }
-    const auto* info = std::find_if(kValueTags.begin(), kValueTags.end(),
-                                    [&](const ValueTagInfo& t) { return t.tag == tag; });
-    if (info == kValueTags.end()) {
+    const auto* info = std::find_if(kProximityValueTags.begin(), kProximityValueTags.end(),
+                                    [&](const ProximityValueTag& t) { return t.tag == tag; });
+    if (info == kProximityValueTags.end()) {
       diags.Report(DiagKind::UnknownElement, c.GetLoc(),
                    fmt::format("unknown element <{}> in <{}> is ignored", tag, kProximityTag));
       continue;
     }
-    const auto i = static_cast<size_t>(info - kValueTags.begin());
+    const auto i = static_cast<size_t>(info - kProximityValueTags.begin());
     if (elements[i]) {
       ReportRepeatedElement(diags, c, elements[i]);
       continue;
@@ -170,9 +148,9 @@ void ReadDrakeProximityProperties(const xml::XmlElement& e, ir::Geometry& g,
   }
 
   if (rigid && !compliant) {
-    g.properties.push_back({"hydroelastic/compliance_type", std::string("rigid")});
+    g.properties.push_back({std::string(ir::kComplianceTypeKey), std::string("rigid")});
   } else if (compliant && !rigid) {
-    g.properties.push_back({"hydroelastic/compliance_type", std::string("compliant")});
+    g.properties.push_back({std::string(ir::kComplianceTypeKey), std::string("compliant")});
   }
   for (size_t i = 0; i < kValueTagCount; ++i) {
     if (i == kMuDynamic) {
@@ -182,10 +160,10 @@ void ReadDrakeProximityProperties(const xml::XmlElement& e, ir::Geometry& g,
       if (!friction_ok || !(mu_static || mu_dynamic)) continue;
       if (auto friction = CoulombFriction(diags, mu_static ? *mu_static : *mu_dynamic,
                                    mu_dynamic ? *mu_dynamic : *mu_static)) {
-        g.properties.push_back({"material/coulomb_friction", std::move(*friction)});
+        g.properties.push_back({std::string(ir::kCoulombFrictionKey), std::move(*friction)});
       }
-    } else if (values[i] && !kValueTags[i].key.empty()) {
-      g.properties.push_back({std::string(kValueTags[i].key), values[i]->value});
+    } else if (values[i] && !kProximityValueTags[i].key.empty()) {
+      g.properties.push_back({std::string(kProximityValueTags[i].key), values[i]->value});
     }
   }
 }

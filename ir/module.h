@@ -14,6 +14,7 @@
 
 #include "ir/entities.h"
 #include "ir/frame_graph.h"
+#include "ir/original_names.h"
 #include "ir/scene_directives.h"
 #include "ir/symbol.h"
 
@@ -46,6 +47,9 @@ struct Module {
   /// MJCF gains that need the plant's mass matrix at qpos0 (the backend
   /// computes them), one entry per model that asks for any.
   std::vector<InertiaScaledGains> inertia_scaled_gains;
+  /// Names `mdlc convert` changed when it wrote the file (round-trip
+  /// metadata), awaiting the restore-names pass.
+  std::vector<OriginalName> original_names;
 
   /// Plant-wide settings a model may give (MJCF <option>); unset: Drake's defaults.
   std::optional<Eigen::Vector3d> gravity;  // m/s^2, in world

@@ -16,6 +16,9 @@ const std::vector<PassInfo>& RegisteredPasses() {
       // scene directives need every model's frames, and add joints the
       // checks below must see
       Info<CreateApplyDirectivesPass>(),
+      // the names `mdlc convert` wrote under others, before the checks
+      // report any of them
+      Info<CreateRestoreNamesPass>(),
       Info<CreateCheckJointsPass>(),
       Info<CreateCheckModelElementsPass>(),
       Info<CreateBuildKinematicTreePass>(),

@@ -28,6 +28,7 @@ std::unique_ptr<Pass> CreatePass(std::string_view name);
 std::unique_ptr<Pass> CreateResolveFramesPass();
 std::unique_ptr<Pass> CreateResolveNamesPass();
 std::unique_ptr<Pass> CreateApplyDirectivesPass();
+std::unique_ptr<Pass> CreateRestoreNamesPass();
 std::unique_ptr<Pass> CreateBuildKinematicTreePass();
 std::unique_ptr<Pass> CreateUniqueNamesPass();
 std::unique_ptr<Pass> CreateInertiaFromCollisionsPass();

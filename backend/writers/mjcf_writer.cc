@@ -29,7 +29,22 @@
 //   <weld> between two sites; tendon constraints -> fixed tendons; collision
 //   filters -> <contact><exclude>.
 // Several model instances become one model whose names carry their instance
-// ("arm/link1"), as the URDF writer does.
+// ("arm/link1"), as the URDF writer does; an element whose written name does
+// not give back its scoped name holds a comment naming its instance and name,
+// which mdlc's reader restores (ir/original_names.h).
+//
+// Which plant bodies become <body> elements is mjcf_layout.h's: a chain of
+// massless bodies between hinges and slides (an MJCF body's stacked joints,
+// as mdlc reads them) is one <body> with several <joint>s, and with
+// --fuse-fixed a welded body is fused into its parent. For a body B with
+// joints j1..jn, each 1-dof, at default positions q0_k, the body's pose is
+//   X_PB0 = prod_k X_F_k * X_FM_k(q0_k) * X_CM_k^-1
+// (F_1 on the parent, F_k on the massless body before joint k), and joint k
+// is written at frame M_k's pose in B at the default positions,
+//   X_BM_k = (X_CM_k^-1 * prod_{i>k} X_F_i * X_FM_i(q0_i) * X_CM_i^-1)^-1,
+// with ref q0_k: MuJoCo turns B about each joint's axis through its pos, in
+// B's frame, in order, which is the chain's motion at every q (see
+// frontend/mjcf/mjcf_joint.cc, which reads it back into the chain).
 #include <fmt/format.h>
 
 #include <Eigen/Geometry>
@@ -41,8 +56,10 @@
 #include <variant>
 
 #include "backend/kinematics.h"
-#include "backend/writers/asset_paths.h"
+#include "backend/writers/mjcf_layout.h"
+#include "backend/writers/names.h"
 #include "backend/writers/writer.h"
+#include "backend/writers/writer_base.h"
 #include "backend/writers/xml_out.h"
 #include "ir/overloaded.h"
 
@@ -58,21 +75,20 @@ std::string QuatText(const Eigen::Matrix3d& R) {
   return VectorText(Eigen::Vector4d(q.w(), q.x(), q.y(), q.z()));
 }
 
-class MjcfWriter {
+class MjcfWriter : WriterBase {
  public:
   MjcfWriter(const backend::CompiledModel& model, const ir::Module& module,
              const WriteOptions& options, DiagnosticEngine& diags)
-      : plant_(model.plant),
-        scene_(model.scene),
-        m_(module),
-        diags_(diags),
-        assets_(options, diags) {}
+      : WriterBase(model, module, options, diags),
+        names_(plant_),
+        layout_(PlanMjcfBodies(plant_, scene_, options.fuse_fixed)) {}
 
   std::string Write() {
-    ChooseNames();
+    names_.ReportFlattening(m_, "MJCF model", diags_);
+    ReportLayout();
     ChooseLinkFrames();
     PrepareConstraintSites();
-    out_.Open("mujoco").Attr("model", model_name_);
+    out_.Open("mujoco").Attr("model", names_.model_name());
     out_.Open("compiler")
         .Attr("angle", "radian")
         .Attr("autolimits", "true")
@@ -82,10 +98,10 @@ class MjcfWriter {
     if (plant_.time_step > 0) out_.Attr("timestep", plant_.time_step);
     out_.Close();
     WriteMeshAssets();
-    // children of each body, in body order (parents first)
+    // the written children of each written body, in body order (parents first)
     for (BodyId b : plant_.body_order) {
-      const PlantBody& body = plant_.body(b);
-      if (b.index() != 0 && body.parent.valid()) children_[body.parent.index()].push_back(b);
+      if (b.index() == 0 || !layout_.written(b) || !layout_.parent[b.index()].valid()) continue;
+      children_[Owner(layout_.parent[b.index()]).index()].push_back(b);
     }
     out_.Open("worldbody");
     WriteBodyContents(ir::kWorldBody);
@@ -102,32 +118,14 @@ class MjcfWriter {
  private:
   // -- names
 
-  void ChooseNames() {
-    std::set<size_t> instances;
-    for (size_t b = 1; b < plant_.bodies.size(); ++b) {
-      instances.insert(plant_.bodies[b].model.index());
-    }
-    prefix_instances_ = instances.size() > 1;
-    if (instances.empty()) {
-      model_name_ = "world";
-    } else if (!prefix_instances_) {
-      model_name_ = plant_.model_instances[*instances.begin()];
-    } else {
-      model_name_ = "scene";
-      const size_t first = *instances.begin();
-      diags_.Report(DiagKind::Lossy, first < m_.models.size() ? m_.models[first].loc : Loc{},
-                    fmt::format("the {} model instances are written as one MJCF model; each "
-                                "name is prefixed with its instance ('instance/name')",
-                                instances.size()));
-    }
-  }
   std::string Named(ModelId model, std::string_view name) const {
-    if (!prefix_instances_ || model.index() < 2) return Unscoped(std::string(name));
-    return Unscoped(fmt::format("{}/{}", plant_.model_instances[model.index()], name));
+    return names_.Named(model, name);
   }
-  static std::string Unscoped(std::string name) {
-    for (size_t at; (at = name.find("::")) != std::string::npos;) name.replace(at, 2, "/");
-    return name;
+  /// Round-trip metadata inside the element just opened, after its
+  /// attributes: the entity's instance and name when the file does not say
+  /// them (names.h, ir/original_names.h).
+  void OriginalName(ModelId model, std::string_view name, std::string_view read_back) {
+    if (auto comment = names_.OriginalNameComment(model, name, read_back)) out_.Comment(*comment);
   }
   std::string BodyName(BodyId body) const {
     if (body.index() == 0) return "world";
@@ -147,18 +145,9 @@ class MjcfWriter {
     }
     return unique;
   }
-  Loc BodyLoc(BodyId body) const {
-    return body.index() < m_.bodies.size() ? m_.bodies[body.index()].loc : Loc{};
-  }
-  Loc JointLoc(JointId joint) const {
-    return joint.index() < m_.joints.size() ? m_.joints[joint.index()].loc : Loc{};
-  }
 
   // -- body frames: X_BL per body
 
-  static bool IsFloating(const PlantJoint& j) {
-    return j.type == ir::JointType::QuaternionFloating || j.type == ir::JointType::RpyFloating;
-  }
   /// How the joint is written: hinge, slide, ball, free, or nothing.
   enum class Kind { None, Hinge, Slide, Ball, Free };
   Kind KindOf(const PlantJoint& j) const {
@@ -186,6 +175,56 @@ class MjcfWriter {
   Transform InLink(BodyId body, const Transform& X_BA) const {
     return X_BL_[body.index()].inverse() * X_BA;
   }
+
+  // -- the written bodies (mjcf_layout.h)
+
+  /// The written body that holds body b's content.
+  BodyId Owner(BodyId b) const { return layout_.owner[b.index()]; }
+  /// X_BA given in body b, as a pose in b's owner.
+  Transform InOwner(BodyId b, const Transform& X_BA) const {
+    if (layout_.role[b.index()] != MjcfBodyLayout::Role::Fused) return X_BA;
+    return layout_.X_OB[b.index()] * X_BA;
+  }
+  /// X_BA given in body b, in the frame L of the <body> that holds it.
+  Transform InWrittenLink(BodyId b, const Transform& X_BA) const {
+    return InLink(Owner(b), InOwner(b, X_BA));
+  }
+
+  /// What the layout merged away (named bodies only: a massless body mdlc
+  /// made between an MJCF body's stacked joints comes back as it was) and
+  /// fused (--fuse-fixed, a note per body).
+  void ReportLayout() {
+    for (size_t b = 1; b < plant_.bodies.size(); ++b) {
+      const PlantBody& body = plant_.bodies[b];
+      const BodyId owner = layout_.owner[b];
+      switch (layout_.role[b]) {
+        case MjcfBodyLayout::Role::Written:
+          break;
+        case MjcfBodyLayout::Role::Merged:
+          if (body.unnamed) break;
+          diags_.Report(DiagKind::Lossy, BodyLoc(BodyId(b)),
+                        fmt::format("body '{}' is massless and moves on joint '{}', which MuJoCo "
+                                    "refuses; it is not written, and its joints move body '{}' "
+                                    "instead, with the same motion",
+                                    body.name, plant_.joint(body.inbound_joint).name,
+                                    BodyName(owner)));
+          break;
+        case MjcfBodyLayout::Role::Fused:
+          fused_site_names_[b] = Unique(site_names_, BodyName(BodyId(b)));
+          diags_
+              .Report(DiagKind::FusedBody, BodyLoc(BodyId(b)),
+                      fmt::format("body '{}' is fused into body '{}' (--fuse-fixed): its fixed "
+                                  "joint '{}' is gone, its mass properties are added to '{}', its "
+                                  "geometry, frames and cameras are re-posed there, and its own "
+                                  "frame is kept as site '{}'",
+                                  body.name, BodyName(owner),
+                                  plant_.joint(body.inbound_joint).name, BodyName(owner),
+                                  fused_site_names_[b]));
+          ReportBodyLosses(BodyId(b));
+          break;
+      }
+    }
+  }
   Eigen::Vector3d PointInLink(BodyId body, const Eigen::Vector3d& p_BP) const {
     return InLink(body, Transform::FromTranslation(p_BP)).p;
   }
@@ -204,11 +243,8 @@ class MjcfWriter {
     for (BodyId child : children_[body.index()]) WriteBody(child);
   }
 
-  void WriteBody(BodyId body) {
-    const PlantBody& b = plant_.body(body);
-    const PlantJoint& j = plant_.joint(b.inbound_joint);
-    const Loc loc = JointLoc(b.inbound_joint);
-    Kind kind = KindOf(j);
+  /// The default positions of a joint as written (a ball's are dropped).
+  Eigen::VectorXd WrittenDefault(const PlantJoint& j, Kind kind, Loc loc) {
     Eigen::VectorXd q0 = Eigen::Map<const Eigen::VectorXd>(
         j.default_positions.data(), static_cast<Eigen::Index>(j.default_positions.size()));
     if (q0.size() != j.nq) q0 = Eigen::VectorXd::Zero(j.nq);
@@ -220,7 +256,7 @@ class MjcfWriter {
                                 j.type == ir::JointType::QuaternionFloating
                                     ? " (its parent is not the world)"
                                     : "",
-                                BodyName(body)));
+                                BodyName(j.child)));
     }
     if (kind == Kind::Ball && !q0.isZero(0)) {  // the plant's ball: roll-pitch-yaw
       diags_.Report(DiagKind::Lossy, loc,
@@ -229,11 +265,50 @@ class MjcfWriter {
                                 j.name));
       q0.setZero();
     }
-    // X_LpL at the default positions
-    const Transform X_PC0 = j.X_PF * backend::JointPose(j, q0) * j.X_CM.inverse();
-    const Transform X_LpL = X_BL_[j.parent.index()].inverse() * X_PC0 * X_BL_[body.index()];
+    return q0;
+  }
+
+  void WriteBody(BodyId body) {
+    const std::vector<JointId>& chain = layout_.joints[body.index()];
+    const size_t n = chain.size();
+    std::vector<Kind> kinds(n);
+    std::vector<Eigen::VectorXd> q0(n);
+    // X_{k-1,k}: the pose of the child of joint k in its parent at the
+    // default positions; the first parent is layout_.parent
+    std::vector<Transform> step(n);
+    for (size_t k = 0; k < n; ++k) {
+      const PlantJoint& j = plant_.joint(chain[k]);
+      kinds[k] = KindOf(j);
+      q0[k] = WrittenDefault(j, kinds[k], JointLoc(chain[k]));
+      step[k] = j.X_PF * backend::JointPose(j, q0[k]) * j.X_CM.inverse();
+    }
+    // X_PB0, then in the written parent's frame L_P
+    Transform X_PB0 = step[0];
+    for (size_t k = 1; k < n; ++k) X_PB0 = X_PB0 * step[k];
+    const BodyId parent = layout_.parent[body.index()];
+    const Transform X_LpL = X_BL_[Owner(parent).index()].inverse() * InOwner(parent, X_PB0) *
+                            X_BL_[body.index()];
     out_.Open("body").Attr("name", BodyName(body));
     Pose(X_LpL);
+    OriginalName(plant_.body(body).model, plant_.body(body).name, BodyName(body));
+    ReportBodyLosses(body);
+    WriteInertial(body);
+    // each joint at its frame M_k in B: X_BM_k = (X_CM_k^-1 * X_{C_k,B})^-1
+    Transform X_CkB;  // identity for the last joint
+    std::vector<Transform> X_BM(n);
+    for (size_t k = n; k-- > 0;) {
+      const PlantJoint& j = plant_.joint(chain[k]);
+      X_BM[k] = k + 1 == n ? j.X_CM : X_CkB.inverse() * j.X_CM;
+      X_CkB = step[k] * X_CkB;
+    }
+    for (size_t k = 0; k < n; ++k) WriteJoint(chain[k], kinds[k], q0[k], body, X_BM[k]);
+    WriteBodyContents(body);
+    out_.Close();
+  }
+
+  /// What MJCF cannot hold of a body itself.
+  void ReportBodyLosses(BodyId body) {
+    const PlantBody& b = plant_.body(body);
     if (b.deformable) {
       diags_.Report(DiagKind::Lossy, BodyLoc(body),
                     fmt::format("body '{}' is deformable; it is written as a massless rigid "
@@ -246,20 +321,17 @@ class MjcfWriter {
                                 "none",
                                 b.name));
     }
-    WriteInertial(body);
-    WriteJoint(b.inbound_joint, kind, q0);
-    WriteBodyContents(body);
-    out_.Close();
   }
 
   void WriteInertial(BodyId body) {
     // every body has one: with inertiafromgeom=false, a moving body without
     // one is an error (MuJoCo also rejects a moving body of mass 0)
-    const PlantBody& b = plant_.body(body);
-    const Transform X_LB = X_BL_[body.index()].inverse();
-    const Eigen::Vector3d p = X_LB * b.p_BoBcm_B;
-    const Eigen::Matrix3d I = X_LB.R * b.I_BBcm_B * X_LB.R.transpose();
-    out_.Open("inertial").Attr("pos", p).Attr("mass", b.mass);
+    // the body's own, with those of the bodies fused into it
+    const size_t i = body.index();
+    const Transform X_LB = X_BL_[i].inverse();
+    const Eigen::Vector3d p = X_LB * layout_.p_BoBcm_B[i];
+    const Eigen::Matrix3d I = X_LB.R * layout_.I_BBcm_B[i] * X_LB.R.transpose();
+    out_.Open("inertial").Attr("pos", p).Attr("mass", layout_.mass[i]);
     // both read exactly; MuJoCo rejects a fullinertia without positive
     // eigenvalues (a massless body's zero), not the same diaginertia
     if (I(0, 1) == 0 && I(0, 2) == 0 && I(1, 2) == 0) {
@@ -272,12 +344,14 @@ class MjcfWriter {
     out_.Close();
   }
 
-  void WriteJoint(JointId id, Kind kind, const Eigen::VectorXd& q0) {
+  /// Joint `id` in written body `body`, its frame M at X_BM in the body
+  /// (the joint's X_CM when `body` is its child).
+  void WriteJoint(JointId id, Kind kind, const Eigen::VectorXd& q0, BodyId body,
+                  const Transform& X_BM) {
     const PlantJoint& j = plant_.joint(id);
     const Loc loc = JointLoc(id);
     if (kind == Kind::None) return;
-    const PlantBody& child = plant_.body(j.child);
-    const Transform X_LM = X_BL_[j.child.index()].inverse() * j.X_CM;
+    const Transform X_LM = X_BL_[body.index()].inverse() * X_BM;
     if (kind == Kind::Free) {
       if (!j.X_PF.IsIdentity()) {
         diags_.Report(DiagKind::Lossy, loc,
@@ -287,9 +361,12 @@ class MjcfWriter {
                                   j.name));
       }
       out_.Open("freejoint");
-      if (!j.unnamed) out_.Attr("name", JointName(id));
+      if (!j.unnamed) {
+        out_.Attr("name", JointName(id));
+        // the reader names a free joint after its body
+        OriginalName(j.model, j.name, BodyName(j.child));
+      }
       out_.Close();
-      (void)child;
       return;
     }
     out_.Open("joint").Attr("name", JointName(id));
@@ -316,6 +393,7 @@ class MjcfWriter {
     }
     Armature(id, loc);
     Spring(id);
+    OriginalName(j.model, j.name, JointName(id));
     out_.Close();
     DropUnwritableLimits(id, loc);
   }
@@ -420,43 +498,39 @@ class MjcfWriter {
 
   // -- geometry
 
+  // one <mesh> asset per file and scale, shared by the geoms that use them
+  // (a link's visual and collision often name the same file)
   void WriteMeshAssets() {
-    size_t ir_index = 0;
     bool open = false;
+    std::map<std::pair<std::string, std::string>, std::string> assets;  // (file, scale) -> name
     for (size_t i = 0; i < scene_.geometries.size(); ++i) {
       const backend::SceneGeometry& g = scene_.geometries[i];
-      while (ir_index < m_.geometries.size() && m_.geometries[ir_index].roles == 0) ++ir_index;
-      const Loc loc = ir_index < m_.geometries.size() ? m_.geometries[ir_index].loc : Loc{};
-      ++ir_index;
-      geometry_locs_.push_back(loc);
+      const Loc loc = GeometryLoc(i);
       const auto* mesh = std::get_if<ir::Mesh>(&g.shape);
       if (!mesh) continue;
+      const std::optional<std::string> file =
+          assets_.Name(mesh->uri, mesh->resolved, mesh->uri_loc.valid() ? mesh->uri_loc : loc);
+      const std::string scale =
+          mesh->scale != Eigen::Vector3d::Ones() ? VectorText(mesh->scale) : std::string();
+      auto [it, added] =
+          assets.emplace(std::pair(file.value_or(""), scale), fmt::format("mesh{}", i));
+      mesh_names_[i] = it->second;
+      if (!added) continue;
       if (!open) out_.Open("asset");
       open = true;
-      const std::string name = fmt::format("mesh{}", i);
-      mesh_names_[i] = name;
-      out_.Open("mesh").Attr("name", name);
-      if (auto file = assets_.Name(mesh->uri, mesh->resolved,
-                                   mesh->uri_loc.valid() ? mesh->uri_loc : loc)) {
-        out_.Attr("file", *file);
-      }
-      if (mesh->scale != Eigen::Vector3d::Ones()) out_.Attr("scale", mesh->scale);
+      out_.Open("mesh").Attr("name", it->second);
+      if (file) out_.Attr("file", *file);
+      if (!scale.empty()) out_.Attr("scale", scale);
       out_.Close();
     }
     if (open) out_.Close();
   }
 
-  static const ir::Property* Find(const backend::SceneGeometry& g, std::string_view key) {
-    for (const ir::Property& p : g.properties) {
-      if (p.key == key) return &p;
-    }
-    return nullptr;
-  }
-
+  // the geometry of written body `body` and of the bodies fused into it
   void WriteGeometries(BodyId body) {
     for (size_t i = 0; i < scene_.geometries.size(); ++i) {
       const backend::SceneGeometry& g = scene_.geometries[i];
-      if (g.body == body) WriteGeometry(i, g, geometry_locs_[i]);
+      if (Owner(g.body) == body) WriteGeometry(i, g, GeometryLoc(i));
     }
   }
 
@@ -474,7 +548,8 @@ class MjcfWriter {
                                                                   : "perception"));
     }
     out_.Open("geom");
-    if (!g.unnamed) out_.Attr("name", Unique(geom_names_, Named(g.model, g.name)));
+    std::string name;
+    if (!g.unnamed) out_.Attr("name", name = Unique(geom_names_, Named(g.model, g.name)));
     std::visit(ir::Overloaded{
                    [&](const ir::Box& s) {
                      out_.Attr("type", "box").Attr("size", Eigen::Vector3d(s.size / 2));
@@ -498,17 +573,32 @@ class MjcfWriter {
                    [&](const ir::HalfSpace&) {
                      out_.Attr("type", "plane").Attr("size", "0 0 1");
                    },
-                   [&](const ir::Mesh&) {
+                   [&](const ir::Mesh& s) {
                      out_.Attr("type", "mesh").Attr("mesh", mesh_names_[index]);
+                     if (s.convex && collision) ConvexLoss(g, loc);
                    },
                },
                g.shape);
-    Pose(InLink(g.body, g.X_BG));
+    Pose(InWrittenLink(g.body, g.X_BG));
     if (!collision) out_.Attr("contype", "0").Attr("conaffinity", "0");
     if (!visual) out_.Attr("group", "3");  // mdlc and Drake: no visual for group > 2
     if (visual) Appearance(g, loc);
     if (collision) Friction(g, loc);
+    if (!g.unnamed) OriginalName(g.model, g.name, name);
     out_.Close();
+  }
+
+  /// A collision mesh declared convex (drake:declare_convex): MuJoCo
+  /// collides with every mesh's convex hull, so MuJoCo's contact is what
+  /// the declaration asks for; but MJCF has no flag to carry it, and mdlc
+  /// and Drake read an MJCF mesh back as a mesh, not a convex shape.
+  void ConvexLoss(const backend::SceneGeometry& g, Loc loc) {
+    diags_.Report(DiagKind::Lossy, loc,
+                  fmt::format("the convex declaration of mesh geometry '{}' is dropped: MuJoCo "
+                              "collides with every mesh's convex hull, as declared, but MJCF "
+                              "has no flag for it, so the written geom reads back as a plain "
+                              "mesh",
+                              g.name));
   }
 
   /// MJCF needs positive sizes; Drake reads a zero-radius sphere as a point
@@ -523,18 +613,14 @@ class MjcfWriter {
   }
 
   void Appearance(const backend::SceneGeometry& g, Loc loc) {
-    if (const ir::Property* diffuse = Find(g, "phong/diffuse")) {
+    if (const ir::Property* diffuse = FindProperty(g, "phong/diffuse")) {
       if (const auto* rgba = std::get_if<std::vector<double>>(&diffuse->value);
           rgba && rgba->size() == 4) {
         out_.Attr("rgba", VectorText(Eigen::Map<const Eigen::Vector4d>(rgba->data())));
       }
     }
     for (const ir::Property& p : g.properties) {
-      if (p.key == "phong/diffuse") continue;
-      if (!p.key.starts_with("phong/") && !p.key.starts_with("renderer/") &&
-          !p.key.starts_with("label/")) {
-        continue;
-      }
+      if (p.key == "phong/diffuse" || !IsAppearanceProperty(p)) continue;
       diags_.Report(DiagKind::Lossy, loc,
                     fmt::format("illustration property '{}' of geometry '{}' is not written "
                                 "(the MJCF writer writes a geom's rgba only)",
@@ -544,10 +630,7 @@ class MjcfWriter {
 
   void Friction(const backend::SceneGeometry& g, Loc loc) {
     for (const ir::Property& p : g.properties) {
-      if (p.key.starts_with("phong/") || p.key.starts_with("renderer/") ||
-          p.key.starts_with("label/")) {
-        continue;
-      }
+      if (IsAppearanceProperty(p)) continue;
       const auto* v = std::get_if<std::vector<double>>(&p.value);
       if (p.key == "material/coulomb_friction" && v && v->size() == 2) {
         out_.Attr("friction", (*v)[0]);
@@ -569,12 +652,21 @@ class MjcfWriter {
 
   // -- sites (frames) and cameras
 
+  // the frames of written body `body` and of the bodies fused into it, the
+  // fused bodies' own frames, and the constraints' points
   void WriteSites(BodyId body) {
     for (size_t f = 0; f < plant_.frames.size(); ++f) {
       const backend::PlantFrame& frame = plant_.frames[f];
-      if (frame.unnamed || frame.body != body) continue;
-      out_.Open("site").Attr("name", Unique(site_names_, Named(frame.model, frame.name)));
-      Pose(InLink(body, frame.X_BF));
+      if (frame.unnamed || Owner(frame.body) != body) continue;
+      const std::string name = Unique(site_names_, Named(frame.model, frame.name));
+      out_.Open("site").Attr("name", name);
+      Pose(InWrittenLink(frame.body, frame.X_BF));
+      OriginalName(frame.model, frame.name, name);
+      out_.Close();
+    }
+    for (BodyId fused : layout_.fused[body.index()]) {
+      out_.Open("site").Attr("name", fused_site_names_.at(fused.index()));
+      Pose(InWrittenLink(fused, Transform()));
       out_.Close();
     }
     for (const auto& [name, p_LP] : extra_sites_[body.index()]) {
@@ -587,15 +679,18 @@ class MjcfWriter {
   void WriteCameras(BodyId body) {
     for (size_t i = 0; i < scene_.cameras.size(); ++i) {
       const backend::SceneCamera& c = scene_.cameras[i];
-      if (c.body != body) continue;
+      if (Owner(c.body) != body) continue;
       // Drake's camera looks along +z with +y down; MuJoCo's along -z with
       // +y up: a half turn about x between the two
       const Eigen::Matrix3d flip = Eigen::Vector3d(1, -1, -1).asDiagonal();
       out_.Open("camera");
-      if (!c.unnamed) out_.Attr("name", Unique(camera_names_, Named(c.model, c.name)));
-      Pose(InLink(body, c.X_BC * Transform::FromRotation(flip)));
+      std::string name;
+      if (!c.unnamed) out_.Attr("name", name = Unique(camera_names_, Named(c.model, c.name)));
+      Pose(InWrittenLink(c.body, c.X_BC * Transform::FromRotation(flip)));
       out_.Attr("fovy", c.fov_y * 180.0 / M_PI);
       out_.Attr("resolution", fmt::format("{} {}", c.width, c.height));
+      // the reader names a camera "model/camera"
+      if (!c.unnamed) OriginalName(c.model, c.name, names_.model_name() + "/" + name);
       out_.Close();
     }
   }
@@ -603,20 +698,24 @@ class MjcfWriter {
   // -- contact excludes: every filtered pair (the adjacent ones MuJoCo and
   // mdlc filter anyway are harmless to repeat)
 
+  // (a pair of bodies fused into one is that body's own geometry: MuJoCo
+  // never collides a body with itself)
   void WriteContacts() {
-    if (scene_.collision_filters.empty()) return;
-    out_.Open("contact");
+    std::set<std::pair<size_t, size_t>> written;
     for (const auto& [a, b] : scene_.collision_filters) {
-      out_.Open("exclude").Attr("body1", BodyName(a)).Attr("body2", BodyName(b)).Close();
+      const BodyId x = Owner(a), y = Owner(b);
+      if (x == y || !written.insert({std::min(x.index(), y.index()), std::max(x.index(), y.index())})
+                         .second) {
+        continue;
+      }
+      if (written.size() == 1) out_.Open("contact");
+      out_.Open("exclude").Attr("body1", BodyName(x)).Attr("body2", BodyName(y)).Close();
     }
-    out_.Close();
+    if (!written.empty()) out_.Close();
   }
 
   // -- equality constraints
 
-  Loc ConstraintLoc(size_t i) const {
-    return i < m_.constraints.size() ? m_.constraints[i].loc : Loc{};
-  }
   /// The written default position (ref) of a 1-dof joint; nullopt when the
   /// joint is not written as a hinge or slide.
   std::optional<double> WrittenRef(JointId id) const {
@@ -632,8 +731,8 @@ class MjcfWriter {
                                                       BodyId B, const Transform& X_BQ) {
     const std::string a = Unique(site_names_, fmt::format("constraint{}_P", i));
     const std::string b = Unique(site_names_, fmt::format("constraint{}_Q", i));
-    extra_sites_[A.index()].emplace_back(a, InLink(A, X_AP));
-    extra_sites_[B.index()].emplace_back(b, InLink(B, X_BQ));
+    extra_sites_[Owner(A).index()].emplace_back(a, InWrittenLink(A, X_AP));
+    extra_sites_[Owner(B).index()].emplace_back(b, InWrittenLink(B, X_BQ));
     return {a, b};
   }
 
@@ -770,7 +869,7 @@ class MjcfWriter {
     out_.Open("actuator");
     for (size_t i = 0; i < plant_.actuators.size(); ++i) {
       const backend::PlantActuator& a = plant_.actuators[i];
-      const Loc loc = i < m_.actuators.size() ? m_.actuators[i].loc : Loc{};
+      const Loc loc = ActuatorLoc(i);
       const PlantJoint& j = plant_.joint(a.joint);
       const Kind kind = KindOf(j);
       if (kind != Kind::Hinge && kind != Kind::Slide) {
@@ -790,6 +889,7 @@ class MjcfWriter {
       double effort = a.effort_limit;
       if (effort == kInf && !j.effort.empty()) effort = j.effort[0];
       if (effort != kInf) out_.Attr("forcerange", VectorText(Eigen::Vector2d(-effort, effort)));
+      OriginalName(a.model, a.name, Named(a.model, a.name));
       out_.Close();
     }
     out_.Close();
@@ -799,7 +899,7 @@ class MjcfWriter {
 
   void WriteForceElements() {
     for (size_t i = 0; i < plant_.force_elements.size(); ++i) {
-      const Loc loc = i < m_.force_elements.size() ? m_.force_elements[i].loc : Loc{};
+      const Loc loc = ForceElementLoc(i);
       std::visit(ir::Overloaded{
                      [&](const backend::LinearBushingRpy& k) {
                        diags_.Report(DiagKind::Lossy, loc,
@@ -827,17 +927,11 @@ class MjcfWriter {
     }
   }
 
-  const backend::Plant& plant_;
-  const backend::SceneGraph& scene_;
-  const ir::Module& m_;
-  DiagnosticEngine& diags_;
-  AssetPaths assets_;
-  XmlOut out_;
-  std::string model_name_;
-  bool prefix_instances_ = false;
+  FlatNames names_;
+  MjcfBodyLayout layout_;
+  std::map<size_t, std::string> fused_site_names_;
   std::vector<Transform> X_BL_;
   std::map<size_t, std::vector<BodyId>> children_;
-  std::vector<Loc> geometry_locs_;
   std::map<size_t, std::string> mesh_names_;
   std::set<std::string> geom_names_, site_names_, camera_names_;
   std::map<size_t, std::vector<std::pair<std::string, Transform>>> extra_sites_;

@@ -19,6 +19,9 @@
 //   -> one <drake:collision_filter_group> per filtered body pair.
 // Several model instances become one robot whose names carry their
 // instance ("arm/link1"; a nested instance "arm::hand" gives "arm/hand/link1").
+// A link, joint, frame or actuator whose written name does not give back its
+// scoped name holds a comment naming its instance and name, which mdlc's
+// reader restores (ir/original_names.h).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -28,8 +31,10 @@
 #include <set>
 #include <variant>
 
-#include "backend/writers/asset_paths.h"
+#include "backend/writers/drake_out.h"
+#include "backend/writers/names.h"
 #include "backend/writers/writer.h"
+#include "backend/writers/writer_base.h"
 #include "backend/writers/xml_out.h"
 #include "ir/overloaded.h"
 
@@ -53,19 +58,15 @@ bool AllEqual(const std::vector<double>& values) {
          values.end();
 }
 
-class UrdfWriter {
+class UrdfWriter : WriterBase {
  public:
   UrdfWriter(const backend::CompiledModel& model, const ir::Module& module,
              const WriteOptions& options, DiagnosticEngine& diags)
-      : plant_(model.plant),
-        scene_(model.scene),
-        m_(module),
-        diags_(diags),
-        assets_(options, diags) {}
+      : WriterBase(model, module, options, diags), names_(plant_) {}
 
   std::string Write() {
-    ChooseNames();
-    out_.Open("robot").Attr("name", robot_name_);
+    names_.ReportFlattening(m_, "URDF robot", diags_);
+    out_.Open("robot").Attr("name", names_.model_name());
     out_.Attr("xmlns:drake", "http://drake.mit.edu");
     if (NeedsWorldLink()) WriteLink(ir::kWorldBody);
     for (size_t b = 1; b < plant_.bodies.size(); ++b) WriteLink(BodyId(b));
@@ -83,37 +84,14 @@ class UrdfWriter {
  private:
   // -- names
 
-  void ChooseNames() {
-    std::set<size_t> instances;
-    for (size_t b = 1; b < plant_.bodies.size(); ++b) {
-      instances.insert(plant_.bodies[b].model.index());
-    }
-    prefix_instances_ = instances.size() > 1;
-    if (instances.empty()) {
-      robot_name_ = "world";
-    } else if (!prefix_instances_) {
-      robot_name_ = plant_.model_instances[*instances.begin()];
-    } else {
-      robot_name_ = "scene";
-      const size_t first = *instances.begin();
-      diags_.Report(DiagKind::Lossy, first < m_.models.size() ? m_.models[first].loc : Loc{},
-                    fmt::format("the {} model instances are written as one URDF robot; each "
-                                "name is prefixed with its instance ('instance/name')",
-                                instances.size()));
-    }
-  }
   std::string Named(ModelId model, std::string_view name) const {
-    if (!prefix_instances_ || model.index() < 2) return Unscoped(std::string(name));
-    return Prefixed(plant_.model_instances[model.index()], name);
+    return names_.Named(model, name);
   }
-  /// "a::b" -> "a/b": URDF would read "::" as a scope of its own.
-  static std::string Unscoped(std::string name) {
-    for (size_t at; (at = name.find("::")) != std::string::npos;) name.replace(at, 2, "/");
-    return name;
-  }
-  /// "outer::inner" + "link" -> "outer/inner/link".
-  static std::string Prefixed(const std::string& instance, std::string_view name) {
-    return Unscoped(fmt::format("{}/{}", instance, name));
+  /// Round-trip metadata inside the element just opened, after its
+  /// attributes: the entity's instance and name when the file does not say
+  /// them (names.h, ir/original_names.h).
+  void OriginalName(ModelId model, std::string_view name, std::string_view written) {
+    if (auto comment = names_.OriginalNameComment(model, name, written)) out_.Comment(*comment);
   }
   std::string LinkName(BodyId body) const {
     if (body.index() == 0) return "world";
@@ -124,13 +102,6 @@ class UrdfWriter {
     const PlantJoint& j = plant_.joint(joint);
     return Named(j.model, j.name);
   }
-  Loc BodyLoc(BodyId body) const {
-    return body.index() < m_.bodies.size() ? m_.bodies[body.index()].loc : Loc{};
-  }
-  Loc JointLoc(JointId joint) const {
-    return joint.index() < m_.joints.size() ? m_.joints[joint.index()].loc : Loc{};
-  }
-
   // -- frames: X_BL, the pose of body B's link frame L in B
 
   Transform LinkInBody(BodyId body) const {
@@ -163,15 +134,13 @@ class UrdfWriter {
     }
     return false;
   }
-  static bool IsFloating(const PlantJoint& j) {
-    return j.type == ir::JointType::QuaternionFloating || j.type == ir::JointType::RpyFloating;
-  }
   static bool IsFreeRoot(const PlantJoint& j) { return IsFloating(j) && j.parent.index() == 0; }
 
   void WriteLink(BodyId body) {
     const PlantBody& b = plant_.body(body);
     frame_names_.insert(LinkName(body));
     out_.Open("link").Attr("name", LinkName(body));
+    if (body.index() != 0) OriginalName(b.model, b.name, LinkName(body));
     if (b.deformable) {
       diags_.Report(DiagKind::Lossy, BodyLoc(body),
                     fmt::format("link '{}' is deformable; URDF has no deformable bodies, so "
@@ -201,13 +170,8 @@ class UrdfWriter {
       const Eigen::Vector3d axis = LinkInBody(body).R.transpose() * *b.surface_velocity_axis;
       out_.Open("drake:surface_velocity_axis").Attr("axis", axis).Close();
     }
-    size_t ir_index = 0;  // scene geometries are the IR's with a role, in order
-    for (const backend::SceneGeometry& g : scene_.geometries) {
-      while (ir_index < m_.geometries.size() && m_.geometries[ir_index].roles == 0) ++ir_index;
-      const Loc loc = ir_index < m_.geometries.size() ? m_.geometries[ir_index].loc : Loc{};
-      ++ir_index;
-      if (g.body != body) continue;
-      WriteGeometry(g, loc);
+    for (size_t i = 0; i < scene_.geometries.size(); ++i) {
+      if (scene_.geometries[i].body == body) WriteGeometry(scene_.geometries[i], GeometryLoc(i));
     }
     out_.Close();
   }
@@ -242,7 +206,7 @@ class UrdfWriter {
       out_.Open("collision").Attr("name", g.name);
       Origin(X_LG);
       Shape(g, loc, /*collision=*/true);
-      ProximityProperties(g, loc);
+      WriteProximityProperties(out_, ir::ValueSpelling::Attribute, "URDF", g, loc, diags_);
       out_.Close();
     }
   }
@@ -281,16 +245,9 @@ class UrdfWriter {
     out_.Close();
   }
 
-  static const ir::Property* Find(const backend::SceneGeometry& g, std::string_view key) {
-    for (const ir::Property& p : g.properties) {
-      if (p.key == key) return &p;
-    }
-    return nullptr;
-  }
-
   void Material(const backend::SceneGeometry& g, Loc loc) {
-    const ir::Property* diffuse = Find(g, "phong/diffuse");
-    const ir::Property* texture = Find(g, "phong/diffuse_map");
+    const ir::Property* diffuse = FindProperty(g, "phong/diffuse");
+    const ir::Property* texture = FindProperty(g, "phong/diffuse_map");
     if (!diffuse && !texture) return;
     // a material needs a name (urdfdom); each visual has its own
     out_.Open("material").Attr("name", fmt::format("{}:{}", LinkName(g.body), g.name));
@@ -309,57 +266,6 @@ class UrdfWriter {
       }
     }
     out_.Close();
-  }
-
-  // the scene's proximity properties as <drake:proximity_properties>
-  // children (EXT-020); what has no such child is reported
-  void ProximityProperties(const backend::SceneGeometry& g, Loc loc) {
-    struct Child {
-      std::string_view key, tag;
-    };
-    static constexpr Child kValueChildren[] = {
-        {"hydroelastic/resolution_hint", "drake:mesh_resolution_hint"},
-        {"hydroelastic/hydroelastic_modulus", "drake:hydroelastic_modulus"},
-        {"material/hunt_crossley_dissipation", "drake:hunt_crossley_dissipation"},
-        {"material/point_contact_stiffness", "drake:point_contact_stiffness"},
-        {"material/relaxation_time", "drake:relaxation_time"},
-        {"hydroelastic/margin", "drake:hydroelastic_margin"},
-    };
-    bool open = false;
-    auto open_once = [&] {
-      if (!open) out_.Open("drake:proximity_properties");
-      open = true;
-    };
-    for (const ir::Property& p : g.properties) {
-      if (p.key.starts_with("phong/") || p.key.starts_with("renderer/") ||
-          p.key.starts_with("label/")) {
-        continue;  // appearance: the visual's
-      }
-      const double* number = std::get_if<double>(&p.value);
-      const auto* vector = std::get_if<std::vector<double>>(&p.value);
-      const auto* text = std::get_if<std::string>(&p.value);
-      const auto child = std::find_if(std::begin(kValueChildren), std::end(kValueChildren),
-                                      [&](const Child& c) { return c.key == p.key; });
-      if (child != std::end(kValueChildren) && number) {
-        open_once();
-        out_.Open(child->tag).Attr("value", *number).Close();
-      } else if (p.key == "material/coulomb_friction" && vector && vector->size() == 2) {
-        open_once();
-        out_.Open("drake:mu_static").Attr("value", (*vector)[0]).Close();
-        out_.Open("drake:mu_dynamic").Attr("value", (*vector)[1]).Close();
-      } else if (p.key == "hydroelastic/compliance_type" && text &&
-                 (*text == "rigid" || *text == "compliant")) {
-        open_once();
-        out_.Open(*text == "rigid" ? "drake:rigid_hydroelastic" : "drake:compliant_hydroelastic")
-            .Close();
-      } else {
-        diags_.Report(DiagKind::Lossy, loc,
-                      fmt::format("proximity property '{}' of geometry '{}' has no URDF "
-                                  "spelling; it is dropped",
-                                  p.key, g.name));
-      }
-    }
-    if (open) out_.Close();
   }
 
   // -- joints
@@ -412,6 +318,7 @@ class UrdfWriter {
         s = {"joint", "fixed"};
     }
     out_.Open(s.element).Attr("name", JointName(id)).Attr("type", s.type);
+    OriginalName(j.model, j.name, JointName(id));
     Origin(InLink(j.parent, j.X_PF));
     out_.Open("parent").Attr("link", LinkName(j.parent)).Close();
     out_.Open("child").Attr("link", LinkName(j.child)).Close();
@@ -574,13 +481,15 @@ class UrdfWriter {
       const backend::PlantFrame& frame = plant_.frames[f];
       if (frame.unnamed) continue;
       const Transform X_LF = InLink(frame.body, frame.X_BF);
-      const Loc loc = f < m_.frames.size() ? m_.frames[f].loc : Loc{};
+      const Loc loc = FrameLoc(f);
+      const std::string name = FrameName(frame, loc);
       out_.Open("frame")
-          .Attr("name", FrameName(frame, loc))
+          .Attr("name", name)
           .Attr("link", LinkName(frame.body))
           .Attr("xyz", X_LF.p)
-          .Attr("rpy", RpyFromRotation(X_LF.R))
-          .Close();
+          .Attr("rpy", RpyFromRotation(X_LF.R));
+      OriginalName(frame.model, frame.name, name);
+      out_.Close();
     }
   }
 
@@ -593,6 +502,7 @@ class UrdfWriter {
       out_.Open("hardwareInterface").Text("hardware_interface/EffortJointInterface").Close();
       out_.Close();
       out_.Open("actuator").Attr("name", Named(a.model, a.name));
+      OriginalName(a.model, a.name, Named(a.model, a.name));
       if (a.rotor_inertia != 0) {
         out_.Open("drake:rotor_inertia").Attr("value", a.rotor_inertia).Close();
       }
@@ -608,12 +518,6 @@ class UrdfWriter {
       out_.Close();
       out_.Close();
     }
-  }
-  Loc ActuatorLoc(size_t i) const {
-    return i < m_.actuators.size() ? m_.actuators[i].loc : Loc{};
-  }
-  Loc ConstraintLoc(size_t i) const {
-    return i < m_.constraints.size() ? m_.constraints[i].loc : Loc{};
   }
 
   /// p_LP for a point given in body B.
@@ -688,11 +592,7 @@ class UrdfWriter {
 
   std::string FrameOrLink(const std::string& scoped) const {
     // the plant names a bushing's frames by scoped name ("instance::frame")
-    const size_t sep = scoped.rfind("::");
-    if (!prefix_instances_ || sep == std::string::npos) {
-      return sep == std::string::npos ? scoped : scoped.substr(sep + 2);
-    }
-    return Prefixed(scoped.substr(0, sep), scoped.substr(sep + 2));
+    return names_.NamedScoped(scoped);
   }
   /// A frame's name, unique among the robot's links and frames: a frame of
   /// another instance (or of the world) that repeats a name takes its
@@ -776,21 +676,13 @@ class UrdfWriter {
 
   void WriteCameras() {
     for (size_t i = 0; i < scene_.cameras.size(); ++i) {
-      const Loc loc = i < m_.cameras.size() ? m_.cameras[i].loc : Loc{};
-      diags_.Report(DiagKind::Lossy, loc,
+      diags_.Report(DiagKind::Lossy, CameraLoc(i),
                     fmt::format("camera '{}' is dropped: Drake's URDF has no cameras",
                                 scene_.cameras[i].name));
     }
   }
 
-  const backend::Plant& plant_;
-  const backend::SceneGraph& scene_;
-  const ir::Module& m_;
-  DiagnosticEngine& diags_;
-  AssetPaths assets_;
-  XmlOut out_;
-  std::string robot_name_;
-  bool prefix_instances_ = false;
+  FlatNames names_;
   std::set<size_t> mimicked_, mimic_written_;
   std::set<std::string> frame_names_;  // links' and frames' names
 };

@@ -8,6 +8,12 @@ namespace mdlc::writers {
 std::optional<std::string> Write(const backend::CompiledModel& model, const ir::Module& module,
                                  const WriteOptions& options, DiagnosticEngine& diags) {
   const size_t errors_before = diags.error_count();
+  if (options.fuse_fixed && options.to != Format::Mjcf) {
+    diags.Report(DiagKind::UnsupportedValue, Loc{},
+                 fmt::format("--fuse-fixed applies to MJCF output; the {} writer keeps every "
+                             "body",
+                             FormatName(options.to)));
+  }
   std::optional<std::string> text;
   switch (options.to) {
     case Format::Urdf:

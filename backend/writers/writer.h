@@ -31,6 +31,9 @@ struct WriteOptions {
   std::optional<std::filesystem::path> copy_assets_dir;
   /// Keep package:// URIs as written instead of naming the files.
   bool keep_package_uris = false;
+  /// MJCF: fuse each body welded to its parent (not the world) into it
+  /// (mjcf_layout.h); the other writers keep every body.
+  bool fuse_fixed = false;
 };
 
 /// The model in `options.to`; nullopt after an error was reported (an

@@ -5,6 +5,7 @@
 #include <libxml/xmlwriter.h>
 
 #include <stdexcept>
+#include <vector>
 
 namespace mdlc::writers {
 
@@ -26,6 +27,15 @@ const xmlChar* X(const std::string& s) { return reinterpret_cast<const xmlChar*>
 struct XmlOut::State {
   xmlBufferPtr buffer = nullptr;
   xmlTextWriterPtr writer = nullptr;
+  /// Per open element, what it holds so far: libxml2 does not indent the
+  /// end tag of an element that holds only comments; Close does.
+  enum class Content { None, Comments, Other };
+  std::vector<Content> content;
+  void Holds(Content c) {
+    if (content.empty()) return;
+    Content& top = content.back();
+    if (c == Content::Other || top == Content::None) top = c;
+  }
   void Check(int rc) {
     if (rc < 0) throw std::runtime_error("internal: the XML writer failed");
   }
@@ -46,7 +56,9 @@ XmlOut::~XmlOut() {
 }
 
 XmlOut& XmlOut::Open(std::string_view tag) {
+  s_->Holds(State::Content::Other);
   s_->Check(xmlTextWriterStartElement(s_->writer, X(std::string(tag))));
+  s_->content.push_back(State::Content::None);
   return *this;
 }
 
@@ -57,11 +69,18 @@ XmlOut& XmlOut::Attr(std::string_view name, std::string_view value) {
 }
 
 XmlOut& XmlOut::Text(std::string_view text) {
+  s_->Holds(State::Content::Other);
   s_->Check(xmlTextWriterWriteString(s_->writer, X(std::string(text))));
   return *this;
 }
 
 XmlOut& XmlOut::Close() {
+  if (!s_->content.empty() && s_->content.back() == State::Content::Comments) {
+    // the comment ended its line: indent the end tag as its start tag
+    const std::string indent(2 * (s_->content.size() - 1), ' ');
+    s_->Check(xmlTextWriterWriteRaw(s_->writer, X(indent)));
+  }
+  if (!s_->content.empty()) s_->content.pop_back();
   s_->Check(xmlTextWriterEndElement(s_->writer));
   return *this;
 }
@@ -70,6 +89,7 @@ XmlOut& XmlOut::Comment(std::string_view text) {
   // "--" may not appear inside a comment
   std::string safe(text);
   for (size_t at; (at = safe.find("--")) != std::string::npos;) safe.replace(at, 2, "- -");
+  s_->Holds(State::Content::Comments);
   s_->Check(xmlTextWriterWriteComment(s_->writer, X(" " + safe + " ")));
   return *this;
 }

@@ -279,6 +279,7 @@ void MjcfReader::LowerWorldBody(const xml::XmlElement& worldbody) {
     body.inertial = inertial;
     body.mass_from_geometry = b.mass_from_geometry;
     b.body = m.Add(std::move(body));
+    b.original = ReadOriginalName(e, b.body, ctx);
     body_order.push_back(b.body);
     if (name_attr.present()) {
       auto [it, inserted] = bodies.emplace(b.name, b.body);

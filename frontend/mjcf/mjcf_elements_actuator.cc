@@ -30,6 +30,7 @@
 #include <cmath>
 
 #include "frontend/mjcf/mjcf_elements.h"
+#include "frontend/original_names.h"
 
 namespace mdlc::frontend::mjcf {
 
@@ -115,6 +116,7 @@ class ActuatorLowering {
       }
     }
     const ActuatorId id = L_.module().Add(std::move(a));
+    ReadOriginalName(x_, id, L_.r.ctx);
     if (scaled) {
       L_.r.scaled_gains.damp_ratios.push_back({id, gains->dampratio_loc, gains->dampratio});
     }

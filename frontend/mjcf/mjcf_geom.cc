@@ -249,6 +249,7 @@ bool LowerGeom(MjcfReader& r, const BodyItem& item, BodyId body, bool is_world,
     ir::Geometry v = geom;
     v.roles = ir::kIllustrationRole | ir::kPerceptionRole;
     visual_id = m.Add(std::move(v));
+    ReadOriginalName(item.e, *visual_id, r.ctx);
   }
   if (collision) {
     ir::Geometry c = geom;
@@ -257,6 +258,7 @@ bool LowerGeom(MjcfReader& r, const BodyItem& item, BodyId body, bool is_world,
     c.rgba.reset();
     c.properties.push_back({"material/coulomb_friction", std::vector<double>{(*friction)[0], (*friction)[0]}});
     collision_id = m.Add(std::move(c));
+    ReadOriginalName(item.e, *collision_id, r.ctx);
   }
   if (mass) {
     if (collision_id) {
@@ -306,6 +308,7 @@ void LowerSite(MjcfReader& r, const BodyItem& item, BodyId body) {
   f.body = RefTo(m, body);
   f.X_BF = item.X_BF * *X;
   const FrameId id = m.Add(std::move(f));
+  ReadOriginalName(item.e, id, r.ctx);
   auto [it, inserted] = r.sites.emplace(std::string(name.value), id);
   if (!inserted) {
     r.diags()
@@ -354,7 +357,8 @@ void LowerCamera(MjcfReader& r, const BodyItem& item, BodyId body) {
                              "sensorsize", "ipd", "user"}) {
     if (c.Get(a).present()) r.WarnOnce(c.Get(a).loc, DiagKind::UnsupportedAttribute, "camera", a);
   }
-  m.Add(std::move(cam));
+  const CameraId id = m.Add(std::move(cam));
+  ReadOriginalName(item.e, id, r.ctx);
 }
 
 }  // namespace mdlc::frontend::mjcf

@@ -166,6 +166,7 @@ void LowerJoints(MjcfReader& r, const BodyContext& b, const std::vector<BodyItem
                               b.X_WB0.p.z()};
     free.unnamed = true;
     const JointId id = m.Add(std::move(free));
+    ReadOriginalName(j.xml(), id, r.ctx);
     r.free_joints.push_back(id);
     r.joint_order.push_back(id);
     r.scaled_gains.joints.push_back(
@@ -231,6 +232,10 @@ void LowerJoints(MjcfReader& r, const BodyContext& b, const std::vector<BodyItem
       dummy.model = r.model;
       dummy.loc = j.loc();
       child = m.Add(std::move(dummy));
+      if (b.original) {  // named after the body's original name, as it was
+        m.original_names.push_back(
+            {child, b.original->model, fmt::format("{}{}", b.original->name, k), j.loc()});
+      }
     }
 
     ir::Joint joint;
@@ -286,6 +291,7 @@ void LowerJoints(MjcfReader& r, const BodyContext& b, const std::vector<BodyItem
     const std::optional<std::array<double, 2>> spring_damper = SpringDamper(r, j);
 
     const JointId id = m.Add(std::move(joint));
+    ReadOriginalName(j.xml(), id, r.ctx);
     r.joint_order.push_back(id);
     if (name.present()) {
       auto [it, inserted] = r.joints.emplace(std::string(name.value), id);

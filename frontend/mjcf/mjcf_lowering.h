@@ -2,10 +2,12 @@
 // element lowerings (mjcf_joint.cc, mjcf_geom.cc). Private to frontend/mjcf.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "frontend/mjcf/mjcf_reader_detail.h"
+#include "frontend/original_names.h"
 
 namespace mdlc::frontend::mjcf {
 
@@ -32,6 +34,9 @@ struct BodyContext {
   /// child bodies, and a parent that is the world or a joint-less child of
   /// it (the joints and the inertia frame decide the rest)
   bool simple_position = false;
+  /// The body's name before `mdlc convert` wrote it (round-trip metadata):
+  /// the massless bodies between its stacked joints are named after it.
+  std::optional<ir::ParsedOriginalName> original;
 };
 
 /// MJCF-021..024, BEYOND-007: the body's joints, or a weld to its parent

@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "frontend/original_names.h"
 #include "frontend/urdf/urdf_reader_detail.h"
 
 namespace mdlc::frontend::urdf {
@@ -267,7 +268,10 @@ void UrdfReader::ReadAnyJoint(const xml::XmlElement& e, bool drake_element) {
                      fmt::format("unknown element <{}> in <{}> is ignored", tag, element));
     }
   }
-  joint_ids_[joint.name.value] = module().Add(std::move(joint));
+  const Symbol joint_name = joint.name;
+  const JointId id = module().Add(std::move(joint));
+  joint_ids_[joint_name.value] = id;
+  ReadOriginalName(e, id, ctx_);
 }
 
 void UrdfReader::ReadLimits(const xml::XmlElement& e, ir::Joint& joint, bool continuous) {
@@ -354,7 +358,8 @@ void UrdfReader::ReadFrame(const xml::XmlElement& e) {
   frame.body = {module().Intern(*link), e.Attribute("link").loc, {}};
   if (auto xyz = attrs_.Vector3(e, "xyz")) frame.X_BF.p = *xyz;
   if (auto rpy = attrs_.Vector3(e, "rpy")) frame.X_BF.R = RotationFromRpy(*rpy);
-  module().Add(std::move(frame));
+  const FrameId id = module().Add(std::move(frame));
+  ReadOriginalName(e, id, ctx_);
 }
 
 }  // namespace mdlc::frontend::urdf

@@ -2,6 +2,7 @@
 // (URDF-002..004, URDF-031, URDF-032, URDF-040).
 #include <fmt/format.h>
 
+#include "frontend/original_names.h"
 #include "frontend/urdf/urdf_reader_detail.h"
 
 namespace mdlc::frontend::urdf {
@@ -45,6 +46,7 @@ void UrdfReader::ReadLink(const xml::XmlElement& e) {
     body.loc = e.GetLoc();
     if (auto inertial = e.Child("inertial")) ReadInertial(inertial, body);
     body_id = module().Add(std::move(body));
+    ReadOriginalName(e, body_id, ctx_);
   }
 
   for (auto child = e.FirstChild(); child; child = child.NextSibling()) {

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "frontend/original_names.h"
 #include "frontend/urdf/urdf_reader_detail.h"
 
 namespace mdlc::frontend::urdf {
@@ -123,7 +124,8 @@ void UrdfReader::ReadTransmission(const xml::XmlElement& e) {
   a.loc = actuator.GetLoc();
   a.joint = {target.name, joint.Attribute("name").loc, {}};
   a.effort_limit = effort;
-  module().Add(std::move(a));
+  const ActuatorId id = module().Add(std::move(a));
+  ReadOriginalName(actuator, id, ctx_);
 }
 
 bool UrdfReader::ReadActuatorExtension(const xml::XmlElement& child, ir::Actuator& actuator) {

@@ -329,4 +329,14 @@ std::string XmlElement::Text() const {
   return out;
 }
 
+std::vector<std::string> XmlElement::Comments() const {
+  std::vector<std::string> out;
+  for (xmlNode* c = node_->children; c; c = c->next) {
+    if (c->type == XML_COMMENT_NODE && c->content) {
+      out.emplace_back(reinterpret_cast<const char*>(c->content));
+    }
+  }
+  return out;
+}
+
 }  // namespace mdlc::xml

@@ -19,6 +19,7 @@
 #include <string_view>
 #include <unordered_map>
 #include <utility>
+#include <vector>
 
 #include "ir/diagnostics.h"
 #include "ir/location.h"
@@ -65,6 +66,8 @@ class XmlElement {
   void ForEachAttributeName(F&& f) const;
   /// Concatenated text content of the element (entity references skipped).
   std::string Text() const;
+  /// The text of each comment directly inside the element, in order.
+  std::vector<std::string> Comments() const;
 
   _xmlNode* raw() const { return node_; }
 

@@ -1,7 +1,9 @@
 // round_trip_test.cc - `mdlc convert` round trips (issue 14): a model
 // compiled, converted to the target format, written beside a temporary
 // folder and compiled back is the same plant:
-//   - every body is there, under its mapped name;
+//   - every body is there, under its scoped name (URDF and MJCF hold one
+//     model; their writers leave comments from which mdlc's reader restores
+//     the instances and names);
 //   - every joint connects the mapped bodies with the same type;
 //   - at the default and at random configurations, every body's pose and
 //     the mass matrix agree to 1e-12 (relative to the quantity's scale);
@@ -170,9 +172,6 @@ struct Target {
   const char* extension;  // of the converted file
   const char* name;       // in test names
   LinkFrame link_frame;
-  /// URDF and MJCF flatten instances into one model ("instance/name");
-  /// SDFormat keeps them, so a body keeps its scoped name.
-  bool keeps_instances;
   /// SDFormat writes each role as it is; a URDF or MJCF visual is both
   /// illustration and perception.
   bool exact_roles;
@@ -185,11 +184,10 @@ struct Target {
   bool own_folder;
 };
 constexpr Target kTargets[] = {
-    {Format::Urdf, "urdf", "Urdf", UrdfLinkFrame, false, false, UrdfDrops, "half space", false,
+    {Format::Urdf, "urdf", "Urdf", UrdfLinkFrame, false, UrdfDrops, "half space", false, false},
+    {Format::Sdf, "sdf", "Sdf", SdfLinkFrame, true, SdfDrops, "on the world is dropped", false,
      false},
-    {Format::Sdf, "sdf", "Sdf", SdfLinkFrame, true, true, SdfDrops, "on the world is dropped",
-     false, false},
-    {Format::Mjcf, "xml", "Mjcf", MjcfLinkFrame, false, false, DropsNothing, "", true, true},
+    {Format::Mjcf, "xml", "Mjcf", MjcfLinkFrame, false, DropsNothing, "", true, true},
 };
 
 /// The converted model against the original; failures are gtest failures.
@@ -200,25 +198,17 @@ class Comparison {
 
   /// False when the kinematic structure could not be mapped.
   bool MapStructure(std::string* why) {
-    const bool one_instance = [&] {
-      std::set<size_t> instances;
-      for (size_t i = 1; i < pa_.bodies.size(); ++i) instances.insert(pa_.bodies[i].model.index());
-      return instances.size() <= 1;
-    }();
+    // every body keeps its scoped name: SDFormat keeps the instances as
+    // models; URDF and MJCF flatten them into one model ("instance/name",
+    // backend/writers/names.h) and leave comments from which mdlc's reader
+    // restores instances and names (ir/original_names.h)
     std::map<std::string, BodyId> by_name;
-    for (size_t i = 1; i < pb_.bodies.size(); ++i) {
-      by_name[to_.keeps_instances ? pb_.ScopedName(pb_.bodies[i]) : pb_.bodies[i].name] = BodyId(i);
-    }
+    for (size_t i = 1; i < pb_.bodies.size(); ++i) by_name[pb_.ScopedName(pb_.bodies[i])] = BodyId(i);
     body_map_.assign(pa_.bodies.size(), BodyId());
     body_map_[0] = ir::kWorldBody;
     for (size_t i = 1; i < pa_.bodies.size(); ++i) {
       const auto& body = pa_.bodies[i];
-      // "outer::inner" + "link" -> "outer/inner/link", as the URDF writer names
-      std::string name = one_instance
-                             ? body.name
-                             : pa_.model_instances[body.model.index()] + "/" + body.name;
-      for (size_t at; (at = name.find("::")) != std::string::npos;) name.replace(at, 2, "/");
-      if (to_.keeps_instances) name = pa_.ScopedName(body);
+      const std::string name = pa_.ScopedName(body);
       auto it = by_name.find(name);
       if (it == by_name.end()) {
         *why = fmt::format("body '{}' is missing (looked for '{}')", pa_.ScopedName(body), name);
@@ -343,7 +333,7 @@ class Comparison {
     for (const auto& [x, y] : sb.collision_filters) {
       fb.insert({std::min(x.index(), y.index()), std::max(x.index(), y.index())});
     }
-    if (to_.keeps_instances) {
+    if (to_.format == Format::Sdf) {
       // a filter group is a model's: a filtered pair across top-level models
       // that is not filtered by the joints between them is reported dropped
       for (const auto& [x, y] : sa.collision_filters) {
@@ -457,6 +447,426 @@ INSTANTIATE_TEST_SUITE_P(Corpus, CorpusRoundTrip,
                            return fmt::format("{}_from_{}", std::get<0>(info.param).name,
                                               std::get<1>(info.param));
                          });
+
+// ---------------------------------------------------------------------------
+// Hand-made models pinning what a writer does with one construct
+// ---------------------------------------------------------------------------
+
+/// A model compiled from text, converted and compiled back from the written
+/// file (in a temporary folder).
+struct Conversion {
+  Result source;
+  std::optional<std::string> text;
+  std::optional<Result> back;
+  fs::path file;
+
+  /// The -Wlossy warnings of the conversion whose message holds `text`.
+  std::vector<const Diagnostic*> Lossy(std::string_view text) const {
+    std::vector<const Diagnostic*> out;
+    for (const Diagnostic& d : source.diagnostics()) {
+      if (d.kind == DiagKind::Lossy && d.message.find(text) != std::string::npos) out.push_back(&d);
+    }
+    return out;
+  }
+};
+
+Conversion ConvertText(const std::string& model, const std::string& name, ConvertOptions convert,
+                       const fs::path& dir) {
+  Conversion c{Compile(Input::Text(model, (dir / name).string())), {}, {}, {}};
+  EXPECT_TRUE(c.source.ok()) << Messages(c.source);
+  if (!c.source.ok()) return c;
+  c.file = dir / ("converted_" + fs::path(name).stem().string() +
+                  (convert.to == Format::Urdf  ? ".urdf"
+                   : convert.to == Format::Sdf ? ".sdf"
+                                               : ".xml"));
+  convert.output = c.file.string();
+  c.text = c.source.Convert(convert);
+  EXPECT_TRUE(c.text) << Messages(c.source);
+  if (!c.text) return c;
+  std::ofstream(c.file) << *c.text;
+  c.back = Compile(Input::File(c.file.string()));
+  EXPECT_TRUE(c.back->ok()) << Messages(*c.back) << "\n--- converted:\n" << *c.text;
+  return c;
+}
+
+ConvertOptions To(Format format) {
+  ConvertOptions options;
+  options.to = format;
+  return options;
+}
+
+// MuJoCo collides with the convex hull of every mesh, so a mesh declared
+// convex (drake:declare_convex) collides in MuJoCo as declared; but MJCF has
+// no flag to carry the declaration, and an MJCF mesh reads back as a plain
+// mesh: a -Wlossy warning at the geometry, and only for a collision mesh.
+TEST(MjcfWriter, ConvexMeshDeclarationIsALocatedLossyWarning) {
+  OutputDir dir;
+  const std::string mesh = (fs::path(MDLC_TEST_MODELS) / "meshes" / "box.obj").string();
+  const std::string urdf = fmt::format(R"(<robot name="r" xmlns:drake="http://drake.mit.edu">
+  <link name="base">
+    <inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0" ixz="0" iyz="0"/></inertial>
+    <visual name="look"><geometry><mesh filename="{0}"/></geometry></visual>
+    <collision name="hull">
+      <geometry><mesh filename="{0}"><drake:declare_convex/></mesh></geometry>
+    </collision>
+  </link>
+</robot>
+)",
+                                       mesh);
+  const Conversion c = ConvertText(urdf, "convex.urdf", To(Format::Mjcf), dir.path());
+  ASSERT_TRUE(c.back && c.back->ok());
+  const auto lossy = c.Lossy("convex");
+  ASSERT_EQ(lossy.size(), 1u) << Messages(c.source);
+  EXPECT_NE(lossy[0]->message.find("geometry 'hull'"), std::string::npos) << lossy[0]->message;
+  EXPECT_NE(lossy[0]->message.find("MuJoCo collides with every mesh's convex hull"),
+            std::string::npos)
+      << lossy[0]->message;
+  EXPECT_NE(c.source.FormatText(*lossy[0]).find("convex.urdf:5:"), std::string::npos)
+      << c.source.FormatText(*lossy[0]);
+  // the geom is a mesh MuJoCo takes the hull of; read back, a plain mesh
+  EXPECT_NE(c.text->find("type=\"mesh\""), std::string::npos) << *c.text;
+  size_t meshes = 0;
+  for (const auto& g : c.back->scene_graph().geometries) {
+    const auto* m = std::get_if<ir::Mesh>(&g.shape);
+    ASSERT_NE(m, nullptr);
+    EXPECT_FALSE(m->convex);
+    ++meshes;
+  }
+  EXPECT_EQ(meshes, 2u);
+  // URDF and SDFormat keep the declaration
+  for (Format to : {Format::Urdf, Format::Sdf}) {
+    const Conversion kept = ConvertText(urdf, "convex.urdf", To(to), dir.path());
+    ASSERT_TRUE(kept.back && kept.back->ok());
+    EXPECT_TRUE(kept.Lossy("convex").empty()) << Messages(kept.source);
+    for (const auto& g : kept.back->scene_graph().geometries) {
+      if (g.roles & ir::kProximityRole) {
+        EXPECT_TRUE(std::get<ir::Mesh>(g.shape).convex);
+      }
+    }
+  }
+}
+
+/// How many times `what` occurs in `text` outside XML comments.
+size_t Count(std::string text, std::string_view what) {
+  for (size_t at; (at = text.find("<!--")) != std::string::npos;) {
+    text.erase(at, text.find("-->", at) + 3 - at);
+  }
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// mdlc (as Drake) reads an MJCF body with several joints as a chain of
+// massless bodies; MuJoCo refuses a moving body without mass, so the writer
+// writes the chain back as one <body> with its <joint>s: the same bodies as
+// the source MJCF, and the same plant when read back.
+TEST(MjcfWriter, StackedJointsAreOneBodyAgain) {
+  OutputDir dir;
+  const fs::path source = fs::path(MDLC_TEST_MODELS) / "mjcf" / "oracle" / "stacked_joints_ref.xml";
+  std::ifstream in(source);
+  const std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const Conversion c = ConvertText(xml, source.filename().string(), To(Format::Mjcf), dir.path());
+  ASSERT_TRUE(c.back && c.back->ok());
+  EXPECT_EQ(Count(*c.text, "<body"), Count(xml, "<body"));
+  EXPECT_EQ(Count(*c.text, "<joint "), Count(xml, "<joint "));
+  EXPECT_GT(c.source.plant().bodies.size(), Count(xml, "<body") + 1);  // the chains' links
+  // the unnamed links come back as they were: nothing to warn about
+  EXPECT_TRUE(c.Lossy("").empty()) << Messages(c.source);
+  Comparison cmp(c.source, *c.back, kTargets[2]);
+  std::string why;
+  ASSERT_TRUE(cmp.MapStructure(&why)) << why;
+  std::mt19937 rng(7);
+  cmp.CompareAt(c.source.DefaultPositions(), "default q");
+  for (int k = 0; k < 5; ++k) {
+    cmp.CompareAt(RandomPositions(c.source.plant(), rng), fmt::format("q #{}", k));
+  }
+}
+
+// A massless link of a URDF between two revolute joints is merged the same
+// way (MuJoCo would refuse it), with a -Wlossy warning naming it: its name
+// and frame are not written.
+TEST(MjcfWriter, NamedMasslessLinkBetweenJointsIsMergedWithAWarning) {
+  OutputDir dir;
+  const std::string urdf = R"(<robot name="gimbal">
+  <link name="world"/>
+  <joint name="pan" type="continuous">
+    <parent link="world"/><child link="yoke"/>
+    <origin xyz="0 0 0.2" rpy="0 0 0.4"/><axis xyz="0 0 1"/>
+  </joint>
+  <link name="yoke"/>
+  <joint name="tilt" type="revolute">
+    <parent link="yoke"/><child link="head"/>
+    <origin xyz="0.05 0 0.1" rpy="0.2 0 0"/><axis xyz="0 1 0"/>
+    <limit lower="-1" upper="1" effort="1" velocity="1"/>
+  </joint>
+  <link name="head">
+    <inertial><origin xyz="0.01 0 0.02"/><mass value="0.5"/>
+      <inertia ixx="0.01" iyy="0.02" izz="0.03" ixy="0.001" ixz="0" iyz="0"/></inertial>
+  </link>
+</robot>
+)";
+  const Conversion c = ConvertText(urdf, "gimbal.urdf", To(Format::Mjcf), dir.path());
+  ASSERT_TRUE(c.back && c.back->ok());
+  const auto lossy = c.Lossy("body 'yoke' is massless");
+  ASSERT_EQ(lossy.size(), 1u) << Messages(c.source);
+  EXPECT_NE(c.source.FormatText(*lossy[0]).find("gimbal.urdf:7:"), std::string::npos)
+      << c.source.FormatText(*lossy[0]);
+  EXPECT_EQ(Count(*c.text, "<body"), 1u) << *c.text;  // the head, on both joints
+  // the head moves as it did, on both joints
+  const auto& pa = c.source.plant();
+  const auto& pb = c.back->plant();
+  std::mt19937 rng(3);
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::VectorXd qa = k == 0 ? c.source.DefaultPositions() : RandomPositions(pa, rng);
+    Eigen::VectorXd qb = Eigen::VectorXd::Zero(pb.num_positions);
+    for (const auto& ja : pa.joints) {
+      if (ja.nq == 0) continue;
+      for (const auto& jb : pb.joints) {
+        if (jb.name == ja.name) qb.segment(jb.q_start, jb.nq) = qa.segment(ja.q_start, ja.nq);
+      }
+    }
+    const auto X_a = c.source.BodyPoses(qa);
+    const auto X_b = c.back->BodyPoses(qb);
+    size_t head_a = 0, head_b = 0;
+    for (size_t i = 0; i < pa.bodies.size(); ++i) head_a = pa.bodies[i].name == "head" ? i : head_a;
+    for (size_t i = 0; i < pb.bodies.size(); ++i) head_b = pb.bodies[i].name == "head" ? i : head_b;
+    ASSERT_GT(head_a * head_b, 0u);
+    EXPECT_TRUE(X_a[head_a].p.isApprox(X_b[head_b].p, 1e-12)) << k;
+    EXPECT_TRUE(X_a[head_a].R.isApprox(X_b[head_b].R, 1e-12)) << k;
+    const Eigen::MatrixXd Ma = c.source.MassMatrix(qa), Mb = c.back->MassMatrix(qb);
+    ASSERT_EQ(Ma.rows(), 2);
+    ASSERT_EQ(Mb.rows(), 2);
+    EXPECT_LE((Ma - Mb).cwiseAbs().maxCoeff(), 1e-12 * Ma.cwiseAbs().maxCoeff()) << k;
+  }
+}
+
+// --fuse-fixed: each body welded to its parent is fused into it. The mass
+// matrix and the total mass stay (mass properties combined exactly), the
+// body count drops by the number of fixed joints, the fused bodies' frames
+// and their own frames stay where they were (as sites, read back as frames),
+// and each fused body gets a note naming it.
+TEST(MjcfWriter, FuseFixedCombinesMassPropertiesExactly) {
+  OutputDir dir;
+  const std::string urdf = R"(<robot name="fused">
+  <link name="base">
+    <inertial><origin xyz="0.01 -0.02 0.03" rpy="0.1 0.2 0.3"/><mass value="3"/>
+      <inertia ixx="0.05" iyy="0.06" izz="0.07" ixy="0.001" ixz="-0.002" iyz="0.003"/></inertial>
+    <visual name="base_look"><geometry><box size="0.2 0.2 0.1"/></geometry></visual>
+  </link>
+  <joint name="shoulder" type="revolute">
+    <parent link="base"/><child link="upper"/>
+    <origin xyz="0 0.1 0.2" rpy="0.3 0 0.2"/><axis xyz="0 0 1"/>
+    <limit lower="-2" upper="2" effort="10" velocity="1"/>
+  </joint>
+  <link name="upper">
+    <inertial><origin xyz="0 0 0.2" rpy="0 0.4 0"/><mass value="1.5"/>
+      <inertia ixx="0.02" iyy="0.025" izz="0.004" ixy="0" ixz="0.0005" iyz="0"/></inertial>
+  </link>
+  <joint name="mount" type="fixed">
+    <parent link="upper"/><child link="flange"/>
+    <origin xyz="0.1 0.2 0.5" rpy="0.3 -0.2 0.1"/>
+  </joint>
+  <link name="flange">
+    <inertial><origin xyz="0.02 0.01 0" rpy="-0.5 0.1 0.7"/><mass value="0.5"/>
+      <inertia ixx="0.001" iyy="0.002" izz="0.0025" ixy="0.0001" ixz="0" iyz="-0.0002"/></inertial>
+    <collision name="flange_hit"><origin xyz="0 0 0.01"/><geometry><cylinder radius="0.04" length="0.02"/></geometry></collision>
+  </link>
+  <joint name="tool_mount" type="fixed">
+    <parent link="flange"/><child link="tool"/>
+    <origin xyz="0 0 0.05" rpy="0 0 1.2"/>
+  </joint>
+  <link name="tool">
+    <inertial><origin xyz="0 0 0.03"/><mass value="0.25"/>
+      <inertia ixx="0.0002" iyy="0.0002" izz="0.0001" ixy="0" ixz="0" iyz="0"/></inertial>
+    <visual name="tool_look"><geometry><sphere radius="0.02"/></geometry></visual>
+  </link>
+  <frame name="tcp" link="tool" xyz="0 0 0.1" rpy="0.1 0 0"/>
+  <joint name="wrist" type="continuous">
+    <parent link="tool"/><child link="hand"/>
+    <origin xyz="0.03 0 0.08" rpy="0 0.5 0"/><axis xyz="1 0 0"/>
+  </joint>
+  <link name="hand">
+    <inertial><origin xyz="0.04 0 0"/><mass value="0.3"/>
+      <inertia ixx="0.0003" iyy="0.0004" izz="0.0005" ixy="0" ixz="0" iyz="0"/></inertial>
+  </link>
+</robot>
+)";
+  ConvertOptions options = To(Format::Mjcf);
+  options.fuse_fixed = true;
+  const Conversion c = ConvertText(urdf, "fused.urdf", options, dir.path());
+  ASSERT_TRUE(c.back && c.back->ok());
+  const auto& pa = c.source.plant();
+  const auto& pb = c.back->plant();
+  size_t welds = 0;
+  for (const auto& j : pa.joints) welds += j.type == ir::JointType::Weld && j.parent.index() != 0;
+  ASSERT_EQ(welds, 2u);
+  EXPECT_EQ(pb.bodies.size(), pa.bodies.size() - welds);
+  // a note per fused body, naming it (not a warning: --fuse-fixed asked for it)
+  std::vector<std::string> notes;
+  for (const Diagnostic& d : c.source.diagnostics()) {
+    if (d.kind == DiagKind::FusedBody) notes.push_back(d.message);
+  }
+  ASSERT_EQ(notes.size(), 2u) << Messages(c.source);
+  EXPECT_NE(notes[0].find("body 'flange' is fused into body 'upper'"), std::string::npos)
+      << notes[0];
+  EXPECT_NE(notes[1].find("body 'tool' is fused into body 'upper'"), std::string::npos) << notes[1];
+  // the total mass
+  double ma = 0, mb = 0;
+  for (const auto& b : pa.bodies) ma += b.mass;
+  for (const auto& b : pb.bodies) mb += b.mass;
+  EXPECT_NEAR(mb, ma, 1e-12 * ma);
+  // the same motion: joints map by the body they move
+  auto body_named = [](const backend::Plant& p, std::string_view name) {
+    for (size_t i = 0; i < p.bodies.size(); ++i) {
+      if (p.bodies[i].name == name) return BodyId(i);
+    }
+    return BodyId();
+  };
+  auto frame_pose = [](const Result& r, const std::vector<Transform>& X_WB, std::string_view name) {
+    for (const auto& f : r.plant().frames) {
+      if (f.name == name) return std::optional<Transform>(X_WB[f.body.index()] * f.X_BF);
+    }
+    return std::optional<Transform>();
+  };
+  std::vector<int> v_map(pa.num_velocities, -1);
+  std::vector<std::pair<int, int>> q_map;  // (a, b) position slices starts, with sizes below
+  for (const auto& ja : pa.joints) {
+    if (ja.nv == 0) continue;
+    const BodyId child = body_named(pb, pa.body(ja.child).name);
+    ASSERT_TRUE(child.valid()) << ja.name;
+    const auto& jb = pb.joint(pb.body(child).inbound_joint);
+    ASSERT_EQ(jb.nv, ja.nv) << ja.name;
+    for (int k = 0; k < ja.nv; ++k) v_map[ja.v_start + k] = jb.v_start + k;
+    for (int k = 0; k < ja.nq; ++k) q_map.emplace_back(ja.q_start + k, jb.q_start + k);
+  }
+  std::mt19937 rng(11);
+  for (int k = 0; k < 5; ++k) {
+    const Eigen::VectorXd qa = k == 0 ? c.source.DefaultPositions() : RandomPositions(pa, rng);
+    Eigen::VectorXd qb = Eigen::VectorXd::Zero(pb.num_positions);
+    for (const auto& [ia, ib] : q_map) qb[ib] = qa[ia];
+    const Eigen::MatrixXd Ma = c.source.MassMatrix(qa), Mb = c.back->MassMatrix(qb);
+    ASSERT_EQ(Ma.rows(), Mb.rows());
+    const double scale = Ma.cwiseAbs().maxCoeff();
+    for (int r = 0; r < Ma.rows(); ++r) {
+      for (int s = 0; s < Ma.cols(); ++s) {
+        EXPECT_NEAR(Mb(v_map[r], v_map[s]), Ma(r, s), 1e-12 * scale)
+            << k << ": M(" << r << ", " << s << ")";
+      }
+    }
+    // the fused bodies' frames and their frames, where they were
+    const auto X_WA = c.source.BodyPoses(qa), X_WB = c.back->BodyPoses(qb);
+    for (const char* name : {"flange", "tool", "tcp"}) {
+      const BodyId ba = body_named(pa, name);
+      const std::optional<Transform> was = ba.valid() ? std::optional<Transform>(X_WA[ba.index()])
+                                                      : frame_pose(c.source, X_WA, name);
+      const std::optional<Transform> is = frame_pose(*c.back, X_WB, name);
+      ASSERT_TRUE(was && is) << name;
+      EXPECT_TRUE(is->p.isApprox(was->p, 1e-12)) << name << " at q #" << k;
+      EXPECT_TRUE(is->R.isApprox(was->R, 1e-12)) << name << " at q #" << k;
+    }
+  }
+  // the geometry is where it was, on the body that holds it now
+  EXPECT_EQ(c.back->scene_graph().geometries.size(), c.source.scene_graph().geometries.size());
+}
+
+// Round-trip metadata: URDF and MJCF hold one model, so the writers prefix
+// each name with its instance; the comments they leave let mdlc's reader
+// give every entity back its instance and name. A caller who names the
+// model (--model-name) reads the file as written.
+TEST(Names, MultiInstanceRoundTripKeepsScopedNames) {
+  OutputDir dir;
+  const std::string sdf = R"(<sdf version="1.9">
+  <world name="w">
+    <model name="arm">
+      <link name="base">
+        <inertial><mass>2</mass><inertia><ixx>0.1</ixx><iyy>0.1</iyy><izz>0.1</izz></inertia></inertial>
+      </link>
+      <link name="link1">
+        <pose>0 0 0.5 0 0 0</pose>
+        <inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
+        <collision name="box"><geometry><box><size>0.1 0.1 0.1</size></box></geometry></collision>
+      </link>
+      <joint name="joint1" type="revolute">
+        <parent>base</parent><child>link1</child>
+        <axis><xyz>0 0 1</xyz><limit><effort>3</effort></limit></axis>
+      </joint>
+      <frame name="tool" attached_to="link1"><pose>0 0 0.1 0 0 0</pose></frame>
+      <model name="hand">
+        <pose>0 0 1 0 0 0</pose>
+        <link name="base">
+          <inertial><mass>0.5</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
+          <collision name="box"><geometry><box><size>0.05 0.05 0.05</size></box></geometry></collision>
+        </link>
+        <link name="finger">
+          <pose>0 0.05 0 0 0 0</pose>
+          <inertial><mass>0.1</mass><inertia><ixx>0.001</ixx><iyy>0.001</iyy><izz>0.001</izz></inertia></inertial>
+        </link>
+        <joint name="joint1" type="prismatic">
+          <parent>base</parent><child>finger</child><axis><xyz>0 1 0</xyz></axis>
+        </joint>
+      </model>
+      <joint name="wrist" type="revolute">
+        <parent>link1</parent><child>hand::base</child><axis><xyz>1 0 0</xyz></axis>
+      </joint>
+    </model>
+    <model name="table">
+      <static>true</static>
+      <link name="base">
+        <collision name="box"><geometry><box><size>1 1 0.1</size></box></geometry></collision>
+      </link>
+    </model>
+  </world>
+</sdf>
+)";
+  auto names = [](const Result& r) {
+    std::set<std::string> out;
+    const auto& p = r.plant();
+    for (const auto& b : p.bodies) out.insert("body " + p.ScopedName(b));
+    for (const auto& j : p.joints) {
+      if (!j.unnamed) out.insert("joint " + p.ScopedName(j));
+    }
+    for (const auto& f : p.frames) {
+      if (!f.unnamed) out.insert("frame " + p.model_instances[f.model.index()] + "::" + f.name);
+    }
+    for (const auto& a : p.actuators) {
+      out.insert("actuator " + p.model_instances[a.model.index()] + "::" + a.name);
+    }
+    return out;
+  };
+  for (Format to : {Format::Urdf, Format::Mjcf}) {
+    SCOPED_TRACE(FormatName(to));
+    const Conversion c = ConvertText(sdf, "scene.sdf", To(to), dir.path());
+    ASSERT_TRUE(c.back && c.back->ok());
+    // written flat, with the instance in each name...
+    EXPECT_NE(c.text->find("\"arm/hand/base\""), std::string::npos) << *c.text;
+    EXPECT_NE(c.text->find("<!-- mdlc:name model=\"arm::hand\" name=\"base\" -->"),
+              std::string::npos)
+        << *c.text;
+    // ...and read back under the scoped names it had
+    std::set<std::string> before = names(c.source), after = names(*c.back);
+    for (const std::string& n : before) EXPECT_TRUE(after.count(n)) << n << " is missing";
+    const std::vector<std::string> names_before = c.source.plant().model_instances.ToVector();
+    const std::set<std::string> instances_before(names_before.begin(), names_before.end());
+    const std::vector<std::string> names_after = c.back->plant().model_instances.ToVector();
+    const std::set<std::string> instances_after(names_after.begin(), names_after.end());
+    EXPECT_EQ(instances_after, instances_before);
+    // the plant is the same under those names
+    Comparison cmp(c.source, *c.back, to == Format::Urdf ? kTargets[0] : kTargets[2]);
+    std::string why;
+    ASSERT_TRUE(cmp.MapStructure(&why)) << why;
+    cmp.CompareAt(c.source.DefaultPositions(), "default q");
+    // naming the model reads the file as written: one instance, flat names
+    Options named;
+    named.model_name = "as_written";
+    const Result flat = Compile(Input::File(c.file.string()), named);
+    ASSERT_TRUE(flat.ok()) << Messages(flat);
+    bool found = false;
+    for (const auto& b : flat.plant().bodies) {
+      found = found || flat.plant().ScopedName(b) == "as_written::arm/hand/base";
+    }
+    EXPECT_TRUE(found);
+  }
+}
 
 }  // namespace
 }  // namespace mdlc

@@ -108,8 +108,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <optional>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -279,6 +281,10 @@ struct ModelCase {
   std::string skip_reason;
   double inertia_floor = 0;  // kg m^2: see kMujocoEigenResidualFiles
   bool converted = false;    // written by `mdlc convert` (ConvertedCases)
+  // what mdlc compiles instead of `path` (a converted file against its
+  // source: MDLC_ORACLE_MDLC_SOURCE), and extra arguments for it
+  std::string mdlc_path;
+  std::vector<std::string> mdlc_args;
 };
 
 void PrintTo(const ModelCase& c, std::ostream* os) { *os << c.display; }
@@ -334,10 +340,14 @@ std::vector<ModelCase> HandMadeCases() {
 }
 
 // Ad-hoc models for investigating a discrepancy: MDLC_ORACLE_EXTRA_MODELS is
-// a ':'-separated list of .xml files or directories of them.
+// a ':'-separated list of .xml files or directories of them. With
+// MDLC_ORACLE_MDLC_SOURCE=FILE, mdlc compiles FILE instead of each of them:
+// MuJoCo's reading of a converted model against mdlc's of its source (the
+// README's walk-through, tests/convert).
 std::vector<ModelCase> ExtraCases() {
   std::vector<ModelCase> cases;
   const char* env = std::getenv("MDLC_ORACLE_EXTRA_MODELS");
+  const char* source = std::getenv("MDLC_ORACLE_MDLC_SOURCE");
   std::stringstream ss(env ? env : "");
   for (std::string item; std::getline(ss, item, ':');) {
     if (item.empty()) continue;
@@ -349,6 +359,7 @@ std::vector<ModelCase> ExtraCases() {
       c.id = Sanitize(f.stem().string());
       c.path = fs::absolute(f).string();
       c.display = f.string();
+      if (source && *source) c.mdlc_path = fs::absolute(source).string();
       cases.push_back(c);
     }
   }
@@ -377,6 +388,12 @@ std::vector<ModelCase> ConvertedCases() {
       c.path = fs::absolute(f).string();
       c.display = f.filename().string();
       c.converted = true;
+      {
+        std::ifstream in(f);
+        const std::string text((std::istreambuf_iterator<char>(in)),
+                               std::istreambuf_iterator<char>());
+        c.mdlc_args = ReadAsWrittenArgs(text, std::regex("<mujoco model=\"([^\"]*)\""));
+      }
       // a source with MuJoCo's eigen residual keeps it when written back
       for (const char* source : kMujocoEigenResidualFiles) {
         std::string stem = std::string("mjcf_") + source;
@@ -695,9 +712,9 @@ struct MdlcRun {
 };
 
 MdlcRun RunMdlc(const std::string& file, const std::vector<std::pair<std::string, double>>& q,
-                Plant* plant) {
+                Plant* plant, const std::vector<std::string>& extra = {}) {
   MdlcRun run;
-  const std::vector<std::string> argv = PlantJsonCommand(file, "", q);
+  const std::vector<std::string> argv = PlantJsonCommand(file, "", q, extra);
   plant->cmdline = Quote(argv);
   run.result = RunProcess(argv, 120.0);
   const RunResult& r = run.result;
@@ -1243,7 +1260,8 @@ TEST_P(MujocoOracle, CompiledModelMatches) {
     }
     rep.SetContext("config " + std::to_string(c) + ", " + DescribeQ(q));
     Plant plant;
-    const MdlcRun run = RunMdlc(mc.path, q, &plant);
+    const MdlcRun run =
+        RunMdlc(mc.mdlc_path.empty() ? mc.path : mc.mdlc_path, q, &plant, mc.mdlc_args);
     if (!run.ok) {
       if (c == 0 && mujoco2 && run.result.exit_code == 1 && HasLocatedError(run.result.err)) {
         // MuJoCo 3 rejects it and mdlc rejects it with a located diagnostic:

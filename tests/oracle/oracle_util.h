@@ -23,6 +23,7 @@
 #include <fstream>
 #include <map>
 #include <optional>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -264,11 +265,25 @@ inline std::string ErrorExcerpt(const std::string& err) {
   return out;
 }
 
-/// `mdlc compile FILE --emit=plant-json [--package-path DIR] [--q NAME=V]...`
+/// For a file `mdlc convert` wrote, the arguments that make mdlc read it as
+/// written, as the reference does: its own model name as --model-name. (mdlc
+/// gives a converted file's entities back the instances and names they had
+/// before conversion, from comments the writer leaves, unless the caller
+/// names the model; the round-trip tests check that restoration.) `root`
+/// matches the file's root element with its name as the first group.
+inline std::vector<std::string> ReadAsWrittenArgs(const std::string& text, const std::regex& root) {
+  std::smatch m;
+  if (!std::regex_search(text, m, root)) return {};
+  return {"--model-name", m[1].str()};
+}
+
+/// `mdlc compile FILE --emit=plant-json [--package-path DIR] [--q NAME=V]... [EXTRA...]`
 inline std::vector<std::string> PlantJsonCommand(const std::string& file,
                                                  const std::string& package_path,
-                                                 const JointValues& q) {
+                                                 const JointValues& q,
+                                                 const std::vector<std::string>& extra = {}) {
   std::vector<std::string> argv = {MdlcBinary(), "compile", file, "--emit=plant-json"};
+  argv.insert(argv.end(), extra.begin(), extra.end());
   if (!package_path.empty()) {
     argv.push_back("--package-path");
     argv.push_back(package_path);
@@ -400,8 +415,8 @@ struct ListedRejection {
 /// unless the run is a listed rejection) when there is no usable dump.
 inline bool RunMdlc(const std::string& file, const std::string& package_path,
                     const JointValues& q, const std::optional<ListedRejection>& listed,
-                    Report* rep, Dump* d) {
-  const std::vector<std::string> argv = PlantJsonCommand(file, package_path, q);
+                    Report* rep, Dump* d, const std::vector<std::string>& extra = {}) {
+  const std::vector<std::string> argv = PlantJsonCommand(file, package_path, q, extra);
   d->cmdline = Quote(argv);
   const RunResult r = RunProcess(argv, 60.0);
   if (const std::string why = SpawnFailure(r); !why.empty()) {

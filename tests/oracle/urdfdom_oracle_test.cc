@@ -483,6 +483,8 @@ struct ModelCase {
   // failing with `reject_keyword` in its stderr then skips the case; mdlc
   // accepting the model fails it (the entry is stale).
   std::string reject_keyword, reject_why;
+  // extra `mdlc compile` arguments (a converted file: read as written)
+  std::vector<std::string> mdlc_args;
 };
 
 // Corpus models that urdfdom loads but that the spec makes an error in mdlc
@@ -570,7 +572,7 @@ bool RunMdlc(const ModelCase& mc, const JointValues& q, Report* rep, Dump* d) {
   if (!mc.reject_keyword.empty()) {
     listed = ListedRejection{"kExpectedRejections", mc.reject_keyword, mc.reject_why};
   }
-  return mdlc::oracle::RunMdlc(mc.path, mc.package_path, q, listed, rep, d);
+  return mdlc::oracle::RunMdlc(mc.path, mc.package_path, q, listed, rep, d, mc.mdlc_args);
 }
 
 // Reads a number-or-null; null means +inf (or -inf when negative_null).
@@ -996,6 +998,7 @@ std::vector<ModelCase> ConvertedCases() {
     c.display = f.string();
     std::ifstream in(f);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    c.mdlc_args = ReadAsWrittenArgs(text, std::regex("<robot name=\"([^\"]*)\""));
     for (const char* tag : {"<drake:capsule", "<drake:ellipsoid", "<drake:joint"}) {
       if (text.find(tag) != std::string::npos) {
         c.skip_reason = std::string("holds <") + (tag + 1) +

@@ -183,6 +183,7 @@ std::optional<std::string> Result::Convert(const ConvertOptions& options) {
   write.output = options.output;
   if (options.copy_assets_dir) write.copy_assets_dir = *options.copy_assets_dir;
   write.keep_package_uris = options.keep_package_uris;
+  write.fuse_fixed = options.fuse_fixed;
   return writers::Write(*compilation_->model, compilation_->module, write, compilation_->diags);
 }
 

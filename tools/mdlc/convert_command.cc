@@ -16,6 +16,7 @@ struct ConvertFlags {
   std::string to;
   std::string copy_assets_dir;
   bool keep_package_uris = false;
+  bool fuse_fixed = false;
 };
 
 /// The target: --to, or the output file's extension.
@@ -46,6 +47,7 @@ int Run(const ConvertFlags& flags) {
   convert.output = flags.output == "-" ? "" : flags.output;
   if (!flags.copy_assets_dir.empty()) convert.copy_assets_dir = flags.copy_assets_dir;
   convert.keep_package_uris = flags.keep_package_uris;
+  convert.fuse_fixed = flags.fuse_fixed;
   // Result::Convert reports why it could not write the model as diagnostics
   const std::optional<std::string> text = result.Convert(convert);
   if (!result.ok() || !text) return ReportFailure(flags.compile, result);
@@ -69,6 +71,8 @@ Subcommand AddConvertCommand(CLI::App& app) {
                       "Copy the meshes into DIR (one copy per distinct content) and name them");
   convert->add_flag("--keep-package-uris", flags->keep_package_uris,
                     "Keep package:// URIs as written instead of naming the files");
+  convert->add_flag("--fuse-fixed", flags->fuse_fixed,
+                    "MJCF: fuse each body welded to its parent into it");
   return {convert, [flags] { return Run(*flags); }};
 }
 

@@ -5,6 +5,7 @@
 //                        [-Werror|--strict] [-Wno-GROUP] [-Werror=GROUP]
 //                        [--print-after=PASS] [--print-after-all] [--time-passes]
 //   mdlc convert FILE... --to urdf -o OUT [--copy-assets DIR] [--keep-package-uris]
+//                        [--fuse-fixed]
 //   mdlc tree FILE... [--json]      each model instance's kinematic tree
 //   mdlc stats FILE... [--json]     mass properties and counts
 //   mdlc graph FILE... [--kind kinematic|frames] [--format dot|json] [-o OUT(.dot|.svg|.png)]

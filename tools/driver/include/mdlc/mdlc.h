@@ -134,7 +134,7 @@ struct MeshSize {
 
 /// What `mdlc convert` writes (Result::Convert).
 struct ConvertOptions {
-  /// The target: urdf or mjcf (sdf is not written yet).
+  /// The target: urdf, sdf or mjcf.
   Format to = Format::Urdf;
   /// The file the text will be written to: mesh paths are written relative
   /// to its folder (empty: the current directory).
@@ -144,6 +144,10 @@ struct ConvertOptions {
   std::optional<std::string> copy_assets_dir;
   /// Keep package:// URIs as the source wrote them.
   bool keep_package_uris = false;
+  /// MJCF only: fuse each body welded to its parent (not to the world) into
+  /// that body, mass properties combined exactly, its geometry, frames and
+  /// cameras re-posed there, its own frame kept as a site (`--fuse-fixed`).
+  bool fuse_fixed = false;
 };
 
 /// What a compile made. Move-only; owns everything it refers to.

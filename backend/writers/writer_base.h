@@ -1,0 +1,64 @@
+// writer_base.h - what the URDF, SDFormat and MJCF writers share: the
+// compiled model they read, where each of its entities came from (the
+// location a -Wlossy warning points at), the XML being written and the
+// asset files it names.
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "backend/compiled_model.h"
+#include "backend/writers/asset_paths.h"
+#include "backend/writers/writer.h"
+#include "backend/writers/xml_out.h"
+#include "ir/diagnostics.h"
+#include "ir/module.h"
+
+namespace mdlc::writers {
+
+class WriterBase {
+ protected:
+  WriterBase(const backend::CompiledModel& model, const ir::Module& module,
+             const WriteOptions& options, DiagnosticEngine& diags);
+
+  // Source locations. Plant entity i is IR entity i (backend/plant.h); what
+  // the compiler made beyond the IR's tables has no location.
+  Loc BodyLoc(BodyId body) const { return At(m_.bodies, body.index()); }
+  Loc JointLoc(JointId joint) const { return At(m_.joints, joint.index()); }
+  Loc FrameLoc(size_t frame) const { return At(m_.frames, frame); }
+  Loc ModelLoc(size_t model) const { return At(m_.models, model); }
+  Loc ActuatorLoc(size_t actuator) const { return At(m_.actuators, actuator); }
+  Loc ConstraintLoc(size_t constraint) const { return At(m_.constraints, constraint); }
+  Loc ForceElementLoc(size_t element) const { return At(m_.force_elements, element); }
+  Loc CameraLoc(size_t camera) const { return At(m_.cameras, camera); }
+  /// Scene geometry i's location: the scene's geometries are the IR's that
+  /// have a role, in order.
+  Loc GeometryLoc(size_t geometry) const {
+    return geometry < geometry_locs_.size() ? geometry_locs_[geometry] : Loc{};
+  }
+
+  /// The property `key` of `g`, or null.
+  static const ir::Property* FindProperty(const backend::SceneGeometry& g, std::string_view key);
+  /// Whether a property is the visual's (phong/, renderer/, label/), not proximity's.
+  static bool IsAppearanceProperty(const ir::Property& p);
+  static bool IsFloating(const backend::PlantJoint& j) {
+    return j.type == ir::JointType::QuaternionFloating || j.type == ir::JointType::RpyFloating;
+  }
+
+  const backend::Plant& plant_;
+  const backend::SceneGraph& scene_;
+  const ir::Module& m_;
+  DiagnosticEngine& diags_;
+  AssetPaths assets_;
+  XmlOut out_;
+
+ private:
+  template <typename Table>
+  static Loc At(const Table& table, size_t i) {
+    return i < table.size() ? table[i].loc : Loc{};
+  }
+
+  std::vector<Loc> geometry_locs_;
+};
+
+}  // namespace mdlc::writers
