@@ -25,7 +25,7 @@ class ModelBuilder {
   ModelId model() const { return model_; }
 
   ModelId AddInstance(std::string_view name) {
-    return module_.Add(ir::ModelInstance{module_.Intern(name), {}, ir::SourceFormat::Internal, {}});
+    return module_.Add(ir::ModelInstance{module_.Intern(name), {}, ir::SourceFormat::Internal, {}, {}});
   }
   void SetInstance(ModelId model) { model_ = model; }
 
