@@ -1,11 +1,13 @@
 #include "frontend/xml/xml_document.h"
 
 #include <libxml/parser.h>
+#include <libxml/SAX2.h>
 #include <libxml/tree.h>
 #include <libxml/xmlerror.h>
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <mutex>
@@ -27,6 +29,16 @@ std::optional<size_t> GetOffset(void* slot) {
 
 // No document may pull in anything from outside: refuse every external load.
 xmlParserInputPtr RefuseExternalEntity(const char*, const char*, xmlParserCtxtPtr) { return nullptr; }
+
+// The parser's own guard, behind the scan in Parse: an entity declaration
+// the scan missed is never recorded, so no reference can expand; the parse
+// stops at once and Parse reports it.
+void RefuseEntityDeclaration(void* context, const xmlChar*, int, const xmlChar*, const xmlChar*,
+                             xmlChar*) {
+  auto* parser = static_cast<xmlParserCtxtPtr>(context);
+  *static_cast<bool*>(parser->_private) = true;
+  xmlStopParser(parser);
+}
 
 void InstallSecurityHooks() {
   static std::once_flag once;
@@ -96,7 +108,10 @@ size_t NextStartTag(std::string_view text, size_t pos, std::optional<size_t>* en
     } else if (rest.starts_with("<?")) {
       pos = skip_past("?>");
     } else if (rest.starts_with("<!")) {
-      // DOCTYPE (with an optional [internal subset]) or another declaration
+      // DOCTYPE (with an optional [internal subset]) or another declaration;
+      // a quoted ']' or '>' can end the DOCTYPE early here, so a declaration
+      // met on its own is checked too
+      if (rest.starts_with("<!ENTITY") && entity_decl && !*entity_decl) *entity_decl = pos;
       size_t i = pos + 2;
       int depth = 0;
       for (; i < text.size(); ++i) {
@@ -151,9 +166,28 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
   const int options = XML_PARSE_NONET | XML_PARSE_HUGE | XML_PARSE_BIG_LINES |
                       XML_PARSE_NOWARNING | XML_PARSE_NOERROR | XML_PARSE_NOBLANKS |
                       XML_PARSE_COMPACT;
-  xmlDocPtr doc = xmlReadMemory(text.data(), static_cast<int>(text.size()),
-                                sources.Path(file).c_str(), nullptr, options);
+  xmlParserCtxtPtr parser = xmlNewParserCtxt();
+  if (!parser) {
+    xmlSetStructuredErrorFunc(nullptr, nullptr);
+    diags.Report(DiagKind::XmlSyntax, Loc{file, 1, 1}, "Failed to parse XML: out of memory");
+    return nullptr;
+  }
+  bool declared_entity = false;
+  parser->_private = &declared_entity;
+  parser->sax->entityDecl = RefuseEntityDeclaration;
+  xmlDocPtr doc = xmlCtxtReadMemory(parser, text.data(), static_cast<int>(text.size()),
+                                    sources.Path(file).c_str(), nullptr, options);
+  const Loc stopped_at{file, static_cast<uint32_t>(std::max(xmlSAX2GetLineNumber(parser), 1)),
+                       static_cast<uint32_t>(std::max(xmlSAX2GetColumnNumber(parser), 1))};
+  xmlFreeParserCtxt(parser);
   xmlSetStructuredErrorFunc(nullptr, nullptr);
+  if (declared_entity) {
+    if (doc) xmlFreeDoc(doc);
+    diags.Report(DiagKind::EntityDeclaration, stopped_at,
+                 "entity declarations are not allowed in robot model files; "
+                 "mdlc never expands or fetches entities");
+    return nullptr;
+  }
   if (!doc || sink.reported > 0) {
     if (doc) xmlFreeDoc(doc);
     if (sink.reported == 0) {
