@@ -97,15 +97,25 @@ Attribute DefaultClasses::Lookup(std::string_view class_name, std::string_view k
   return {};
 }
 
+const std::vector<xml::XmlElement>& Element::Chain() const {
+  if (!chain_) chain_ = defaults_->Chain(class_, kind_);
+  return *chain_;
+}
+
 Attribute Element::Get(std::string_view name) const {
   xml::XmlAttribute own = e_.Attribute(name);
   if (own.present()) return own;
-  return defaults_->Lookup(class_, kind_, name);
+  for (const xml::XmlElement& d : Chain()) {
+    xml::XmlAttribute inherited = d.Attribute(name);
+    if (inherited.present()) return inherited;
+  }
+  return {};
 }
 
 std::vector<xml::XmlElement> Element::Layers() const {
   std::vector<xml::XmlElement> out{e_};
-  for (const xml::XmlElement& d : defaults_->Chain(class_, kind_)) out.push_back(d);
+  const std::vector<xml::XmlElement>& chain = Chain();
+  out.insert(out.end(), chain.begin(), chain.end());
   return out;
 }
 

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cmath>
+#include <span>
 
 #include "frontend/mjcf/mjcf_orientation.h"
 #include "frontend/mjcf/mjcf_reader_detail.h"
@@ -28,6 +29,11 @@ std::optional<std::vector<double>> MjcfReader::Numbers(const Element& e, std::st
                                                        size_t n) {
   const Attribute a = e.Get(name);
   if (!a.present()) return std::nullopt;
+  return NumbersOf(e, a, name, n);
+}
+
+std::optional<std::vector<double>> MjcfReader::NumbersOf(const Element& e, const Attribute& a,
+                                                         std::string_view name, size_t n) {
   auto values = xml::ParseDoubleList(a.value);
   if (!values) {
     diags().Report(DiagKind::BadValue, a.loc,
@@ -53,8 +59,15 @@ std::optional<std::vector<double>> MjcfReader::Numbers(const Element& e, std::st
 
 std::optional<double> MjcfReader::Number(const Element& e, std::string_view name,
                                          double fallback) {
-  if (!e.Get(name).present()) return fallback;
-  auto v = Numbers(e, name, 1);
+  const Attribute a = e.Get(name);
+  if (!a.present()) return fallback;
+  // the common case without a list; NumbersOf says what is wrong otherwise
+  double value = 0;
+  if (const auto count = xml::ParseDoublesInto(a.value, &value, 1);
+      count && *count == 1 && std::isfinite(value)) {
+    return value;
+  }
+  auto v = NumbersOf(e, a, name, 1);
   if (!v) return std::nullopt;
   return (*v)[0];
 }
@@ -97,18 +110,19 @@ std::optional<std::vector<double>> MjcfReader::LayeredVector(const Element& e,
 std::optional<Transform> MjcfReader::ReadPose(const Element& e) {
   Transform X;
   bool ok = true;
-  if (e.Get("pos").present()) {
-    auto pos = Numbers(e, "pos", 3);
+  if (const Attribute pos_attribute = e.Get("pos"); pos_attribute.present()) {
+    auto pos = NumbersOf(e, pos_attribute, "pos", 3);
     if (pos) X.p = Eigen::Vector3d((*pos)[0], (*pos)[1], (*pos)[2]);
     ok &= pos.has_value();
   }
 
   // more than one orientation written on the element itself: MJCF-010
-  std::vector<xml::XmlAttribute> own;
-  if (e.HasOwn("quat")) own.push_back(e.xml().Attribute("quat"));
-  for (std::string_view alt : kAlternatives) {
-    if (e.HasOwn(alt)) own.push_back(e.xml().Attribute(alt));
+  std::array<xml::XmlAttribute, 5> own_storage;  // no allocation per pose
+  size_t own_count = 0;
+  for (std::string_view name : {"quat", "axisangle", "xyaxes", "zaxis", "euler"}) {
+    if (xml::XmlAttribute a = e.xml().Attribute(name); a.present()) own_storage[own_count++] = a;
   }
+  const std::span<const xml::XmlAttribute> own(own_storage.data(), own_count);
   if (own.size() > 1) {
     auto diag = diags().Report(DiagKind::BadValue, own[1].loc,
                                fmt::format("<{}> has more than one orientation: at most one of "
@@ -118,9 +132,15 @@ std::optional<Transform> MjcfReader::ReadPose(const Element& e) {
     return std::nullopt;
   }
 
-  // the nearest level (element, then classes) with an alternative wins
+  // the nearest level (element, then classes) with an alternative wins;
+  // the element's own attributes are in `own` already
   std::string_view alt_name;
-  for (const xml::XmlElement& layer : e.Layers()) {
+  for (const xml::XmlAttribute& a : own) {
+    if (a.name != "quat") alt_name = a.name;
+  }
+  const std::vector<xml::XmlElement> layers = e.Layers();
+  for (size_t i = 1; i < layers.size() && alt_name.empty(); ++i) {
+    const xml::XmlElement& layer = layers[i];
     for (std::string_view alt : kAlternatives) {
       if (layer.Attribute(alt).present()) {
         alt_name = alt;
@@ -150,9 +170,9 @@ std::optional<Transform> MjcfReader::ReadPose(const Element& e) {
     R = RotationFromEuler({compiler.Angle((*v)[0]), compiler.Angle((*v)[1]),
                            compiler.Angle((*v)[2])},
                           compiler.eulerseq);
-  } else if (e.Get("quat").present()) {
+  } else if (const Attribute quat = e.Get("quat"); quat.present()) {
     used = "quat";
-    auto v = Numbers(e, "quat", 4);
+    auto v = NumbersOf(e, quat, "quat", 4);
     if (!v) return std::nullopt;
     R = RotationFromQuat((*v)[0], (*v)[1], (*v)[2], (*v)[3]);
   }

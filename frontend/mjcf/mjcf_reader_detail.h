@@ -124,10 +124,16 @@ class Element {
   std::string_view kind() const { return kind_; }
 
  private:
+  /// The class chain's <kind> defaults, looked up on the first attribute
+  /// the element does not write (elements read a dozen attributes each, and
+  /// most are absent: one chain lookup per element, not per attribute).
+  const std::vector<xml::XmlElement>& Chain() const;
+
   xml::XmlElement e_;
   std::string_view kind_;
   std::string class_;
   const DefaultClasses* defaults_;
+  mutable std::optional<std::vector<xml::XmlElement>> chain_;
 };
 
 // ---------------------------------------------------------------------------
@@ -241,6 +247,9 @@ struct MjcfReader {
   std::optional<double> Number(const Element& e, std::string_view name, double fallback);
   /// Exactly `n` numbers (own or default); nullopt when absent or bad.
   std::optional<std::vector<double>> Numbers(const Element& e, std::string_view name, size_t n);
+  /// Numbers() of an attribute already looked up (`a.present()`).
+  std::optional<std::vector<double>> NumbersOf(const Element& e, const Attribute& a,
+                                               std::string_view name, size_t n);
   /// MuJoCo's booleans: "true"/"false" only.
   std::optional<bool> Boolean(const Element& e, std::string_view name, bool fallback);
 

@@ -59,6 +59,7 @@ std::optional<size_t> ParseDoublesInto(std::string_view text, double* out, size_
 
 std::optional<std::vector<double>> ParseDoubleList(std::string_view text) {
   std::vector<double> out;
+  out.reserve(8);  // most lists are vectors, quaternions, poses, inertias: one allocation
   if (!ForEachNumber(text, [&](double v) { out.push_back(v); })) return std::nullopt;
   return out;
 }

@@ -80,13 +80,26 @@ constexpr auto kNameChar = [] {
 }();
 bool IsNameChar(char c) { return kNameChar[static_cast<unsigned char>(c)]; }
 
+// `text`, NUL-terminated, equals `s`; compared without measuring `text`
+// first (attribute lookups run this for every attribute they pass over, so
+// most calls end at the first character)
+bool CStringEquals(const char* text, std::string_view s) {
+  for (char c : s) {
+    if (*text++ != c) return false;  // text's NUL mismatches: names hold none
+  }
+  return *text == '\0';
+}
+
 // prefix:name == qualified, without building a string
 bool QualifiedNameEquals(const xmlChar* prefix, const xmlChar* name, std::string_view qualified) {
-  std::string_view local(reinterpret_cast<const char*>(name));
-  if (!prefix) return local == qualified;
-  std::string_view p(reinterpret_cast<const char*>(prefix));
-  return qualified.size() == p.size() + 1 + local.size() && qualified.starts_with(p) &&
-         qualified[p.size()] == ':' && qualified.ends_with(local);
+  const char* local = reinterpret_cast<const char*>(name);
+  if (!prefix) return CStringEquals(local, qualified);
+  size_t i = 0;
+  for (const char* p = reinterpret_cast<const char*>(prefix); *p; ++p, ++i) {
+    if (i >= qualified.size() || qualified[i] != *p) return false;
+  }
+  if (i >= qualified.size() || qualified[i] != ':') return false;
+  return CStringEquals(local, qualified.substr(i + 1));
 }
 
 // Scans markup from `pos`, skipping comments, PIs, CDATA, DOCTYPE and end
@@ -330,10 +343,12 @@ XmlAttribute XmlElement::MakeAttribute(_xmlAttr* a) const {
 }
 
 XmlAttribute XmlElement::Attribute(std::string_view name) const {
+  if (name.empty()) return {};
   for (xmlAttr* a = node_->properties; a; a = a->next) {
-    if (QualifiedNameEquals(a->ns ? a->ns->prefix : nullptr, a->name, name)) {
-      return MakeAttribute(a);
-    }
+    const xmlChar* prefix = a->ns ? a->ns->prefix : nullptr;
+    // most attributes passed over differ in the first character
+    if (static_cast<char>(prefix ? prefix[0] : a->name[0]) != name[0]) continue;
+    if (QualifiedNameEquals(prefix, a->name, name)) return MakeAttribute(a);
   }
   return {};
 }
