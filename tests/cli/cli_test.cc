@@ -2,7 +2,6 @@
 // policy flags, pass instrumentation, determinism, and inputs that must not
 // crash or hang (deep chains, empty files, entity declarations).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <fmt/format.h>
 
@@ -14,52 +13,16 @@
 #include <sstream>
 #include <string>
 
+#include "cli_fixture.h"
+
 namespace {
 
+using mdlc::cli_test::CliFixture;
+using mdlc::cli_test::Outcome;
+using mdlc::cli_test::ReadFile;
 namespace fs = std::filesystem;
 
-struct Result {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string ReadFile(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-class CliTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("mdlc_cli_test_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path Write(const std::string& name, const std::string& text) {
-    fs::path p = dir_ / name;
-    std::ofstream(p, std::ios::binary) << text;
-    return p;
-  }
-
-  Result Run(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string cmd = std::string(MDLC_BINARY) + " " + args + " >" + out.string() + " 2>" +
-                            err.string() + " </dev/null";
-    Result r;
-    const int raw = std::system(cmd.c_str());
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
-    r.out = ReadFile(out);
-    r.err = ReadFile(err);
-    return r;
-  }
-
-  fs::path dir_;
-};
+class CliTest : public CliFixture {};
 
 const char* kPendulum = R"(<?xml version="1.0"?>
 <robot name="pendulum">
@@ -83,19 +46,19 @@ const char* kPendulum = R"(<?xml version="1.0"?>
 )";
 
 TEST_F(CliTest, SuccessExitsZeroAndPrintsSummary) {
-  Result r = Run("compile " + Write("p.urdf", kPendulum).string());
+  Outcome r = Mdlc("compile " + Write("p.urdf", kPendulum).string());
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("bodies: 2"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("total mass: 2 kg"), std::string::npos) << r.out;
 }
 
 TEST_F(CliTest, BadUsageExitsTwo) {
-  EXPECT_EQ(Run("compile").status, 2);
-  EXPECT_EQ(Run("compile x.urdf --emit=bogus").status, 2);
+  EXPECT_EQ(Mdlc("compile").status, 2);
+  EXPECT_EQ(Mdlc("compile x.urdf --emit=bogus").status, 2);
 }
 
 TEST_F(CliTest, EmptyFileIsALocatedError) {  // COMMON-004
-  Result r = Run("compile " + Write("empty.urdf", "").string());
+  Outcome r = Mdlc("compile " + Write("empty.urdf", "").string());
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("empty.urdf:1:1: error: Failed to parse XML: the file is empty"),
             std::string::npos)
@@ -103,16 +66,16 @@ TEST_F(CliTest, EmptyFileIsALocatedError) {  // COMMON-004
 }
 
 TEST_F(CliTest, MissingFileAndUnknownExtensionAreErrors) {  // COMMON-005
-  Result missing = Run("compile " + (dir_ / "nope.urdf").string());
+  Outcome missing = Mdlc("compile " + (dir_ / "nope.urdf").string());
   EXPECT_EQ(missing.status, 1);
   EXPECT_NE(missing.err.find("cannot read"), std::string::npos) << missing.err;
-  Result ext = Run("compile " + Write("model.txt", kPendulum).string());
+  Outcome ext = Mdlc("compile " + Write("model.txt", kPendulum).string());
   EXPECT_EQ(ext.status, 1);
   EXPECT_NE(ext.err.find("extension"), std::string::npos) << ext.err;
 }
 
 TEST_F(CliTest, TextDiagnosticsShowSourceLineAndCaretAtTheAttribute) {
-  Result r = Run("compile " + Write("bad.urdf", R"(<robot name="r">
+  Outcome r = Mdlc("compile " + Write("bad.urdf", R"(<robot name="r">
   <link name="a"><inertial><mass value="heavy"/></inertial></link>
 </robot>
 )").string());
@@ -128,7 +91,7 @@ TEST_F(CliTest, TextDiagnosticsShowSourceLineAndCaretAtTheAttribute) {
 }
 
 TEST_F(CliTest, JsonDiagnosticsAreOneObjectPerLine) {
-  Result r = Run("compile --diagnostics-format=json " +
+  Outcome r = Mdlc("compile --diagnostics-format=json " +
                  Write("bad.urdf", R"(<robot name="r">
   <link name="a"><inertial><mass value="nan"/></inertial></link>
   <lnk/>
@@ -152,46 +115,46 @@ TEST_F(CliTest, JsonDiagnosticsAreOneObjectPerLine) {
 
 TEST_F(CliTest, StrictAndWerrorPromoteWarnings) {  // COMMON-002
   fs::path f = Write("warn.urdf", R"(<robot name="r"><link name="a"/><lnk/></robot>)");
-  EXPECT_EQ(Run("compile --emit=none " + f.string()).status, 0);
-  Result strict = Run("compile --emit=none --strict " + f.string());
+  EXPECT_EQ(Mdlc("compile --emit=none " + f.string()).status, 0);
+  Outcome strict = Mdlc("compile --emit=none --strict " + f.string());
   EXPECT_EQ(strict.status, 1);
   EXPECT_NE(strict.err.find("error: unknown element <lnk>"), std::string::npos) << strict.err;
-  EXPECT_EQ(Run("compile --emit=none -Werror " + f.string()).status, 1);
-  EXPECT_EQ(Run("compile --emit=none -Werror=unknown " + f.string()).status, 1);
-  EXPECT_EQ(Run("compile --emit=none -Werror=inertia " + f.string()).status, 0);
-  Result silenced = Run("compile --emit=none -Wno-unknown " + f.string());
+  EXPECT_EQ(Mdlc("compile --emit=none -Werror " + f.string()).status, 1);
+  EXPECT_EQ(Mdlc("compile --emit=none -Werror=unknown " + f.string()).status, 1);
+  EXPECT_EQ(Mdlc("compile --emit=none -Werror=inertia " + f.string()).status, 0);
+  Outcome silenced = Mdlc("compile --emit=none -Wno-unknown " + f.string());
   EXPECT_EQ(silenced.status, 0);
   EXPECT_EQ(silenced.err, "");
 }
 
 TEST_F(CliTest, NegativeMassWarnsByDefaultAndFailsWhenStrict) {  // COMMON-041
   fs::path f = fs::path(MDLC_DIAG_DIR) / "urdf" / "negative_mass.urdf";
-  Result lax = Run("compile --emit=plant-json " + f.string());
+  Outcome lax = Mdlc("compile --emit=plant-json " + f.string());
   EXPECT_EQ(lax.status, 0);
   auto json = nlohmann::json::parse(lax.out);
   // the plausible replacement: mass 1 kg (COMMON-040)
   EXPECT_EQ(json["bodies"][0]["mass"].get<double>(), 1.0);
-  Result strict = Run("compile --strict --emit=none " + f.string());
+  Outcome strict = Mdlc("compile --strict --emit=none " + f.string());
   EXPECT_EQ(strict.status, 1);
   EXPECT_NE(strict.err.find("negative_mass.urdf:7:5: error:"), std::string::npos) << strict.err;
 }
 
 TEST_F(CliTest, IrDumpAndPlantJsonAreDeterministic) {
   fs::path f = Write("p.urdf", kPendulum);
-  Result a = Run("compile --emit=ir " + f.string());
-  Result b = Run("compile --emit=ir " + f.string());
+  Outcome a = Mdlc("compile --emit=ir " + f.string());
+  Outcome b = Mdlc("compile --emit=ir " + f.string());
   ASSERT_EQ(a.status, 0) << a.err;
   EXPECT_EQ(a.out, b.out);
   EXPECT_NE(a.out.find("joint #1 \"theta\" model=pendulum revolute"), std::string::npos) << a.out;
-  Result c = Run("compile --emit=plant-json --q theta=0.3 " + f.string());
-  Result d = Run("compile --emit=plant-json --q theta=0.3 " + f.string());
+  Outcome c = Mdlc("compile --emit=plant-json --q theta=0.3 " + f.string());
+  Outcome d = Mdlc("compile --emit=plant-json --q theta=0.3 " + f.string());
   ASSERT_EQ(c.status, 0) << c.err;
   EXPECT_EQ(c.out, d.out);
 }
 
 TEST_F(CliTest, PlantJsonAtAConfiguration) {
   fs::path f = Write("p.urdf", kPendulum);
-  Result r = Run("compile --emit=plant-json --q theta=0.5 -o " + (dir_ / "plant.json").string() +
+  Outcome r = Mdlc("compile --emit=plant-json --q theta=0.5 -o " + (dir_ / "plant.json").string() +
                  " " + f.string());
   ASSERT_EQ(r.status, 0) << r.err;
   auto j = nlohmann::json::parse(ReadFile(dir_ / "plant.json"));
@@ -200,29 +163,29 @@ TEST_F(CliTest, PlantJsonAtAConfiguration) {
   EXPECT_EQ(j["dofs"][0], "pendulum::theta");
   // M = I_yy + m d^2 about the joint axis
   EXPECT_NEAR(j["mass_matrix"][0][0].get<double>(), 0.01 + 2 * 0.25, 1e-12);
-  EXPECT_EQ(Run("compile --emit=plant-json --q nosuch=1 " + f.string()).status, 1);
+  EXPECT_EQ(Mdlc("compile --emit=plant-json --q nosuch=1 " + f.string()).status, 1);
 }
 
 TEST_F(CliTest, PassInstrumentation) {
-  Result list = Run("--list-passes");
+  Outcome list = Mdlc("--list-passes");
   EXPECT_EQ(list.status, 0);
   for (const char* pass : {"resolve-names", "check-joints", "build-kinematic-tree", "check-inertia"}) {
     EXPECT_NE(list.out.find(pass), std::string::npos) << pass;
   }
   fs::path f = Write("p.urdf", kPendulum);
-  Result after = Run("compile --emit=none --print-after=resolve-names " + f.string());
+  Outcome after = Mdlc("compile --emit=none --print-after=resolve-names " + f.string());
   EXPECT_EQ(after.status, 0);
   EXPECT_NE(after.err.find("// ----- IR dump after resolve-names -----"), std::string::npos);
   EXPECT_EQ(after.err.find("IR dump after check-inertia"), std::string::npos);
-  Result all = Run("compile --emit=none --print-after-all --verify-each " + f.string());
+  Outcome all = Mdlc("compile --emit=none --print-after-all --verify-each " + f.string());
   EXPECT_NE(all.err.find("IR dump after check-inertia"), std::string::npos);
-  Result timing = Run("compile --emit=none --time-passes " + f.string());
+  Outcome timing = Mdlc("compile --emit=none --time-passes " + f.string());
   EXPECT_NE(timing.err.find("pass execution timing"), std::string::npos);
   EXPECT_NE(timing.err.find("build-kinematic-tree"), std::string::npos);
 }
 
 TEST_F(CliTest, ModelNameOverride) {  // COMMON-021
-  Result r = Run("compile --emit=ir --model-name renamed " + Write("p.urdf", kPendulum).string());
+  Outcome r = Mdlc("compile --emit=ir --model-name renamed " + Write("p.urdf", kPendulum).string());
   EXPECT_NE(r.out.find("model #2 \"renamed\""), std::string::npos) << r.out;
 }
 
@@ -237,7 +200,7 @@ TEST_F(CliTest, TenThousandLinkChainCompiles) {
             "\"/><child link=\"l" + std::to_string(i) + "\"/><origin xyz=\"0 0 0.1\"/></joint>\n";
   }
   urdf += "</robot>\n";
-  Result r = Run("compile --emit=summary " + Write("chain.urdf", urdf).string());
+  Outcome r = Mdlc("compile --emit=summary " + Write("chain.urdf", urdf).string());
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("bodies: 10001"), std::string::npos) << r.out;
 }
@@ -248,7 +211,7 @@ TEST_F(CliTest, DeeplyNestedXmlDoesNotCrash) {
   for (int i = 0; i < 100000; ++i) deep += "<x>";
   for (int i = 0; i < 100000; ++i) deep += "</x>";
   deep += "</robot>";
-  Result r = Run("compile --emit=none " + Write("deep.urdf", deep).string());
+  Outcome r = Mdlc("compile --emit=none " + Write("deep.urdf", deep).string());
   EXPECT_EQ(r.status, 0) << r.err.substr(0, 500);
 }
 
@@ -258,17 +221,17 @@ TEST_F(CliTest, LimitsAreSetOnTheCommandLine) {  // issue 16
   for (int i = 0; i < 100; ++i) deep += "</x>";
   deep += "</robot>";
   const std::string path = Write("deep.urdf", deep).string();
-  Result r = Run("compile --emit=none --limit depth=50 " + path);
+  Outcome r = Mdlc("compile --emit=none --limit depth=50 " + path);
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("deep.urdf:51:1: error: element nested 51 deep, over the depth limit of "
                        "50 (raise it with --limit depth=N)"),
             std::string::npos)
       << r.err;
-  EXPECT_EQ(Run("compile --emit=none --limit depth=101 " + path).status, 0);
-  r = Run("compile --limit depht=50 " + path);
+  EXPECT_EQ(Mdlc("compile --emit=none --limit depth=101 " + path).status, 0);
+  r = Mdlc("compile --limit depht=50 " + path);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("unknown limit 'depht'"), std::string::npos) << r.err;
-  EXPECT_EQ(Run("compile --limit depth=lots " + path).status, 2);
+  EXPECT_EQ(Mdlc("compile --limit depth=lots " + path).status, 2);
 }
 
 TEST_F(CliTest, ConstraintsCannotReachIntoAnotherModel) {  // EXT-052, COMMON-022
@@ -283,14 +246,14 @@ TEST_F(CliTest, ConstraintsCannotReachIntoAnotherModel) {  // EXT-052, COMMON-02
   </drake:ball_constraint>
 </robot>
 )");
-  Result r = Run("compile --emit=none " + first.string() + " " + second.string());
+  Outcome r = Mdlc("compile --emit=none " + first.string() + " " + second.string());
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("second.urdf:4:"), std::string::npos) << r.err;
   // the same two files compile when the constraint stays inside its model
-  Result twice = Run("compile --emit=none " + first.string() + " " + first.string());
+  Outcome twice = Mdlc("compile --emit=none " + first.string() + " " + first.string());
   EXPECT_EQ(twice.status, 1);  // COMMON-022: the name 'first' is taken
   EXPECT_NE(twice.err.find("already exists"), std::string::npos) << twice.err;
-  EXPECT_EQ(Run("compile --emit=none --auto-rename " + first.string() + " " + first.string()).status, 0);
+  EXPECT_EQ(Mdlc("compile --emit=none --auto-rename " + first.string() + " " + first.string()).status, 0);
 }
 
 TEST_F(CliTest, EveryDiagnosticFileVerifies) {
@@ -301,7 +264,7 @@ TEST_F(CliTest, EveryDiagnosticFileVerifies) {
     const std::string packages = entry.path().extension() == ".yaml"
                                      ? " --package-path " + std::string(MDLC_TEST_MODELS) + "/dmd"
                                      : "";
-    Result r = Run("compile --verify-diagnostics " + entry.path().string() + packages);
+    Outcome r = Mdlc("compile --verify-diagnostics " + entry.path().string() + packages);
     EXPECT_EQ(r.status, 0) << entry.path() << "\n" << r.err;
   }
 }
@@ -327,7 +290,7 @@ TEST_F(CliTest, CompositeSceneOfUrdfSdfAndDirectives) {
     child: box::body
     X_PC: {rotation: !Rpy {deg: [0, 0, 90]}}
 )");
-  Result r = Run("compile " + arm.string() + " " + box.string() + " " + scene.string() +
+  Outcome r = Mdlc("compile " + arm.string() + " " + box.string() + " " + scene.string() +
                  " --emit=plant-json");
   ASSERT_EQ(r.status, 0) << r.err;
   auto plant = nlohmann::json::parse(r.out);
@@ -350,7 +313,7 @@ TEST_F(CliTest, CompositeSceneOfUrdfSdfAndDirectives) {
     EXPECT_NEAR(b["X_WB"]["q"][3].get<double>(), std::sqrt(0.5), 1e-12);
   }
   // a repeatable option takes one value per use, never the files after it
-  Result options_first = Run("compile --q theta=0.5 --package-path " + dir_.string() + " " +
+  Outcome options_first = Mdlc("compile --q theta=0.5 --package-path " + dir_.string() + " " +
                              arm.string() + " " + box.string() + " " + scene.string() +
                              " --emit=none");
   EXPECT_EQ(options_first.status, 0) << options_first.err;
@@ -360,11 +323,11 @@ TEST_F(CliTest, CompositeSceneOfUrdfSdfAndDirectives) {
   <link name="board"><pose>0 0 0.5 0 0 0</pose></link>
 </model></sdf>
 )");
-  Result two = Run("compile " + box.string() + " " + shelf.string() + " --emit=plant-json");
+  Outcome two = Mdlc("compile " + box.string() + " " + shelf.string() + " --emit=plant-json");
   ASSERT_EQ(two.status, 0) << two.err;
   EXPECT_EQ(nlohmann::json::parse(two.out)["model_instances"].size(), 4u);
   // the directives see only what came before them
-  Result order = Run("compile --emit=none " + scene.string() + " " + arm.string() + " " +
+  Outcome order = Mdlc("compile --emit=none " + scene.string() + " " + arm.string() + " " +
                      box.string());
   EXPECT_EQ(order.status, 1);
   EXPECT_NE(order.err.find("scene.dmd.yaml:4:24: error: frame 'pendulum::arm'"), std::string::npos) << order.err;
@@ -374,7 +337,7 @@ TEST_F(CliTest, CompositeSceneOfUrdfSdfAndDirectives) {
 // exponentially, are located errors, never a crash or a hang.
 TEST_F(CliTest, YamlBombsAreLocatedErrors) {
   fs::path deep = Write("deep.dmd.yaml", "directives: " + std::string(100000, '[') + "\n");
-  Result d = Run("compile --emit=none " + deep.string());
+  Outcome d = Mdlc("compile --emit=none " + deep.string());
   EXPECT_EQ(d.status, 1);
   EXPECT_NE(d.err.find("deep.dmd.yaml:"), std::string::npos) << d.err;
   EXPECT_NE(d.err.find("malformed YAML"), std::string::npos) << d.err;
@@ -386,7 +349,7 @@ TEST_F(CliTest, YamlBombsAreLocatedErrors) {
   }
   laughs += "directives: *l9\n";
   fs::path bomb = Write("laughs.dmd.yaml", laughs);
-  Result b = Run("compile --emit=none " + bomb.string());
+  Outcome b = Mdlc("compile --emit=none " + bomb.string());
   EXPECT_EQ(b.status, 1);
   EXPECT_NE(b.err.find("laughs.dmd.yaml:1:1: error: unknown key 'l0'"), std::string::npos) << b.err;
 }
@@ -407,7 +370,7 @@ const char* kMjcfWithLosses = R"(<mujoco model="losses">
 TEST_F(CliTest, ConvertInfersTheTargetAndReportsWhatIsLost) {
   const fs::path out = dir_ / "out" / "losses.urdf";
   fs::create_directories(out.parent_path());
-  Result r = Run("convert " + Write("losses.xml", kMjcfWithLosses).string() + " -o " + out.string());
+  Outcome r = Mdlc("convert " + Write("losses.xml", kMjcfWithLosses).string() + " -o " + out.string());
   EXPECT_EQ(r.status, 0) << r.err;
   // the half space and the free body's default pose cannot be written
   EXPECT_NE(r.err.find("losses.xml:3:5: warning: geometry 'floor' is a half space"),
@@ -420,36 +383,36 @@ TEST_F(CliTest, ConvertInfersTheTargetAndReportsWhatIsLost) {
   EXPECT_NE(urdf.find("<drake:capsule radius=\"0.1\" length=\"0.4\"/>"), std::string::npos)
       << urdf;
   // and what is written compiles
-  Result back = Run("compile --emit=none --strict " + out.string());
+  Outcome back = Mdlc("compile --emit=none --strict " + out.string());
   EXPECT_EQ(back.status, 0) << back.err;
 }
 
 TEST_F(CliTest, ConvertStrictMakesLossesErrors) {
   const fs::path out = dir_ / "strict.urdf";
-  Result r = Run("convert --strict " + Write("losses.xml", kMjcfWithLosses).string() + " -o " +
+  Outcome r = Mdlc("convert --strict " + Write("losses.xml", kMjcfWithLosses).string() + " -o " +
                  out.string());
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("error: geometry 'floor' is a half space"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
   // one group can be silenced: then nothing is lost that --strict minds
-  Result quiet = Run("convert --strict -Wno-lossy " + (dir_ / "losses.xml").string() + " -o " +
+  Outcome quiet = Mdlc("convert --strict -Wno-lossy " + (dir_ / "losses.xml").string() + " -o " +
                      out.string());
   EXPECT_EQ(quiet.status, 0) << quiet.err;
 }
 
 TEST_F(CliTest, ConvertNeedsATarget) {
   const fs::path in = Write("p.urdf", kPendulum);
-  EXPECT_EQ(Run("convert " + in.string() + " -o " + (dir_ / "p.txt").string()).status, 2);
-  EXPECT_EQ(Run("convert " + in.string() + " --to step -o -").status, 2);
+  EXPECT_EQ(Mdlc("convert " + in.string() + " -o " + (dir_ / "p.txt").string()).status, 2);
+  EXPECT_EQ(Mdlc("convert " + in.string() + " --to step -o -").status, 2);
   // the target follows from the output's extension
-  Result sdf = Run("convert " + in.string() + " -o " + (dir_ / "p.sdf").string());
+  Outcome sdf = Mdlc("convert " + in.string() + " -o " + (dir_ / "p.sdf").string());
   EXPECT_EQ(sdf.status, 0) << sdf.err;
   EXPECT_NE(ReadFile(dir_ / "p.sdf").find("<sdf version=\"1.9\""), std::string::npos);
-  Result mjcf = Run("convert " + in.string() + " -o " + (dir_ / "p.xml").string());
+  Outcome mjcf = Mdlc("convert " + in.string() + " -o " + (dir_ / "p.xml").string());
   EXPECT_EQ(mjcf.status, 0) << mjcf.err;
   EXPECT_NE(ReadFile(dir_ / "p.xml").find("<mujoco model=\"pendulum\""), std::string::npos);
   // directives are read, not written
-  EXPECT_EQ(Run("convert " + in.string() + " -o " + (dir_ / "p.dmd.yaml").string()).status, 2);
+  EXPECT_EQ(Mdlc("convert " + in.string() + " -o " + (dir_ / "p.dmd.yaml").string()).status, 2);
 }
 
 TEST_F(CliTest, ConvertNamesMeshesFromTheOutputAndCopiesThemOnce) {
@@ -463,13 +426,13 @@ TEST_F(CliTest, ConvertNamesMeshesFromTheOutputAndCopiesThemOnce) {
                                         mesh.string());
   const fs::path in = Write("meshy.urdf", robot);
   fs::create_directories(dir_ / "out");
-  Result plain = Run("convert " + in.string() + " -o " + (dir_ / "out" / "a.urdf").string());
+  Outcome plain = Mdlc("convert " + in.string() + " -o " + (dir_ / "out" / "a.urdf").string());
   ASSERT_EQ(plain.status, 0) << plain.err;
   const std::string relative = fs::relative(mesh, dir_ / "out").generic_string();
   EXPECT_NE(ReadFile(dir_ / "out" / "a.urdf").find("filename=\"" + relative + "\""),
             std::string::npos);
 
-  Result copied = Run("convert " + in.string() + " -o " + (dir_ / "out" / "b.urdf").string() +
+  Outcome copied = Mdlc("convert " + in.string() + " -o " + (dir_ / "out" / "b.urdf").string() +
                       " --copy-assets " + (dir_ / "out" / "meshes").string());
   ASSERT_EQ(copied.status, 0) << copied.err;
   std::vector<fs::path> copies;
@@ -479,7 +442,7 @@ TEST_F(CliTest, ConvertNamesMeshesFromTheOutputAndCopiesThemOnce) {
   const std::string b = ReadFile(dir_ / "out" / "b.urdf");
   EXPECT_NE(b.find("filename=\"meshes/" + copies[0].filename().string() + "\""), std::string::npos)
       << b;
-  Result back = Run("compile --emit=none " + (dir_ / "out" / "b.urdf").string());
+  Outcome back = Mdlc("compile --emit=none " + (dir_ / "out" / "b.urdf").string());
   EXPECT_EQ(back.status, 0) << back.err;
 }
 

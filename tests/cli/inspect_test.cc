@@ -14,44 +14,17 @@
 #include <sstream>
 #include <string>
 
+#include "cli_fixture.h"
+
 namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-struct Outcome {
-  int status = -1;
-  std::string out, err;
-};
+using mdlc::cli_test::Outcome;
 
-class InspectTest : public ::testing::Test {
+class InspectTest : public mdlc::cli_test::CliFixture {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           fmt::format("mdlc_inspect_{}_{}", ::getpid(),
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  static std::string Read(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  }
-  Outcome Mdlc(const std::string& args) {
-    const fs::path out = dir_ / "out", err = dir_ / "err";
-    const int raw = std::system(fmt::format("{} {} >{} 2>{} </dev/null", MDLC_BINARY, args,
-                                            out.string(), err.string())
-                                    .c_str());
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), Read(out), Read(err)};
-  }
-  fs::path Write(const std::string& name, const std::string& text) {
-    std::ofstream(dir_ / name) << text;
-    return dir_ / name;
-  }
-
-  fs::path dir_;
+  static std::string Read(const fs::path& p) { return mdlc::cli_test::ReadFile(p); }
 };
 
 const std::string kScara = std::string(MDLC_EXAMPLES_DIR) + "/urdf/scara_arm.urdf";

@@ -14,39 +14,22 @@
 #include <sstream>
 #include <string>
 
+#include "cli_fixture.h"
+
 namespace {
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int status = -1;
-  std::string out, err;
-};
+using mdlc::cli_test::Outcome;
 
-class MeshCacheTest : public ::testing::Test {
+class MeshCacheTest : public mdlc::cli_test::CliFixture {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           fmt::format("mdlc_mesh_cache_{}_{}", ::getpid(),
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
+    CliFixture::SetUp();
     cache_ = dir_ / "cache";
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  static std::string Read(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
   }
   /// mdlc with `args`, its environment's MDLC_CACHE_DIR set to `env_cache`.
   Outcome Mdlc(const std::string& args, const fs::path& env_cache) {
-    const fs::path out = dir_ / "out", err = dir_ / "err";
-    const int raw = std::system(fmt::format("MDLC_CACHE_DIR={} {} {} >{} 2>{} </dev/null",
-                                            env_cache.string(), MDLC_BINARY, args,
-                                            out.string(), err.string())
-                                    .c_str());
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), Read(out), Read(err)};
+    return CliFixture::Mdlc(args, "MDLC_CACHE_DIR=" + env_cache.string());
   }
   /// A compile of the mesh model to plant-json, timing its passes.
   Outcome Compile(const std::string& cache_flags) {
@@ -71,7 +54,7 @@ class MeshCacheTest : public ::testing::Test {
 
   // MJCF mesh geoms whose bodies' mass properties come from the meshes
   const std::string kModel = std::string(MDLC_TEST_MODELS) + "/mjcf/oracle/mesh_geoms.xml";
-  fs::path dir_, cache_;
+  fs::path cache_;
 };
 
 TEST_F(MeshCacheTest, ASecondCompileHitsTheCacheAndGivesTheSameBytes) {
@@ -104,7 +87,7 @@ TEST_F(MeshCacheTest, DamagedEntriesAreIgnoredAndRewritten) {
   // and a stray temporary file of a writer that died
   int damaged = 0;
   for (const auto& e : fs::directory_iterator(cache_)) {
-    std::string bytes = Read(e.path());
+    std::string bytes = mdlc::cli_test::ReadFile(e.path());
     if (damaged == 0) {
       bytes.resize(bytes.size() / 2);
     } else if (damaged == 1) {
