@@ -97,6 +97,7 @@ bool BuildKinematicTreePass::Run(PassContext& ctx) {
   if (ctx.diags.error_count() != errors_before) return false;
 
   joint_names_.clear();
+  joint_names_.reserve(m.joints.size());
   for (const ir::Joint& j : m.joints) joint_names_.insert(Key(j.model, j.name));
   for (size_t b = 1; b < inboard.size(); ++b) {
     if (!inboard[b].valid()) AddFloatingJoint(ctx, BodyId(b));

@@ -50,6 +50,9 @@ void SdfReader::ReadLink(const xml::XmlElement& e, ModelScope& s) {
   const FrameNodeId node_id = AddNode(s, std::move(node));
   graph()[s.scope].links.push_back(node_id);
 
+  // names are unique per link: the table holds this link's only, so it stays
+  // small and in cache however many links the file has
+  geometry_names_.clear();
   for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
     std::string_view tag = child.Name();
     if (tag == "visual" || tag == "drake:visual") {

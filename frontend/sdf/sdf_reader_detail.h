@@ -190,7 +190,8 @@ class SdfReader {
     ir::FrameNodeKind kind;
   };
   std::unordered_map<ScopedKey, Definition, ScopedKeyHash> defined_;
-  // geometry names per (body, role) for uniqueness checks in sdf_geometry.cc
+  // the link being read's geometry names per role, for uniqueness checks in
+  // sdf_geometry.cc (cleared for each link: sdf_link.cc)
   std::unordered_map<ScopedKey, Loc, ScopedKeyHash> geometry_names_;
   std::vector<std::shared_ptr<const xml::XmlDocument>> documents_;
   std::vector<std::unique_ptr<SdfFile>> files_;

@@ -234,7 +234,7 @@ TEST(CollisionFilterGroupsTest, ScopedNamesReachNestedInstances) {  // COMMON-03
   Lowered l;
   ASSERT_TRUE(l.Read(Robot("r", Links({"a"}) + Group("g", {"a", "sub::x"}, {"sub::h"}))));
   ir::Module& m = l.module;
-  const ModelId sub = m.Add(ir::ModelInstance{m.Intern("r::sub"), {}, ir::SourceFormat::Internal, {}});
+  const ModelId sub = m.Add(ir::ModelInstance{m.Intern("r::sub"), {}, ir::SourceFormat::Internal, {}, {}});
   ir::Body x;
   x.name = m.Intern("x");
   x.model = sub;

@@ -189,7 +189,7 @@ ir::Module TwoBodies(std::string_view first, std::string_view second,
                      bool second_in_another_instance = false) {
   ir::Module m;
   const ModelId other =
-      m.Add(ir::ModelInstance{m.Intern("other"), {}, ir::SourceFormat::Internal, {}});
+      m.Add(ir::ModelInstance{m.Intern("other"), {}, ir::SourceFormat::Internal, {}, {}});
   for (auto [name, model] : {std::pair{first, ir::kDefaultModel},
                              std::pair{second, second_in_another_instance ? other
                                                                           : ir::kDefaultModel}}) {
