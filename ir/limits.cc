@@ -21,6 +21,8 @@ const std::vector<LimitInfo>& AllLimits() {
        std::numeric_limits<uint64_t>::max()},
       {"mesh-vertices", "vertices of one mesh file", &Limits::mesh_vertices,
        std::numeric_limits<uint64_t>::max()},
+      // a day at most: the reader's deadline is kept in milliseconds
+      {"mesh-seconds", "seconds to read one mesh file", &Limits::mesh_seconds, 24 * 3600},
   };
   return kLimits;
 }

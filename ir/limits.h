@@ -33,6 +33,9 @@ struct Limits {
   /// Vertices of one mesh file, counted as read, before vertices at the same
   /// position are merged (an OBJ face's corners may count separately).
   uint64_t mesh_vertices = 20'000'000;
+  /// Seconds the mesh reader may take over one mesh file before it is
+  /// stopped (it runs in its own process; see passes/mesh/mesh_reader_process.h).
+  uint64_t mesh_seconds = 60;
 };
 
 /// One limit's name (as `--limit` spells it), what it bounds, and its field.

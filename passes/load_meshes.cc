@@ -53,6 +53,13 @@ class LoadMeshesPass : public Pass {
     if (uses.empty()) return true;
     std::vector<std::string> paths;
     for (const Use& u : uses) paths.push_back(u.path);
+    if (!ctx.meshes->reader_missing().empty()) {
+      // once per compile: the files are still read, but a crash of the mesh
+      // importer on one of them would now take the compile down with it
+      ctx.diags.Report(DiagKind::MeshReaderMissing, uses.front().loc,
+                       fmt::format("mesh files are read inside mdlc, unprotected: {}",
+                                   ctx.meshes->reader_missing()));
+    }
     ctx.meshes->Prefetch(paths);
 
     const size_t errors_before = ctx.diags.error_count();

@@ -4,12 +4,26 @@
 #include <set>
 #include <thread>
 
-#include "passes/mesh/mesh_loader.h"
+#include "passes/mesh/assimp_loader.h"
+#include "passes/mesh/child_reader.h"
+#include "passes/mesh/reader_location.h"
 
 namespace mdlc::mesh {
 
-MeshCache::MeshCache(const Limits& limits)
-    : loader_([limits](const std::string& path) { return LoadMesh(path, limits); }) {}
+MeshCache::MeshCache(const Limits& limits, MeshReading reading) {
+  if (reading == MeshReading::kChildProcess) {
+    MeshReaderLocation found = FindMeshReader();
+    reader_ = std::move(found.program);
+    reader_missing_ = std::move(found.why_none);
+  }
+  if (reader_.empty()) {
+    loader_ = [limits](const std::string& path) { return LoadMeshInProcess(path, limits); };
+  } else {
+    loader_ = [limits, reader = reader_](const std::string& path) {
+      return LoadMeshInChild(reader, path, limits);
+    };
+  }
+}
 
 std::shared_ptr<MeshCache::Entry> MeshCache::EntryFor(const std::string& path) {
   std::lock_guard lock(mutex_);

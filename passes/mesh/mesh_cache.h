@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "ir/limits.h"
+#include "passes/mesh/mesh_loader.h"
 #include "passes/mesh/triangle_mesh.h"
 
 namespace mdlc::mesh {
@@ -27,8 +28,10 @@ class MeshCache {
  public:
   using Loader = std::function<MeshOrError(const std::string& path)>;
 
-  /// A cache that reads files with LoadMesh (mesh_loader.h), within `limits`.
-  explicit MeshCache(const Limits& limits = {});
+  /// A cache that reads files within `limits`, as `reading` says
+  /// (mesh_loader.h). The reader program is looked for once, here.
+  explicit MeshCache(const Limits& limits = {},
+                     MeshReading reading = MeshReading::kChildProcess);
   /// A cache with another loader (tests).
   explicit MeshCache(Loader loader) : loader_(std::move(loader)) {}
   MeshCache(const MeshCache&) = delete;
@@ -41,6 +44,11 @@ class MeshCache {
   void Prefetch(const std::vector<std::string>& paths);
   /// Files actually read so far.
   size_t files_read() const { return files_read_.load(); }
+  /// The reader program files are read with; empty: in this process.
+  const std::string& reader() const { return reader_; }
+  /// Why files are read in this process though a reader program was asked
+  /// for (worth telling the user: the protection is off); else empty.
+  const std::string& reader_missing() const { return reader_missing_; }
 
  private:
   struct Entry {
@@ -50,6 +58,8 @@ class MeshCache {
   std::shared_ptr<Entry> EntryFor(const std::string& path);
 
   Loader loader_;
+  std::string reader_;
+  std::string reader_missing_;
   std::mutex mutex_;  // guards entries_ (not the loading itself)
   std::unordered_map<std::string, std::shared_ptr<Entry>> entries_;
   std::atomic<size_t> files_read_{0};

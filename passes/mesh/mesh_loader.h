@@ -1,12 +1,12 @@
-// mesh_loader.h - reads a mesh file into one TriangleMesh through assimp
-// (BEYOND-001): OBJ (a missing .mtl is fine), STL (ASCII and binary), DAE,
-// glTF/GLB, PLY, and whatever else assimp reads.
+// mesh_loader.h - how mdlc reads a mesh file: in a short-lived child process
+// running the mesh reader program, so that a crash, hang or leak inside
+// assimp becomes an error about that file instead of taking down the
+// compiler or the program embedding it (issue 16).
 //
-// Every mesh of the file's scene is merged, each placed by its node's
-// transform. Vertices at exactly the same position are merged, so that
-// formats that store triangle soups (STL) or split vertices by normal still
-// give a connected surface whose closedness can be checked. The result is
-// unscaled: consumers apply the geometry's scale (Scaled()).
+// The child runs LoadMeshInProcess (assimp_loader.h) and sends the result
+// back (mesh_wire.h); child_reader.h spawns and watches it;
+// reader_location.h finds the program. Without the program the file is read
+// in this process, which gives the same mesh, without the protection.
 #pragma once
 
 #include <string>
@@ -16,8 +16,11 @@
 
 namespace mdlc::mesh {
 
-/// The mesh in `path`; an error when the file cannot be read or parsed,
-/// holds no triangles, or is over the file-size or mesh-vertices limit.
+/// Where mesh files are read (`mdlc --mesh-reader=process|in-process`).
+enum class MeshReading { kChildProcess, kInProcess };
+
+/// The mesh in `path` (see LoadMeshInProcess for what is an error), read by
+/// the mesh reader program when one is found, else in this process.
 MeshOrError LoadMesh(const std::string& path, const Limits& limits = {});
 
 }  // namespace mdlc::mesh

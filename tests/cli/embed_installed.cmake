@@ -20,7 +20,7 @@ file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
 run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
 foreach(installed include/mdlc/mdlc.h include/mdlc/version.h include/mdlc/ir/module.h
-                  include/mdlc/backend/plant.h bin/mdlc)
+                  include/mdlc/backend/plant.h bin/mdlc libexec/mdlc/mdlc-mesh-reader)
   if(NOT EXISTS ${prefix}/${installed})
     message(FATAL_ERROR "not installed: ${installed}")
   endif()
@@ -34,6 +34,18 @@ run("mdlc --version" ${prefix}/bin/mdlc --version)
 if(NOT run_output MATCHES "^mdlc [0-9]+\\.[0-9]+\\.[0-9]+")
   message(FATAL_ERROR "unexpected mdlc --version output: ${run_output}")
 endif()
+
+# the installed command reads meshes with the installed reader (issue 16),
+# found next to it, not with the build tree's
+file(REAL_PATH ${prefix}/libexec/mdlc/mdlc-mesh-reader installed_reader)
+execute_process(COMMAND ${prefix}/bin/mdlc compile --emit=none --time-passes --no-cache
+                        ${SOURCE_DIR}/tests/models/mjcf/oracle/mesh_geoms.xml
+                ERROR_VARIABLE timing RESULT_VARIABLE rc)
+string(FIND "${timing}" "mesh reader: ${installed_reader}\n" at)
+if(NOT rc EQUAL 0 OR at EQUAL -1)
+  message(FATAL_ERROR "the installed mdlc does not use ${installed_reader} (${rc}):\n${timing}")
+endif()
+message(STATUS "installed mdlc reads meshes with ${installed_reader}")
 
 # CMake: find_package(mdlc) from the prefix only
 run("configure examples/embed_cmake" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/embed_cmake

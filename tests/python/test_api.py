@@ -179,6 +179,31 @@ class Diagnostics(unittest.TestCase):
         with self.assertRaises(ValueError):
             mdlc.compile(PENDULUM, name="p.urdf", limits={"depth": "deep"})
 
+    def test_mesh_reader_choices_give_the_same_plant(self):  # issue 16
+        model = ROOT / "tests/models/mjcf/oracle/mesh_geoms.xml"
+        child = mdlc.compile(model)  # mesh files read in a child process
+        here = mdlc.compile(model, mesh_reader="in-process")
+        self.assertEqual(child.to_json(), here.to_json())
+        self.assertGreater(child.num_positions, 0)
+        with self.assertRaises(ValueError):
+            mdlc.compile(model, mesh_reader="thread")
+
+    def test_a_crashing_mesh_reader_is_a_compile_error(self):  # issue 16
+        with tempfile.TemporaryDirectory() as folder:
+            reader = pathlib.Path(folder) / "reader.sh"
+            reader.write_text("#!/bin/sh\nkill -SEGV $$\n")
+            reader.chmod(0o755)
+            os.environ["MDLC_MESH_READER"] = str(reader)
+            try:
+                with self.assertRaises(mdlc.CompileError) as caught:
+                    mdlc.compile(ROOT / "tests/models/mjcf/oracle/mesh_geoms.xml")
+            finally:
+                del os.environ["MDLC_MESH_READER"]
+        error = caught.exception.diagnostics[0]
+        self.assertEqual(error.kind, "bad-mesh")
+        self.assertIn("the mesh reader crashed (signal 11, SIGSEGV)", error.message)
+        self.assertTrue(error.file.endswith("mesh_geoms.xml"))
+
     def test_missing_file_is_a_compile_error(self):
         with self.assertRaises(mdlc.CompileError) as caught:
             mdlc.compile("no/such/robot.urdf")

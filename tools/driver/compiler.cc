@@ -50,7 +50,8 @@ bool Compilation::RunPasses() {
       pm.AddPass(std::move(pass));
     }
   }
-  meshes = std::make_shared<mesh::MeshCache>(sources.limits());  // read within the limits
+  // read within the limits, where the options say
+  meshes = std::make_shared<mesh::MeshCache>(sources.limits(), options.mesh_reading);
   passes::PassContext ctx{module, diags, sources, packages, meshes, derived_meshes};
   const bool ok = pm.Run(ctx);
   if (options.instrumentation.time_passes) {
@@ -61,6 +62,13 @@ bool Compilation::RunPasses() {
                                     derived_meshes->directory());
     } else {
       timing_report_ += "  mesh cache: off\n";
+    }
+    if (!meshes->reader().empty()) {
+      timing_report_ += fmt::format("  mesh reader: {}\n", meshes->reader());
+    } else {
+      timing_report_ += meshes->reader_missing().empty()
+                            ? "  mesh reader: in this process (asked for)\n"
+                            : "  mesh reader: none, meshes read in this process\n";
     }
   }
   return ok && !diags.has_errors();

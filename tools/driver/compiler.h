@@ -36,6 +36,8 @@ struct CompileOptions {
   std::vector<std::string> pipeline;
   /// Stop after the passes (no plant, no scene graph).
   bool skip_backend = false;
+  /// Where mesh files are read (Options::mesh_reader).
+  mesh::MeshReading mesh_reading = mesh::MeshReading::kChildProcess;
 };
 
 class Compilation {

@@ -1,11 +1,12 @@
 # `cmake --install`: the libraries, the public headers under include/mdlc/,
-# the mdlc command, and what finds them: mdlcConfig.cmake (CMake) and mdlc.pc
-# (pkg-config). Internal headers (frontends, passes) are not installed; the
-# public header reaches only the IR's and the backend's.
+# the mdlc command, the mesh reader program (libexec/mdlc/), and what finds
+# them: mdlcConfig.cmake (CMake) and mdlc.pc (pkg-config). Internal headers
+# (frontends, passes) are not installed; the public header reaches only the
+# IR's and the backend's.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-set(MDLC_LIBRARIES mdlc_driver mdlc_writers mdlc_backend mdlc_passes mdlc_frontend mdlc_assets mdlc_xml mdlc_ir)
+set(MDLC_LIBRARIES mdlc_driver mdlc_writers mdlc_backend mdlc_passes mdlc_mesh_io mdlc_frontend mdlc_assets mdlc_xml mdlc_ir)
 set_target_properties(mdlc_driver PROPERTIES EXPORT_NAME mdlc)
 foreach(lib IN LISTS MDLC_LIBRARIES)
   if(NOT lib STREQUAL mdlc_driver)
@@ -18,6 +19,9 @@ install(TARGETS ${MDLC_LIBRARIES} EXPORT mdlcTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} ${CMAKE_INSTALL_INCLUDEDIR}/mdlc)
+# the mesh reader program, where the installed library looks for it
+# (passes/mesh/reader_location.h)
+install(TARGETS mdlc_mesh_reader RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/mdlc)
 install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/include/mdlc ${PROJECT_BINARY_DIR}/include/mdlc
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 # the layers' headers keep their paths ("ir/module.h") under include/mdlc/

@@ -89,6 +89,9 @@ Result Compile(const std::vector<Input>& inputs, const Options& options) {
   c->options.instrumentation.verify_each = options.verify_each;
   c->options.skip_backend = options.skip_backend;
   c->sources.set_limits(options.limits);
+  c->options.mesh_reading = options.mesh_reader == MeshReader::InProcess
+                                ? mesh::MeshReading::kInProcess
+                                : mesh::MeshReading::kChildProcess;
   if (!options.mesh_cache_dir.empty()) {
     c->derived_meshes = std::make_shared<mesh::DerivedMeshCache>(options.mesh_cache_dir);
   }

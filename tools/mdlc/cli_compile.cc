@@ -71,8 +71,13 @@ void AddCompileFlags(CLI::App* command, CompileFlags& flags) {
                       "Stop reporting after N errors (0: no limit)");
   command->add_option("--limit", flags.limits,
                       "Set an input limit NAME=VALUE: file-size, total-size, elements, depth, "
-                      "include-depth, mesh-vertices (see the README)")
+                      "include-depth, mesh-vertices, mesh-seconds (see the README)")
       ->allow_extra_args(false);
+  command
+      ->add_option("--mesh-reader", flags.mesh_reader,
+                   "Read mesh files in a child process (process, the default: a crash of the "
+                   "mesh importer is an error about the file) or in-process")
+      ->check(CLI::IsMember({"process", "in-process"}));
   command->add_option("--model-name", flags.model_name, "Name the model instance this");
   command->add_flag("--auto-rename", flags.auto_rename,
                     "Rename a model whose name is taken to NAME_1, NAME_2, ...");
@@ -101,6 +106,8 @@ int ToOptions(const CompileFlags& flags, Options& options) {
       return 2;
     }
   }
+  options.mesh_reader =
+      flags.mesh_reader == "in-process" ? MeshReader::InProcess : MeshReader::Process;
   options.model_name = flags.model_name;
   options.auto_rename = flags.auto_rename;
   if (!flags.no_cache) {

@@ -22,6 +22,7 @@ struct CompileFlags {
   bool strict = false;
   size_t max_errors = 0;
   std::vector<std::string> limits;  // --limit NAME=VALUE
+  std::string mesh_reader = "process";  // --mesh-reader
   std::optional<std::string> model_name;
   bool auto_rename = false;
   std::vector<std::string> package_paths;

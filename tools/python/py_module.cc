@@ -109,8 +109,14 @@ PYBIND11_MODULE(_mdlc, m) {
          const std::vector<std::string>& disabled_warnings,
          const std::vector<std::string>& error_warnings, std::optional<std::string> model_name,
          bool auto_rename, const std::vector<std::pair<std::string, double>>& joint_positions,
-         const std::vector<std::string>& limits) {
+         const std::vector<std::string>& limits, const std::string& mesh_reader) {
         Options options;
+        if (mesh_reader == "in-process") {
+          options.mesh_reader = MeshReader::InProcess;
+        } else if (mesh_reader != "process") {
+          throw py::value_error("unknown mesh_reader '" + mesh_reader +
+                                "'; expected 'process' or 'in-process'");
+        }
         for (const std::string& setting : limits) {
           if (auto problem = SetLimit(options.limits, setting)) throw py::value_error(*problem);
         }
@@ -129,5 +135,5 @@ PYBIND11_MODULE(_mdlc, m) {
       py::arg("inputs"), py::arg("format"), py::arg("packages"), py::arg("package_paths"),
       py::arg("use_ros_package_path"), py::arg("strict"), py::arg("disabled_warnings"),
       py::arg("error_warnings"), py::arg("model_name"), py::arg("auto_rename"),
-      py::arg("joint_positions"), py::arg("limits"));
+      py::arg("joint_positions"), py::arg("limits"), py::arg("mesh_reader"));
 }

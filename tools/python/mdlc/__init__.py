@@ -41,7 +41,7 @@ def _looks_like_text(source):
 def compile(source, format=None, *, name=None, packages=None, package_paths=(),
             use_ros_package_path=False, strict=False, disabled_warnings=(),
             error_warnings=(), model_name=None, auto_rename=False, joint_positions=None,
-            limits=None):
+            limits=None, mesh_reader="process"):
     """Compiles one model, or several into one plant, and returns a Model.
 
     source: a path (str or os.PathLike), model text (str with markup), or a
@@ -60,6 +60,9 @@ def compile(source, format=None, *, name=None, packages=None, package_paths=(),
     joint_positions: {joint name: value} applied by default_positions().
     limits: {limit name: value} as --limit NAME=VALUE, e.g. {"depth": 500,
         "file_size": "64M"}; ValueError for an unknown name or a bad value.
+    mesh_reader: 'process' (read each mesh file in a child process, so that
+        a crash of the mesh importer is a diagnostic, not the interpreter's
+        crash) or 'in-process'; as --mesh-reader.
 
     Raises CompileError (with every diagnostic) when the model has errors.
     """
@@ -78,7 +81,7 @@ def compile(source, format=None, *, name=None, packages=None, package_paths=(),
         inputs, format, sorted((packages or {}).items()), [os.fspath(p) for p in package_paths],
         use_ros_package_path, strict, list(disabled_warnings), list(error_warnings), model_name,
         auto_rename, list((joint_positions or {}).items()),
-        [f"{k.replace('_', '-')}={v}" for k, v in (limits or {}).items()])
+        [f"{k.replace('_', '-')}={v}" for k, v in (limits or {}).items()], mesh_reader)
     if model is None:
         raise CompileError(diagnostics)
     return model

@@ -55,6 +55,17 @@ struct Input {
   static Input Text(std::string text, std::string name, std::optional<Format> format = {});
 };
 
+/// Where a compile reads mesh files (Options::mesh_reader, `--mesh-reader`).
+enum class MeshReader {
+  /// In a short-lived child process running the mdlc-mesh-reader program,
+  /// one per file, so that a crash or hang of the mesh importer on a
+  /// malformed file is an error about that file, not a crash of the caller.
+  /// Without the program, files are read in this process and a note says so.
+  Process,
+  /// In this process: no process per file, and no such protection.
+  InProcess,
+};
+
 /// Everything the `mdlc compile` command line can ask for.
 struct Options {
   // -- packages, for package:// and model:// URIs, looked up in this order
@@ -109,6 +120,8 @@ struct Options {
   /// Bounds on file sizes, document size and depth, include depth and mesh
   /// size (ir/limits.h; `--limit NAME=VALUE`). Over one is an error.
   Limits limits;
+  /// Where mesh files are read (`--mesh-reader=process|in-process`).
+  MeshReader mesh_reader = MeshReader::Process;
 
   // -- caching
   /// Keep derived mesh data (convex hulls, mass properties) in this folder

@@ -1,0 +1,121 @@
+#include "passes/mesh/assimp_loader.h"
+
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <assimp/Importer.hpp>
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <tuple>
+
+#include "passes/mesh/ply_header.h"
+
+namespace mdlc::mesh {
+namespace {
+
+/// Appends the triangles of `node` and its children, placed by the
+/// accumulated node transform, welding vertices by exact position.
+void Collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent,
+             std::map<std::tuple<double, double, double>, int>& index, TriangleMesh& out) {
+  const aiMatrix4x4 world = parent * node.mTransformation;
+  for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+    const aiMesh& m = *scene.mMeshes[node.mMeshes[i]];
+    std::vector<int> ids(m.mNumVertices);
+    for (unsigned v = 0; v < m.mNumVertices; ++v) {
+      const aiVector3D p = world * m.mVertices[v];
+      const std::tuple<double, double, double> key{p.x, p.y, p.z};
+      auto [it, inserted] = index.emplace(key, static_cast<int>(out.vertices.size()));
+      if (inserted) out.vertices.emplace_back(p.x, p.y, p.z);
+      ids[v] = it->second;
+    }
+    for (unsigned f = 0; f < m.mNumFaces; ++f) {
+      const aiFace& face = m.mFaces[f];
+      if (face.mNumIndices != 3) continue;  // points and lines have no area
+      out.triangles.emplace_back(ids[face.mIndices[0]], ids[face.mIndices[1]],
+                                 ids[face.mIndices[2]]);
+    }
+  }
+  for (unsigned c = 0; c < node.mNumChildren; ++c) {
+    Collect(scene, *node.mChildren[c], world, index, out);
+  }
+}
+
+/// The first face, if any, that names a vertex its mesh does not have.
+std::optional<std::string> FindBadFace(const aiScene& scene) {
+  for (unsigned i = 0; i < scene.mNumMeshes; ++i) {
+    const aiMesh& m = *scene.mMeshes[i];
+    for (unsigned f = 0; f < m.mNumFaces; ++f) {
+      const aiFace& face = m.mFaces[f];
+      for (unsigned k = 0; k < face.mNumIndices; ++k) {
+        if (face.mIndices[k] >= m.mNumVertices) {
+          return fmt::format("face {} names vertex {}, but there are only {} vertices", f,
+                             face.mIndices[k], m.mNumVertices);
+        }
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+MeshOrError LoadMeshInProcess(const std::string& path, const Limits& limits) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    return {nullptr, fmt::format("cannot read mesh file '{}'", path)};
+  }
+  if (const uint64_t size = std::filesystem::file_size(path, ec); !ec && size > limits.file_size) {
+    return {nullptr,
+            fmt::format("mesh file '{}' is {}, over the file-size limit of {} (raise it with "
+                        "--limit file-size=BYTES)",
+                        path, FormatBytes(size), FormatBytes(limits.file_size)),
+            true};
+  }
+  if (auto problem = CheckPlyHeader(path)) {
+    return {nullptr, fmt::format("cannot read mesh file '{}': {}", path, *problem)};
+  }
+  Assimp::Importer importer;
+  // assimp turns a Collada file's Z_UP into Y_UP by rotating the scene;
+  // robot meshes mean their coordinates as written (as ROS tools read them)
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+  // read with no processing first: assimp's steps trust the faces' vertex
+  // indices, and a file whose faces name vertices it does not have would
+  // make them read out of bounds (found by fuzz_mesh)
+  const aiScene* scene = importer.ReadFile(path, 0);
+  if (!scene || !scene->mRootNode) {
+    return {nullptr,
+            fmt::format("cannot read mesh file '{}': {}", path, importer.GetErrorString())};
+  }
+  if (auto problem = FindBadFace(*scene)) {
+    return {nullptr, fmt::format("cannot read mesh file '{}': {}", path, *problem)};
+  }
+  // Triangulate polygons (quads, n-gons); no other processing: normals,
+  // texture coordinates and materials do not matter for geometry.
+  scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType);
+  if (!scene || !scene->mRootNode) {
+    return {nullptr,
+            fmt::format("cannot read mesh file '{}': {}", path, importer.GetErrorString())};
+  }
+  uint64_t vertices = 0;
+  for (unsigned i = 0; i < scene->mNumMeshes; ++i) vertices += scene->mMeshes[i]->mNumVertices;
+  if (vertices > limits.mesh_vertices) {
+    return {nullptr,
+            fmt::format("mesh file '{}' has {} vertices, over the mesh-vertices limit of {} "
+                        "(raise it with --limit mesh-vertices=N)",
+                        path, vertices, limits.mesh_vertices),
+            true};
+  }
+  auto mesh = std::make_shared<TriangleMesh>();
+  std::map<std::tuple<double, double, double>, int> index;
+  Collect(*scene, *scene->mRootNode, aiMatrix4x4(), index, *mesh);
+  if (mesh->triangles.empty()) {
+    return {nullptr, fmt::format("mesh file '{}' holds no triangles", path)};
+  }
+  return {std::move(mesh), {}};
+}
+
+}  // namespace mdlc::mesh

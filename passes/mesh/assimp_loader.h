@@ -1,0 +1,30 @@
+// assimp_loader.h - reads a mesh file into one TriangleMesh through assimp
+// (BEYOND-001): OBJ (a missing .mtl is fine), STL (ASCII and binary), DAE,
+// glTF/GLB, PLY, and whatever else assimp reads.
+//
+// Every mesh of the file's scene is merged, each placed by its node's
+// transform. Vertices at exactly the same position are merged, so that
+// formats that store triangle soups (STL) or split vertices by normal still
+// give a connected surface whose closedness can be checked. The result is
+// unscaled: consumers apply the geometry's scale (Scaled()).
+//
+// assimp has memory errors and hangs on malformed files that mdlc cannot
+// mend, so this runs in the process of the mesh reader program
+// (reader/mdlc_mesh_reader.cc), where a crash is contained (issue 16);
+// mdlc calls it in its own process only when asked to or when the program
+// is missing (mesh_loader.h).
+#pragma once
+
+#include <string>
+
+#include "ir/limits.h"
+#include "passes/mesh/triangle_mesh.h"
+
+namespace mdlc::mesh {
+
+/// The mesh in `path`, read in this process; an error when the file cannot
+/// be read or parsed, holds no triangles, or is over the file-size or
+/// mesh-vertices limit.
+MeshOrError LoadMeshInProcess(const std::string& path, const Limits& limits = {});
+
+}  // namespace mdlc::mesh

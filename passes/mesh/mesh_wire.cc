@@ -1,0 +1,133 @@
+#include "passes/mesh/mesh_wire.h"
+
+#include <fmt/format.h>
+
+#include <cstdint>
+#include <cstring>
+#include <optional>
+
+namespace mdlc::mesh {
+namespace {
+
+constexpr std::string_view kMagic = "MDLCMESH";
+enum : uint8_t { kMeshReply = 0, kErrorReply = 1 };
+
+template <typename T>
+void Put(std::string& out, const T& value) {
+  out.append(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+
+/// Reads fixed-size values off the front of the reply; fails (false) rather
+/// than read past its end.
+class Reader {
+ public:
+  explicit Reader(std::string_view bytes) : rest_(bytes) {}
+  template <typename T>
+  bool Get(T& value) {
+    if (rest_.size() < sizeof(T)) return false;
+    std::memcpy(&value, rest_.data(), sizeof(T));
+    rest_.remove_prefix(sizeof(T));
+    return true;
+  }
+  /// Whether `count` items of `size` bytes are left (without overflowing).
+  bool Holds(uint64_t count, size_t size) const { return count <= rest_.size() / size; }
+  std::string_view Take(size_t n) {
+    std::string_view taken = rest_.substr(0, n);
+    rest_.remove_prefix(n);
+    return taken;
+  }
+  size_t left() const { return rest_.size(); }
+
+ private:
+  std::string_view rest_;
+};
+
+std::optional<MeshOrError> Fail(std::string* problem, std::string message) {
+  *problem = std::move(message);
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::string EncodeMeshReply(const MeshOrError& result) {
+  std::string out(kMagic);
+  Put(out, kMeshWireVersion);
+  if (!result.ok()) {
+    Put(out, uint8_t{kErrorReply});
+    Put(out, uint8_t{result.over_limit});
+    Put(out, uint64_t{result.error.size()});
+    out += result.error;
+    return out;
+  }
+  const TriangleMesh& m = *result.mesh;
+  Put(out, uint8_t{kMeshReply});
+  Put(out, uint64_t{m.vertices.size()});
+  Put(out, uint64_t{m.triangles.size()});
+  out.reserve(out.size() + m.vertices.size() * 3 * sizeof(double) +
+              m.triangles.size() * 3 * sizeof(int32_t));
+  for (const Eigen::Vector3d& v : m.vertices) {
+    for (int k = 0; k < 3; ++k) Put(out, double{v[k]});
+  }
+  for (const Eigen::Vector3i& t : m.triangles) {
+    for (int k = 0; k < 3; ++k) Put(out, int32_t{t[k]});
+  }
+  return out;
+}
+
+std::optional<MeshOrError> DecodeMeshReply(std::string_view bytes, std::string* problem) {
+  if (!bytes.starts_with(kMagic)) return Fail(problem, "it does not start with the reply marker");
+  Reader in(bytes.substr(kMagic.size()));
+  uint32_t version = 0;
+  uint8_t kind = 0;
+  if (!in.Get(version) || !in.Get(kind)) return Fail(problem, "it is truncated");
+  if (version != kMeshWireVersion) {
+    return Fail(problem, fmt::format("it is of version {}, not {} (a reader from another build?)",
+                                     version, kMeshWireVersion));
+  }
+  if (kind == kErrorReply) {
+    uint8_t over_limit = 0;
+    uint64_t length = 0;
+    if (!in.Get(over_limit) || !in.Get(length) || over_limit > 1) {
+      return Fail(problem, "its error header is truncated or invalid");
+    }
+    if (length != in.left()) return Fail(problem, "its error message length does not match");
+    MeshOrError result{nullptr, std::string(in.Take(length)), over_limit == 1};
+    if (result.error.empty()) return Fail(problem, "its error message is empty");
+    return result;
+  }
+  if (kind != kMeshReply) return Fail(problem, fmt::format("it is of unknown kind {}", kind));
+  uint64_t vertices = 0, triangles = 0;
+  if (!in.Get(vertices) || !in.Get(triangles)) return Fail(problem, "its mesh header is truncated");
+  // indices are int32: more vertices than that cannot be named
+  if (vertices > uint64_t{INT32_MAX} || !in.Holds(vertices, 3 * sizeof(double))) {
+    return Fail(problem, fmt::format("it claims {} vertices, more than it holds", vertices));
+  }
+  const uint64_t vertex_bytes = vertices * 3 * sizeof(double);
+  const uint64_t after_vertices = in.left() - vertex_bytes;
+  if (triangles > after_vertices / (3 * sizeof(int32_t)) ||
+      triangles * 3 * sizeof(int32_t) != after_vertices) {
+    return Fail(problem, fmt::format("its size does not match {} vertices and {} triangles",
+                                     vertices, triangles));
+  }
+  if (triangles == 0) return Fail(problem, "its mesh has no triangles");
+  auto mesh = std::make_shared<TriangleMesh>();
+  mesh->vertices.resize(vertices);
+  for (Eigen::Vector3d& v : mesh->vertices) {
+    for (int k = 0; k < 3; ++k) in.Get(v[k]);
+  }
+  mesh->triangles.resize(triangles);
+  for (size_t t = 0; t < triangles; ++t) {
+    for (int k = 0; k < 3; ++k) {
+      int32_t index = 0;
+      in.Get(index);
+      if (index < 0 || static_cast<uint64_t>(index) >= vertices) {
+        return Fail(problem, fmt::format("its triangle {} names vertex {} of {}", t, index,
+                                         vertices));
+      }
+      mesh->triangles[t][k] = index;
+    }
+  }
+  return MeshOrError{std::move(mesh), {}};
+}
+
+}  // namespace mdlc::mesh

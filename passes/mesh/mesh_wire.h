@@ -1,0 +1,37 @@
+// mesh_wire.h - the reply the mesh reader program (reader/) sends its parent
+// on standard output: one loaded mesh, or why there is none (issue 16).
+//
+// The child runs assimp on an untrusted file and may have been corrupted by
+// it, so the parent decodes the reply as untrusted bytes too: every count is
+// checked against the bytes that are there, every triangle's vertices
+// against the vertex count. Both ends are the same build on the same
+// machine, so numbers are in the machine's own byte order; the version
+// guards against a reader from another build.
+//
+// Layout: "MDLCMESH", u32 version, u8 kind, then
+//   kind 0 (mesh):  u64 vertex count V, u64 triangle count T,
+//                   3V float64 coordinates, 3T int32 vertex indices
+//   kind 1 (error): u8 over_limit, u64 length, the message's bytes
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "passes/mesh/triangle_mesh.h"
+
+namespace mdlc::mesh {
+
+inline constexpr uint32_t kMeshWireVersion = 1;
+
+/// `result` as the reader sends it.
+std::string EncodeMeshReply(const MeshOrError& result);
+
+/// The result a reply carries; nullopt, with `*problem` set, when the bytes
+/// are not a well-formed reply of this version (truncated, extra bytes,
+/// counts that do not fit, a triangle naming a vertex that is not there, a
+/// mesh without triangles).
+std::optional<MeshOrError> DecodeMeshReply(std::string_view bytes, std::string* problem);
+
+}  // namespace mdlc::mesh
