@@ -450,14 +450,14 @@ TEST_F(CliTest, ConvertNamesMeshesFromTheOutputAndCopiesThemOnce) {
 // or in mdlc's own give the same plant; --time-passes names the reader.
 TEST_F(CliTest, MeshReaderFlag) {  // issue 16
   const std::string model = std::string(MDLC_TEST_MODELS) + "/mjcf/oracle/mesh_geoms.xml";
-  Result child = Run("compile --no-cache --emit=plant-json --time-passes " + model);
+  Outcome child = Mdlc("compile --no-cache --emit=plant-json --time-passes " + model);
   ASSERT_EQ(child.status, 0) << child.err;
   EXPECT_NE(child.err.find("mesh reader: /"), std::string::npos) << child.err;
   EXPECT_NE(child.err.find("/mdlc-mesh-reader\n"), std::string::npos) << child.err;
-  Result here = Run("compile --no-cache --emit=plant-json --mesh-reader=in-process " + model);
+  Outcome here = Mdlc("compile --no-cache --emit=plant-json --mesh-reader=in-process " + model);
   ASSERT_EQ(here.status, 0) << here.err;
   EXPECT_EQ(child.out, here.out);
-  EXPECT_EQ(Run("compile --mesh-reader=thread " + model).status, 2);
+  EXPECT_EQ(Mdlc("compile --mesh-reader=thread " + model).status, 2);
 }
 
 }  // namespace
