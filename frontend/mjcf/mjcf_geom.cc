@@ -90,7 +90,7 @@ bool CheckPrimitiveSize(MjcfReader& r, const Element& g, std::string_view type,
 }
 
 int Int(MjcfReader& r, const Element& e, std::string_view name, int fallback) {
-  return static_cast<int>(r.Number(e, name, fallback).value_or(fallback));
+  return r.Integer(e, name, fallback).value_or(fallback);  // a bad value is reported
 }
 
 }  // namespace
@@ -340,9 +340,9 @@ void LowerCamera(MjcfReader& r, const BodyItem& item, BodyId body) {
   // fovy is in degrees whatever compiler@angle says (MJCF-002)
   cam.fov_y = r.Number(c, "fovy", 45).value_or(45) * M_PI / 180.0;
   if (c.Get("resolution").present()) {
-    if (auto res = r.Numbers(c, "resolution", 2)) {
-      cam.width = static_cast<int>((*res)[0]);
-      cam.height = static_cast<int>((*res)[1]);
+    if (auto res = r.Integers(c, "resolution", 2)) {
+      cam.width = (*res)[0];
+      cam.height = (*res)[1];
     }
   }
   if (const Attribute mode = c.Get("mode"); mode.present() && mode.value != "fixed") {

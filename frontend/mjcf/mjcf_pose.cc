@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <span>
 
 #include "frontend/mjcf/mjcf_orientation.h"
@@ -105,6 +106,36 @@ std::optional<std::vector<double>> MjcfReader::LayeredVector(const Element& e,
     std::copy(values->begin(), values->end(), init.begin());
   }
   return init;
+}
+
+std::optional<std::vector<int>> MjcfReader::Integers(const Element& e, std::string_view name,
+                                                     size_t n) {
+  const Attribute a = e.Get(name);
+  if (!a.present()) return std::nullopt;
+  const auto values = NumbersOf(e, a, name, n);
+  if (!values) return std::nullopt;
+  std::vector<int> out;
+  for (double v : *values) {
+    // casting a double outside int's range is undefined: check first
+    constexpr double kMin = std::numeric_limits<int>::min(), kMax = std::numeric_limits<int>::max();
+    if (!(v == std::floor(v) && v >= kMin && v <= kMax)) {
+      diags().Report(DiagKind::BadValue, a.loc,
+                     fmt::format("attribute '{}' of <{}> must be whole numbers from {} to {}, "
+                                 "not '{}'",
+                                 name, e.xml().Name(), std::numeric_limits<int>::min(),
+                                 std::numeric_limits<int>::max(), a.value));
+      return std::nullopt;
+    }
+    out.push_back(static_cast<int>(v));
+  }
+  return out;
+}
+
+std::optional<int> MjcfReader::Integer(const Element& e, std::string_view name, int fallback) {
+  if (!e.Get(name).present()) return fallback;
+  const auto v = Integers(e, name, 1);
+  if (!v) return std::nullopt;
+  return (*v)[0];
 }
 
 std::optional<Transform> MjcfReader::ReadPose(const Element& e) {

@@ -247,6 +247,12 @@ struct MjcfReader {
   std::optional<double> Number(const Element& e, std::string_view name, double fallback);
   /// Exactly `n` numbers (own or default); nullopt when absent or bad.
   std::optional<std::vector<double>> Numbers(const Element& e, std::string_view name, size_t n);
+  /// An integer attribute (own or default): a whole number within int's
+  /// range, as MuJoCo reads contype, group or a camera's resolution;
+  /// `fallback` when absent; nullopt after an error.
+  std::optional<int> Integer(const Element& e, std::string_view name, int fallback);
+  /// Exactly `n` integers (own or default); nullopt when absent or bad.
+  std::optional<std::vector<int>> Integers(const Element& e, std::string_view name, size_t n);
   /// Numbers() of an attribute already looked up (`a.present()`).
   std::optional<std::vector<double>> NumbersOf(const Element& e, const Attribute& a,
                                                std::string_view name, size_t n);

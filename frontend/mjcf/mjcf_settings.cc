@@ -63,9 +63,9 @@ void MjcfReader::ReadCompiler(const xml::XmlElement& e) {
     }
   }
   if (e.Attribute("inertiagrouprange").present()) {
-    if (auto v = Numbers(c, "inertiagrouprange", 2)) {
-      compiler.inertia_group_min = static_cast<int>((*v)[0]);
-      compiler.inertia_group_max = static_cast<int>((*v)[1]);
+    if (auto v = Integers(c, "inertiagrouprange", 2)) {
+      compiler.inertia_group_min = (*v)[0];
+      compiler.inertia_group_max = (*v)[1];
     }
   }
   ir::MassAdjustments& m = compiler.mass_adjustments;
