@@ -152,20 +152,7 @@ double SdfWriter::EffortOf(JointId id, const PlantJoint& j, Loc loc) {
 }
 
 void SdfWriter::SingleDofLimit(JointId id, const PlantJoint& j, Loc loc) {
-  if (j.velocity_lower[0] != -j.velocity_upper[0]) {
-    diags_.Report(DiagKind::Lossy, loc,
-                  fmt::format("joint '{}' has velocity limits [{}, {}]; SDFormat's are "
-                              "symmetric, so +-{} is written",
-                              j.name, j.velocity_lower[0], j.velocity_upper[0],
-                              j.velocity_upper[0]));
-  }
-  if (j.acceleration_lower[0] != -j.acceleration_upper[0]) {
-    diags_.Report(DiagKind::Lossy, loc,
-                  fmt::format("joint '{}' has acceleration limits [{}, {}]; SDFormat's are "
-                              "symmetric, so +-{} is written",
-                              j.name, j.acceleration_lower[0], j.acceleration_upper[0],
-                              j.acceleration_upper[0]));
-  }
+  ReportAsymmetricLimits(j, loc, "SDFormat");
   if (j.type == ir::JointType::Screw && (j.lower[0] != -kInf || j.upper[0] != kInf)) {
     diags_.Report(DiagKind::Lossy, loc,
                   fmt::format("the position limits of screw joint '{}' are not written "

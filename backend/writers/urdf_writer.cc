@@ -418,20 +418,7 @@ class UrdfWriter : WriterBase {
       }
       return;
     }
-    if (j.velocity_lower[0] != -j.velocity_upper[0]) {
-      diags_.Report(DiagKind::Lossy, loc,
-                    fmt::format("joint '{}' has velocity limits [{}, {}]; URDF's are "
-                                "symmetric, so +-{} is written",
-                                j.name, j.velocity_lower[0], j.velocity_upper[0],
-                                j.velocity_upper[0]));
-    }
-    if (j.acceleration_lower[0] != -j.acceleration_upper[0]) {
-      diags_.Report(DiagKind::Lossy, loc,
-                    fmt::format("joint '{}' has acceleration limits [{}, {}]; URDF's are "
-                                "symmetric, so +-{} is written",
-                                j.name, j.acceleration_lower[0], j.acceleration_upper[0],
-                                j.acceleration_upper[0]));
-    }
+    ReportAsymmetricLimits(j, loc, "URDF");
     const bool revolute_continuous =
         j.type == ir::JointType::Revolute && j.lower[0] == -kInf && j.upper[0] == kInf;
     if (j.type == ir::JointType::Screw && (j.lower[0] != -kInf || j.upper[0] != kInf)) {

@@ -1,6 +1,8 @@
 // writer_base.cc - see writer_base.h.
 #include "backend/writers/writer_base.h"
 
+#include <fmt/format.h>
+
 namespace mdlc::writers {
 
 WriterBase::WriterBase(const backend::CompiledModel& model, const ir::Module& module,
@@ -26,6 +28,19 @@ const ir::Property* WriterBase::FindProperty(const backend::SceneGeometry& g,
     if (p.key == key) return &p;
   }
   return nullptr;
+}
+
+void WriterBase::ReportAsymmetricLimits(const backend::PlantJoint& j, Loc loc,
+                                        std::string_view format) const {
+  auto report = [&](std::string_view what, double lower, double upper) {
+    if (lower == -upper) return;
+    diags_.Report(DiagKind::Lossy, loc,
+                  fmt::format("joint '{}' has {} limits [{}, {}]; {}'s are symmetric, so +-{} "
+                              "is written",
+                              j.name, what, lower, upper, format, upper));
+  };
+  report("velocity", j.velocity_lower[0], j.velocity_upper[0]);
+  report("acceleration", j.acceleration_lower[0], j.acceleration_upper[0]);
 }
 
 bool WriterBase::IsAppearanceProperty(const ir::Property& p) {

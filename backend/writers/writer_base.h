@@ -41,6 +41,10 @@ class WriterBase {
   static const ir::Property* FindProperty(const backend::SceneGeometry& g, std::string_view key);
   /// Whether a property is the visual's (phong/, renderer/, label/), not proximity's.
   static bool IsAppearanceProperty(const ir::Property& p);
+  /// Warns (-Wlossy) that a 1-dof joint's velocity or acceleration limits
+  /// are not symmetric, as `format`'s are, so +-upper is written.
+  void ReportAsymmetricLimits(const backend::PlantJoint& j, Loc loc,
+                              std::string_view format) const;
   static bool IsFloating(const backend::PlantJoint& j) {
     return j.type == ir::JointType::QuaternionFloating || j.type == ir::JointType::RpyFloating;
   }

@@ -1,0 +1,66 @@
+// The URDF and SDFormat writers' -Wlossy warning for a joint whose velocity
+// or acceleration limits are not symmetric (both formats hold one bound).
+// No reader makes such limits, so the test sets them on a compiled plant,
+// as an embedder building a plant could.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "backend/writers/writer.h"
+#include "frontend/frontend.h"
+#include "tools/driver/compiler.h"
+
+namespace mdlc {
+namespace {
+
+constexpr const char* kArm = R"(<robot name='r'>
+  <link name='base'/>
+  <link name='arm'>
+    <inertial><mass value='1'/><inertia ixx='1' iyy='1' izz='1' ixy='0' ixz='0' iyz='0'/></inertial>
+  </link>
+  <joint name='shoulder' type='revolute'><parent link='base'/><child link='arm'/>
+    <axis xyz='0 0 1'/><limit effort='5' lower='-1' upper='1' velocity='2'/></joint>
+</robot>)";
+
+class AsymmetricLimitsTest : public ::testing::TestWithParam<Format> {};
+
+TEST_P(AsymmetricLimitsTest, EachAsymmetricLimitIsALossyWarning) {
+  Compilation c;
+  frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend, &c.documents};
+  frontend::ReadUrdf(c.sources.AddBuffer("arm.urdf", kArm), ctx);
+  ASSERT_TRUE(c.RunPasses());
+  ASSERT_TRUE(c.RunBackend());
+  backend::PlantJoint* shoulder = nullptr;
+  for (backend::PlantJoint& j : c.model->plant.joints) {
+    if (j.name == "shoulder") shoulder = &j;
+  }
+  ASSERT_NE(shoulder, nullptr);
+  shoulder->velocity_lower[0] = -1;  // upper stays 2
+  shoulder->acceleration_lower[0] = -3;
+  shoulder->acceleration_upper[0] = 4;
+
+  DiagnosticEngine diags;
+  writers::WriteOptions options;
+  options.to = GetParam();
+  ASSERT_TRUE(writers::Write(*c.model, c.module, options, diags).has_value());
+  const std::string format = GetParam() == Format::Urdf ? "URDF" : "SDFormat";
+  std::vector<std::string> lossy;
+  for (const Diagnostic& d : diags.diagnostics()) {
+    if (d.kind == DiagKind::Lossy && d.message.find("limits [") != std::string::npos) {
+      lossy.push_back(d.message);
+      EXPECT_TRUE(d.loc.valid()) << d.message;
+    }
+  }
+  ASSERT_EQ(lossy.size(), 2u);
+  EXPECT_EQ(lossy[0], "joint 'shoulder' has velocity limits [-1, 2]; " + format +
+                          "'s are symmetric, so +-2 is written");
+  EXPECT_EQ(lossy[1], "joint 'shoulder' has acceleration limits [-3, 4]; " + format +
+                          "'s are symmetric, so +-4 is written");
+}
+
+INSTANTIATE_TEST_SUITE_P(Writers, AsymmetricLimitsTest,
+                         ::testing::Values(Format::Urdf, Format::Sdf),
+                         [](const auto& info) { return info.param == Format::Urdf ? "Urdf" : "Sdf"; });
+
+}  // namespace
+}  // namespace mdlc
