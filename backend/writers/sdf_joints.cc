@@ -12,6 +12,10 @@
 
 namespace mdlc::writers::sdf {
 
+// why a joint's default positions are not written (-Wlossy)
+constexpr std::string_view kNoInitialPositions =
+    "mdlc's SDFormat reader takes no initial positions";
+
 void SdfWriter::WriteJoint(JointId id, const std::string& scope) {
   const PlantJoint& j = plant_.joint(id);
   const Loc loc = JointLoc(id);
@@ -90,7 +94,7 @@ void SdfWriter::WriteJoint(JointId id, const std::string& scope) {
     MimicElements(id);
   }
   out_.Close();
-  DefaultPositions(j, loc);
+  ReportUnwrittenDefaultPositions(j, loc, kNoInitialPositions);
 }
 
 void SdfWriter::DampingLoss(const PlantJoint& j, Loc loc) {
@@ -260,19 +264,6 @@ void SdfWriter::MimicElements(JointId id) {
   }
 }
 
-void SdfWriter::DefaultPositions(const PlantJoint& j, Loc loc) {
-  if (std::all_of(j.default_positions.begin(), j.default_positions.end(),
-                  [](double v) { return v == 0; })) {
-    return;
-  }
-  diags_.Report(DiagKind::Lossy, loc,
-                fmt::format("the default position of joint '{}' ({}) is not written (mdlc's "
-                            "SDFormat reader takes no initial positions)",
-                            j.name, VectorText(Eigen::Map<const Eigen::VectorXd>(
-                                        j.default_positions.data(),
-                                        static_cast<Eigen::Index>(j.default_positions.size())))));
-}
-
 // <drake:joint type="planar">: F and M are named frames (EXT-001)
 void SdfWriter::WritePlanar(JointId id, const std::string& scope) {
   const PlantJoint& j = plant_.joint(id);
@@ -302,7 +293,7 @@ void SdfWriter::WritePlanar(JointId id, const std::string& scope) {
                               "actuators for single-dof joints only",
                               plant_.actuators[i].name, j.name));
   }
-  DefaultPositions(j, loc);
+  ReportUnwrittenDefaultPositions(j, loc, kNoInitialPositions);
 }
 
 }  // namespace mdlc::writers::sdf

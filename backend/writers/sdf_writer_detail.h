@@ -105,7 +105,6 @@ class SdfWriter : WriterBase {
   void MultiDofLimits(const PlantJoint& j, Loc loc);
   void ActuatorParameters(JointId id);
   void MimicElements(JointId id);
-  void DefaultPositions(const PlantJoint& j, Loc loc);
   void WritePlanar(JointId id, const std::string& scope);
 
   // sdf_drake_elements.cc

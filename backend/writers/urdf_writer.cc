@@ -335,7 +335,7 @@ class UrdfWriter : WriterBase {
     }
     Mimic(id);
     out_.Close();
-    DefaultPositions(j, loc);
+    ReportUnwrittenDefaultPositions(j, loc, "URDF has no initial positions");
   }
 
   static bool IsIdentityPose(const PlantJoint& j) {
@@ -345,19 +345,6 @@ class UrdfWriter : WriterBase {
              q[5] == 0 && q[6] == 0;
     }
     return std::all_of(q.begin(), q.end(), [](double v) { return v == 0; });
-  }
-
-  void DefaultPositions(const PlantJoint& j, Loc loc) {
-    if (std::all_of(j.default_positions.begin(), j.default_positions.end(),
-                    [](double v) { return v == 0; })) {
-      return;
-    }
-    diags_.Report(DiagKind::Lossy, loc,
-                  fmt::format("the default position of joint '{}' ({}) is not written (URDF "
-                              "has no initial positions)",
-                              j.name, VectorText(Eigen::Map<const Eigen::VectorXd>(
-                                          j.default_positions.data(),
-                                          static_cast<Eigen::Index>(j.default_positions.size())))));
   }
 
   void Dynamics(const PlantJoint& j, Loc loc) {

@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace mdlc::writers {
 
 WriterBase::WriterBase(const backend::CompiledModel& model, const ir::Module& module,
@@ -41,6 +43,17 @@ void WriterBase::ReportAsymmetricLimits(const backend::PlantJoint& j, Loc loc,
   };
   report("velocity", j.velocity_lower[0], j.velocity_upper[0]);
   report("acceleration", j.acceleration_lower[0], j.acceleration_upper[0]);
+}
+
+void WriterBase::ReportUnwrittenDefaultPositions(const backend::PlantJoint& j, Loc loc,
+                                                 std::string_view why) const {
+  const std::vector<double>& q = j.default_positions;
+  if (std::all_of(q.begin(), q.end(), [](double v) { return v == 0; })) return;
+  diags_.Report(DiagKind::Lossy, loc,
+                fmt::format("the default position of joint '{}' ({}) is not written ({})", j.name,
+                            VectorText(Eigen::Map<const Eigen::VectorXd>(
+                                q.data(), static_cast<Eigen::Index>(q.size()))),
+                            why));
 }
 
 bool WriterBase::IsAppearanceProperty(const ir::Property& p) {

@@ -45,6 +45,10 @@ class WriterBase {
   /// are not symmetric, as `format`'s are, so +-upper is written.
   void ReportAsymmetricLimits(const backend::PlantJoint& j, Loc loc,
                               std::string_view format) const;
+  /// Warns (-Wlossy) that a joint's nonzero default positions are not
+  /// written, saying `why` (the target holds none).
+  void ReportUnwrittenDefaultPositions(const backend::PlantJoint& j, Loc loc,
+                                       std::string_view why) const;
   static bool IsFloating(const backend::PlantJoint& j) {
     return j.type == ir::JointType::QuaternionFloating || j.type == ir::JointType::RpyFloating;
   }

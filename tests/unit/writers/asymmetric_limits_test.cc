@@ -1,7 +1,8 @@
-// The URDF and SDFormat writers' -Wlossy warning for a joint whose velocity
-// or acceleration limits are not symmetric (both formats hold one bound).
-// No reader makes such limits, so the test sets them on a compiled plant,
-// as an embedder building a plant could.
+// The URDF and SDFormat writers' -Wlossy warnings for joint state neither
+// format holds: velocity or acceleration limits that are not symmetric (both
+// formats hold one bound) and nonzero default positions. No reader makes
+// such limits, so the tests set them on a compiled plant, as an embedder
+// building a plant could.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -56,6 +57,34 @@ TEST_P(AsymmetricLimitsTest, EachAsymmetricLimitIsALossyWarning) {
                           "'s are symmetric, so +-2 is written");
   EXPECT_EQ(lossy[1], "joint 'shoulder' has acceleration limits [-3, 4]; " + format +
                           "'s are symmetric, so +-4 is written");
+}
+
+TEST_P(AsymmetricLimitsTest, NonzeroDefaultPositionIsALossyWarning) {
+  Compilation c;
+  frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend, &c.documents};
+  frontend::ReadUrdf(c.sources.AddBuffer("arm.urdf", kArm), ctx);
+  ASSERT_TRUE(c.RunPasses());
+  ASSERT_TRUE(c.RunBackend());
+  for (backend::PlantJoint& j : c.model->plant.joints) {
+    if (j.name == "shoulder") j.default_positions = {0.5};
+  }
+  DiagnosticEngine diags;
+  writers::WriteOptions options;
+  options.to = GetParam();
+  ASSERT_TRUE(writers::Write(*c.model, c.module, options, diags).has_value());
+  const std::string why = GetParam() == Format::Urdf
+                              ? "URDF has no initial positions"
+                              : "mdlc's SDFormat reader takes no initial positions";
+  int found = 0;
+  for (const Diagnostic& d : diags.diagnostics()) {
+    if (d.kind != DiagKind::Lossy || d.message.find("default position") == std::string::npos) {
+      continue;
+    }
+    ++found;
+    EXPECT_EQ(d.message,
+              "the default position of joint 'shoulder' (0.5) is not written (" + why + ")");
+  }
+  EXPECT_EQ(found, 1);
 }
 
 INSTANTIATE_TEST_SUITE_P(Writers, AsymmetricLimitsTest,
