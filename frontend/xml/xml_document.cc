@@ -1,5 +1,7 @@
 #include "frontend/xml/xml_document.h"
 
+#include "frontend/xml/dom_arena.h"
+
 #include <libxml/parser.h>
 #include <libxml/SAX2.h>
 #include <libxml/tree.h>
@@ -43,6 +45,7 @@ void RefuseEntityDeclaration(void* context, const xmlChar*, int, const xmlChar*,
 void InstallSecurityHooks() {
   static std::once_flag once;
   std::call_once(once, [] {
+    DomArena::Install();
     xmlInitParser();
     xmlSetExternalEntityLoader(RefuseExternalEntity);
   });
@@ -144,11 +147,54 @@ size_t NextStartTag(std::string_view text, size_t pos, std::optional<size_t>* en
   }
 }
 
+
+
+// The source buffer, handed to libxml2 a piece at a time.
+struct MemoryStream {
+  std::string_view rest;
+  static int Read(void* context, char* out, int size) {
+    auto* self = static_cast<MemoryStream*>(context);
+    const size_t n = std::min(self->rest.size(), static_cast<size_t>(std::max(size, 0)));
+    std::memcpy(out, self->rest.data(), n);
+    self->rest.remove_prefix(n);
+    return static_cast<int>(n);
+  }
+};
+
+// libxml2's parse of `text`, made while a DomArena scope is active. Leaves
+// nothing libxml2 keeps beyond the parse (its thread's last error) pointing
+// into the arena. `stopped_at` is where the parser stopped; line 0 when the
+// parser could not even be made.
+xmlDocPtr ReadInArena(std::string_view text, const char* path, ErrorSink& sink,
+                      bool& declared_entity, Loc& stopped_at) {
+  xmlSetStructuredErrorFunc(&sink, OnXmlError);
+  // NOBLANKS and COMPACT: no nodes for indentation, small text inline; mdlc
+  // only reads the tree, and locations come from the buffer itself
+  const int options = XML_PARSE_NONET | XML_PARSE_HUGE | XML_PARSE_BIG_LINES |
+                      XML_PARSE_NOWARNING | XML_PARSE_NOERROR | XML_PARSE_NOBLANKS |
+                      XML_PARSE_COMPACT;
+  xmlDocPtr doc = nullptr;
+  if (xmlParserCtxtPtr parser = xmlNewParserCtxt()) {
+    parser->_private = &declared_entity;
+    parser->sax->entityDecl = RefuseEntityDeclaration;
+    // read through callbacks, not xmlCtxtReadMemory, which copies the whole
+    // buffer first: the parser then holds a few kilobytes of it at a time
+    MemoryStream stream{text};
+    doc = xmlCtxtReadIO(parser, MemoryStream::Read, nullptr, &stream, path, nullptr, options);
+    stopped_at = Loc{sink.file, static_cast<uint32_t>(std::max(xmlSAX2GetLineNumber(parser), 1)),
+                     static_cast<uint32_t>(std::max(xmlSAX2GetColumnNumber(parser), 1))};
+    xmlFreeParserCtxt(parser);
+  }
+  xmlSetStructuredErrorFunc(nullptr, nullptr);
+  xmlResetLastError();
+  return doc;
+}
+
 }  // namespace
 
-XmlDocument::~XmlDocument() {
-  if (doc_) xmlFreeDoc(doc_);
-}
+// The document lives in arena_: it goes with the arena, never through
+// xmlFreeDoc (which would visit every node only to free nothing).
+XmlDocument::~XmlDocument() = default;
 
 std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager& sources,
                                                 DiagnosticEngine& diags) {
@@ -172,43 +218,34 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
     return nullptr;
   }
 
+  auto arena = std::make_unique<DomArena>();
+  xmlDocPtr doc = nullptr;
+  bool declared_entity = false;
   ErrorSink sink{&diags, file};
-  xmlSetStructuredErrorFunc(&sink, OnXmlError);
-  // NOBLANKS and COMPACT: no nodes for indentation, small text inline; mdlc
-  // only reads the tree, and locations come from the buffer itself
-  const int options = XML_PARSE_NONET | XML_PARSE_HUGE | XML_PARSE_BIG_LINES |
-                      XML_PARSE_NOWARNING | XML_PARSE_NOERROR | XML_PARSE_NOBLANKS |
-                      XML_PARSE_COMPACT;
-  xmlParserCtxtPtr parser = xmlNewParserCtxt();
-  if (!parser) {
-    xmlSetStructuredErrorFunc(nullptr, nullptr);
+  Loc stopped_at;
+  {
+    // every allocation libxml2 makes in here is the arena's
+    DomArena::Scope scope(*arena);
+    doc = ReadInArena(text, sources.Path(file).c_str(), sink, declared_entity, stopped_at);
+  }
+  if (!doc && !declared_entity && sink.reported == 0 && stopped_at.line == 0) {
     diags.Report(DiagKind::XmlSyntax, Loc{file, 1, 1}, "Failed to parse XML: out of memory");
     return nullptr;
   }
-  bool declared_entity = false;
-  parser->_private = &declared_entity;
-  parser->sax->entityDecl = RefuseEntityDeclaration;
-  xmlDocPtr doc = xmlCtxtReadMemory(parser, text.data(), static_cast<int>(text.size()),
-                                    sources.Path(file).c_str(), nullptr, options);
-  const Loc stopped_at{file, static_cast<uint32_t>(std::max(xmlSAX2GetLineNumber(parser), 1)),
-                       static_cast<uint32_t>(std::max(xmlSAX2GetColumnNumber(parser), 1))};
-  xmlFreeParserCtxt(parser);
-  xmlSetStructuredErrorFunc(nullptr, nullptr);
   if (declared_entity) {
-    if (doc) xmlFreeDoc(doc);
     diags.Report(DiagKind::EntityDeclaration, stopped_at,
                  "entity declarations are not allowed in robot model files; "
                  "mdlc never expands or fetches entities");
     return nullptr;
   }
   if (!doc || sink.reported > 0) {
-    if (doc) xmlFreeDoc(doc);
     if (sink.reported == 0) {
       diags.Report(DiagKind::XmlSyntax, Loc{file, 1, 1}, "Failed to parse XML");
     }
     return nullptr;
   }
   std::unique_ptr<XmlDocument> result(new XmlDocument());
+  result->arena_ = std::move(arena);
   result->doc_ = doc;
   result->file_ = file;
   result->sources_ = &sources;

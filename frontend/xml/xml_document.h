@@ -32,6 +32,7 @@ struct _xmlAttr;
 namespace mdlc::xml {
 
 class XmlDocument;
+class DomArena;
 
 /// A view of one attribute: its value and location.
 struct XmlAttribute {
@@ -115,6 +116,8 @@ class XmlDocument {
   /// or depth limit (sources.limits()) and returns false there.
   bool AssignOffsets(DiagnosticEngine& diags);
 
+  // the DOM's memory (dom_arena.h); doc_ lives in it
+  std::unique_ptr<DomArena> arena_;
   _xmlDoc* doc_ = nullptr;
   // joined prefixed names by (prefix, name) pointers, which libxml2 interns;
   // unordered_map never moves its values, so views into them stay valid
