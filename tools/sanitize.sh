@@ -96,7 +96,7 @@ for fuzzer in ${FUZZERS:-urdf sdf mjcf directives mesh}; do
     tail -40 "$work/log.txt" >&2
     status=1
   else
-    grep -E "^stat::number_of_executed_runs|^stat::peak_rss_mb" "$work/log.txt" |
+    grep -E "^stat::number_of_executed_units|^stat::peak_rss_mb" "$work/log.txt" |
       sed "s/^/    fuzz_$fuzzer /"
   fi
 done
