@@ -31,21 +31,12 @@ struct FrontendOptions {
   bool single_model = false;
 };
 
-/// Parsed documents kept alive until the compile ends. Freeing a large DOM
-/// as soon as it is lowered leaves the allocator with millions of small free
-/// chunks, which every later allocation pays for; releasing them all at the
-/// end (or never, in a process about to exit) is much cheaper.
-struct RetainedDocuments {
-  std::vector<std::shared_ptr<const void>> documents;
-};
-
 /// Everything a frontend works with. Owns nothing.
 struct FrontendContext {
   SourceManager& sources;
   DiagnosticEngine& diags;
   ir::Module& module;
   FrontendOptions options;
-  RetainedDocuments* retained = nullptr;  // null: free each document when lowered
   /// Packages for the files a model includes (SDFormat <include>, directives).
   const assets::PackageMap& packages = assets::NoPackages();
 };

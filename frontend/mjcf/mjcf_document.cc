@@ -141,7 +141,6 @@ bool LoadIncludes(const xml::XmlElement& root, const std::string& main_dir, Fron
     std::shared_ptr<const xml::XmlDocument> doc =
         xml::XmlDocument::Parse(*id, ctx.sources, ctx.diags);
     if (!doc) continue;  // reported by the parser, inside the included file
-    if (ctx.retained) ctx.retained->documents.push_back(doc);
     document.documents.push_back(doc);
     const xml::XmlElement included_root = doc->Root();
     if (!included_root.FirstChild()) {

@@ -16,7 +16,6 @@ namespace {
 std::optional<ModelId> Read(FileId file, FrontendContext& ctx) {
   std::shared_ptr<const xml::XmlDocument> doc = xml::XmlDocument::Parse(file, ctx.sources, ctx.diags);
   if (!doc) return std::nullopt;
-  if (ctx.retained) ctx.retained->documents.push_back(doc);
   const xml::XmlElement root = doc->Root();
   if (root.Name() != "mujoco") {
     ctx.diags.Report(DiagKind::WrongRoot, root.GetLoc(),

@@ -165,7 +165,6 @@ void SdfReader::ReadInclude(const xml::XmlElement& e, const SdfFile& file, Model
   std::shared_ptr<const xml::XmlDocument> doc =
       xml::XmlDocument::Parse(*file_id, ctx_.sources, ctx_.diags);
   if (!doc) return;
-  if (ctx_.retained) ctx_.retained->documents.push_back(doc);
   documents_.push_back(doc);
   auto included = std::make_unique<SdfFile>();
   included->doc = doc.get();

@@ -150,7 +150,6 @@ std::optional<ModelId> SdfReader::ReadRootFile(FileId file_id) {
   std::shared_ptr<const xml::XmlDocument> doc =
       xml::XmlDocument::Parse(file_id, ctx_.sources, ctx_.diags);
   if (!doc) return std::nullopt;
-  if (ctx_.retained) ctx_.retained->documents.push_back(doc);
   documents_.push_back(doc);
   auto file = std::make_unique<SdfFile>();
   file->doc = doc.get();

@@ -14,7 +14,6 @@ std::optional<ModelId> ReadUrdf(FileId file, FrontendContext& ctx) {
   std::shared_ptr<const xml::XmlDocument> doc =
       xml::XmlDocument::Parse(file, ctx.sources, ctx.diags);
   if (!doc) return std::nullopt;
-  if (ctx.retained) ctx.retained->documents.push_back(doc);
   urdf::UrdfReader reader(ctx, *doc);
   return reader.Read();
 }

@@ -88,9 +88,9 @@ std::unique_ptr<Compilation> Prepare(benchmark::State& state, SdfFamily family, 
   return c;
 }
 
-// as Compilation::RunFrontends does it: documents retained, packages known
+// as Compilation::RunFrontends does it: packages known
 bool RunFrontend(Compilation& c, FileId file) {
-  frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend, &c.documents,
+  frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend,
                                 c.packages};
   return frontend::ReadModel(file, Format::Sdf, ctx).has_value() &&
          !c.diags.has_errors();

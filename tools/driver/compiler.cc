@@ -27,7 +27,7 @@ void ReadInput(const Input& input, frontend::FrontendContext& ctx) {
 }  // namespace
 
 bool Compilation::RunFrontends() {
-  frontend::FrontendContext ctx{sources, diags, module, options.frontend, &documents, packages};
+  frontend::FrontendContext ctx{sources, diags, module, options.frontend, packages};
   for (const Input& input : options.inputs) {
     // keep going: report the problems of every input in one run
     ReadInput(input, ctx);

@@ -59,8 +59,6 @@ class Compilation {
   std::shared_ptr<mesh::MeshCache> meshes = std::make_shared<mesh::MeshCache>();
   /// Derived mesh data on disk (CompileOptions::mesh_cache_dir); null: none.
   std::shared_ptr<mesh::DerivedMeshCache> derived_meshes;
-  /// Parsed source documents, released with the Compilation.
-  frontend::RetainedDocuments documents;
 
   /// Each stage returns false once an error has been reported.
   bool RunFrontends();

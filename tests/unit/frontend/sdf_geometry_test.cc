@@ -796,7 +796,7 @@ TEST(SdfGeometryEndToEnd, PropertiesMatchTheUrdfPath) {  // EXT-020, EXT-031, SD
   ASSERT_TRUE(from_sdf.ok()) << from_sdf.Messages();
   Compilation from_urdf;
   frontend::FrontendContext ctx{from_urdf.sources, from_urdf.diags, from_urdf.module,
-                                from_urdf.options.frontend, &from_urdf.documents};
+                                from_urdf.options.frontend};
   frontend::ReadUrdf(from_urdf.sources.AddBuffer("r.urdf", urdf), ctx);
   ASSERT_TRUE(from_urdf.RunPasses());
   ASSERT_TRUE(from_urdf.RunBackend());

@@ -563,7 +563,7 @@ TEST(UrdfSurfaceVelocity, RepeatKeepsTheFirst) {  // EXT-060
 TEST(UrdfGeometryPropertiesEndToEnd, PropertiesRolesAndActuatorsReachPlantJson) {
   // EXT-012..014, EXT-020, EXT-021, EXT-030, EXT-031, EXT-033, EXT-060, URDF-033
   Compilation c;
-  frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend, &c.documents};
+  frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend};
   frontend::ReadUrdf(c.sources.AddBuffer("e2e.urdf", R"(<robot name='r'>
     <link name='base'>
       <inertial><mass value='2'/><inertia ixx='1' iyy='1' izz='1' ixy='0' ixz='0' iyz='0'/></inertial>

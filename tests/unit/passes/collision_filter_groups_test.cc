@@ -60,7 +60,7 @@ struct Compiled {
   nlohmann::json json;
 
   explicit Compiled(std::initializer_list<std::string> texts) {
-    frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend, &c.documents};
+    frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend};
     int i = 0;
     for (const std::string& text : texts) {
       frontend::ReadUrdf(c.sources.AddBuffer(fmt::format("m{}.urdf", i++), text), ctx);

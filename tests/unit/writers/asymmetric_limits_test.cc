@@ -27,7 +27,7 @@ class AsymmetricLimitsTest : public ::testing::TestWithParam<Format> {};
 
 TEST_P(AsymmetricLimitsTest, EachAsymmetricLimitIsALossyWarning) {
   Compilation c;
-  frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend, &c.documents};
+  frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend};
   frontend::ReadUrdf(c.sources.AddBuffer("arm.urdf", kArm), ctx);
   ASSERT_TRUE(c.RunPasses());
   ASSERT_TRUE(c.RunBackend());
@@ -61,7 +61,7 @@ TEST_P(AsymmetricLimitsTest, EachAsymmetricLimitIsALossyWarning) {
 
 TEST_P(AsymmetricLimitsTest, NonzeroDefaultPositionIsALossyWarning) {
   Compilation c;
-  frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend, &c.documents};
+  frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend};
   frontend::ReadUrdf(c.sources.AddBuffer("arm.urdf", kArm), ctx);
   ASSERT_TRUE(c.RunPasses());
   ASSERT_TRUE(c.RunBackend());
