@@ -2,8 +2,11 @@
 
 #include <libxml/xmlmemory.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <iterator>
 #include <cstring>
+#include <functional>
 #include <mutex>
 #include <new>
 
@@ -44,10 +47,11 @@ size_t RoundUp(size_t n) { return (n + kAlign - 1) & ~(kAlign - 1); }
 thread_local DomArena* t_current = nullptr;
 
 // libxml2's allocator before Install: everything outside a scope goes there
-xmlFreeFunc g_free = nullptr;
-xmlMallocFunc g_malloc = nullptr;
-xmlReallocFunc g_realloc = nullptr;
-xmlStrdupFunc g_strdup = nullptr;
+// (the C library's until Install reads libxml2's own)
+xmlFreeFunc g_free = std::free;
+xmlMallocFunc g_malloc = std::malloc;
+xmlReallocFunc g_realloc = std::realloc;
+xmlStrdupFunc g_strdup = ::strdup;
 
 void* HookMalloc(size_t size) {
   if (DomArena* arena = t_current) return arena->Allocate(size);
@@ -91,9 +95,9 @@ DomArena::Scope::~Scope() { t_current = previous_; }
 
 DomArena::~DomArena() {
   for (void* p : large_) g_free(p);
-  for (void* block : blocks_) {
+  for (char* block : blocks_) {
     MDLC_UNPOISON(block, kBlockSize);
-    std::free(block);
+    g_free(block);
   }
 }
 
@@ -105,13 +109,12 @@ void* DomArena::Allocate(size_t size) {
   }
   const size_t need = kHeader + RoundUp(size) + kRedzone;
   if (static_cast<size_t>(end_ - next_) < need) {
-    void* block = std::aligned_alloc(kBlockSize, kBlockSize);
+    auto* block = static_cast<char*>(g_malloc(kBlockSize));
     if (!block) return nullptr;
     MDLC_POISON(block, kBlockSize);
-    blocks_.push_back(block);
-    block_bases_.insert(reinterpret_cast<uintptr_t>(block));
-    next_ = static_cast<char*>(block);
-    end_ = next_ + kBlockSize;
+    blocks_.insert(std::upper_bound(blocks_.begin(), blocks_.end(), block, std::less<>()), block);
+    next_ = block;
+    end_ = block + kBlockSize;
   }
   char* header = next_;
   next_ += need;
@@ -122,8 +125,12 @@ void* DomArena::Allocate(size_t size) {
 }
 
 bool DomArena::Owns(const void* p) const {
-  const auto base = reinterpret_cast<uintptr_t>(p) & ~static_cast<uintptr_t>(kBlockSize - 1);
-  return block_bases_.contains(base) || large_.contains(const_cast<void*>(p));
+  // the last block starting at or before p, if p lies inside it
+  const auto* c = static_cast<const char*>(p);
+  auto after = std::upper_bound(blocks_.begin(), blocks_.end(), c,
+                                std::less<>());
+  if (after != blocks_.begin() && std::less<>()(c, *std::prev(after) + kBlockSize)) return true;
+  return large_.contains(const_cast<void*>(p));
 }
 
 size_t DomArena::SizeOf(const void* p) {

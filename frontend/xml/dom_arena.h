@@ -60,7 +60,7 @@ class DomArena {
   /// Requests this small or smaller are served from blocks; larger ones go to
   /// the allocator (they are few, and often reallocated as they grow).
   static constexpr size_t kLargestSmall = 16 * 1024;
-  static constexpr size_t kBlockSize = 1024 * 1024;  // blocks are aligned to their size
+  static constexpr size_t kBlockSize = 1024 * 1024;
 
   // The allocator hooks, public for the tests.
   void* Allocate(size_t size);
@@ -71,8 +71,9 @@ class DomArena {
   static size_t SizeOf(const void* p);
 
  private:
-  std::vector<void*> blocks_;
-  std::unordered_set<uintptr_t> block_bases_;
+  // block starts, sorted by address (blocks are the allocator's memory, so
+  // they are reused as any freed memory is, e.g. by the next document)
+  std::vector<char*> blocks_;
   // large allocations made in a scope, freed with the arena unless released
   std::unordered_set<void*> large_;
   char* next_ = nullptr;
