@@ -18,6 +18,7 @@
 #include <map>
 
 #include "tools/driver/compiler.h"
+#include "warm_heap.h"
 
 namespace mdlc::bench {
 namespace {
@@ -139,6 +140,7 @@ void RegisterAll() {
 }  // namespace mdlc::bench
 
 int main(int argc, char** argv) {
+  mdlc::bench::KeepHeapWarm();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   mdlc::bench::RegisterAll();
