@@ -82,6 +82,17 @@ def ratio(a, b):
     return None if a is None or b is None or b == 0 else a / b
 
 
+def add_table(add, intro, columns, rows):
+    """A paragraph, then a markdown table of `rows` (tuples of cell strings)."""
+    add(intro)
+    add("")
+    add("| " + " | ".join(columns) + " |")
+    add("|" + "---|" * len(columns))
+    for row in rows:
+        add("| " + " | ".join(row) + " |")
+    add("")
+
+
 def verdict(value, goal, at_most=True):
     if value is None:
         return "not measured"
@@ -197,31 +208,21 @@ def main():
                                  median([r[0] for r in compile_runs])))
     finally:
         shutil.rmtree(work, ignore_errors=True)
-    add("Peak memory (resident set) of `mdlc compile --emit=none` against `xmllint --noout` "
-        "holding the file's DOM (goal ≤ 2x):")
-    add("")
-    add("| input | DOM (MB) | mdlc compile (MB) | ratio |")
-    add("|---|---|---|---|")
-    memory = {}
-    for label, dom_kb, compile_kb in memory_rows:
-        memory[label] = compile_kb / dom_kb
-        add(f"| {label} | {dom_kb / 1024:.0f} | {compile_kb / 1024:.0f} "
-            f"| {fmt_ratio(compile_kb / dom_kb)} |")
-    add("")
-
-    add("One-shot processes: CPU time (user + system, median of "
-        f"{reps} runs) of `mdlc compile --emit=none` against `xmllint --noout` parsing "
-        "the same file, each a fresh process that touches all its memory for the first "
-        "time, as a command-line compile does (goal ≤ 1.5x):")
-    add("")
-    add("| input | xmllint (ms) | mdlc compile (ms) | ratio |")
-    add("|---|---|---|---|")
-    one_shot = {}
-    for label, parse_ms, compile_ms in process_rows:
-        one_shot[label] = (parse_ms, compile_ms)
-        add(f"| {label} | {fmt_ms(parse_ms)} | {fmt_ms(compile_ms)} "
-            f"| {fmt_ratio(ratio(compile_ms, parse_ms))} |")
-    add("")
+    memory = {label: compile_kb / dom_kb for label, dom_kb, compile_kb in memory_rows}
+    add_table(add, "Peak memory (resident set) of `mdlc compile --emit=none` against "
+              "`xmllint --noout` holding the file's DOM (goal ≤ 2x):",
+              ["input", "DOM (MB)", "mdlc compile (MB)", "ratio"],
+              [(label, f"{dom_kb / 1024:.0f}", f"{compile_kb / 1024:.0f}",
+                fmt_ratio(compile_kb / dom_kb)) for label, dom_kb, compile_kb in memory_rows])
+    one_shot = {label: (parse_ms, compile_ms) for label, parse_ms, compile_ms in process_rows}
+    add_table(add, "One-shot processes: CPU time (user + system, median of "
+              f"{reps} runs) of `mdlc compile --emit=none` against `xmllint --noout` parsing "
+              "the same file, each a fresh process that touches all its memory for the first "
+              "time, as a command-line compile does (goal ≤ 1.5x):",
+              ["input", "xmllint (ms)", "mdlc compile (ms)", "ratio"],
+              [(label, fmt_ms(parse_ms), fmt_ms(compile_ms),
+                fmt_ratio(ratio(compile_ms, parse_ms)))
+               for label, parse_ms, compile_ms in process_rows])
     small_world, large_world = (one_shot.get("SDFormat world, N = 1000"),
                                 one_shot.get("SDFormat world, N = 100000"))
     one_shot_world_growth = one_shot_world_floor_growth = None
