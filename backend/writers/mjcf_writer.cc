@@ -75,12 +75,11 @@ std::string QuatText(const Eigen::Matrix3d& R) {
   return VectorText(Eigen::Vector4d(q.w(), q.x(), q.y(), q.z()));
 }
 
-class MjcfWriter : WriterBase {
+class MjcfWriter : FlatWriterBase {
  public:
   MjcfWriter(const backend::CompiledModel& model, const ir::Module& module,
              const WriteOptions& options, DiagnosticEngine& diags)
-      : WriterBase(model, module, options, diags),
-        names_(plant_),
+      : FlatWriterBase(model, module, options, diags),
         layout_(PlanMjcfBodies(plant_, scene_, options.fuse_fixed)) {}
 
   std::string Write() {
@@ -116,26 +115,8 @@ class MjcfWriter : WriterBase {
   }
 
  private:
-  // -- names
+  // -- names (FlatWriterBase has the entities' own)
 
-  std::string Named(ModelId model, std::string_view name) const {
-    return names_.Named(model, name);
-  }
-  /// Round-trip metadata inside the element just opened, after its
-  /// attributes: the entity's instance and name when the file does not say
-  /// them (names.h, ir/original_names.h).
-  void OriginalName(ModelId model, std::string_view name, std::string_view read_back) {
-    if (auto comment = names_.OriginalNameComment(model, name, read_back)) out_.Comment(*comment);
-  }
-  std::string BodyName(BodyId body) const {
-    if (body.index() == 0) return "world";
-    const PlantBody& b = plant_.body(body);
-    return Named(b.model, b.name);
-  }
-  std::string JointName(JointId joint) const {
-    const PlantJoint& j = plant_.joint(joint);
-    return Named(j.model, j.name);
-  }
   /// A name unique among the written elements of one kind (geoms, sites):
   /// MJCF gives each kind one namespace for the whole model.
   std::string Unique(std::set<std::string>& taken, std::string name) {
@@ -927,7 +908,6 @@ class MjcfWriter : WriterBase {
     }
   }
 
-  FlatNames names_;
   MjcfBodyLayout layout_;
   std::map<size_t, std::string> fused_site_names_;
   std::vector<Transform> X_BL_;

@@ -58,11 +58,11 @@ bool AllEqual(const std::vector<double>& values) {
          values.end();
 }
 
-class UrdfWriter : WriterBase {
+class UrdfWriter : FlatWriterBase {
  public:
   UrdfWriter(const backend::CompiledModel& model, const ir::Module& module,
              const WriteOptions& options, DiagnosticEngine& diags)
-      : WriterBase(model, module, options, diags), names_(plant_) {}
+      : FlatWriterBase(model, module, options, diags) {}
 
   std::string Write() {
     names_.ReportFlattening(m_, "URDF robot", diags_);
@@ -82,26 +82,6 @@ class UrdfWriter : WriterBase {
   }
 
  private:
-  // -- names
-
-  std::string Named(ModelId model, std::string_view name) const {
-    return names_.Named(model, name);
-  }
-  /// Round-trip metadata inside the element just opened, after its
-  /// attributes: the entity's instance and name when the file does not say
-  /// them (names.h, ir/original_names.h).
-  void OriginalName(ModelId model, std::string_view name, std::string_view written) {
-    if (auto comment = names_.OriginalNameComment(model, name, written)) out_.Comment(*comment);
-  }
-  std::string LinkName(BodyId body) const {
-    if (body.index() == 0) return "world";
-    const PlantBody& b = plant_.body(body);
-    return Named(b.model, b.name);
-  }
-  std::string JointName(JointId joint) const {
-    const PlantJoint& j = plant_.joint(joint);
-    return Named(j.model, j.name);
-  }
   // -- frames: X_BL, the pose of body B's link frame L in B
 
   Transform LinkInBody(BodyId body) const {
@@ -138,9 +118,9 @@ class UrdfWriter : WriterBase {
 
   void WriteLink(BodyId body) {
     const PlantBody& b = plant_.body(body);
-    frame_names_.insert(LinkName(body));
-    out_.Open("link").Attr("name", LinkName(body));
-    if (body.index() != 0) OriginalName(b.model, b.name, LinkName(body));
+    frame_names_.insert(BodyName(body));
+    out_.Open("link").Attr("name", BodyName(body));
+    if (body.index() != 0) OriginalName(b.model, b.name, BodyName(body));
     if (b.deformable) {
       diags_.Report(DiagKind::Lossy, BodyLoc(body),
                     fmt::format("link '{}' is deformable; URDF has no deformable bodies, so "
@@ -250,7 +230,7 @@ class UrdfWriter : WriterBase {
     const ir::Property* texture = FindProperty(g, "phong/diffuse_map");
     if (!diffuse && !texture) return;
     // a material needs a name (urdfdom); each visual has its own
-    out_.Open("material").Attr("name", fmt::format("{}:{}", LinkName(g.body), g.name));
+    out_.Open("material").Attr("name", fmt::format("{}:{}", BodyName(g.body), g.name));
     if (diffuse) {
       if (const auto* rgba = std::get_if<std::vector<double>>(&diffuse->value);
           rgba && rgba->size() == 4) {
@@ -278,7 +258,7 @@ class UrdfWriter : WriterBase {
         diags_.Report(DiagKind::Lossy, loc,
                       fmt::format("floating joint '{}' has a parent other than the world, "
                                   "which URDF cannot hold; link '{}' is written free",
-                                  j.name, LinkName(j.child)));
+                                  j.name, BodyName(j.child)));
       } else if (!j.unnamed || j.type == ir::JointType::RpyFloating) {
         diags_.Report(DiagKind::Lossy, loc,
                       fmt::format("{} joint '{}' is written as a free root link: URDF names "
@@ -292,7 +272,7 @@ class UrdfWriter : WriterBase {
         diags_.Report(DiagKind::Lossy, loc,
                       fmt::format("the default pose of free link '{}' is not written (URDF "
                                   "has no initial positions)",
-                                  LinkName(j.child)));
+                                  BodyName(j.child)));
       }
       return;
     }
@@ -320,8 +300,8 @@ class UrdfWriter : WriterBase {
     out_.Open(s.element).Attr("name", JointName(id)).Attr("type", s.type);
     OriginalName(j.model, j.name, JointName(id));
     Origin(InLink(j.parent, j.X_PF));
-    out_.Open("parent").Attr("link", LinkName(j.parent)).Close();
-    out_.Open("child").Attr("link", LinkName(j.child)).Close();
+    out_.Open("parent").Attr("link", BodyName(j.parent)).Close();
+    out_.Open("child").Attr("link", BodyName(j.child)).Close();
     if (j.type == ir::JointType::Revolute || j.type == ir::JointType::Prismatic ||
         j.type == ir::JointType::Screw || j.type == ir::JointType::Planar) {
       out_.Open("axis").Attr("xyz", j.axis).Close();
@@ -459,7 +439,7 @@ class UrdfWriter : WriterBase {
       const std::string name = FrameName(frame, loc);
       out_.Open("frame")
           .Attr("name", name)
-          .Attr("link", LinkName(frame.body))
+          .Attr("link", BodyName(frame.body))
           .Attr("xyz", X_LF.p)
           .Attr("rpy", RpyFromRotation(X_LF.R));
       OriginalName(frame.model, frame.name, name);
@@ -501,9 +481,9 @@ class UrdfWriter : WriterBase {
 
   void BodiesAndPoints(std::string_view prefix, BodyId A, BodyId B, const Eigen::Vector3d& p_AP,
                        const Eigen::Vector3d& p_BQ) {
-    out_.Open(fmt::format("{}_body_A", prefix)).Attr("name", LinkName(A)).Close();
+    out_.Open(fmt::format("{}_body_A", prefix)).Attr("name", BodyName(A)).Close();
     out_.Open(fmt::format("{}_p_AP", prefix)).Attr("value", PointInLink(A, p_AP)).Close();
-    out_.Open(fmt::format("{}_body_B", prefix)).Attr("name", LinkName(B)).Close();
+    out_.Open(fmt::format("{}_body_B", prefix)).Attr("name", BodyName(B)).Close();
     out_.Open(fmt::format("{}_p_BQ", prefix)).Attr("value", PointInLink(B, p_BQ)).Close();
   }
 
@@ -606,9 +586,9 @@ class UrdfWriter : WriterBase {
               [&](const backend::LinearSpringDamper& k) {
                 const std::string p = "drake:linear_spring_damper";
                 out_.Open(p);
-                out_.Open(p + "_body_A").Attr("name", LinkName(k.body_A)).Close();
+                out_.Open(p + "_body_A").Attr("name", BodyName(k.body_A)).Close();
                 out_.Open(p + "_p_AP").Attr("value", PointInLink(k.body_A, k.p_AP)).Close();
-                out_.Open(p + "_body_B").Attr("name", LinkName(k.body_B)).Close();
+                out_.Open(p + "_body_B").Attr("name", BodyName(k.body_B)).Close();
                 out_.Open(p + "_p_BQ").Attr("value", PointInLink(k.body_B, k.p_BQ)).Close();
                 out_.Open(p + "_free_length").Attr("value", k.free_length).Close();
                 out_.Open(p + "_stiffness").Attr("value", k.stiffness).Close();
@@ -636,13 +616,13 @@ class UrdfWriter : WriterBase {
         diags_.Report(DiagKind::Lossy, BodyLoc(other),
                       fmt::format("the collision filter between link '{}' and the world is "
                                   "dropped: a URDF collision filter group cannot name the world",
-                                  LinkName(other)));
+                                  BodyName(other)));
         continue;
       }
       const std::string name = fmt::format("filter{}", n++);
       out_.Open("drake:collision_filter_group").Attr("name", name);
-      out_.Open("drake:member").Attr("link", LinkName(a)).Close();
-      out_.Open("drake:member").Attr("link", LinkName(b)).Close();
+      out_.Open("drake:member").Attr("link", BodyName(a)).Close();
+      out_.Open("drake:member").Attr("link", BodyName(b)).Close();
       out_.Open("drake:ignored_collision_filter_group").Attr("name", name).Close();
       out_.Close();
     }
@@ -656,7 +636,6 @@ class UrdfWriter : WriterBase {
     }
   }
 
-  FlatNames names_;
   std::set<size_t> mimicked_, mimic_written_;
   std::set<std::string> frame_names_;  // links' and frames' names
 };

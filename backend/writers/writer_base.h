@@ -4,11 +4,13 @@
 // asset files it names.
 #pragma once
 
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include "backend/compiled_model.h"
 #include "backend/writers/asset_paths.h"
+#include "backend/writers/names.h"
 #include "backend/writers/writer.h"
 #include "backend/writers/xml_out.h"
 #include "ir/diagnostics.h"
@@ -67,6 +69,37 @@ class WriterBase {
   }
 
   std::vector<Loc> geometry_locs_;
+};
+
+/// The base of the writers whose format has one namespace for the whole
+/// file (URDF, MJCF): every entity's name goes through FlatNames.
+class FlatWriterBase : public WriterBase {
+ protected:
+  FlatWriterBase(const backend::CompiledModel& model, const ir::Module& module,
+                 const WriteOptions& options, DiagnosticEngine& diags)
+      : WriterBase(model, module, options, diags), names_(plant_) {}
+
+  std::string Named(ModelId model, std::string_view name) const {
+    return names_.Named(model, name);
+  }
+  /// Round-trip metadata inside the element just opened, after its
+  /// attributes: the entity's instance and name when the file does not say
+  /// them (names.h, ir/original_names.h); `written` is the name in the file.
+  void OriginalName(ModelId model, std::string_view name, std::string_view written) {
+    if (auto comment = names_.OriginalNameComment(model, name, written)) out_.Comment(*comment);
+  }
+  /// A body's name in the file; the world body is "world".
+  std::string BodyName(BodyId body) const {
+    if (body.index() == 0) return "world";
+    const backend::PlantBody& b = plant_.body(body);
+    return Named(b.model, b.name);
+  }
+  std::string JointName(JointId joint) const {
+    const backend::PlantJoint& j = plant_.joint(joint);
+    return Named(j.model, j.name);
+  }
+
+  FlatNames names_;
 };
 
 }  // namespace mdlc::writers
