@@ -20,10 +20,11 @@
 
 namespace mdlc::testing {
 
-class CompiledText {
+class CompiledText : public ClaimsDiagnostics {
  public:
   /// Writes `text` as `file_name` in a folder of its own and compiles it.
-  CompiledText(std::string_view file_name, std::string_view text) {
+  CompiledText(std::string_view file_name, std::string_view text)
+      : ClaimsDiagnostics(c_.diags) {
     dir_ = std::filesystem::temp_directory_path() /
            fmt::format("mdlc_compiled_{}_{}", ::getpid(),
                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
@@ -36,7 +37,7 @@ class CompiledText {
     ok_ = c_.Run();
   }
   ~CompiledText() {
-    claims_.CheckAtEnd(c_.diags.diagnostics());
+    CheckClaimsAtEnd();
     std::filesystem::remove_all(dir_);
   }
   CompiledText(const CompiledText&) = delete;
@@ -66,12 +67,6 @@ class CompiledText {
     if (!found.empty()) claims_.Found(kind, text);
     return found;
   }
-  /// Claims the diagnostics of `kind` holding `text`; at least one must come.
-  void ExpectDiagnostic(DiagKind kind, std::string_view text) { claims_.Expect(kind, text); }
-  /// Claims the errors (any kind) holding `text`; at least one must come.
-  void ExpectError(std::string_view text) { claims_.ExpectError(text); }
-  /// Fails for every diagnostic so far that no claim covers.
-  void ExpectNoOtherDiagnostics() const { claims_.Check(c_.diags.diagnostics()); }
   /// plant-json at the default configuration.
   nlohmann::json Json() const {
     return nlohmann::json::parse(
@@ -82,7 +77,6 @@ class CompiledText {
   std::filesystem::path dir_, path_;
   Compilation c_;
   bool ok_ = false;
-  mutable DiagnosticClaims claims_;
 };
 
 /// The entry of `list` (a plant-json array) with this name and instance.

@@ -103,4 +103,36 @@ class DiagnosticClaims {
   size_t checked_ = 0;  // diagnostics before this index were checked already
 };
 
+/// The claim methods every fixture offers, over the diagnostics of one
+/// engine (which the fixture owns). A fixture calls CheckClaimsAtEnd() in its
+/// destructor, while that engine still exists.
+class ClaimsDiagnostics {
+ public:
+  /// Whether a diagnostic of `kind` holds `text`; those found are claimed.
+  bool HasDiagnostic(DiagKind kind, std::string_view text) const {
+    for (const auto& d : diags_->diagnostics()) {
+      if (d.kind == kind && d.message.find(text) != std::string::npos) {
+        claims_.Found(kind, text);
+        return true;
+      }
+    }
+    return false;
+  }
+  /// Claims the diagnostics of `kind` holding `text`; at least one must come.
+  void ExpectDiagnostic(DiagKind kind, std::string_view text) { claims_.Expect(kind, text); }
+  /// Claims the errors (any kind) holding `text`; at least one must come.
+  void ExpectError(std::string_view text) { claims_.ExpectError(text); }
+  /// Fails for every diagnostic so far that no claim covers.
+  void ExpectNoOtherDiagnostics() const { claims_.Check(diags_->diagnostics()); }
+
+ protected:
+  explicit ClaimsDiagnostics(const DiagnosticEngine& diags) : diags_(&diags) {}
+  void CheckClaimsAtEnd() { claims_.CheckAtEnd(diags_->diagnostics()); }
+
+  mutable DiagnosticClaims claims_;
+
+ private:
+  const DiagnosticEngine* diags_;
+};
+
 }  // namespace mdlc::testing

@@ -20,12 +20,13 @@
 
 namespace mdlc::testing {
 
-class LoweredMjcf {
+class LoweredMjcf : public ClaimsDiagnostics {
  public:
   /// Writes `xml` as model.xml (and each {name, text} file beside it), then
   /// runs the MJCF frontend on model.xml.
   explicit LoweredMjcf(std::string_view xml,
-                       std::vector<std::pair<std::string, std::string>> files = {}) {
+                       std::vector<std::pair<std::string, std::string>> files = {})
+      : ClaimsDiagnostics(diags) {
     dir_ = std::filesystem::temp_directory_path() /
            fmt::format("mdlc_mjcf_{}_{}", ::getpid(),
                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
@@ -40,7 +41,7 @@ class LoweredMjcf {
     model = frontend::ReadModelFile((dir_ / "model.xml").string(), ctx);
   }
   ~LoweredMjcf() {
-    claims_.CheckAtEnd(diags.diagnostics());
+    CheckClaimsAtEnd();
     std::filesystem::remove_all(dir_);
   }
   LoweredMjcf(const LoweredMjcf&) = delete;
@@ -82,12 +83,6 @@ class LoweredMjcf {
     }
     return nullptr;
   }
-  /// Claims the diagnostics of `kind` holding `text`; at least one must come.
-  void ExpectDiagnostic(DiagKind kind, std::string_view text) { claims_.Expect(kind, text); }
-  /// Claims the errors (any kind) holding `text`; at least one must come.
-  void ExpectError(std::string_view text) { claims_.ExpectError(text); }
-  /// Fails for every diagnostic so far that no claim covers.
-  void ExpectNoOtherDiagnostics() const { claims_.Check(diags.diagnostics()); }
 
   SourceManager sources;
   DiagnosticEngine diags;
@@ -96,7 +91,6 @@ class LoweredMjcf {
 
  private:
   std::filesystem::path dir_;
-  mutable DiagnosticClaims claims_;
 };
 
 }  // namespace mdlc::testing

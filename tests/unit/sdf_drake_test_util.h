@@ -31,14 +31,14 @@ inline std::string SdfDocument(std::string_view body) {
 }
 
 /// The SDFormat frontend alone: the IR as lowered, references unresolved.
-struct LoweredSdf {
+struct LoweredSdf : ClaimsDiagnostics {
   SourceManager sources;
   DiagnosticEngine diags;
   ir::Module module;
   std::optional<ModelId> model;
 
-  LoweredSdf() = default;
-  ~LoweredSdf() { claims_.CheckAtEnd(diags.diagnostics()); }
+  LoweredSdf() : ClaimsDiagnostics(diags) {}
+  ~LoweredSdf() { CheckClaimsAtEnd(); }
   LoweredSdf(const LoweredSdf&) = delete;
   LoweredSdf& operator=(const LoweredSdf&) = delete;
 
@@ -65,16 +65,6 @@ struct LoweredSdf {
     }
     return out;
   }
-  /// Whether a diagnostic of `kind` holds `text`; those found are claimed.
-  bool HasDiagnostic(DiagKind kind, std::string_view text) const {
-    for (const auto& d : diags.diagnostics()) {
-      if (d.kind == kind && d.message.find(text) != std::string::npos) {
-        claims_.Found(kind, text);
-        return true;
-      }
-    }
-    return false;
-  }
   /// Line of the first diagnostic whose message holds `text` (0: none).
   uint32_t LineOf(std::string_view text) const {
     for (const auto& d : diags.diagnostics()) {
@@ -82,21 +72,13 @@ struct LoweredSdf {
     }
     return 0;
   }
-  /// Claims the diagnostics of `kind` holding `text`; at least one must come.
-  void ExpectDiagnostic(DiagKind kind, std::string_view text) { claims_.Expect(kind, text); }
-  /// Claims the errors (any kind) holding `text`; at least one must come.
-  void ExpectError(std::string_view text) { claims_.ExpectError(text); }
-  /// Fails for every diagnostic so far that no claim covers.
-  void ExpectNoOtherDiagnostics() const { claims_.Check(diags.diagnostics()); }
 
- private:
-  mutable DiagnosticClaims claims_;
 };
 
 /// The whole pipeline (frontend, passes, backend) on SdfDocument(body).
-class CompiledSdf {
+class CompiledSdf : public ClaimsDiagnostics {
  public:
-  explicit CompiledSdf(std::string_view body) {
+  explicit CompiledSdf(std::string_view body) : ClaimsDiagnostics(c_.diags) {
     path_ = std::filesystem::temp_directory_path() /
             fmt::format("mdlc_sdf_drake_{}_{}.sdf", ::getpid(),
                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
@@ -105,7 +87,7 @@ class CompiledSdf {
     ok_ = c_.Run();
   }
   ~CompiledSdf() {
-    claims_.CheckAtEnd(c_.diags.diagnostics());
+    CheckClaimsAtEnd();
     std::filesystem::remove(path_);
   }
   CompiledSdf(const CompiledSdf&) = delete;
@@ -122,28 +104,11 @@ class CompiledSdf {
     return nlohmann::json::parse(
         backend::EmitPlantJson(*c_.model, backend::DefaultPositions(c_.model->plant)));
   }
-  /// Whether a diagnostic of `kind` holds `text`; those found are claimed.
-  bool HasDiagnostic(DiagKind kind, std::string_view text) const {
-    for (const auto& d : c_.diags.diagnostics()) {
-      if (d.kind == kind && d.message.find(text) != std::string::npos) {
-        claims_.Found(kind, text);
-        return true;
-      }
-    }
-    return false;
-  }
-  /// Claims the diagnostics of `kind` holding `text`; at least one must come.
-  void ExpectDiagnostic(DiagKind kind, std::string_view text) { claims_.Expect(kind, text); }
-  /// Claims the errors (any kind) holding `text`; at least one must come.
-  void ExpectError(std::string_view text) { claims_.ExpectError(text); }
-  /// Fails for every diagnostic so far that no claim covers.
-  void ExpectNoOtherDiagnostics() const { claims_.Check(c_.diags.diagnostics()); }
 
  private:
   std::filesystem::path path_;
   Compilation c_;
   bool ok_ = false;
-  mutable DiagnosticClaims claims_;
 };
 
 /// The entry of `list` (a plant-json array) named `name` (null json: none).

@@ -38,14 +38,14 @@ inline std::string SdfLink(std::string_view link_children) {
 }
 
 /// The SDFormat frontend alone on SdfFileText(body).
-struct SdfFrontendResult {
+struct SdfFrontendResult : ClaimsDiagnostics {
   SourceManager sources;
   DiagnosticEngine diags;
   ir::Module module;
   std::optional<ModelId> model;
 
-  SdfFrontendResult() = default;
-  ~SdfFrontendResult() { claims_.CheckAtEnd(diags.diagnostics()); }
+  SdfFrontendResult() : ClaimsDiagnostics(diags) {}
+  ~SdfFrontendResult() { CheckClaimsAtEnd(); }
   SdfFrontendResult(const SdfFrontendResult&) = delete;
   SdfFrontendResult& operator=(const SdfFrontendResult&) = delete;
 
@@ -75,33 +75,16 @@ struct SdfFrontendResult {
     claims_.Found(kind, "");
     return n;
   }
-  /// Whether a diagnostic of `kind` holds `text`; those found are claimed.
-  bool HasDiagnostic(DiagKind kind, std::string_view text) const {
-    for (const auto& d : diags.diagnostics()) {
-      if (d.kind == kind && d.message.find(text) != std::string::npos) {
-        claims_.Found(kind, text);
-        return true;
-      }
-    }
-    return false;
-  }
-  /// Claims the diagnostics of `kind` holding `text`; at least one must come.
-  void ExpectDiagnostic(DiagKind kind, std::string_view text) { claims_.Expect(kind, text); }
-  /// Claims the errors (any kind) holding `text`; at least one must come.
-  void ExpectError(std::string_view text) { claims_.ExpectError(text); }
-  /// Fails for every diagnostic so far that no claim covers.
-  void ExpectNoOtherDiagnostics() const { claims_.Check(diags.diagnostics()); }
 
- private:
-  mutable DiagnosticClaims claims_;
 };
 
 /// The whole pipeline on SdfFileText(body), written as model.sdf into a
 /// fresh folder beside which `extra_files` (name -> contents) are written.
-class SdfCompileResult {
+class SdfCompileResult : public ClaimsDiagnostics {
  public:
   explicit SdfCompileResult(std::string_view body,
-                            const std::vector<std::pair<std::string, std::string>>& extra_files = {}) {
+                            const std::vector<std::pair<std::string, std::string>>& extra_files = {})
+      : ClaimsDiagnostics(c_.diags) {
     dir_ = std::filesystem::temp_directory_path() /
            fmt::format("mdlc_sdf_geometry_{}_{}", ::getpid(),
                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
@@ -113,7 +96,7 @@ class SdfCompileResult {
     ok_ = c_.Run();
   }
   ~SdfCompileResult() {
-    claims_.CheckAtEnd(c_.diags.diagnostics());
+    CheckClaimsAtEnd();
     std::filesystem::remove_all(dir_);
   }
   SdfCompileResult(const SdfCompileResult&) = delete;
@@ -130,28 +113,11 @@ class SdfCompileResult {
     return nlohmann::json::parse(
         backend::EmitPlantJson(*c_.model, backend::DefaultPositions(c_.model->plant)));
   }
-  /// Whether a diagnostic of `kind` holds `text`; those found are claimed.
-  bool HasDiagnostic(DiagKind kind, std::string_view text) const {
-    for (const auto& d : c_.diags.diagnostics()) {
-      if (d.kind == kind && d.message.find(text) != std::string::npos) {
-        claims_.Found(kind, text);
-        return true;
-      }
-    }
-    return false;
-  }
-  /// Claims the diagnostics of `kind` holding `text`; at least one must come.
-  void ExpectDiagnostic(DiagKind kind, std::string_view text) { claims_.Expect(kind, text); }
-  /// Claims the errors (any kind) holding `text`; at least one must come.
-  void ExpectError(std::string_view text) { claims_.ExpectError(text); }
-  /// Fails for every diagnostic so far that no claim covers.
-  void ExpectNoOtherDiagnostics() const { claims_.Check(c_.diags.diagnostics()); }
 
  private:
   std::filesystem::path dir_;
   Compilation c_;
   bool ok_ = false;
-  mutable DiagnosticClaims claims_;
 };
 
 /// The entries of a plant-json array with this name (a visual and a

@@ -14,14 +14,14 @@
 
 namespace mdlc::testing {
 
-struct Lowered {
+struct Lowered : ClaimsDiagnostics {
   SourceManager sources;
   DiagnosticEngine diags;
   ir::Module module;
   std::optional<ModelId> model;
 
-  Lowered() = default;
-  ~Lowered() { claims_.CheckAtEnd(diags.diagnostics()); }
+  Lowered() : ClaimsDiagnostics(diags) {}
+  ~Lowered() { CheckClaimsAtEnd(); }
   Lowered(const Lowered&) = delete;
   Lowered& operator=(const Lowered&) = delete;
 
@@ -56,25 +56,7 @@ struct Lowered {
     for (const auto& d : diags.diagnostics()) out += d.message + "\n";
     return out;
   }
-  /// Whether a diagnostic of `kind` holds `text`; those found are claimed.
-  bool HasDiagnostic(DiagKind kind, std::string_view text) const {
-    for (const auto& d : diags.diagnostics()) {
-      if (d.kind == kind && d.message.find(text) != std::string::npos) {
-        claims_.Found(kind, text);
-        return true;
-      }
-    }
-    return false;
-  }
-  /// Claims the diagnostics of `kind` holding `text`; at least one must come.
-  void ExpectDiagnostic(DiagKind kind, std::string_view text) { claims_.Expect(kind, text); }
-  /// Claims the errors (any kind) holding `text`; at least one must come.
-  void ExpectError(std::string_view text) { claims_.ExpectError(text); }
-  /// Fails for every diagnostic so far that no claim covers.
-  void ExpectNoOtherDiagnostics() const { claims_.Check(diags.diagnostics()); }
 
- private:
-  mutable DiagnosticClaims claims_;
 };
 
 }  // namespace mdlc::testing
