@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "backend/writers/writer.h"
 #include "frontend/frontend.h"
@@ -23,30 +24,40 @@ constexpr const char* kArm = R"(<robot name='r'>
     <axis xyz='0 0 1'/><limit effort='5' lower='-1' upper='1' velocity='2'/></joint>
 </robot>)";
 
-class AsymmetricLimitsTest : public ::testing::TestWithParam<Format> {};
+class AsymmetricLimitsTest : public ::testing::TestWithParam<Format> {
+ protected:
+  // kArm compiled; each test edits its shoulder joint before writing
+  void SetUp() override {
+    frontend::FrontendContext ctx{c_.sources, c_.diags, c_.module, c_.options.frontend};
+    frontend::ReadUrdf(c_.sources.AddBuffer("arm.urdf", kArm), ctx);
+    ASSERT_TRUE(c_.RunPasses());
+    ASSERT_TRUE(c_.RunBackend());
+    for (backend::PlantJoint& j : c_.model->plant.joints) {
+      if (j.name == "shoulder") shoulder_ = &j;
+    }
+    ASSERT_NE(shoulder_, nullptr);
+  }
+  /// The plant written in the format under test; the writer's diagnostics.
+  std::vector<Diagnostic> Write() {
+    DiagnosticEngine diags;
+    writers::WriteOptions options;
+    options.to = GetParam();
+    EXPECT_TRUE(writers::Write(*c_.model, c_.module, options, diags).has_value());
+    return diags.diagnostics();
+  }
+
+  Compilation c_;
+  backend::PlantJoint* shoulder_ = nullptr;
+};
 
 TEST_P(AsymmetricLimitsTest, EachAsymmetricLimitIsALossyWarning) {
-  Compilation c;
-  frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend};
-  frontend::ReadUrdf(c.sources.AddBuffer("arm.urdf", kArm), ctx);
-  ASSERT_TRUE(c.RunPasses());
-  ASSERT_TRUE(c.RunBackend());
-  backend::PlantJoint* shoulder = nullptr;
-  for (backend::PlantJoint& j : c.model->plant.joints) {
-    if (j.name == "shoulder") shoulder = &j;
-  }
-  ASSERT_NE(shoulder, nullptr);
-  shoulder->velocity_lower[0] = -1;  // upper stays 2
-  shoulder->acceleration_lower[0] = -3;
-  shoulder->acceleration_upper[0] = 4;
-
-  DiagnosticEngine diags;
-  writers::WriteOptions options;
-  options.to = GetParam();
-  ASSERT_TRUE(writers::Write(*c.model, c.module, options, diags).has_value());
+  shoulder_->velocity_lower[0] = -1;  // upper stays 2
+  shoulder_->acceleration_lower[0] = -3;
+  shoulder_->acceleration_upper[0] = 4;
+  const std::vector<Diagnostic> diagnostics = Write();
   const std::string format = GetParam() == Format::Urdf ? "URDF" : "SDFormat";
   std::vector<std::string> lossy;
-  for (const Diagnostic& d : diags.diagnostics()) {
+  for (const Diagnostic& d : diagnostics) {
     if (d.kind == DiagKind::Lossy && d.message.find("limits [") != std::string::npos) {
       lossy.push_back(d.message);
       EXPECT_TRUE(d.loc.valid()) << d.message;
@@ -60,23 +71,13 @@ TEST_P(AsymmetricLimitsTest, EachAsymmetricLimitIsALossyWarning) {
 }
 
 TEST_P(AsymmetricLimitsTest, NonzeroDefaultPositionIsALossyWarning) {
-  Compilation c;
-  frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend};
-  frontend::ReadUrdf(c.sources.AddBuffer("arm.urdf", kArm), ctx);
-  ASSERT_TRUE(c.RunPasses());
-  ASSERT_TRUE(c.RunBackend());
-  for (backend::PlantJoint& j : c.model->plant.joints) {
-    if (j.name == "shoulder") j.default_positions = {0.5};
-  }
-  DiagnosticEngine diags;
-  writers::WriteOptions options;
-  options.to = GetParam();
-  ASSERT_TRUE(writers::Write(*c.model, c.module, options, diags).has_value());
+  shoulder_->default_positions = {0.5};
+  const std::vector<Diagnostic> diagnostics = Write();
   const std::string why = GetParam() == Format::Urdf
                               ? "URDF has no initial positions"
                               : "mdlc's SDFormat reader takes no initial positions";
   int found = 0;
-  for (const Diagnostic& d : diags.diagnostics()) {
+  for (const Diagnostic& d : diagnostics) {
     if (d.kind != DiagKind::Lossy || d.message.find("default position") == std::string::npos) {
       continue;
     }
