@@ -1,7 +1,5 @@
 #include "frontend/xml/xml_document.h"
 
-#include "frontend/xml/dom_arena.h"
-
 #include <libxml/parser.h>
 #include <libxml/SAX2.h>
 #include <libxml/tree.h>
@@ -14,6 +12,8 @@
 #include <cstring>
 #include <mutex>
 #include <vector>
+
+#include "frontend/xml/dom_arena.h"
 
 namespace mdlc::xml {
 namespace {
@@ -146,8 +146,6 @@ size_t NextStartTag(std::string_view text, size_t pos, std::optional<size_t>* en
     }
   }
 }
-
-
 
 // The source buffer, handed to libxml2 a piece at a time.
 struct MemoryStream {
