@@ -51,7 +51,6 @@ thread_local DomArena* t_current = nullptr;
 xmlFreeFunc g_free = std::free;
 xmlMallocFunc g_malloc = std::malloc;
 xmlReallocFunc g_realloc = std::realloc;
-xmlStrdupFunc g_strdup = ::strdup;
 
 void* HookMalloc(size_t size) {
   if (DomArena* arena = t_current) return arena->Allocate(size);
@@ -85,7 +84,8 @@ char* HookStrdup(const char* s) {
 void DomArena::Install() {
   static std::once_flag once;
   std::call_once(once, [] {
-    xmlMemGet(&g_free, &g_malloc, &g_realloc, &g_strdup);
+    // libxml2's strdup is not kept: HookStrdup copies through HookMalloc
+    xmlMemGet(&g_free, &g_malloc, &g_realloc, nullptr);
     xmlMemSetup(HookFree, HookMalloc, HookRealloc, HookStrdup);
   });
 }
