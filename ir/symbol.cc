@@ -1,41 +1,88 @@
 #include "ir/symbol.h"
 
+#include <algorithm>
+#include <cstring>
+#include <functional>
+
 namespace mdlc {
 
-SymbolTable::SymbolTable() {
-  strings_.emplace_back();
-  index_.emplace(std::string_view(strings_.back()), 0);
+namespace {
+constexpr size_t kBlockSize = 64 * 1024;
+constexpr size_t kInitialSlots = 256;
+
+uint32_t HashText(std::string_view text) {
+  return static_cast<uint32_t>(std::hash<std::string_view>()(text));
+}
+}  // namespace
+
+SymbolTable::SymbolTable() : slots_(kInitialSlots) {
+  texts_.emplace_back("");  // symbol 0; never placed in the slots
 }
 
-SymbolTable::SymbolTable(const SymbolTable& other) : strings_(other.strings_) { Reindex(); }
+SymbolTable::SymbolTable(const SymbolTable& other) : SymbolTable() {
+  // re-interning in id order gives every text its id again
+  texts_.reserve(other.texts_.size());
+  for (size_t i = 1; i < other.texts_.size(); ++i) Intern(other.texts_[i]);
+}
 
 SymbolTable& SymbolTable::operator=(const SymbolTable& other) {
-  if (this != &other) {
-    strings_ = other.strings_;
-    Reindex();
-  }
+  if (this != &other) *this = SymbolTable(other);
   return *this;
 }
 
-void SymbolTable::Reindex() {
-  index_.clear();
-  index_.reserve(strings_.size());
-  for (size_t i = 0; i < strings_.size(); ++i) {
-    index_.emplace(std::string_view(strings_[i]), static_cast<uint32_t>(i));
+size_t SymbolTable::Probe(std::string_view text, uint32_t hash) const {
+  const size_t mask = slots_.size() - 1;
+  for (size_t i = hash & mask;; i = (i + 1) & mask) {
+    const Slot& slot = slots_[i];
+    if (slot.id == kNoId) return i;
+    if (slot.hash == hash && texts_[slot.id] == text) return i;
+  }
+}
+
+std::string_view SymbolTable::Store(std::string_view text) {
+  const size_t need = text.size() + 1;
+  if (need > block_left_) {
+    const size_t size = std::max(kBlockSize, need);
+    blocks_.push_back(std::make_unique<char[]>(size));
+    block_next_ = blocks_.back().get();
+    block_left_ = size;
+  }
+  char* out = block_next_;
+  if (!text.empty()) std::memcpy(out, text.data(), text.size());
+  out[text.size()] = '\0';
+  block_next_ += need;
+  block_left_ -= need;
+  return std::string_view(out, text.size());
+}
+
+void SymbolTable::Grow() {
+  std::vector<Slot> old(slots_.size() * 2);
+  old.swap(slots_);
+  const size_t mask = slots_.size() - 1;
+  for (const Slot& slot : old) {
+    if (slot.id == kNoId) continue;
+    size_t i = slot.hash & mask;
+    while (slots_[i].id != kNoId) i = (i + 1) & mask;
+    slots_[i] = slot;
   }
 }
 
 Symbol SymbolTable::Intern(std::string_view text) {
-  if (auto it = index_.find(text); it != index_.end()) return Symbol{it->second};
-  strings_.emplace_back(text);
-  const auto id = static_cast<uint32_t>(strings_.size() - 1);
-  index_.emplace(std::string_view(strings_.back()), id);
+  if (text.empty()) return Symbol{};
+  const uint32_t hash = HashText(text);
+  size_t at = Probe(text, hash);
+  if (slots_[at].id != kNoId) return Symbol{slots_[at].id};
+  const auto id = static_cast<uint32_t>(texts_.size());
+  texts_.push_back(Store(text));
+  slots_[at] = Slot{hash, id};
+  if (texts_.size() * 2 > slots_.size()) Grow();
   return Symbol{id};
 }
 
 Symbol SymbolTable::Find(std::string_view text) const {
-  auto it = index_.find(text);
-  return it == index_.end() ? Symbol{} : Symbol{it->second};
+  if (text.empty()) return Symbol{};
+  const Slot& slot = slots_[Probe(text, HashText(text))];
+  return slot.id == kNoId ? Symbol{} : Symbol{slot.id};
 }
 
 }  // namespace mdlc

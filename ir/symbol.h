@@ -3,10 +3,9 @@
 #pragma once
 
 #include <cstdint>
-#include <deque>
-#include <string>
+#include <memory>
 #include <string_view>
-#include <unordered_map>
+#include <vector>
 
 namespace mdlc {
 
@@ -20,10 +19,15 @@ struct SymbolHash {
   size_t operator()(Symbol s) const { return s.value; }
 };
 
-/// Copying a table copies its strings and builds the copy its own index, so
-/// a copy stays valid after the original is gone. Moving keeps the strings
-/// where they are (a deque's elements do not move with it); a moved-from
-/// table may only be assigned to or destroyed.
+/// The table keeps its texts in large blocks (each text followed by a NUL)
+/// and indexes them with a flat open-addressing table of (hash, id) pairs: a
+/// model interns a name or more per element, and a node-based map's
+/// allocation per name, its rehashing walks and its freeing, node by node,
+/// were a fifth of lowering a large model.
+///
+/// Copying a table copies its texts and builds the copy its own index, so a
+/// copy stays valid after the original is gone. Moving keeps the texts where
+/// they are; a moved-from table may only be assigned to or destroyed.
 class SymbolTable {
  public:
   SymbolTable();
@@ -34,18 +38,29 @@ class SymbolTable {
   Symbol Intern(std::string_view text);
   /// Returns the symbol if `text` was interned before; the empty symbol otherwise.
   Symbol Find(std::string_view text) const;
-  std::string_view Text(Symbol s) const { return strings_[s.value]; }
-  size_t size() const { return strings_.size(); }
+  /// The text, NUL-terminated in the table's storage.
+  std::string_view Text(Symbol s) const { return texts_[s.value]; }
+  size_t size() const { return texts_.size(); }
 
  private:
-  /// Rebuilds index_ from strings_ (after a copy: the views must point into
-  /// this table's own strings, never the original's).
-  void Reindex();
+  static constexpr uint32_t kNoId = UINT32_MAX;
+  struct Slot {
+    uint32_t hash = 0;   // low bits of the text's hash
+    uint32_t id = kNoId;
+  };
 
-  // deque: growing never moves existing strings, so the map's views stay valid
-  std::deque<std::string> strings_;
-  // views into strings_ (of this table only)
-  std::unordered_map<std::string_view, uint32_t> index_;
+  /// The slot holding `text`, or the empty slot where it would go.
+  size_t Probe(std::string_view text, uint32_t hash) const;
+  /// Copies `text` into the blocks, NUL-terminated.
+  std::string_view Store(std::string_view text);
+  /// Doubles the slots and re-places every id (hashes are kept in the slots).
+  void Grow();
+
+  std::vector<std::string_view> texts_;  // by id; views into blocks_
+  std::vector<std::unique_ptr<char[]>> blocks_;
+  char* block_next_ = nullptr;
+  size_t block_left_ = 0;
+  std::vector<Slot> slots_;  // a power of two long, at most half full
 };
 
 }  // namespace mdlc

@@ -3,8 +3,9 @@
 // libxml2 records only a line per node (and that line is where the start tag
 // ends). XmlDocument recovers exact positions itself: after parsing, one
 // linear scan of the buffer pairs each start tag, in document order, with its
-// element node, and each attribute with its name's offset. Offsets live in the
-// nodes' `_private` slots, so lookups are O(1) with no side tables.
+// element node, and each attribute with its name, counting lines on the way.
+// Line and column live in the nodes' `_private` slots, so lookups are O(1)
+// with no side tables.
 //
 // Security: documents are parsed with no network access, no DTD loading and
 // no entity substitution, and any document that declares entities is
@@ -103,7 +104,6 @@ class XmlDocument {
   XmlElement Root() const;
   FileId file() const { return file_; }
   const SourceManager& sources() const { return *sources_; }
-  Loc LocForOffset(size_t offset) const { return sources_->LocForOffset(file_, offset); }
 
   /// "prefix:name", stored for the document's lifetime (libxml2 keeps the
   /// two parts apart; views of the joined name must stay valid).
@@ -111,10 +111,10 @@ class XmlDocument {
 
  private:
   XmlDocument() = default;
-  /// Records each element's and attribute's offset, counting elements and
+  /// Records each element's and attribute's line and column, counting elements and
   /// nesting depth on the way; reports the first element over the elements
   /// or depth limit (sources.limits()) and returns false there.
-  bool AssignOffsets(DiagnosticEngine& diags);
+  bool AssignLocations(DiagnosticEngine& diags);
 
   // the DOM's memory (dom_arena.h); doc_ lives in it
   std::unique_ptr<DomArena> arena_;
