@@ -79,10 +79,12 @@ std::string_view ConstraintTypeName(ConstraintType type) {
   return "coupler";
 }
 
-std::vector<uint64_t> NameScopes(const Geometry& geometry) {
-  std::vector<uint64_t> scopes;
+NameScopeList NameScopes(const Geometry& geometry) {
+  NameScopeList scopes;
   for (uint8_t role : {kProximityRole, kIllustrationRole, kPerceptionRole}) {
-    if (geometry.roles & role) scopes.push_back(uint64_t{geometry.body.id.value} << 8 | role);
+    if (geometry.roles & role) {
+      scopes.items[scopes.count++] = uint64_t{geometry.body.id.value} << 8 | role;
+    }
   }
   return scopes;
 }

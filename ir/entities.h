@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <limits>
 #include <optional>
 #include <string>
@@ -267,9 +268,18 @@ struct Geometry {
   bool unnamed = false;  // named by the compiler
 };
 
+/// Name scopes, at most one per role: a list that never allocates (the
+/// unique-names pass asks for every entity's, twice).
+struct NameScopeList {
+  std::array<uint64_t, 3> items{};
+  size_t count = 0;
+  const uint64_t* begin() const { return items.data(); }
+  const uint64_t* end() const { return items.data() + count; }
+};
+
 /// The scopes a geometry's name must be unique in, as Drake's scene graph
 /// requires: its body, once per role it has (body and role in one key).
-std::vector<uint64_t> NameScopes(const Geometry& geometry);
+NameScopeList NameScopes(const Geometry& geometry);
 
 struct Actuator {
   Symbol name;

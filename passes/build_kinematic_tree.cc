@@ -9,7 +9,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <unordered_set>
+
+#include <absl/container/flat_hash_set.h>
 
 #include "passes/floating_joint.h"
 #include "passes/pass_registry.h"
@@ -35,7 +36,7 @@ class BuildKinematicTreePass : public Pass {
   }
   // every joint's (model, name): a free body's joint name is checked against
   // it, not against every joint (which made a world of N free models O(N^2))
-  std::unordered_set<uint64_t> joint_names_;
+  absl::flat_hash_set<uint64_t> joint_names_;
 };
 
 bool BuildKinematicTreePass::Run(PassContext& ctx) {

@@ -6,8 +6,9 @@
 #include <optional>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
+
+#include <absl/container/flat_hash_map.h>
 
 #include "ir/module.h"
 #include "ir/scoped_name.h"
@@ -32,7 +33,7 @@ class NameIndex {
   static uint64_t Key(ModelId model, Symbol name) {
     return (uint64_t{model.value} << 32) | name.value;
   }
-  std::unordered_map<uint64_t, IdT> map_;
+  absl::flat_hash_map<uint64_t, IdT> map_;
 };
 
 /// Model instances by full name, or by a name relative to another instance;

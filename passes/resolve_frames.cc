@@ -69,7 +69,7 @@ class ResolveFramesPass : public Pass {
   ir::Module& m() const { return ctx_->module; }
 
   PassContext* ctx_ = nullptr;
-  std::unordered_map<uint64_t, FrameNodeId> names_;  // (namespace, symbol)
+  absl::flat_hash_map<uint64_t, FrameNodeId> names_;  // (namespace, symbol)
   std::vector<uint32_t> depth_;                      // per scope
   std::vector<std::optional<FrameNodeId>> relative_to_, attached_to_, placement_;
   std::vector<std::optional<FrameNodeId>> joint_parents_;  // per JointFrameSpec

@@ -18,8 +18,9 @@
 #include <fmt/format.h>
 
 #include <optional>
-#include <unordered_set>
 #include <utility>
+
+#include <absl/container/flat_hash_set.h>
 
 #include "passes/pass_registry.h"
 
@@ -31,22 +32,21 @@ struct ScopedSymbol {
   uint64_t scope;
   uint32_t symbol;
   bool operator==(const ScopedSymbol&) const = default;
-};
-struct ScopedSymbolHash {
-  size_t operator()(const ScopedSymbol& s) const {
-    return std::hash<uint64_t>()(s.scope * 0x9e3779b97f4a7c15ULL ^ s.symbol);
+  template <typename H>
+  friend H AbslHashValue(H h, const ScopedSymbol& s) {
+    return H::combine(std::move(h), s.scope, s.symbol);
   }
 };
-using TakenNames = std::unordered_set<ScopedSymbol, ScopedSymbolHash>;
+using TakenNames = absl::flat_hash_set<ScopedSymbol>;
 
 // The scopes an entity's name must be unique in: its model instance; for a
 // geometry, its body once per role it has.
 template <typename Entity>
-std::vector<uint64_t> ScopesOf(const Entity& e) {
-  return {e.model.value};
+ir::NameScopeList ScopesOf(const Entity& e) {
+  return {{e.model.value}, 1};
 }
 template <>
-std::vector<uint64_t> ScopesOf(const ir::Geometry& g) {
+ir::NameScopeList ScopesOf(const ir::Geometry& g) {
   return ir::NameScopes(g);
 }
 

@@ -21,8 +21,9 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <vector>
+
+#include <absl/container/flat_hash_map.h>
 
 #include "frontend/frontend.h"
 #include "frontend/assets/package_map.h"
@@ -179,20 +180,19 @@ class SdfReader {
   struct ScopedKey {
     uint32_t scope, name;
     friend bool operator==(const ScopedKey&, const ScopedKey&) = default;
-  };
-  struct ScopedKeyHash {
-    size_t operator()(const ScopedKey& k) const {
-      return (size_t{k.scope} * 0x9E3779B97F4A7C15ull) ^ k.name;
+    template <typename H>
+    friend H AbslHashValue(H h, const ScopedKey& k) {
+      return H::combine(std::move(h), k.scope, k.name);
     }
   };
   struct Definition {
     Loc loc;
     ir::FrameNodeKind kind;
   };
-  std::unordered_map<ScopedKey, Definition, ScopedKeyHash> defined_;
+  absl::flat_hash_map<ScopedKey, Definition> defined_;
   // the link being read's geometry names per role, for uniqueness checks in
   // sdf_geometry.cc (cleared for each link: sdf_link.cc)
-  std::unordered_map<ScopedKey, Loc, ScopedKeyHash> geometry_names_;
+  absl::flat_hash_map<ScopedKey, Loc> geometry_names_;
   std::vector<std::shared_ptr<const xml::XmlDocument>> documents_;
   std::vector<std::unique_ptr<SdfFile>> files_;
   std::optional<ModelId> first_model_;

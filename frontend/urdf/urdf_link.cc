@@ -7,7 +7,7 @@
 
 namespace mdlc::frontend::urdf {
 
-void UrdfReader::CheckUniqueName(std::unordered_map<uint32_t, Loc>& seen, Symbol name, Loc loc,
+void UrdfReader::CheckUniqueName(absl::flat_hash_map<uint32_t, Loc>& seen, Symbol name, Loc loc,
                                  std::string_view kind) {
   auto [it, inserted] = seen.emplace(name.value, loc);
   if (!inserted) {

@@ -8,7 +8,8 @@
 #pragma once
 
 #include <string>
-#include <unordered_map>
+
+#include <absl/container/flat_hash_map.h>
 
 #include "frontend/frontend.h"
 #include "frontend/xml/attribute_reader.h"
@@ -84,16 +85,16 @@ class UrdfReader {
   /// ends with no role and must be dropped.
   bool FinishVisual(const xml::XmlElement& visual, ir::Geometry& geometry);
 
-  void CheckUniqueName(std::unordered_map<uint32_t, Loc>& seen, Symbol name, Loc loc,
+  void CheckUniqueName(absl::flat_hash_map<uint32_t, Loc>& seen, Symbol name, Loc loc,
                        std::string_view kind);
 
   FrontendContext& ctx_;
   const xml::XmlDocument& doc_;
   xml::AttributeReader attrs_;
   ModelId model_;
-  std::unordered_map<uint32_t, UrdfMaterial> materials_;  // by Symbol value
-  std::unordered_map<uint32_t, Loc> link_names_, joint_names_, frame_names_;
-  std::unordered_map<uint32_t, JointId> joint_ids_;  // by Symbol value
+  absl::flat_hash_map<uint32_t, UrdfMaterial> materials_;  // by Symbol value
+  absl::flat_hash_map<uint32_t, Loc> link_names_, joint_names_, frame_names_;
+  absl::flat_hash_map<uint32_t, JointId> joint_ids_;  // by Symbol value
   std::vector<xml::XmlElement> transmissions_;  // read after every joint
   std::vector<xml::XmlElement> late_elements_;  // drake: model-level elements, read last
   // geometry names already used, keyed by (body, role, name); the value is
@@ -102,13 +103,12 @@ class UrdfReader {
     uint32_t body, name;
     uint8_t role;
     friend bool operator==(const GeometryNameKey&, const GeometryNameKey&) = default;
-  };
-  struct GeometryNameHash {
-    size_t operator()(const GeometryNameKey& k) const {
-      return (size_t{k.body} * 0x9E3779B97F4A7C15ull) ^ (size_t{k.name} << 8) ^ k.role;
+    template <typename H>
+    friend H AbslHashValue(H h, const GeometryNameKey& k) {
+      return H::combine(std::move(h), k.body, k.name, k.role);
     }
   };
-  std::unordered_map<GeometryNameKey, int, GeometryNameHash> geometry_names_;
+  absl::flat_hash_map<GeometryNameKey, int> geometry_names_;
   ir::Module& module() { return ctx_.module; }
   DiagnosticEngine& diags() { return ctx_.diags; }
 };
