@@ -112,13 +112,6 @@ Attribute Element::Get(std::string_view name) const {
   return {};
 }
 
-std::vector<xml::XmlElement> Element::Layers() const {
-  std::vector<xml::XmlElement> out{e_};
-  const std::vector<xml::XmlElement>& chain = Chain();
-  out.insert(out.end(), chain.begin(), chain.end());
-  return out;
-}
-
 std::string MjcfReader::ClassFor(const xml::XmlElement& e, std::string_view childclass) {
   const xml::XmlAttribute cls = e.Attribute("class");
   if (cls.present()) {

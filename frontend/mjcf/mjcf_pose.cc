@@ -33,6 +33,22 @@ std::optional<std::vector<double>> MjcfReader::Numbers(const Element& e, std::st
   return NumbersOf(e, a, name, n);
 }
 
+bool MjcfReader::FixedNumbers(const Element& e, std::string_view name, double* out, size_t n) {
+  const Attribute a = e.Get(name);
+  return a.present() && FixedNumbersOf(e, a, name, out, n);
+}
+
+bool MjcfReader::FixedNumbersOf(const Element& e, const Attribute& a, std::string_view name,
+                                double* out, size_t n) {
+  if (const auto count = xml::ParseDoublesInto(a.value, out, n); count && *count == n) {
+    bool finite = true;
+    for (size_t i = 0; i < n; ++i) finite = finite && std::isfinite(out[i]);
+    if (finite) return true;
+  }
+  NumbersOf(e, a, name, n);  // says what is wrong
+  return false;
+}
+
 std::optional<std::vector<double>> MjcfReader::NumbersOf(const Element& e, const Attribute& a,
                                                          std::string_view name, size_t n) {
   auto values = xml::ParseDoubleList(a.value);
@@ -88,23 +104,27 @@ std::optional<std::vector<double>> MjcfReader::LayeredVector(const Element& e,
                                                              std::string_view name, size_t n,
                                                              std::vector<double> init) {
   init.resize(n, 0.0);
-  const std::vector<xml::XmlElement> layers = e.Layers();
-  for (auto it = layers.rbegin(); it != layers.rend(); ++it) {
-    const xml::XmlAttribute a = it->Attribute(name);
-    if (!a.present()) continue;
-    auto values = xml::ParseDoubleList(a.value);
-    if (!values || values->size() > n) {
-      diags().Report(DiagKind::BadValue, a.loc,
-                     values ? fmt::format("attribute '{}' of <{}> has too much data: at most {} "
-                                          "numbers",
-                                          name, it->Name(), n)
-                            : fmt::format("attribute '{}' of <{}>: '{}' is not a list of numbers",
-                                          name, it->Name(), a.value));
-      return std::nullopt;
-    }
-    // MuJoCo overwrites only the values given; the rest keep the class's
-    std::copy(values->begin(), values->end(), init.begin());
+  // MuJoCo overwrites only the values a layer gives; the rest keep the
+  // class's (ParseDoublesInto writes the first values only)
+  auto apply = [&](const xml::XmlElement& layer) {
+    const xml::XmlAttribute a = layer.Attribute(name);
+    if (!a.present()) return true;
+    const auto count = xml::ParseDoublesInto(a.value, init.data(), n);
+    if (count && *count <= n) return true;
+    diags().Report(DiagKind::BadValue, a.loc,
+                   count ? fmt::format("attribute '{}' of <{}> has too much data: at most {} "
+                                       "numbers",
+                                       name, layer.Name(), n)
+                         : fmt::format("attribute '{}' of <{}>: '{}' is not a list of numbers",
+                                       name, layer.Name(), a.value));
+    return false;
+  };
+  // from the root class to the element
+  const std::vector<xml::XmlElement>& classes = e.ClassLayers();
+  for (auto it = classes.rbegin(); it != classes.rend(); ++it) {
+    if (!apply(*it)) return std::nullopt;
   }
+  if (!apply(e.xml())) return std::nullopt;
   return init;
 }
 
@@ -132,7 +152,15 @@ std::optional<std::vector<int>> MjcfReader::Integers(const Element& e, std::stri
 }
 
 std::optional<int> MjcfReader::Integer(const Element& e, std::string_view name, int fallback) {
-  if (!e.Get(name).present()) return fallback;
+  const Attribute a = e.Get(name);
+  if (!a.present()) return fallback;
+  // the common case without a list; Integers says what is wrong otherwise
+  constexpr double kMin = std::numeric_limits<int>::min(), kMax = std::numeric_limits<int>::max();
+  double value = 0;
+  if (const auto count = xml::ParseDoublesInto(a.value, &value, 1);
+      count && *count == 1 && value == std::floor(value) && value >= kMin && value <= kMax) {
+    return static_cast<int>(value);
+  }
   const auto v = Integers(e, name, 1);
   if (!v) return std::nullopt;
   return (*v)[0];
@@ -142,9 +170,12 @@ std::optional<Transform> MjcfReader::ReadPose(const Element& e) {
   Transform X;
   bool ok = true;
   if (const Attribute pos_attribute = e.Get("pos"); pos_attribute.present()) {
-    auto pos = NumbersOf(e, pos_attribute, "pos", 3);
-    if (pos) X.p = Eigen::Vector3d((*pos)[0], (*pos)[1], (*pos)[2]);
-    ok &= pos.has_value();
+    Eigen::Vector3d pos;
+    if (FixedNumbersOf(e, pos_attribute, "pos", pos.data(), 3)) {
+      X.p = pos;
+    } else {
+      ok = false;
+    }
   }
 
   // more than one orientation written on the element itself: MJCF-010
@@ -169,9 +200,8 @@ std::optional<Transform> MjcfReader::ReadPose(const Element& e) {
   for (const xml::XmlAttribute& a : own) {
     if (a.name != "quat") alt_name = a.name;
   }
-  const std::vector<xml::XmlElement> layers = e.Layers();
-  for (size_t i = 1; i < layers.size() && alt_name.empty(); ++i) {
-    const xml::XmlElement& layer = layers[i];
+  for (const xml::XmlElement& layer : e.ClassLayers()) {
+    if (!alt_name.empty()) break;
     for (std::string_view alt : kAlternatives) {
       if (layer.Attribute(alt).present()) {
         alt_name = alt;
@@ -183,29 +213,24 @@ std::optional<Transform> MjcfReader::ReadPose(const Element& e) {
 
   RotationOrError R = Eigen::Matrix3d(Eigen::Matrix3d::Identity());
   std::string_view used = alt_name;
+  std::array<double, 6> v;  // the largest orientation: xyaxes
   if (alt_name == "axisangle") {
-    auto v = Numbers(e, "axisangle", 4);
-    if (!v) return std::nullopt;
-    R = RotationFromAxisAngle({(*v)[0], (*v)[1], (*v)[2]}, compiler.Angle((*v)[3]));
+    if (!FixedNumbers(e, "axisangle", v.data(), 4)) return std::nullopt;
+    R = RotationFromAxisAngle({v[0], v[1], v[2]}, compiler.Angle(v[3]));
   } else if (alt_name == "xyaxes") {
-    auto v = Numbers(e, "xyaxes", 6);
-    if (!v) return std::nullopt;
-    R = RotationFromXYAxes({(*v)[0], (*v)[1], (*v)[2]}, {(*v)[3], (*v)[4], (*v)[5]});
+    if (!FixedNumbers(e, "xyaxes", v.data(), 6)) return std::nullopt;
+    R = RotationFromXYAxes({v[0], v[1], v[2]}, {v[3], v[4], v[5]});
   } else if (alt_name == "zaxis") {
-    auto v = Numbers(e, "zaxis", 3);
-    if (!v) return std::nullopt;
-    R = RotationFromZAxis({(*v)[0], (*v)[1], (*v)[2]});
+    if (!FixedNumbers(e, "zaxis", v.data(), 3)) return std::nullopt;
+    R = RotationFromZAxis({v[0], v[1], v[2]});
   } else if (alt_name == "euler") {
-    auto v = Numbers(e, "euler", 3);
-    if (!v) return std::nullopt;
-    R = RotationFromEuler({compiler.Angle((*v)[0]), compiler.Angle((*v)[1]),
-                           compiler.Angle((*v)[2])},
+    if (!FixedNumbers(e, "euler", v.data(), 3)) return std::nullopt;
+    R = RotationFromEuler({compiler.Angle(v[0]), compiler.Angle(v[1]), compiler.Angle(v[2])},
                           compiler.eulerseq);
   } else if (const Attribute quat = e.Get("quat"); quat.present()) {
     used = "quat";
-    auto v = NumbersOf(e, quat, "quat", 4);
-    if (!v) return std::nullopt;
-    R = RotationFromQuat((*v)[0], (*v)[1], (*v)[2], (*v)[3]);
+    if (!FixedNumbersOf(e, quat, "quat", v.data(), 4)) return std::nullopt;
+    R = RotationFromQuat(v[0], v[1], v[2], v[3]);
   }
   if (auto* error = std::get_if<std::string>(&R)) {
     diags().Report(DiagKind::BadValue, e.Get(used).loc,

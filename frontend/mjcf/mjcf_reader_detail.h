@@ -119,8 +119,8 @@ class Element {
   Attribute Get(std::string_view name) const;
   /// True if the element itself writes the attribute (not a default).
   bool HasOwn(std::string_view name) const { return e_.Attribute(name).present(); }
-  /// The element, then its class chain's <kind> defaults, nearest first.
-  std::vector<xml::XmlElement> Layers() const;
+  /// The class chain's <kind> defaults (not the element), nearest first.
+  const std::vector<xml::XmlElement>& ClassLayers() const { return Chain(); }
   std::string_view kind() const { return kind_; }
 
  private:
@@ -253,6 +253,11 @@ struct MjcfReader {
   std::optional<int> Integer(const Element& e, std::string_view name, int fallback);
   /// Exactly `n` integers (own or default); nullopt when absent or bad.
   std::optional<std::vector<int>> Integers(const Element& e, std::string_view name, size_t n);
+  /// Exactly `n` numbers into `out`, without a list (poses and vectors of a
+  /// known size); false when absent or bad (bad is reported).
+  bool FixedNumbers(const Element& e, std::string_view name, double* out, size_t n);
+  bool FixedNumbersOf(const Element& e, const Attribute& a, std::string_view name, double* out,
+                      size_t n);
   /// Numbers() of an attribute already looked up (`a.present()`).
   std::optional<std::vector<double>> NumbersOf(const Element& e, const Attribute& a,
                                                std::string_view name, size_t n);

@@ -3,6 +3,7 @@
 // element and returns nullopt, so callers skip what they could not read.
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
@@ -22,11 +23,13 @@ std::optional<std::string> SdfReader::ChildText(const xml::XmlElement& parent,
     }
     return std::nullopt;
   }
-  return std::string(xml::Trim(child.Text()));
+  std::string storage;
+  return std::string(xml::Trim(child.TextView(storage)));
 }
 
 std::optional<double> SdfReader::TextDouble(const xml::XmlElement& e, xml::Finite finite) {
-  std::string text = e.Text();
+  std::string storage;
+  const std::string_view text = e.TextView(storage);
   auto v = xml::ParseDouble(text);
   if (!v) {
     // libsdformat reads the leading number and drops the rest; real models
@@ -70,7 +73,8 @@ std::optional<double> SdfReader::ChildDouble(const xml::XmlElement& parent, std:
 
 std::optional<std::vector<double>> SdfReader::TextDoubles(const xml::XmlElement& e, size_t count,
                                                           xml::Finite finite) {
-  std::string text = e.Text();
+  std::string storage;
+  const std::string_view text = e.TextView(storage);
   auto values = xml::ParseDoubleList(text);
   if (!values || values->size() != count) {
     diags().Report(DiagKind::BadValue, e.GetLoc(),
@@ -143,9 +147,11 @@ Transform SdfReader::ReadPoseValue(const xml::XmlElement& pose) {
   if (auto d = attrs_.Bool(pose, "degrees")) degrees = *d;
   std::string_view format = "euler_rpy";
   if (auto f = attrs_.String(pose, "rotation_format")) format = *f;
-  std::string text = pose.Text();
+  std::string storage;
+  const std::string_view text = pose.TextView(storage);
   if (xml::Trim(text).empty()) return Transform::Identity();
-  auto values = xml::ParseDoubleList(text);
+  std::array<double, 7> v;  // x y z and a quaternion, or x y z roll pitch yaw
+  const auto count = xml::ParseDoublesInto(text, v.data(), v.size());
   const size_t want = format == "quat_xyzw" ? 7 : 6;
   if (format != "euler_rpy" && format != "quat_xyzw") {
     diags().Report(DiagKind::BadValue, pose.Attribute("rotation_format").loc,
@@ -153,21 +159,20 @@ Transform SdfReader::ReadPoseValue(const xml::XmlElement& pose) {
                                format));
     return Transform::Identity();
   }
-  if (!values || values->size() != want) {
+  if (!count || *count != want) {
     diags().Report(DiagKind::BadValue, pose.GetLoc(),
                    fmt::format("<pose> must hold {} numbers ({}), found '{}'", want,
                                want == 7 ? "x y z qx qy qz qw" : "x y z roll pitch yaw",
                                xml::Trim(text)));
     return Transform::Identity();
   }
-  for (double v : *values) {
-    if (!std::isfinite(v)) {
+  for (size_t i = 0; i < want; ++i) {
+    if (!std::isfinite(v[i])) {
       diags().Report(DiagKind::NonFinite, pose.GetLoc(),
                      fmt::format("<pose> must hold finite numbers, found '{}'", xml::Trim(text)));
       return Transform::Identity();
     }
   }
-  const auto& v = *values;
   Transform X;
   X.p = Eigen::Vector3d(v[0], v[1], v[2]);
   if (want == 7) {

@@ -307,7 +307,11 @@ bool XmlDocument::AssignLocations(DiagnosticEngine& diags) {
                                             depth, limits.depth));
         return false;
       }
-      // the start tag: "<name attr='v' ...>"
+      // the start tag: "<name attr='v' ...>". libxml2 keeps the attributes
+      // in the order written, so the next unplaced one is almost always the
+      // one met next; the list is searched only when it is not (xmlns
+      // declarations are not attributes)
+      xmlAttr* next_unplaced = node->properties;
       size_t i = pos + 1;
       while (i < text.size() && IsNameChar(text[i])) ++i;
       while (i < text.size()) {
@@ -321,12 +325,17 @@ bool XmlDocument::AssignLocations(DiagnosticEngine& diags) {
         const char quote = text[i];
         const size_t close = text.find(quote, i + 1);
         i = close == std::string_view::npos ? text.size() : close + 1;
-        for (xmlAttr* a = node->properties; a; a = a->next) {
-          if (a->_private) continue;
-          if (QualifiedNameEquals(a->ns ? a->ns->prefix : nullptr, a->name, attr_name)) {
-            SetLineColumn(a->_private, lines.At(name_start));
-            break;
-          }
+        auto matches = [&](xmlAttr* a) {
+          return !a->_private &&
+                 QualifiedNameEquals(a->ns ? a->ns->prefix : nullptr, a->name, attr_name);
+        };
+        xmlAttr* found = next_unplaced && matches(next_unplaced) ? next_unplaced : nullptr;
+        for (xmlAttr* a = node->properties; !found && a; a = a->next) {
+          if (matches(a)) found = a;
+        }
+        if (found) {
+          SetLineColumn(found->_private, lines.At(name_start));
+          if (found == next_unplaced) next_unplaced = found->next;
         }
       }
       pos = i;
@@ -443,6 +452,17 @@ std::string XmlElement::Text() const {
     }
   }
   return out;
+}
+
+std::string_view XmlElement::TextView(std::string& storage) const {
+  xmlNode* only = node_->children;
+  if (!only) return {};
+  if (!only->next && (only->type == XML_TEXT_NODE || only->type == XML_CDATA_SECTION_NODE) &&
+      only->content) {
+    return reinterpret_cast<const char*>(only->content);
+  }
+  storage = Text();
+  return storage;
 }
 
 std::vector<std::string> XmlElement::Comments() const {

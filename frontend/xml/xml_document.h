@@ -68,6 +68,9 @@ class XmlElement {
   void ForEachAttributeName(F&& f) const;
   /// Concatenated text content of the element (entity references skipped).
   std::string Text() const;
+  /// Text() without a copy when the text is one node, as it almost always
+  /// is: a view of that node; else a view of `storage`, filled with Text().
+  std::string_view TextView(std::string& storage) const;
   /// The text of each comment directly inside the element, in order.
   std::vector<std::string> Comments() const;
 

@@ -35,6 +35,31 @@ TEST(ParseDoubleListTest, SplitsOnAnyWhitespace) {
   EXPECT_FALSE(ParseDoubleList("1 x 3"));
 }
 
+// Lists are read in one pass, each number where it stands; every token must
+// still read exactly as ParseDouble reads it alone (COMMON-007).
+TEST(ParseDoubleListTest, ReadsEachTokenAsParseDoubleDoes) {
+  for (const char* token : {"1.5", "+4", ".5", "-2e-3", "1e999", "-1e999", "1e-400", "inf",
+                            "-inf", "1.0kg", "1e", "0x1p3", "--1", "+", "1,2", "nan"}) {
+    const std::string list = std::string("0 ") + token + "\t7";
+    const auto alone = ParseDouble(token);
+    const auto listed = ParseDoubleList(list);
+    ASSERT_EQ(alone.has_value(), listed.has_value()) << token;
+    if (!alone) continue;
+    ASSERT_EQ(listed->size(), 3u) << token;
+    EXPECT_EQ((*listed)[0], 0.0);
+    EXPECT_EQ((*listed)[2], 7.0);
+    if (std::isnan(*alone)) {
+      EXPECT_TRUE(std::isnan((*listed)[1])) << token;
+    } else {
+      EXPECT_EQ((*listed)[1], *alone) << token;
+    }
+  }
+  double out[2];
+  EXPECT_EQ(ParseDoublesInto("1 2 3", out, 2), 3u);  // counts past the capacity
+  EXPECT_EQ(out[1], 2.0);
+  EXPECT_FALSE(ParseDoublesInto("1 +", out, 2));
+}
+
 class AttributeReaderTest : public ::testing::Test {
  protected:
   XmlElement Root(std::string text) {
