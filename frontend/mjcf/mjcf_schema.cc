@@ -8,6 +8,9 @@
 #include <unordered_map>
 #include <vector>
 
+#include <absl/container/flat_hash_map.h>
+#include <absl/container/flat_hash_set.h>
+
 #include "frontend/mjcf/mjcf_reader_detail.h"
 
 namespace mdlc::frontend::mjcf {
@@ -72,21 +75,30 @@ const std::unordered_map<std::string_view, List>& Schema() {
   return schema;
 }
 
+// The schema as hash sets, built once: every element checks each of its
+// attributes, and a geom's list alone is dozens of names long.
+using KnownSet = absl::flat_hash_set<std::string_view>;
+const absl::flat_hash_map<std::string_view, KnownSet>& KnownAttributes() {
+  static const auto known = [] {
+    absl::flat_hash_map<std::string_view, KnownSet> sets;
+    for (const auto& [kind, names] : Schema()) sets[kind] = KnownSet(names.begin(), names.end());
+    return sets;
+  }();
+  return known;
+}
+
 }  // namespace
 
 void MjcfReader::CheckAttributes(const xml::XmlElement& e, std::string_view schema_kind) {
-  const auto& schema = Schema();
+  const auto& schema = KnownAttributes();
   auto it = schema.find(schema_kind);
   if (it == schema.end()) return;
-  const List& known = it->second;
+  const KnownSet& known = it->second;
   // attribute locations: look each name up again (names are few)
   std::vector<std::string_view> unknown;
   e.ForEachAttributeName([&](std::string_view name) {
     if (name.find(':') != std::string_view::npos) return;  // other tools' namespaces
-    for (std::string_view k : known) {
-      if (k == name) return;
-    }
-    unknown.push_back(name);
+    if (!known.contains(name)) unknown.push_back(name);
   });
   for (std::string_view name : unknown) {
     diags().Report(DiagKind::UnknownAttribute, e.Attribute(name).loc,
