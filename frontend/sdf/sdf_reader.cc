@@ -3,6 +3,7 @@
 // (SDF-001, SDF-002, SDF-005, SDF-006, SDF-030, SDF-034, SDF-035).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "frontend/model_naming.h"
@@ -125,11 +126,11 @@ void SdfReader::CheckChildren(const xml::XmlElement& e,
                               std::initializer_list<std::string_view> unsupported) {
   for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
     std::string_view tag = child.Name();
-    bool is_known = false;
-    for (std::string_view k : known) is_known |= (k == tag);
-    if (is_known) continue;
-    bool is_unsupported = false;
-    for (std::string_view k : unsupported) is_unsupported |= (k == tag);
+    auto listed = [tag](std::initializer_list<std::string_view> names) {
+      return std::find(names.begin(), names.end(), tag) != names.end();
+    };
+    if (listed(known)) continue;
+    const bool is_unsupported = listed(unsupported);
     if (is_unsupported) {
       diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
                      fmt::format("tag '{}' found as a child of '{}' is currently unsupported and "

@@ -386,8 +386,11 @@ XmlElement XmlElement::FirstChild() const { return XmlElement(doc_, SkipToElemen
 XmlElement XmlElement::NextSibling() const { return XmlElement(doc_, SkipToElement(node_->next)); }
 
 XmlElement XmlElement::Child(std::string_view name) const {
-  for (XmlElement c = FirstChild(); c; c = c.NextSibling()) {
-    if (c.Name() == name) return c;
+  // compared in place: no name is measured or joined on the way
+  for (xmlNode* c = SkipToElement(node_->children); c; c = SkipToElement(c->next)) {
+    if (QualifiedNameEquals(c->ns ? c->ns->prefix : nullptr, c->name, name)) {
+      return XmlElement(doc_, c);
+    }
   }
   return {};
 }
