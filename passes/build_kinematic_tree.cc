@@ -97,8 +97,14 @@ bool BuildKinematicTreePass::Run(PassContext& ctx) {
   }
   if (ctx.diags.error_count() != errors_before) return false;
 
+  // one floating joint per body without an inboard joint: room for them all
+  // at once, rather than the joint table doubling (and moving every joint)
+  // as they come (a world of free bodies adds one per model)
+  size_t floating = 0;
+  for (size_t b = 1; b < inboard.size(); ++b) floating += inboard[b].valid() ? 0 : 1;
+  m.joints.reserve(m.joints.size() + floating);
   joint_names_.clear();
-  joint_names_.reserve(m.joints.size());
+  joint_names_.reserve(m.joints.size() + floating);
   for (const ir::Joint& j : m.joints) joint_names_.insert(Key(j.model, j.name));
   for (size_t b = 1; b < inboard.size(); ++b) {
     if (!inboard[b].valid()) AddFloatingJoint(ctx, BodyId(b));
