@@ -46,6 +46,19 @@ Eigen::Vector3d PrincipalMoments(const Eigen::Matrix3d& I) {
   return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I, Eigen::EigenvaluesOnly).eigenvalues();
 }
 
+/// True when the 3x3 symmetric `A` is positive definite by a margin that
+/// round-off cannot fake: its leading principal minors exceed 1e-10 times the
+/// matching power of `scale` (Sylvester's criterion), far above the error of
+/// computing them (a few machine epsilons times scale^k).
+bool ClearlyPositiveDefinite(const Eigen::Matrix3d& A, double scale) {
+  constexpr double kMargin = 1e-10;
+  const double m1 = A(0, 0);
+  const double m2 = A(0, 0) * A(1, 1) - A(0, 1) * A(0, 1);
+  const double m3 = A.determinant();
+  return m1 > kMargin * scale && m2 > kMargin * scale * scale &&
+         m3 > kMargin * scale * scale * scale;
+}
+
 /// Why a central inertia is not physical, or empty when it could be: the
 /// test of Drake's RotationalInertia::CouldBePhysicallyValid (which
 /// SpatialInertia::IsPhysicallyValid applies about the center of mass).
@@ -57,6 +70,15 @@ std::string Violation(const ir::Inertial& in) {
   Eigen::Matrix3d I;
   I << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
   if (!I.allFinite()) return "a moment or product of inertia is not finite";
+  // The common case without an eigen-decomposition: principal moments all
+  // positive (I positive definite) and each less than the sum of the other
+  // two (trace/2 - I positive definite: its eigenvalues are
+  // (p_i + p_j - p_k) / 2), clearly enough that the test below would pass.
+  const double trace = I.trace();
+  if (trace > 0 && ClearlyPositiveDefinite(I, trace) &&
+      ClearlyPositiveDefinite(0.5 * trace * Eigen::Matrix3d::Identity() - I, trace)) {
+    return {};
+  }
   const Eigen::Vector3d d = PrincipalMoments(I);
   const double eps =
       16 * std::numeric_limits<double>::epsilon() * std::max(1.0, 0.5 * std::abs(I.trace()));

@@ -7,6 +7,10 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <random>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 
 #include "ir/printer.h"
 #include "ir/verifier.h"
@@ -178,6 +182,67 @@ TEST(CheckInertiaTest, DrakesToleranceAtTheBoundary) {  // COMMON-040
     if (!kept) l.ExpectDiagnostic(DiagKind::NonPhysicalInertia, "using a solid sphere");
     EXPECT_EQ(!sphere, kept) << moments;
   }
+}
+
+// check-inertia skips the eigen-decomposition when an inertia is clearly
+// physical (Sylvester's criterion with a margin, on I and on trace/2 - I).
+// The verdict must be the eigen-decomposition's every time: random
+// rotations of principal moments inside, on and just across both bounds, at
+// scales from 1e-9 to 1e3, each compared with the rule of COMMON-040
+// applied to the moments Eigen finds for the same (printed) numbers.
+TEST(CheckInertiaTest, VerdictIsTheEigenDecompositionsEverywhere) {  // COMMON-040
+  std::mt19937_64 rng(40);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double tolerance = 16 * std::numeric_limits<double>::epsilon();
+  std::string urdf = "<robot name='r'>";
+  std::vector<bool> expect_kept;
+  for (int i = 0; i < 3000; ++i) {
+    const double scale = std::pow(10.0, -9 + 12 * unit(rng));
+    double p0 = scale * (0.05 + unit(rng)), p1 = scale * (0.05 + unit(rng));
+    double p2 = std::min(p0 + p1, scale * (0.05 + unit(rng)));
+    const double slack = tolerance * std::max(1.0, 0.5 * (p0 + p1 + p2));
+    switch (i % 6) {
+      case 0: break;                                          // inside
+      case 1: p2 = p0 + p1; break;                            // a flat disk
+      case 2: p2 = p0 + p1 + slack * (unit(rng) * 4 - 2); break;  // across the triangle bound
+      case 3: p0 = slack * (unit(rng) * 4 - 2); break;        // across zero
+      case 4: p0 = 0; p1 = p2; break;                         // a thin rod
+      case 5: p0 = p1 = p2 = scale * 1e-7; break;             // tiny and round
+    }
+    const Eigen::Matrix3d R =
+        Eigen::Quaterniond(Eigen::Vector4d::NullaryExpr([&](Eigen::Index) { return unit(rng) - 0.5; })
+                               .normalized())
+            .toRotationMatrix();
+    const Eigen::Matrix3d I = R * Eigen::Vector3d(p0, p1, p2).asDiagonal() * R.transpose();
+    // what the file says, exactly, and Eigen's moments for it
+    auto text = [](double v) { return fmt::format("{:.17g}", v); };
+    Eigen::Matrix3d read;
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) read(r, c) = std::strtod(text(I(std::min(r, c), std::max(r, c))).c_str(), nullptr);
+    }
+    const Eigen::Vector3d d =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(read, Eigen::EigenvaluesOnly).eigenvalues();
+    const double eps = tolerance * std::max(1.0, 0.5 * std::abs(read.trace()));
+    expect_kept.push_back(!(d[0] + eps < 0) && !(d[0] + d[1] + eps < d[2]));
+    urdf += fmt::format(
+        "<link name='l{}'><inertial><mass value='1'/><inertia ixx='{}' ixy='{}' ixz='{}' "
+        "iyy='{}' iyz='{}' izz='{}'/></inertial></link>",
+        i, text(I(0, 0)), text(I(0, 1)), text(I(0, 2)), text(I(1, 1)), text(I(1, 2)),
+        text(I(2, 2)));
+  }
+  urdf += "</robot>";
+  Lowered l;
+  ASSERT_TRUE(l.Read(urdf));
+  l.RunPasses();
+  size_t kept = 0;
+  for (size_t i = 0; i < expect_kept.size(); ++i) {
+    const bool replaced = l.HasDiagnostic(DiagKind::NonPhysicalInertia, fmt::format("'r::l{}' ", i));
+    EXPECT_EQ(!replaced, expect_kept[i]) << "link l" << i;
+    kept += expect_kept[i];
+  }
+  // both verdicts are well represented
+  EXPECT_GT(kept, 1500u);
+  EXPECT_GT(expect_kept.size() - kept, 200u);
 }
 
 TEST(PassManagerTest, StopsAtTheFirstPassThatFails) {
