@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <tuple>
 
+#include "frontend/entity_capacity.h"
 #include "frontend/mjcf/mjcf_reader_detail.h"
 #include "frontend/model_naming.h"
 
@@ -16,6 +17,7 @@ namespace {
 std::optional<ModelId> Read(FileId file, FrontendContext& ctx) {
   std::shared_ptr<const xml::XmlDocument> doc = xml::XmlDocument::Parse(file, ctx.sources, ctx.diags);
   if (!doc) return std::nullopt;
+  ReserveEntities(ctx.module, doc->element_count());
   const xml::XmlElement root = doc->Root();
   if (root.Name() != "mujoco") {
     ctx.diags.Report(DiagKind::WrongRoot, root.GetLoc(),

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "frontend/entity_capacity.h"
 #include "frontend/model_naming.h"
 #include "frontend/sdf/sdf_reader_detail.h"
 
@@ -152,6 +153,7 @@ std::optional<ModelId> SdfReader::ReadRootFile(FileId file_id) {
       xml::XmlDocument::Parse(file_id, ctx_.sources, ctx_.diags);
   if (!doc) return std::nullopt;
   documents_.push_back(doc);
+  ReserveEntities(module(), doc->element_count());
   auto file = std::make_unique<SdfFile>();
   file->doc = doc.get();
   file->path = std::string(ctx_.sources.Path(file_id));

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "frontend/drake_elements.h"
+#include "frontend/entity_capacity.h"
 #include "frontend/model_naming.h"
 #include "frontend/urdf/urdf_reader_detail.h"
 
@@ -14,6 +15,7 @@ std::optional<ModelId> ReadUrdf(FileId file, FrontendContext& ctx) {
   std::shared_ptr<const xml::XmlDocument> doc =
       xml::XmlDocument::Parse(file, ctx.sources, ctx.diags);
   if (!doc) return std::nullopt;
+  ReserveEntities(ctx.module, doc->element_count());
   urdf::UrdfReader reader(ctx, *doc);
   return reader.Read();
 }

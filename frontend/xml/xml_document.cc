@@ -358,6 +358,7 @@ bool XmlDocument::AssignLocations(DiagnosticEngine& diags) {
     }
     if (node) node = node->next;
   }
+  element_count_ = elements;
   return true;
 }
 

@@ -106,6 +106,8 @@ class XmlDocument {
 
   XmlElement Root() const;
   FileId file() const { return file_; }
+  /// How many elements the document holds.
+  uint64_t element_count() const { return element_count_; }
   const SourceManager& sources() const { return *sources_; }
 
   /// "prefix:name", stored for the document's lifetime (libxml2 keeps the
@@ -128,6 +130,7 @@ class XmlDocument {
       joined_names_;
   FileId file_;
   const SourceManager* sources_ = nullptr;
+  uint64_t element_count_ = 0;
 };
 
 template <typename F>

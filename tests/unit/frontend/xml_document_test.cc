@@ -99,5 +99,34 @@ TEST_F(XmlDocumentTest, TextContentConcatenatesTextAndCdata) {
   EXPECT_EQ(doc->Root().Text(), "abcd");
 }
 
+TEST_F(XmlDocumentTest, TextViewIsTheTextWithOrWithoutACopy) {
+  auto doc = Parse("<t><one> 1 2 </one><mixed>a<![CDATA[b]]>c</mixed><none/></t>");
+  ASSERT_TRUE(doc);
+  std::string storage;
+  EXPECT_EQ(doc->Root().Child("one").TextView(storage), " 1 2 ");
+  EXPECT_TRUE(storage.empty());  // one text node: viewed in place
+  EXPECT_EQ(doc->Root().Child("mixed").TextView(storage), "abc");
+  EXPECT_EQ(doc->Root().Child("none").TextView(storage), "");
+}
+
+// Attribute locations pair attributes in order, past namespace declarations
+// (which are not attributes); Child compares prefixed names in place; the
+// document counts its elements.
+TEST_F(XmlDocumentTest, PrefixedAttributesAndChildrenAfterDeclarations) {
+  auto doc = Parse(
+      "<r a='1' xmlns:drake='urn:x' drake:b='2' c='3'>"
+      "<drake:k n='p'/><k n='q'/></r>");
+  ASSERT_TRUE(doc);
+  XmlElement r = doc->Root();
+  EXPECT_EQ(r.Attribute("a").loc, (Loc{file_, 1, 4}));
+  EXPECT_EQ(r.Attribute("drake:b").loc, (Loc{file_, 1, 30}));
+  EXPECT_EQ(r.Attribute("c").loc, (Loc{file_, 1, 42}));
+  EXPECT_EQ(r.Child("drake:k").Attribute("n").value, "p");
+  EXPECT_EQ(r.Child("k").Attribute("n").value, "q");
+  EXPECT_FALSE(r.Child("drake"));
+  EXPECT_FALSE(r.Child("drake:"));
+  EXPECT_EQ(doc->element_count(), 3u);
+}
+
 }  // namespace
 }  // namespace mdlc::xml
