@@ -1,11 +1,18 @@
 // entity_capacity.cc - see entity_capacity.h.
 #include "frontend/entity_capacity.h"
 
+#include <algorithm>
+
 namespace mdlc::frontend {
 namespace {
+// Room for `more` entries past the current ones. The capacity at least
+// doubles when it must grow: a scene of many small files (Model Directives,
+// SDFormat includes) reserves once per file, and growing by exactly the
+// request each time would move every entity once per file.
 template <typename Table>
 void ReserveMore(Table& table, size_t more) {
-  table.reserve(table.size() + more);
+  const size_t wanted = table.size() + more;
+  if (wanted > table.capacity()) table.reserve(std::max(wanted, 2 * table.capacity()));
 }
 }  // namespace
 
