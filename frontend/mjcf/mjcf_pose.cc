@@ -78,15 +78,9 @@ std::optional<double> MjcfReader::Number(const Element& e, std::string_view name
                                          double fallback) {
   const Attribute a = e.Get(name);
   if (!a.present()) return fallback;
-  // the common case without a list; NumbersOf says what is wrong otherwise
   double value = 0;
-  if (const auto count = xml::ParseDoublesInto(a.value, &value, 1);
-      count && *count == 1 && std::isfinite(value)) {
-    return value;
-  }
-  auto v = NumbersOf(e, a, name, 1);
-  if (!v) return std::nullopt;
-  return (*v)[0];
+  if (!FixedNumbersOf(e, a, name, &value, 1)) return std::nullopt;
+  return value;
 }
 
 std::optional<bool> MjcfReader::Boolean(const Element& e, std::string_view name, bool fallback) {

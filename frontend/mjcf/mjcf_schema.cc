@@ -18,8 +18,9 @@ namespace {
 
 using List = std::vector<std::string_view>;
 
-const std::unordered_map<std::string_view, List>& Schema() {
-  static const std::unordered_map<std::string_view, List> schema = {
+// The schema as written: read once, into KnownAttributes' sets.
+std::unordered_map<std::string_view, List> SchemaLists() {
+  return {
       {"mujoco", {"model"}},
       {"compiler",
        {"autolimits", "boundmass", "boundinertia", "settotalmass", "balanceinertia", "strippath",
@@ -72,7 +73,6 @@ const std::unordered_map<std::string_view, List>& Schema() {
        {"name", "class", "texture", "texrepeat", "texuniform", "emission", "specular",
         "shininess", "reflectance", "metallic", "roughness", "rgba"}},
   };
-  return schema;
 }
 
 // The schema as hash sets, built once: every element checks each of its
@@ -81,7 +81,7 @@ using KnownSet = absl::flat_hash_set<std::string_view>;
 const absl::flat_hash_map<std::string_view, KnownSet>& KnownAttributes() {
   static const auto known = [] {
     absl::flat_hash_map<std::string_view, KnownSet> sets;
-    for (const auto& [kind, names] : Schema()) sets[kind] = KnownSet(names.begin(), names.end());
+    for (const auto& [kind, names] : SchemaLists()) sets[kind] = KnownSet(names.begin(), names.end());
     return sets;
   }();
   return known;
