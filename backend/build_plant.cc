@@ -201,9 +201,9 @@ class PlantBuilder {
 
   /// `values` padded to the joint's nv with `fill` when empty; an error when
   /// it has some other size.
-  std::vector<double> PerDof(const std::vector<double>& values, const PlantJoint& joint,
-                             double fill, std::string_view what, Loc loc) {
-    if (values.empty()) return std::vector<double>(joint.nv, fill);
+  ir::DofValues PerDof(const ir::DofValues& values, const PlantJoint& joint, double fill,
+                       std::string_view what, Loc loc) {
+    if (values.empty()) return ir::DofValues(static_cast<size_t>(joint.nv), fill);
     if (values.size() != static_cast<size_t>(joint.nv)) {
       diags_.Report(DiagKind::BadLimits, loc,
                     fmt::format("joint '{}' has {} {} but {} degrees of freedom",
@@ -213,7 +213,7 @@ class PlantBuilder {
     return values;
   }
 
-  std::vector<double> DefaultPositions(const ir::Joint& src, const PlantJoint& joint) {
+  ir::DofValues DefaultPositions(const ir::Joint& src, const PlantJoint& joint) {
     if (src.default_positions.size() == static_cast<size_t>(joint.nq)) {
       return src.default_positions;
     }
@@ -223,7 +223,7 @@ class PlantBuilder {
                                 plant_.ScopedName(joint), src.default_positions.size(), joint.nq));
       Fail();
     }
-    std::vector<double> q(joint.nq, 0.0);
+    ir::DofValues q(static_cast<size_t>(joint.nq), 0.0);
     if (src.type == ir::JointType::QuaternionFloating) q[0] = 1;  // identity [w x y z]
     return q;
   }

@@ -66,12 +66,12 @@ struct PlantJoint {
   BodyId parent, child;
   Transform X_PF, X_CM;
   Eigen::Vector3d axis = Eigen::Vector3d::UnitX();  // unit, in F
-  std::vector<double> lower, upper;
-  std::vector<double> velocity_lower, velocity_upper;
-  std::vector<double> acceleration_lower, acceleration_upper;
-  std::vector<double> effort;
-  std::vector<double> damping;
-  std::vector<double> default_positions;
+  ir::DofValues lower, upper;
+  ir::DofValues velocity_lower, velocity_upper;
+  ir::DofValues acceleration_lower, acceleration_upper;
+  ir::DofValues effort;
+  ir::DofValues damping;
+  ir::DofValues default_positions;
   double screw_thread_pitch = 0;  // meters per revolution
   ir::CurvilinearPath curvilinear_path;  // curvilinear joints: X_FM(q) = path pose at s = q
   bool unnamed = false;           // synthesized by the compiler

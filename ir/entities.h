@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "ir/curvilinear_path.h"
+#include "ir/dof_values.h"
 #include "ir/ids.h"
 #include "ir/location.h"
 #include "ir/symbol.h"
@@ -156,10 +157,10 @@ struct JointLimits {
   /// Unbounded limits for `nv` velocity coordinates.
   static JointLimits Unbounded(int nv);
 
-  std::vector<double> lower, upper;              // position
-  std::vector<double> velocity_lower, velocity_upper;
-  std::vector<double> acceleration_lower, acceleration_upper;
-  std::vector<double> effort;                    // symmetric, per dof
+  DofValues lower, upper;  // position
+  DofValues velocity_lower, velocity_upper;
+  DofValues acceleration_lower, acceleration_upper;
+  DofValues effort;  // symmetric, per dof
 };
 
 /// A joint connects frame F, fixed on the parent body (X_PF), with frame M,
@@ -175,8 +176,8 @@ struct Joint {
   Transform X_CM;
   Eigen::Vector3d axis = Eigen::Vector3d::UnitX();  // unit, in F (== in M)
   JointLimits limits;
-  std::vector<double> damping;            // per velocity coordinate
-  std::vector<double> default_positions;  // per position coordinate; empty = zero/identity
+  DofValues damping;            // per velocity coordinate
+  DofValues default_positions;  // per position coordinate; empty = zero/identity
   double screw_thread_pitch = 0;          // screw joints: meters per revolution
   CurvilinearPath curvilinear_path;       // curvilinear joints: the path M follows in F
   bool unnamed = false;                   // synthesized by the compiler

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <span>
 #include <type_traits>
 #include <variant>
 
@@ -34,7 +35,7 @@ class Printer {
     for (Eigen::Index i = 0; i < v.size(); ++i) out += (i ? " " : "") + Num(v[i]);
     return out + "]";
   }
-  std::string List(const std::vector<double>& v) const {
+  std::string List(std::span<const double> v) const {
     return Vec(Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size())));
   }
   std::string Pose(const Transform& X) const {

@@ -418,7 +418,7 @@ class MjcfWriter : FlatWriterBase {
   // joints hold none that mdlc reads
   void DropUnwritableLimits(JointId id, Loc loc) {
     const PlantJoint& j = plant_.joint(id);
-    auto bounded = [](const std::vector<double>& lo, const std::vector<double>& hi) {
+    auto bounded = [](const ir::DofValues& lo, const ir::DofValues& hi) {
       for (size_t k = 0; k < lo.size() && k < hi.size(); ++k) {
         if (lo[k] != -kInf || hi[k] != kInf) return true;
       }

@@ -27,6 +27,7 @@
 //   joint springs -> <spring_stiffness>/<spring_reference>; ball and distance
 //   constraints, tendons, bushings, spring-dampers, collision filters -> their
 //   drake: elements; cameras -> <sensor type="camera">.
+#include <span>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -37,7 +38,7 @@
 
 namespace mdlc::writers::sdf {
 
-bool AllEqual(const std::vector<double>& values) {
+bool AllEqual(std::span<const double> values) {
   return std::adjacent_find(values.begin(), values.end(), std::not_equal_to<>()) ==
          values.end();
 }

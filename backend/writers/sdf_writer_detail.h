@@ -14,6 +14,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,7 +29,7 @@ using backend::PlantBody;
 using backend::PlantJoint;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-bool AllEqual(const std::vector<double>& values);
+bool AllEqual(std::span<const double> values);
 /// "a::b::c" -> {"a", "b", "c"}; "" -> {}.
 std::vector<std::string> Split(const std::string& scoped);
 std::string Join(const std::vector<std::string>& parts, size_t from = 0);

@@ -22,6 +22,7 @@
 // A link, joint, frame or actuator whose written name does not give back its
 // scoped name holds a comment naming its instance and name, which mdlc's
 // reader restores (ir/original_names.h).
+#include <span>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -53,7 +54,7 @@ double FiniteLimit(double value) {
   return value;
 }
 
-bool AllEqual(const std::vector<double>& values) {
+bool AllEqual(std::span<const double> values) {
   return std::adjacent_find(values.begin(), values.end(), std::not_equal_to<>()) ==
          values.end();
 }

@@ -47,7 +47,7 @@ void WriterBase::ReportAsymmetricLimits(const backend::PlantJoint& j, Loc loc,
 
 void WriterBase::ReportUnwrittenDefaultPositions(const backend::PlantJoint& j, Loc loc,
                                                  std::string_view why) const {
-  const std::vector<double>& q = j.default_positions;
+  const ir::DofValues& q = j.default_positions;
   if (std::all_of(q.begin(), q.end(), [](double v) { return v == 0; })) return;
   diags_.Report(DiagKind::Lossy, loc,
                 fmt::format("the default position of joint '{}' ({}) is not written ({})", j.name,

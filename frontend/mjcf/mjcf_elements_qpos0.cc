@@ -17,7 +17,7 @@ namespace {
 
 // X_FM of a joint at its default positions (empty: zero / identity)
 Transform JointMotionAtDefault(const ir::Joint& j) {
-  const std::vector<double>& q = j.default_positions;
+  const ir::DofValues& q = j.default_positions;
   auto at = [&q](size_t i) { return i < q.size() ? q[i] : 0.0; };
   switch (j.type) {
     case ir::JointType::Revolute:

@@ -17,6 +17,7 @@
 // precision, so the page's forward kinematics reproduce the plant's.
 #include "view.h"
 
+#include <span>
 #include <fmt/format.h>
 
 #include <bit>
@@ -90,7 +91,7 @@ void Pose(JsonWriter& w, const Transform& X) {
   w.EndObject();
 }
 
-void Numbers(JsonWriter& w, const std::vector<double>& values) {
+void Numbers(JsonWriter& w, std::span<const double> values) {
   w.BeginArray();
   for (double x : values) w.Number(x);
   w.EndArray();

@@ -2,6 +2,7 @@
 // binds its classes.
 #include "py_model.h"
 
+#include <span>
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
@@ -26,7 +27,7 @@ Pose MakePose(const Transform& X) {
 
 namespace {
 
-Eigen::VectorXd ToVector(const std::vector<double>& v) {
+Eigen::VectorXd ToVector(std::span<const double> v) {
   return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
 }
 

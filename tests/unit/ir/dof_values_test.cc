@@ -1,0 +1,87 @@
+// Tests for DofValues, the inline per-coordinate lists of a joint: every
+// joint type's coordinates fit, lists behave as the std::vector<double> they
+// replaced, and asking for more than fits is refused rather than truncated.
+#include "ir/dof_values.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <span>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "ir/entities.h"
+
+namespace mdlc::ir {
+namespace {
+
+TEST(DofValues, EveryJointTypeFits) {
+  // the capacity is the invariant the type rests on: it must hold every
+  // joint kind's positions and velocities
+  size_t most = 0;
+  for (int t = 0; t <= static_cast<int>(JointType::RpyFloating); ++t) {
+    const auto type = static_cast<JointType>(t);
+    most = std::max<size_t>(most, static_cast<size_t>(JointPositionCount(type)));
+    most = std::max<size_t>(most, static_cast<size_t>(JointVelocityCount(type)));
+  }
+  EXPECT_EQ(most, DofValues::kCapacity);
+  EXPECT_EQ(static_cast<size_t>(JointPositionCount(JointType::QuaternionFloating)), 7u);
+}
+
+TEST(DofValues, BehavesAsTheVectorItReplaced) {
+  DofValues v;
+  EXPECT_TRUE(v.empty());
+  v.assign(3, -1.5);
+  EXPECT_EQ(v, (std::vector<double>{-1.5, -1.5, -1.5}));
+  v.push_back(2);
+  EXPECT_EQ(v.size(), 4u);
+  EXPECT_EQ(v.back(), 2);
+  v.resize(2);
+  v.resize(3, 9);  // the slot left by the shrink takes the new value, not its old one
+  EXPECT_EQ(v, (std::vector<double>{-1.5, -1.5, 9}));
+  EXPECT_EQ(v.ToVector(), (std::vector<double>{-1.5, -1.5, 9}));
+
+  const DofValues quaternion_pose = {1, 0, 0, 0, 0.1, 0.2, 0.3};
+  std::span<const double> view = quaternion_pose;
+  ASSERT_EQ(view.size(), 7u);
+  EXPECT_EQ(view[4], 0.1);
+
+  const DofValues from_vector = std::vector<double>{4, 5};
+  EXPECT_EQ(from_vector, (DofValues{4, 5}));
+  EXPECT_FALSE(from_vector == (DofValues{4, 5, 6}));
+  EXPECT_FALSE(from_vector == (std::vector<double>{4}));
+
+  std::ostringstream printed;
+  printed << from_vector;
+  EXPECT_EQ(printed.str(), "[4, 5]");
+}
+
+TEST(DofValues, EqualityIgnoresUnusedSlots) {
+  DofValues a = {1, 2, 3};
+  a.resize(1);
+  const DofValues b = {1};
+  EXPECT_EQ(a, b);
+}
+
+TEST(DofValues, RefusesMoreThanAJointHas) {
+  DofValues v(7, 0.0);
+  EXPECT_THROW(v.push_back(1), std::length_error);
+  EXPECT_EQ(v.size(), 7u);
+  EXPECT_THROW(v.assign(8, 0.0), std::length_error);
+  EXPECT_THROW(v.resize(8), std::length_error);
+  EXPECT_THROW(DofValues(std::vector<double>(8, 0.0)), std::length_error);
+  EXPECT_EQ(v.size(), 7u);  // a refused request leaves the list as it was
+}
+
+TEST(DofValues, UnboundedLimitsHaveOneEntryPerVelocity) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const JointLimits six = JointLimits::Unbounded(6);
+  EXPECT_EQ(six.lower, DofValues(6, -kInf));
+  EXPECT_EQ(six.upper, DofValues(6, kInf));
+  EXPECT_EQ(six.effort, DofValues(6, kInf));
+  EXPECT_TRUE(JointLimits::Unbounded(0).velocity_lower.empty());
+}
+
+}  // namespace
+}  // namespace mdlc::ir
