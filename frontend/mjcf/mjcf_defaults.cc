@@ -98,14 +98,24 @@ Attribute DefaultClasses::Lookup(std::string_view class_name, std::string_view k
 }
 
 const std::vector<xml::XmlElement>& Element::Chain() const {
-  if (!chain_) chain_ = defaults_->Chain(class_, kind_);
+  if (!chain_) {
+    chain_ = defaults_->Chain(class_, kind_);
+    for (const xml::XmlElement& d : *chain_) chain_names_ |= d.AttributeNameBits();
+  }
   return *chain_;
 }
 
+Attribute Element::Own(std::string_view name) const {
+  if (!own_names_) own_names_ = e_.AttributeNameBits();
+  if (!(*own_names_ & xml::XmlElement::NameBit(name))) return {};
+  return e_.Attribute(name);
+}
+
 Attribute Element::Get(std::string_view name) const {
-  xml::XmlAttribute own = e_.Attribute(name);
-  if (own.present()) return own;
-  for (const xml::XmlElement& d : Chain()) {
+  if (xml::XmlAttribute own = Own(name); own.present()) return own;
+  const std::vector<xml::XmlElement>& chain = Chain();
+  if (!(chain_names_ & xml::XmlElement::NameBit(name))) return {};
+  for (const xml::XmlElement& d : chain) {
     xml::XmlAttribute inherited = d.Attribute(name);
     if (inherited.present()) return inherited;
   }

@@ -176,7 +176,7 @@ std::optional<Transform> MjcfReader::ReadPose(const Element& e) {
   std::array<xml::XmlAttribute, 5> own_storage;  // no allocation per pose
   size_t own_count = 0;
   for (std::string_view name : {"quat", "axisangle", "xyaxes", "zaxis", "euler"}) {
-    if (xml::XmlAttribute a = e.xml().Attribute(name); a.present()) own_storage[own_count++] = a;
+    if (xml::XmlAttribute a = e.Own(name); a.present()) own_storage[own_count++] = a;
   }
   const std::span<const xml::XmlAttribute> own(own_storage.data(), own_count);
   if (own.size() > 1) {

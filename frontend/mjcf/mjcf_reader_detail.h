@@ -117,8 +117,10 @@ class Element {
   Loc loc() const { return e_.GetLoc(); }
   std::string_view class_name() const { return class_; }
   Attribute Get(std::string_view name) const;
+  /// The attribute as the element itself writes it (not a default).
+  Attribute Own(std::string_view name) const;
   /// True if the element itself writes the attribute (not a default).
-  bool HasOwn(std::string_view name) const { return e_.Attribute(name).present(); }
+  bool HasOwn(std::string_view name) const { return Own(name).present(); }
   /// The class chain's <kind> defaults (not the element), nearest first.
   const std::vector<xml::XmlElement>& ClassLayers() const { return Chain(); }
   std::string_view kind() const { return kind_; }
@@ -134,6 +136,11 @@ class Element {
   std::string class_;
   const DefaultClasses* defaults_;
   mutable std::optional<std::vector<xml::XmlElement>> chain_;
+  // XmlElement::AttributeNameBits of the element and of its whole chain,
+  // filled on the first Get: most names asked for are absent everywhere,
+  // and a clear bit answers that without walking any attribute list
+  mutable std::optional<uint64_t> own_names_;
+  mutable uint64_t chain_names_ = 0;
 };
 
 // ---------------------------------------------------------------------------

@@ -433,6 +433,19 @@ XmlAttribute XmlElement::Attribute(std::string_view name) const {
   return {};
 }
 
+uint64_t XmlElement::AttributeNameBits() const {
+  uint64_t bits = 0;
+  for (xmlAttr* a = node_->properties; a; a = a->next) {
+    const xmlChar* prefix = a->ns ? a->ns->prefix : nullptr;
+    if (prefix) {
+      bits |= NameBitOf(static_cast<char>(prefix[0]), prefix[1] ? static_cast<char>(prefix[1]) : ':');
+    } else {
+      bits |= NameBitOf(static_cast<char>(a->name[0]), static_cast<char>(a->name[0] ? a->name[1] : 0));
+    }
+  }
+  return bits;
+}
+
 std::string_view XmlElement::AttributeName(_xmlAttr* a) const {
   if (!(a->ns && a->ns->prefix)) return reinterpret_cast<const char*>(a->name);
   return doc_->JoinedName(a->ns->prefix, a->name);

@@ -14,6 +14,7 @@
 // nesting level.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -63,6 +64,15 @@ class XmlElement {
 
   /// The attribute `name`; `present()` is false when absent.
   XmlAttribute Attribute(std::string_view name) const;
+  /// A summary of which attribute names the element has, for callers that
+  /// ask for many names most elements lack (MJCF reads a dozen per element):
+  /// the bit NameBit(n) is set for every attribute n present, so a clear bit
+  /// proves `n` absent without walking the attribute list.
+  uint64_t AttributeNameBits() const;
+  static uint64_t NameBit(std::string_view qualified_name) {
+    return NameBitOf(qualified_name.empty() ? '\0' : qualified_name[0],
+                     qualified_name.size() > 1 ? qualified_name[1] : '\0');
+  }
   /// Every attribute's qualified name in document order, calling f(string_view).
   template <typename F>
   void ForEachAttributeName(F&& f) const;
@@ -82,6 +92,12 @@ class XmlElement {
   std::string_view AttributeName(_xmlAttr* attr) const;
   _xmlAttr* FirstAttribute() const;
   static _xmlAttr* NextAttribute(_xmlAttr* attr);
+  // the first two characters pick the bit: cheap, and they differ between
+  // most names one element kind allows
+  static uint64_t NameBitOf(char first, char second) {
+    const unsigned h = static_cast<unsigned char>(first) * 7u + static_cast<unsigned char>(second);
+    return uint64_t{1} << (h & 63u);
+  }
 
   const XmlDocument* doc_ = nullptr;
   _xmlNode* node_ = nullptr;

@@ -61,6 +61,33 @@ TEST_F(XmlDocumentTest, PrefixedNamesWorkWithOrWithoutNamespaceDeclaration) {
   EXPECT_EQ(diags_.error_count(), 0u);
 }
 
+// The name bits may give false alarms (two names on one bit) but never
+// miss: every attribute present has its bit set, prefixed, one-character
+// and namespaced names included, so a clear bit safely means absent.
+TEST_F(XmlDocumentTest, AttributeNameBitsNeverMissAPresentAttribute) {
+  auto doc = Parse(
+      "<r xmlns:d='http://drake.mit.edu' xmlns:q='urn:q'>"
+      "<e a='1' ab='2' d:x='3' q:y='4' pos='5' quat='6' contype='7' conaffinity='8'/>"
+      "<f/></r>");
+  ASSERT_TRUE(doc);
+  const XmlElement e = doc->Root().FirstChild();
+  const uint64_t bits = e.AttributeNameBits();
+  const char* present[] = {"a", "ab", "d:x", "q:y", "pos", "quat", "contype", "conaffinity"};
+  for (const char* name : present) {
+    ASSERT_TRUE(e.Attribute(name).present()) << name;
+    EXPECT_NE(bits & XmlElement::NameBit(name), 0u) << name;
+  }
+  // a name whose bit is clear is absent, whatever the other names are
+  const char* probes[] = {"b", "zz", "size", "rgba", "d:y", "euler", "xyaxes", "name", "class"};
+  int rejected = 0;
+  for (const char* name : probes) {
+    EXPECT_FALSE(e.Attribute(name).present()) << name;
+    if (!(bits & XmlElement::NameBit(name))) ++rejected;
+  }
+  EXPECT_GE(rejected, 5) << "the bits should rule out most absent names";
+  EXPECT_EQ(e.NextSibling().AttributeNameBits(), 0u);
+}
+
 TEST_F(XmlDocumentTest, MalformedXmlReportsLineAndColumn) {  // COMMON-004
   EXPECT_FALSE(Parse("<robot name='r'>\n  <link>\n</robot>\n"));
   ASSERT_GE(diags_.diagnostics().size(), 1u);
