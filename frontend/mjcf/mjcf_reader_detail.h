@@ -31,7 +31,10 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
 #include <vector>
+
+#include <absl/container/flat_hash_map.h>
 
 #include "frontend/frontend.h"
 #include "frontend/xml/attribute_reader.h"
@@ -237,6 +240,11 @@ struct MjcfReader {
   /// Warns about attributes of `e` outside MuJoCo's schema for it (a
   /// misspelling, most likely; MuJoCo itself rejects them).
   void CheckAttributes(const xml::XmlElement& e, std::string_view schema_kind);
+  // CheckAttributes' verdicts by (schema set, attribute name pointer):
+  // libxml2 interns names, so each distinct name is hashed as a string once
+  // per kind, not once per element (the reader holds its documents, so no
+  // pointer is reused for another name while the table lives)
+  absl::flat_hash_map<std::pair<const void*, const void*>, bool> known_attribute_names;
   std::set<std::string> warned;  // "element\nname" already warned about
 
   // --- mjcf_pose.cc ---

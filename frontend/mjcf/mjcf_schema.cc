@@ -97,8 +97,12 @@ void MjcfReader::CheckAttributes(const xml::XmlElement& e, std::string_view sche
   // attribute locations: look each name up again (names are few)
   std::vector<std::string_view> unknown;
   e.ForEachAttributeName([&](std::string_view name) {
-    if (name.find(':') != std::string_view::npos) return;  // other tools' namespaces
-    if (!known.contains(name)) unknown.push_back(name);
+    auto [verdict, first_time] = known_attribute_names.try_emplace({&known, name.data()});
+    if (first_time) {
+      // names in other tools' namespaces are theirs to check
+      verdict->second = name.find(':') != std::string_view::npos || known.contains(name);
+    }
+    if (!verdict->second) unknown.push_back(name);
   });
   for (std::string_view name : unknown) {
     diags().Report(DiagKind::UnknownAttribute, e.Attribute(name).loc,
