@@ -27,11 +27,11 @@
 //   joint springs -> <spring_stiffness>/<spring_reference>; ball and distance
 //   constraints, tendons, bushings, spring-dampers, collision filters -> their
 //   drake: elements; cameras -> <sensor type="camera">.
-#include <span>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <limits>
+#include <span>
 
 #include "backend/kinematics.h"
 #include "backend/writers/sdf_writer_detail.h"

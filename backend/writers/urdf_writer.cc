@@ -22,7 +22,6 @@
 // A link, joint, frame or actuator whose written name does not give back its
 // scoped name holds a comment naming its instance and name, which mdlc's
 // reader restores (ir/original_names.h).
-#include <span>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -30,6 +29,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <span>
 #include <variant>
 
 #include "backend/writers/drake_out.h"

@@ -17,13 +17,13 @@
 // precision, so the page's forward kinematics reproduce the plant's.
 #include "view.h"
 
-#include <span>
 #include <fmt/format.h>
 
 #include <bit>
 #include <cstdint>
 #include <cstring>
 #include <map>
+#include <span>
 #include <string_view>
 
 #include "backend/json_writer.h"

@@ -2,10 +2,10 @@
 // binds its classes.
 #include "py_model.h"
 
-#include <span>
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <span>
 #include <variant>
 
 #include "ir/overloaded.h"
