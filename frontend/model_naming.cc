@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <utility>
+
 namespace mdlc::frontend {
 
 std::optional<ModelId> FindModelInstance(const ir::Module& module, std::string_view name) {
@@ -32,7 +34,11 @@ std::optional<ModelId> AddModelInstance(std::string_view requested, Loc loc,
       }
     }
   }
-  return ctx.module.Add(ir::ModelInstance{ctx.module.Intern(name), loc, format, {}});
+  ir::ModelInstance instance;
+  instance.local_name = ctx.module.Intern(name);
+  instance.loc = loc;
+  instance.format = format;
+  return ctx.module.Add(std::move(instance));  // top level: no parent
 }
 
 }  // namespace mdlc::frontend

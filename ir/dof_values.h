@@ -39,7 +39,6 @@ class DofValues {
 
   size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
-  static constexpr size_t capacity() { return kCapacity; }
 
   double& operator[](size_t i) { return values_[i]; }
   double operator[](size_t i) const { return values_[i]; }
@@ -49,10 +48,7 @@ class DofValues {
   double* end() { return values_.data() + size_; }
   const double* begin() const { return values_.data(); }
   const double* end() const { return values_.data() + size_; }
-  double front() const { return values_[0]; }
-  double back() const { return values_[size_ - 1]; }
 
-  void clear() { size_ = 0; }
   void assign(size_t count, double value) {
     CheckFits(count);
     std::fill_n(values_.begin(), count, value);
@@ -64,15 +60,6 @@ class DofValues {
     CheckFits(count);
     std::copy(first, last, values_.begin());
     size_ = static_cast<uint8_t>(count);
-  }
-  void resize(size_t count, double value = 0) {
-    CheckFits(count);
-    if (count > size_) std::fill(values_.begin() + size_, values_.begin() + count, value);
-    size_ = static_cast<uint8_t>(count);
-  }
-  void push_back(double value) {
-    CheckFits(size_ + size_t{1});
-    values_[size_++] = value;
   }
 
   std::vector<double> ToVector() const { return {begin(), end()}; }

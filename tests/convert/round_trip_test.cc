@@ -308,7 +308,9 @@ class Comparison {
     };
     size_t n_dropped = 0;
     for (const auto& g : sa.geometries) n_dropped += to_.drops(g) ? 1 : 0;
-    if (n_dropped > 0) EXPECT_GT(CountLossy(a_, to_.drop_warning), 0u);
+    if (n_dropped > 0) {
+      EXPECT_GT(CountLossy(a_, to_.drop_warning), 0u);
+    }
     EXPECT_EQ(count(sb, ir::kProximityRole, DropsNothing),
               count(sa, ir::kProximityRole, to_.drops));
     if (to_.exact_roles) {
