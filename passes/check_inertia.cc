@@ -81,7 +81,7 @@ std::string Violation(const ir::Inertial& in) {
   }
   const Eigen::Vector3d d = PrincipalMoments(I);
   const double eps =
-      16 * std::numeric_limits<double>::epsilon() * std::max(1.0, 0.5 * std::abs(I.trace()));
+      16 * std::numeric_limits<double>::epsilon() * std::max(1.0, 0.5 * std::abs(trace));
   if (d[0] + eps < 0) {
     return fmt::format("principal moment {:.17g} is negative (principal moments {:.17g}, {:.17g}, "
                        "{:.17g})",

@@ -131,8 +131,7 @@ void SdfReader::CheckChildren(const xml::XmlElement& e,
       return std::find(names.begin(), names.end(), tag) != names.end();
     };
     if (listed(known)) continue;
-    const bool is_unsupported = listed(unsupported);
-    if (is_unsupported) {
+    if (listed(unsupported)) {
       diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
                      fmt::format("tag '{}' found as a child of '{}' is currently unsupported and "
                                  "will be ignored",
