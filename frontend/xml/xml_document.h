@@ -1,11 +1,9 @@
-// xml_document.h - a libxml2 DOM with exact source locations.
+// xml_document.h - an XML document as mdlc reads it, with exact source locations.
 //
-// libxml2 records only a line per node (and that line is where the start tag
-// ends). XmlDocument recovers exact positions itself: after parsing, one
-// linear scan of the buffer pairs each start tag, in document order, with its
-// element node, and each attribute with its name, counting lines on the way.
-// Line and column live in the nodes' `_private` slots, so lookups are O(1)
-// with no side tables.
+// libxml2 parses and checks the text; mdlc keeps its own compact tree of
+// what the readers use (xml_node.h, built by tree_builder.h), with every
+// element and attribute placed at its line and column in the text
+// (start_tags.h). Readers see it through XmlElement views.
 //
 // Security: documents are parsed with no network access, no DTD loading and
 // no entity substitution, and any document that declares entities is
@@ -16,25 +14,21 @@
 
 #include <cstdint>
 #include <memory>
-#include <optional>
+#include <memory_resource>
 #include <string>
 #include <string_view>
-#include <unordered_map>
-#include <utility>
 #include <vector>
 
+#include "frontend/xml/xml_node.h"
 #include "ir/diagnostics.h"
 #include "ir/location.h"
 #include "ir/source_manager.h"
 
-struct _xmlDoc;
-struct _xmlNode;
-struct _xmlAttr;
+struct _xmlDict;
 
 namespace mdlc::xml {
 
 class XmlDocument;
-class DomArena;
 
 /// A view of one attribute: its value and location.
 struct XmlAttribute {
@@ -48,19 +42,19 @@ struct XmlAttribute {
 class XmlElement {
  public:
   XmlElement() = default;
-  XmlElement(const XmlDocument* doc, _xmlNode* node) : doc_(doc), node_(node) {}
+  XmlElement(const XmlDocument* doc, const detail::ElementNode* node) : doc_(doc), node_(node) {}
 
   explicit operator bool() const { return node_ != nullptr; }
   /// Qualified name as written: "link", "drake:joint".
-  std::string_view Name() const;
+  std::string_view Name() const { return node_->name; }
   Loc GetLoc() const;
 
   /// First child element, next sibling element (null element at the end).
-  XmlElement FirstChild() const;
-  XmlElement NextSibling() const;
+  XmlElement FirstChild() const { return XmlElement(doc_, node_->first_child); }
+  XmlElement NextSibling() const { return XmlElement(doc_, node_->next_sibling); }
   /// First child element named `name`.
   XmlElement Child(std::string_view name) const;
-  XmlElement Parent() const;
+  XmlElement Parent() const { return XmlElement(doc_, node_->parent); }
 
   /// The attribute `name`; `present()` is false when absent.
   XmlAttribute Attribute(std::string_view name) const;
@@ -68,7 +62,7 @@ class XmlElement {
   /// ask for many names most elements lack (MJCF reads a dozen per element):
   /// the bit NameBit(n) is set for every attribute n present, so a clear bit
   /// proves `n` absent without walking the attribute list.
-  uint64_t AttributeNameBits() const;
+  uint64_t AttributeNameBits() const { return node_->attribute_name_bits; }
   static uint64_t NameBit(std::string_view qualified_name) {
     return NameBitOf(qualified_name.empty() ? '\0' : qualified_name[0],
                      qualified_name.size() > 1 ? qualified_name[1] : '\0');
@@ -84,14 +78,10 @@ class XmlElement {
   /// The text of each comment directly inside the element, in order.
   std::vector<std::string> Comments() const;
 
-  _xmlNode* raw() const { return node_; }
+  /// The element's identity, for comparisons and as a map key.
+  const void* raw() const { return node_; }
 
  private:
-  friend class XmlDocument;
-  XmlAttribute MakeAttribute(_xmlAttr* attr) const;
-  std::string_view AttributeName(_xmlAttr* attr) const;
-  _xmlAttr* FirstAttribute() const;
-  static _xmlAttr* NextAttribute(_xmlAttr* attr);
   // the first two characters pick the bit: cheap, and they differ between
   // most names one element kind allows
   static uint64_t NameBitOf(char first, char second) {
@@ -100,13 +90,7 @@ class XmlElement {
   }
 
   const XmlDocument* doc_ = nullptr;
-  _xmlNode* node_ = nullptr;
-};
-
-struct PairHash {
-  size_t operator()(const std::pair<const void*, const void*>& p) const {
-    return std::hash<const void*>()(p.first) * 31 + std::hash<const void*>()(p.second);
-  }
+  const detail::ElementNode* node_ = nullptr;
 };
 
 class XmlDocument {
@@ -126,24 +110,14 @@ class XmlDocument {
   uint64_t element_count() const { return element_count_; }
   const SourceManager& sources() const { return *sources_; }
 
-  /// "prefix:name", stored for the document's lifetime (libxml2 keeps the
-  /// two parts apart; views of the joined name must stay valid).
-  std::string_view JoinedName(const unsigned char* prefix, const unsigned char* name) const;
-
  private:
   XmlDocument() = default;
-  /// Records each element's and attribute's line and column, counting elements and
-  /// nesting depth on the way; reports the first element over the elements
-  /// or depth limit (sources.limits()) and returns false there.
-  bool AssignLocations(DiagnosticEngine& diags);
 
-  // the DOM's memory (dom_arena.h); doc_ lives in it
-  std::unique_ptr<DomArena> arena_;
-  _xmlDoc* doc_ = nullptr;
-  // joined prefixed names by (prefix, name) pointers, which libxml2 interns;
-  // unordered_map never moves its values, so views into them stay valid
-  mutable std::unordered_map<std::pair<const void*, const void*>, std::string, PairHash>
-      joined_names_;
+  // every node, attribute and string of the tree; released at once
+  std::pmr::monotonic_buffer_resource arena_{64 * 1024};
+  detail::ElementNode* root_ = nullptr;
+  // libxml2's name dictionary, which unprefixed names point into
+  _xmlDict* names_ = nullptr;
   FileId file_;
   const SourceManager* sources_ = nullptr;
   uint64_t element_count_ = 0;
@@ -151,7 +125,7 @@ class XmlDocument {
 
 template <typename F>
 void XmlElement::ForEachAttributeName(F&& f) const {
-  for (_xmlAttr* a = FirstAttribute(); a; a = NextAttribute(a)) f(AttributeName(a));
+  for (uint32_t i = 0; i < node_->attribute_count; ++i) f(node_->attributes[i].name);
 }
 
 

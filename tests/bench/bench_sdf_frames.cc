@@ -8,8 +8,9 @@
 // one-link models, each stage is timed on an in-memory buffer;
 // from xml_document down each stage includes the ones above it:
 //
-//   libxml2_parse     xmlReadMemory + xmlFreeDoc with mdlc's options: the floor
-//   xml_document      mdlc's XmlDocument::Parse (the above + source offsets)
+//   libxml2_parse     xmlReadMemory + xmlFreeDoc: libxml2's DOM, the floor
+//   xml_document      mdlc's XmlDocument::Parse (libxml2's SAX parse building
+//                     mdlc's own located tree)
 //   frontend          SDFormat -> IR (frontend::ReadModel), as the CLI calls it
 //   frontend_passes   ... + the default pass pipeline (resolve-frames included)
 //   compile           ... + backend::Instantiate (plant and scene graph)
@@ -64,8 +65,8 @@ std::span<const int> SizesFor(SdfFamily family) {
 }
 int sdformat_max_n = 1000;
 
-// keep in step with frontend/xml/xml_document.cc (as bench_compile.cc)
-constexpr int kMdlcXmlOptions = XML_PARSE_NONET | XML_PARSE_HUGE | XML_PARSE_BIG_LINES |
+// the floor's options, as bench_compile.cc's
+constexpr int kFloorXmlOptions = XML_PARSE_NONET | XML_PARSE_HUGE | XML_PARSE_BIG_LINES |
                                 XML_PARSE_NOWARNING | XML_PARSE_NOERROR | XML_PARSE_NOBLANKS |
                                 XML_PARSE_COMPACT;
 
@@ -120,7 +121,7 @@ void BM_Libxml2Parse(benchmark::State& state, SdfFamily family) {
   const std::string& text = Model(family, static_cast<int>(state.range(0)));
   for (auto _ : state) {
     xmlDocPtr doc = xmlReadMemory(text.data(), static_cast<int>(text.size()), "bench.sdf",
-                                  nullptr, kMdlcXmlOptions);
+                                  nullptr, kFloorXmlOptions);
     if (!doc) state.SkipWithError("libxml2 rejected the model");
     benchmark::DoNotOptimize(doc);
     xmlFreeDoc(doc);

@@ -1,7 +1,7 @@
 #pragma once
 // KeepHeapWarm: the allocator policy every benchmark binary runs under.
 //
-// By default glibc serves large requests (a big vector, a DOM arena block)
+// By default glibc serves large requests (a big vector, an XML tree's arena block)
 // with fresh mmap'd pages and gives freed memory back to the kernel, so each
 // repetition of a benchmark pays the kernel again for first touching the same
 // memory, and the benchmarks with the largest allocations pay most: in a

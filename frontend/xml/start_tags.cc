@@ -1,0 +1,125 @@
+#include "frontend/xml/start_tags.h"
+
+#include <array>
+#include <cstring>
+
+namespace mdlc::xml {
+namespace {
+
+// XML name characters (ASCII letters, digits, _ : - . and any non-ASCII byte),
+// as a table: this runs for every byte of every start tag
+constexpr auto kNameChar = [] {
+  std::array<bool, 256> table{};
+  for (int c = 0; c < 256; ++c) {
+    table[c] = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+               c == '_' || c == ':' || c == '-' || c == '.' || c >= 0x80;
+  }
+  return table;
+}();
+bool IsNameChar(char c) { return kNameChar[static_cast<unsigned char>(c)]; }
+bool IsSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+void SetPosition(uint32_t& line, uint32_t& column, Loc loc) {
+  line = loc.line;
+  column = loc.column;
+}
+
+}  // namespace
+
+size_t NextStartTag(std::string_view text, size_t pos, std::optional<size_t>* entity_decl) {
+  while (true) {
+    pos = text.find('<', pos);
+    if (pos == std::string_view::npos || pos + 1 >= text.size()) return std::string_view::npos;
+    std::string_view rest = text.substr(pos);
+    auto skip_past = [&](std::string_view terminator) {
+      size_t end = text.find(terminator, pos);
+      return end == std::string_view::npos ? text.size() : end + terminator.size();
+    };
+    if (rest.starts_with("<!--")) {
+      pos = skip_past("-->");
+    } else if (rest.starts_with("<![CDATA[")) {
+      pos = skip_past("]]>");
+    } else if (rest.starts_with("<?")) {
+      pos = skip_past("?>");
+    } else if (rest.starts_with("<!")) {
+      // DOCTYPE (with an optional [internal subset]) or another declaration;
+      // a quoted ']' or '>' can end the DOCTYPE early here, so a declaration
+      // met on its own is checked too
+      if (rest.starts_with("<!ENTITY") && entity_decl && !*entity_decl) *entity_decl = pos;
+      size_t i = pos + 2;
+      int depth = 0;
+      for (; i < text.size(); ++i) {
+        char c = text[i];
+        if (c == '[') ++depth;
+        else if (c == ']') --depth;
+        else if (c == '>' && depth <= 0) break;
+        else if (c == '<' && text.substr(i).starts_with("<!ENTITY") && entity_decl && !*entity_decl)
+          *entity_decl = i;
+      }
+      pos = i + 1;
+    } else if (rest[1] == '/') {
+      pos = skip_past(">");
+    } else {
+      return pos;
+    }
+  }
+}
+
+Loc LineTracker::At(size_t offset) {
+  if (offset < scanned_) return sources_.LocForOffset(file_, offset);  // a guard: callers go forward
+  const char* data = text_.data();
+  for (const char* p = data + scanned_;
+       (p = static_cast<const char*>(std::memchr(p, '\n', offset - (p - data))));) {
+    ++p;
+    ++line_;
+    line_start_ = static_cast<size_t>(p - data);
+  }
+  scanned_ = offset;
+  return Loc{file_, line_, static_cast<uint32_t>(offset - line_start_ + 1)};
+}
+
+bool StartTagLocator::Place(detail::ElementNode& element) {
+  const size_t start = NextStartTag(text_, pos_, nullptr);
+  if (start == std::string_view::npos) return false;
+  SetPosition(element.line, element.column, lines_.At(start));
+  // "<name attr='v' ...>": libxml2 reports the attributes in the order
+  // written, so the next unplaced one is almost always the one met next;
+  // the list is searched only when it is not (namespace declarations are
+  // written like attributes but are not among them)
+  detail::AttributeNode* attributes = element.attributes;
+  const uint32_t count = element.attribute_count;
+  uint32_t next_unplaced = 0;
+  size_t i = start + 1;
+  while (i < text_.size() && IsNameChar(text_[i])) ++i;
+  while (i < text_.size()) {
+    while (i < text_.size() && IsSpace(text_[i])) ++i;
+    if (i >= text_.size() || text_[i] == '>' || text_[i] == '/') break;
+    const size_t name_start = i;
+    while (i < text_.size() && IsNameChar(text_[i])) ++i;
+    const std::string_view name = text_.substr(name_start, i - name_start);
+    while (i < text_.size() && text_[i] != '"' && text_[i] != '\'') ++i;
+    if (i >= text_.size()) break;
+    // a value holds no '<' and its own quote only as a reference, so the
+    // next such quote closes it
+    const size_t close = text_.find(text_[i], i + 1);
+    i = close == std::string_view::npos ? text_.size() : close + 1;
+    auto unplaced_named = [&](uint32_t k) {
+      return attributes[k].line == 0 && attributes[k].name == name;
+    };
+    uint32_t found = count;
+    if (next_unplaced < count && unplaced_named(next_unplaced)) {
+      found = next_unplaced;
+    } else {
+      for (uint32_t k = 0; k < count && found == count; ++k) {
+        if (unplaced_named(k)) found = k;
+      }
+    }
+    if (found == count) continue;
+    SetPosition(attributes[found].line, attributes[found].column, lines_.At(name_start));
+    if (found == next_unplaced) ++next_unplaced;
+  }
+  pos_ = i;
+  return true;
+}
+
+}  // namespace mdlc::xml

@@ -1,0 +1,105 @@
+// tree_builder.h - mdlc's XML tree (xml_node.h), built from libxml2's SAX
+// events as libxml2 parses.
+//
+// Every element is placed at its start tag as it is made (start_tags.h) and
+// counted against the elements and depth limits, so a document over a
+// limit stops the parse there, before its tree is built.
+//
+// Text follows libxml2's XML_PARSE_NOBLANKS rules, which mdlc's DOM used
+// before: a run of whitespace only is kept when it is an element's whole
+// content or when text is the element's first or last child so far, and
+// dropped otherwise (indentation between elements).
+#pragma once
+
+#include <cstdint>
+#include <memory_resource>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <absl/container/flat_hash_map.h>
+
+#include "frontend/xml/start_tags.h"
+#include "frontend/xml/xml_node.h"
+#include "ir/diagnostics.h"
+#include "ir/source_manager.h"
+
+struct _xmlSAXHandler;
+
+namespace mdlc::xml {
+
+class TreeBuilder {
+ public:
+  /// Builds into `arena` the tree of `file`, whose text libxml2 is given.
+  TreeBuilder(FileId file, const SourceManager& sources, std::pmr::memory_resource& arena,
+              DiagnosticEngine& diags);
+
+  /// Points the handler's callbacks at TreeBuilder; the parser context's
+  /// `_private` must then point at this builder.
+  static void Install(_xmlSAXHandler& sax);
+
+  detail::ElementNode* root() const { return root_; }
+  uint64_t element_count() const { return elements_; }
+  /// The document declared an entity (the parse stopped there).
+  bool declared_entity() const { return declared_entity_; }
+  /// An element went over a limit, reported (the parse stopped there).
+  bool over_limit() const { return over_limit_; }
+
+ private:
+  struct Open {
+    detail::ElementNode* element;
+    detail::ElementNode* last_child = nullptr;
+    detail::ContentNode* last_content = nullptr;
+    bool has_children = false;  // any node: element, text, CDATA, comment, PI
+    bool first_is_text = false;
+    bool last_is_text = false;
+  };
+  // the SAX callbacks, which find the builder through the parser context
+  static void OnStartElement(void* ctx, const unsigned char* local, const unsigned char* prefix,
+                             const unsigned char* uri, int namespace_count,
+                             const unsigned char** namespaces, int attribute_count,
+                             int defaulted_count, const unsigned char** attributes);
+  static void OnEndElement(void* ctx, const unsigned char*, const unsigned char*,
+                           const unsigned char*);
+  static void OnCharacters(void* ctx, const unsigned char* text, int length);
+  static void OnCdata(void* ctx, const unsigned char* text, int length);
+  static void OnComment(void* ctx, const unsigned char* text);
+  static void OnProcessingInstruction(void* ctx, const unsigned char*, const unsigned char*);
+  static void OnEntityDeclaration(void* ctx, const unsigned char*, int, const unsigned char*,
+                                  const unsigned char*, unsigned char*);
+
+  void StartElement(void* parser, const unsigned char* local, const unsigned char* prefix,
+                    int attribute_count, const unsigned char** attributes);
+  void EndElement();
+  /// Makes the pending text a child, or drops it; `at_end_tag` when the
+  /// element's end tag follows it.
+  void FlushText(bool at_end_tag);
+  void AddContent(detail::ContentKind kind, std::string_view text);
+  /// Notes a child that is not text in the innermost open element.
+  void NoteOtherChild();
+  /// "prefix:local" or "local", stored for the document's lifetime.
+  std::string_view QualifiedName(const unsigned char* prefix, const unsigned char* local);
+  /// `text` copied into the arena with a terminating NUL.
+  std::string_view Copy(std::string_view text);
+  /// An attribute value copied, with "&#38;" decoded: libxml2 leaves that
+  /// one reference undecoded (for '&' written as "&amp;" or "&#38;").
+  std::string_view CopyValue(std::string_view value);
+
+  FileId file_;
+  std::pmr::memory_resource& arena_;
+  DiagnosticEngine& diags_;
+  const Limits& limits_;
+  StartTagLocator locator_;
+  detail::ElementNode* root_ = nullptr;
+  std::vector<Open> open_;
+  std::string pending_text_;  // characters since the last node, not yet placed
+  bool pending_blank_ = true;  // pending_text_ holds blanks only
+  // joined names by libxml2's interned (prefix, local) pointers
+  absl::flat_hash_map<std::pair<const void*, const void*>, std::string_view> joined_names_;
+  uint64_t elements_ = 0;
+  bool declared_entity_ = false;
+  bool over_limit_ = false;
+};
+
+}  // namespace mdlc::xml
