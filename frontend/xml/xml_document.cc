@@ -78,9 +78,10 @@ ParseOutcome ParseInto(TreeBuilder& builder, std::string_view text, const char* 
     parser->_private = &builder;
     // read through callbacks, not xmlCtxtReadMemory, which copies the whole
     // buffer first: the parser then holds a few kilobytes of it at a time.
-    // With no startDocument handler libxml2 makes no document to return.
+    // With no startDocument handler libxml2 makes no document, except a
+    // stand-in it may make to hold a DTD's declarations: freed unread.
     MemoryStream stream{text};
-    xmlCtxtReadIO(parser, MemoryStream::Read, nullptr, &stream, path, nullptr, options);
+    xmlFreeDoc(xmlCtxtReadIO(parser, MemoryStream::Read, nullptr, &stream, path, nullptr, options));
     outcome.well_formed = parser->wellFormed != 0;
     outcome.stopped_at =
         Loc{sink.file, static_cast<uint32_t>(std::max(xmlSAX2GetLineNumber(parser), 1)),

@@ -57,7 +57,8 @@ int CompareTrees(xmlNode* dom, XmlElement mine, const std::string& where) {
   int compared = 0;
   std::vector<std::pair<xmlNode*, XmlElement>> stack{{dom, mine}};
   while (!stack.empty()) {
-    auto [node, element] = stack.back();
+    xmlNode* const node = stack.back().first;
+    const XmlElement element = stack.back().second;
     stack.pop_back();
     ++compared;
     const Expected e = FromDom(node);
