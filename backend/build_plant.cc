@@ -34,6 +34,11 @@ class PlantBuilder {
     }
     if (m_.gravity) plant_.gravity = *m_.gravity;
     if (m_.time_step) plant_.time_step = *m_.time_step;
+    // one plant entity per IR entity: sized once, not regrown (and moved)
+    // as a scene of many models fills them
+    plant_.bodies.reserve(m_.bodies.size());
+    plant_.frames.reserve(m_.frames.size());
+    plant_.joints.reserve(m_.joints.size());
     AddBodies();
     for (const ir::Frame& frame : m_.frames) AddFrame(frame);
     for (const ir::Joint& joint : m_.joints) AddJoint(joint);

@@ -36,6 +36,8 @@ class SceneBuilder {
   SceneBuilder(const ir::Module& module, DiagnosticEngine& diags) : m_(module), diags_(diags) {}
 
   std::optional<SceneGraph> Build(const Plant& plant) {
+    // at most one registered geometry per IR geometry: sized once
+    scene_.geometries.reserve(m_.geometries.size());
     for (const ir::Geometry& g : m_.geometries) {
       // a geometry with no role (an MJCF geom kept only for its share of the
       // body's mass) is never registered, as Drake registers nothing for it
