@@ -155,5 +155,29 @@ TEST_F(XmlDocumentTest, PrefixedAttributesAndChildrenAfterDeclarations) {
   EXPECT_EQ(doc->element_count(), 3u);
 }
 
+// The elements limit stops libxml2's parse at the first element over it, so
+// the rest of a document over the limit is never read: here, a syntax
+// error after that element is never reached (issue 16: limits).
+TEST_F(XmlDocumentTest, AnElementOverTheLimitStopsTheParseThere) {
+  Limits limits;
+  limits.elements = 3;
+  sources_.set_limits(limits);
+  EXPECT_FALSE(Parse("<r>\n <a/>\n <b/>\n <c/>\n <d/>\n <broken>\n</r>"));
+  ASSERT_EQ(diags_.diagnostics().size(), 1u);
+  const Diagnostic& d = diags_.diagnostics()[0];
+  EXPECT_EQ(d.kind, DiagKind::LimitExceeded);
+  EXPECT_EQ(d.loc, (Loc{file_, 4, 2}));  // <c>, the fourth element
+}
+
+// An attribute value written across lines or with references reads as
+// libxml2 decodes it; its location stays at its name.
+TEST_F(XmlDocumentTest, AttributeValuesAreDecodedAndNormalized) {
+  auto doc = Parse("<r a='x &amp; y&#38;z &lt;&#x41;'\n   b=\"1\n2\t3\"/>");
+  ASSERT_TRUE(doc);
+  EXPECT_EQ(doc->Root().Attribute("a").value, "x & y&z <A");
+  EXPECT_EQ(doc->Root().Attribute("b").value, "1 2 3");
+  EXPECT_EQ(doc->Root().Attribute("b").loc, (Loc{file_, 2, 4}));
+}
+
 }  // namespace
 }  // namespace mdlc::xml
