@@ -146,7 +146,8 @@ void TreeBuilder::StartElement(void* parser, const unsigned char* local,
       const unsigned char** a = attributes + 5 * i;
       auto* node = new (nodes + i) detail::AttributeNode();
       node->name = QualifiedName(a[1], a[0]);
-      node->value = CopyValue({reinterpret_cast<const char*>(a[3]), static_cast<size_t>(a[4] - a[3])});
+      node->value = CopyValue(
+          {reinterpret_cast<const char*>(a[3]), static_cast<size_t>(a[4] - a[3])});
       element->attribute_name_bits |= XmlElement::NameBit(node->name);
     }
     element->attributes = nodes;
