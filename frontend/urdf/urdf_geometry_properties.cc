@@ -17,6 +17,7 @@
 
 #include "frontend/drake_proximity.h"
 #include "frontend/urdf/urdf_reader_detail.h"
+#include "frontend/xml/trim.h"
 
 namespace mdlc::frontend::urdf {
 namespace {
@@ -30,10 +31,7 @@ xml::XmlElement EarlierNamesake(const xml::XmlElement& e) {
   return first.raw() == e.raw() ? xml::XmlElement() : first;
 }
 
-bool IsBlank(std::string_view s) {
-  return std::all_of(s.begin(), s.end(),
-                     [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; });
-}
+bool IsBlank(std::string_view s) { return std::all_of(s.begin(), s.end(), xml::IsXmlSpace); }
 
 ir::Property* FindProperty(ir::Geometry& g, std::string_view key) {
   auto it = std::find_if(g.properties.begin(), g.properties.end(),

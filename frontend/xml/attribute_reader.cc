@@ -9,9 +9,6 @@
 #include "frontend/xml/trim.h"
 
 namespace mdlc::xml {
-namespace {
-bool IsSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
-}  // namespace
 
 std::optional<double> ParseDouble(std::string_view text) {
   text = Trim(text);
@@ -39,17 +36,17 @@ bool ForEachNumber(std::string_view text, F&& f) {
   const char* p = text.data();
   const char* const end = p + text.size();
   while (true) {
-    while (p < end && IsSpace(*p)) ++p;
+    while (p < end && IsXmlSpace(*p)) ++p;
     if (p >= end) return true;
     double value = 0;
     auto [stop, ec] = std::from_chars(p, end, value);
-    if (ec == std::errc() && (stop == end || IsSpace(*stop))) {
+    if (ec == std::errc() && (stop == end || IsXmlSpace(*stop))) {
       f(value);
       p = stop;
       continue;
     }
     const char* token_end = p;
-    while (token_end < end && !IsSpace(*token_end)) ++token_end;
+    while (token_end < end && !IsXmlSpace(*token_end)) ++token_end;
     auto v = ParseDouble(std::string_view(p, static_cast<size_t>(token_end - p)));
     if (!v) return false;
     f(*v);

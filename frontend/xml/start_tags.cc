@@ -3,6 +3,8 @@
 #include <array>
 #include <cstring>
 
+#include "frontend/xml/trim.h"
+
 namespace mdlc::xml {
 namespace {
 
@@ -17,7 +19,6 @@ constexpr auto kNameChar = [] {
   return table;
 }();
 bool IsNameChar(char c) { return kNameChar[static_cast<unsigned char>(c)]; }
-bool IsSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 
 void SetPosition(uint32_t& line, uint32_t& column, Loc loc) {
   line = loc.line;
@@ -92,7 +93,7 @@ bool StartTagLocator::Place(detail::ElementNode& element) {
   size_t i = start + 1;
   while (i < text_.size() && IsNameChar(text_[i])) ++i;
   while (i < text_.size()) {
-    while (i < text_.size() && IsSpace(text_[i])) ++i;
+    while (i < text_.size() && IsXmlSpace(text_[i])) ++i;
     if (i >= text_.size() || text_[i] == '>' || text_[i] == '/') break;
     const size_t name_start = i;
     while (i < text_.size() && IsNameChar(text_[i])) ++i;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "frontend/xml/trim.h"
 #include "frontend/xml/xml_document.h"
 
 namespace mdlc::xml {
@@ -31,7 +32,7 @@ bool IsBlank(std::string_view text) {
       p += 8;
       continue;
     }
-    if (*p != ' ' && *p != '\n' && *p != '\t' && *p != '\r') return false;
+    if (!IsXmlSpace(*p)) return false;
     ++p;
   }
   return true;
