@@ -62,29 +62,34 @@ std::vector<xml::XmlElement> MjcfDocument::Children(const xml::XmlElement& e) co
 bool LoadIncludes(const xml::XmlElement& root, const std::string& main_dir, FrontendContext& ctx,
                   MjcfDocument& document) {
   const size_t errors_before = ctx.diags.error_count();
+  // each file's elements share one context: where the file is and the
+  // files from the main file to it
+  struct FileContext {
+    std::string dir;
+    std::vector<ChainLink> chain;
+  };
+  std::vector<FileContext> files;
+  files.push_back({main_dir, {{Canonical(ctx.sources.Path(root.GetLoc().file)), {}}}});
+  std::unordered_set<std::string> included;
+  // a pre-order walk in document order: an element's next sibling is
+  // stacked before its children, so it comes after them
   struct Work {
     xml::XmlElement element;
-    std::string dir;                 // directory of the file holding `element`
-    std::shared_ptr<std::vector<ChainLink>> chain;  // files from the main file to this one
+    size_t file;  // index into `files`
   };
-  auto main_chain = std::make_shared<std::vector<ChainLink>>();
-  main_chain->push_back({Canonical(ctx.sources.Path(root.GetLoc().file)), {}});
-  std::unordered_set<std::string> included;
-  std::vector<Work> stack{{root, main_dir, main_chain}};
+  std::vector<Work> stack{{root, 0}};
 
   while (!stack.empty()) {
-    Work work = std::move(stack.back());
+    const Work work = stack.back();
     stack.pop_back();
     const xml::XmlElement e = work.element;
+    if (!e) continue;
+    stack.push_back({e.NextSibling(), work.file});
     if (e.Name() != "include") {
-      // children in reverse, so they pop in document order
-      std::vector<xml::XmlElement> children;
-      for (auto c = e.FirstChild(); c; c = c.NextSibling()) children.push_back(c);
-      for (auto it = children.rbegin(); it != children.rend(); ++it) {
-        stack.push_back({*it, work.dir, work.chain});
-      }
+      stack.push_back({e.FirstChild(), work.file});
       continue;
     }
+    const std::string& work_dir = files[work.file].dir;
 
     if (e.FirstChild()) {
       ctx.diags.Report(DiagKind::BadValue, e.GetLoc(), "an <include> element cannot have children");
@@ -102,21 +107,22 @@ bool LoadIncludes(const xml::XmlElement& root, const std::string& main_dir, Fron
     } else {
       std::error_code ec;
       path = (fs::path(main_dir) / name).string();
-      if (!fs::exists(path, ec) && work.dir != main_dir) {
-        std::string nested = (fs::path(work.dir) / name).string();
+      if (!fs::exists(path, ec) && work_dir != main_dir) {
+        std::string nested = (fs::path(work_dir) / name).string();
         if (fs::exists(nested, ec)) path = nested;
       }
     }
     const std::string canonical = Canonical(path);
 
     // a cycle: the file is already on the chain that leads here
+    const std::vector<ChainLink>& work_chain = files[work.file].chain;
     bool cycle = false;
-    for (const ChainLink& link : *work.chain) cycle |= (link.canonical == canonical);
+    for (const ChainLink& link : work_chain) cycle |= (link.canonical == canonical);
     if (cycle) {
       auto diag = ctx.diags.Report(
           DiagKind::IncludeCycle, file.loc,
           fmt::format("include cycle: '{}' includes itself through this include", name));
-      for (const ChainLink& link : *work.chain) {
+      for (const ChainLink& link : work_chain) {
         if (link.include_loc.valid()) {
           diag.Note(link.include_loc, fmt::format("'{}' is included here", link.canonical));
         }
@@ -149,14 +155,11 @@ bool LoadIncludes(const xml::XmlElement& root, const std::string& main_dir, Fron
     }
     document.includes.emplace(e.raw(), included_root);
 
-    auto chain = std::make_shared<std::vector<ChainLink>>(*work.chain);
-    chain->push_back({canonical, file.loc});
+    std::vector<ChainLink> chain = work_chain;  // copied before `files` grows
+    chain.push_back({canonical, file.loc});
     const std::string dir = fs::path(path).parent_path().string();
-    std::vector<xml::XmlElement> children;
-    for (auto c = included_root.FirstChild(); c; c = c.NextSibling()) children.push_back(c);
-    for (auto it = children.rbegin(); it != children.rend(); ++it) {
-      stack.push_back({*it, dir.empty() ? std::string(".") : dir, chain});
-    }
+    files.push_back({dir.empty() ? std::string(".") : dir, std::move(chain)});
+    stack.push_back({included_root.FirstChild(), files.size() - 1});
   }
   return ctx.diags.error_count() == errors_before;
 }
