@@ -137,7 +137,8 @@ std::string MjcfReader::ClassFor(const xml::XmlElement& e, std::string_view chil
 
 void MjcfReader::WarnOnce(Loc loc, DiagKind kind, std::string_view element, std::string_view name,
                           std::string_view why) {
-  if (!warned.insert(fmt::format("{}\n{}", element, name)).second) return;
+  warn_key.assign(element).append(1, '\n').append(name);
+  if (!warned.insert(warn_key).second) return;
   const bool is_element = kind == DiagKind::UnsupportedElement || kind == DiagKind::UnknownElement;
   diags().Report(kind, loc,
                  is_element ? fmt::format("element <{}> in <{}> {}", name, element, why)

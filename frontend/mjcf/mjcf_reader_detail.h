@@ -26,7 +26,6 @@
 
 #include <functional>
 #include <memory>
-#include <set>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -35,6 +34,7 @@
 #include <vector>
 
 #include <absl/container/flat_hash_map.h>
+#include <absl/container/flat_hash_set.h>
 
 #include "frontend/frontend.h"
 #include "frontend/xml/attribute_reader.h"
@@ -245,7 +245,10 @@ struct MjcfReader {
   // per kind, not once per element (the reader holds its documents, so no
   // pointer is reused for another name while the table lives)
   absl::flat_hash_map<std::pair<const void*, const void*>, bool> known_attribute_names;
-  std::set<std::string> warned;  // "element\nname" already warned about
+  // "element\nname" already warned about; the key is built in warn_key, whose
+  // buffer is reused: WarnOnce runs for every element that repeats a warning
+  absl::flat_hash_set<std::string> warned;
+  std::string warn_key;
 
   // --- mjcf_pose.cc ---
   /// pos + orientation of an element (MJCF-010) with MuJoCo's default rule:
