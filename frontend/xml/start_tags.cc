@@ -31,11 +31,18 @@ size_t NextStartTag(std::string_view text, size_t pos, std::optional<size_t>* en
   while (true) {
     pos = text.find('<', pos);
     if (pos == std::string_view::npos || pos + 1 >= text.size()) return std::string_view::npos;
-    std::string_view rest = text.substr(pos);
     auto skip_past = [&](std::string_view terminator) {
       size_t end = text.find(terminator, pos);
       return end == std::string_view::npos ? text.size() : end + terminator.size();
     };
+    // end tags and start tags first: they are nearly every '<' of a model
+    const char kind = text[pos + 1];
+    if (kind == '/') {
+      pos = skip_past(">");
+      continue;
+    }
+    if (kind != '!' && kind != '?') return pos;
+    std::string_view rest = text.substr(pos);
     if (rest.starts_with("<!--")) {
       pos = skip_past("-->");
     } else if (rest.starts_with("<![CDATA[")) {
@@ -58,10 +65,6 @@ size_t NextStartTag(std::string_view text, size_t pos, std::optional<size_t>* en
           *entity_decl = i;
       }
       pos = i + 1;
-    } else if (rest[1] == '/') {
-      pos = skip_past(">");
-    } else {
-      return pos;
     }
   }
 }
