@@ -25,6 +25,11 @@ std::optional<ModelId> ReadModelFile(const std::string& path, FrontendContext& c
   return ReadModel(*file, *format, ctx);
 }
 
+std::shared_ptr<const xml::XmlDocument> ParseXml(FileId file, FrontendContext& ctx) {
+  if (ctx.documents) return ctx.documents->Parse(file, ctx.sources, ctx.diags);
+  return xml::XmlDocument::Parse(file, ctx.sources, ctx.diags);
+}
+
 std::optional<ModelId> ReadModel(FileId file, Format format, FrontendContext& ctx) {
   switch (format) {
     case Format::Urdf: return ReadUrdf(file, ctx);

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "frontend/assets/package_map.h"
+#include "frontend/xml/document_cache.h"
 #include "ir/diagnostics.h"
 #include "ir/format.h"
 #include "ir/module.h"
@@ -39,7 +40,13 @@ struct FrontendContext {
   FrontendOptions options;
   /// Packages for the files a model includes (SDFormat <include>, directives).
   const assets::PackageMap& packages = assets::NoPackages();
+  /// The compile's parsed XML files, so a file loaded many times is parsed
+  /// once; null to parse every load.
+  xml::DocumentCache* documents = nullptr;
 };
+
+/// Parses an XML buffer through ctx.documents, when there is one.
+std::shared_ptr<const xml::XmlDocument> ParseXml(FileId file, FrontendContext& ctx);
 
 /// Loads `path` and lowers it as `format`, or else with the frontend its
 /// extension selects. Returns the new model instance, or nullopt after

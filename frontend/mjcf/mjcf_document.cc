@@ -145,7 +145,7 @@ bool LoadIncludes(const xml::XmlElement& root, const std::string& main_dir, Fron
       continue;
     }
     std::shared_ptr<const xml::XmlDocument> doc =
-        xml::XmlDocument::Parse(*id, ctx.sources, ctx.diags);
+        ParseXml(*id, ctx);
     if (!doc) continue;  // reported by the parser, inside the included file
     document.documents.push_back(doc);
     const xml::XmlElement included_root = doc->Root();

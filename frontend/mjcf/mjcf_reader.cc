@@ -15,7 +15,7 @@ namespace mdlc::frontend::mjcf {
 namespace {
 
 std::optional<ModelId> Read(FileId file, FrontendContext& ctx) {
-  std::shared_ptr<const xml::XmlDocument> doc = xml::XmlDocument::Parse(file, ctx.sources, ctx.diags);
+  std::shared_ptr<const xml::XmlDocument> doc = ParseXml(file, ctx);
   if (!doc) return std::nullopt;
   ReserveEntities(ctx.module, doc->element_count());
   const xml::XmlElement root = doc->Root();

@@ -57,7 +57,7 @@ std::optional<std::string> SdfReader::ModelFileInFolder(const std::string& dir, 
     return std::nullopt;
   }
   std::shared_ptr<const xml::XmlDocument> doc =
-      xml::XmlDocument::Parse(*file, ctx_.sources, ctx_.diags);
+      ParseXml(*file, ctx_);
   if (!doc) return std::nullopt;
   documents_.push_back(doc);
   std::string best;
@@ -163,7 +163,7 @@ void SdfReader::ReadInclude(const xml::XmlElement& e, const SdfFile& file, Model
     return;
   }
   std::shared_ptr<const xml::XmlDocument> doc =
-      xml::XmlDocument::Parse(*file_id, ctx_.sources, ctx_.diags);
+      ParseXml(*file_id, ctx_);
   if (!doc) return;
   documents_.push_back(doc);
   auto included = std::make_unique<SdfFile>();

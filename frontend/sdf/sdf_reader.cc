@@ -149,7 +149,7 @@ void SdfReader::CheckChildren(const xml::XmlElement& e,
 
 std::optional<ModelId> SdfReader::ReadRootFile(FileId file_id) {
   std::shared_ptr<const xml::XmlDocument> doc =
-      xml::XmlDocument::Parse(file_id, ctx_.sources, ctx_.diags);
+      ParseXml(file_id, ctx_);
   if (!doc) return std::nullopt;
   documents_.push_back(doc);
   ReserveEntities(module(), doc->element_count());

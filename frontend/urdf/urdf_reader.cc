@@ -13,7 +13,7 @@ namespace mdlc::frontend {
 
 std::optional<ModelId> ReadUrdf(FileId file, FrontendContext& ctx) {
   std::shared_ptr<const xml::XmlDocument> doc =
-      xml::XmlDocument::Parse(file, ctx.sources, ctx.diags);
+      ParseXml(file, ctx);
   if (!doc) return std::nullopt;
   ReserveEntities(ctx.module, doc->element_count());
   urdf::UrdfReader reader(ctx, *doc);

@@ -153,6 +153,17 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
   return document;
 }
 
+std::unique_ptr<XmlDocument> XmlDocument::SameTextAs(std::shared_ptr<const XmlDocument> original,
+                                                     FileId file) {
+  std::unique_ptr<XmlDocument> doc(new XmlDocument());
+  doc->root_ = original->root_;
+  doc->file_ = file;
+  doc->sources_ = original->sources_;
+  doc->element_count_ = original->element_count_;
+  doc->original_ = std::move(original);
+  return doc;
+}
+
 XmlElement XmlDocument::Root() const { return XmlElement(this, root_); }
 
 // ---- XmlElement ---------------------------------------------------------------

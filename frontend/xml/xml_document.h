@@ -103,6 +103,12 @@ class XmlDocument {
   /// `diags` and returns null when the document is unusable.
   static std::unique_ptr<XmlDocument> Parse(FileId file, const SourceManager& sources,
                                             DiagnosticEngine& diags);
+  /// The tree of `original` read as `file`, a buffer holding the same text
+  /// (the same file loaded again): nothing is parsed, and every element and
+  /// attribute is placed in `file`, so diagnostics name the load they come
+  /// from. The new document keeps `original` alive.
+  static std::unique_ptr<XmlDocument> SameTextAs(std::shared_ptr<const XmlDocument> original,
+                                                 FileId file);
 
   XmlElement Root() const;
   FileId file() const { return file_; }
@@ -121,6 +127,8 @@ class XmlDocument {
   FileId file_;
   const SourceManager* sources_ = nullptr;
   uint64_t element_count_ = 0;
+  // the document whose arena holds the tree, for a SameTextAs copy
+  std::shared_ptr<const XmlDocument> original_;
 };
 
 template <typename F>

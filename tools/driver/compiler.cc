@@ -27,7 +27,10 @@ void ReadInput(const Input& input, frontend::FrontendContext& ctx) {
 }  // namespace
 
 bool Compilation::RunFrontends() {
-  frontend::FrontendContext ctx{sources, diags, module, options.frontend, packages};
+  // a file the inputs load many times is parsed once; the trees go when
+  // the frontends are done, as the IR holds copies of what it needs
+  xml::DocumentCache documents;
+  frontend::FrontendContext ctx{sources, diags, module, options.frontend, packages, &documents};
   for (const Input& input : options.inputs) {
     // keep going: report the problems of every input in one run
     ReadInput(input, ctx);
