@@ -40,7 +40,8 @@ std::string InNamespace(std::string_view ns, std::string_view name) {
 struct OpenFile {
   FileId file;
   std::string canonical_path;
-  YAML::Node directives;
+  std::unique_ptr<yaml::Document> document;  // owns `directives`
+  yaml::Node directives;
   size_t next = 0;
   std::string ns;
 };
@@ -58,19 +59,19 @@ class DirectivesReader {
 
   // Loads and checks the top level of a directives file; pushes it.
   bool Open(FileId file, std::string ns);
-  void RunDirective(YamlSchemaReader& r, const YAML::Node& directive, const std::string& ns);
+  void RunDirective(YamlSchemaReader& r, const yaml::Node& directive, const std::string& ns);
 
-  void AddModel(YamlSchemaReader& r, const YAML::Node& node, Loc loc, const std::string& ns);
-  void AddModelInstanceDirective(YamlSchemaReader& r, const YAML::Node& node, Loc loc,
+  void AddModel(YamlSchemaReader& r, const yaml::Node& node, Loc loc, const std::string& ns);
+  void AddModelInstanceDirective(YamlSchemaReader& r, const yaml::Node& node, Loc loc,
                                  const std::string& ns);
-  void AddFrame(YamlSchemaReader& r, const YAML::Node& node, Loc loc, const std::string& ns);
-  void AddWeld(YamlSchemaReader& r, const YAML::Node& node, Loc loc, const std::string& ns);
-  void AddCollisionFilterGroup(YamlSchemaReader& r, const YAML::Node& node, Loc loc,
+  void AddFrame(YamlSchemaReader& r, const yaml::Node& node, Loc loc, const std::string& ns);
+  void AddWeld(YamlSchemaReader& r, const yaml::Node& node, Loc loc, const std::string& ns);
+  void AddCollisionFilterGroup(YamlSchemaReader& r, const yaml::Node& node, Loc loc,
                                const std::string& ns);
-  void AddDirectives(YamlSchemaReader& r, const YAML::Node& node, Loc loc, const std::string& ns);
+  void AddDirectives(YamlSchemaReader& r, const yaml::Node& node, Loc loc, const std::string& ns);
 
   // A required, non-empty string field (DMD-010, DMD-020, DMD-030, ...).
-  std::optional<LocatedString> RequiredName(YamlSchemaReader& r, const YAML::Node& node,
+  std::optional<LocatedString> RequiredName(YamlSchemaReader& r, const yaml::Node& node,
                                             std::string_view directive, std::string_view key,
                                             Loc loc);
   // A file reference: a URI or an absolute path (DMD-002), resolved.
@@ -101,7 +102,8 @@ bool DirectivesReader::Run(FileId root) {
       stack_.pop_back();
       continue;
     }
-    const YAML::Node directive = std::as_const(top.directives)[top.next++];
+    // the document outlives the directive: a pushed file moves only its owner
+    const yaml::Node directive = top.directives[top.next++];
     YamlSchemaReader r(top.file, diags());
     // a copy: RunDirective may push a file and invalidate `top`
     const std::string ns = top.ns;
@@ -113,18 +115,19 @@ bool DirectivesReader::Run(FileId root) {
 bool DirectivesReader::Open(FileId file, std::string ns) {
   YamlSchemaReader r(file, diags());
   const Loc start{file, 1, 1};
-  auto doc = r.Parse(ctx_.sources.Contents(file));
+  std::unique_ptr<yaml::Document> doc = r.Parse(ctx_.sources.Contents(file));
   if (!doc) return false;
-  if (doc->IsNull()) {
+  const yaml::Node root = doc->root();
+  if (root.IsNull()) {
     diags().Report(DiagKind::EmptyFile, start, "the model directives file is empty");
     return false;
   }
   const size_t errors_before = diags().error_count();
-  if (!r.CheckMap(*doc, "a model directives file", {"directives"}, start) ||
+  if (!r.CheckMap(root, "a model directives file", {"directives"}, start) ||
       diags().error_count() != errors_before) {
     return false;
   }
-  auto directives = r.Get(*doc, "directives");
+  auto directives = r.Get(root, "directives");
   if (!directives.present() || directives.value.IsNull()) {
     diags().Report(DiagKind::MissingElement, directives.present() ? directives.key_loc : start,
                    "a model directives file needs a 'directives' list");
@@ -137,11 +140,12 @@ bool DirectivesReader::Open(FileId file, std::string ns) {
   }
   std::error_code ec;
   std::string canonical = fs::weakly_canonical(ctx_.sources.Path(file), ec).string();
-  stack_.push_back(OpenFile{file, std::move(canonical), directives.value, 0, std::move(ns)});
+  stack_.push_back(
+      OpenFile{file, std::move(canonical), std::move(doc), directives.value, 0, std::move(ns)});
   return true;
 }
 
-void DirectivesReader::RunDirective(YamlSchemaReader& r, const YAML::Node& directive,
+void DirectivesReader::RunDirective(YamlSchemaReader& r, const yaml::Node& directive,
                                     const std::string& ns) {
   const Loc loc = r.LocOf(directive);
   // DMD-001: exactly one of the six directive kinds
@@ -162,10 +166,10 @@ void DirectivesReader::RunDirective(YamlSchemaReader& r, const YAML::Node& direc
                                      directive.size()));
     return;
   }
-  // copies: the iterator's -> yields a temporary pair
-  const YAML::Node key = directive.begin()->first;
-  const YAML::Node body = directive.begin()->second;
-  const std::string kind = key.Scalar();
+  const yaml::Entry only = *directive.Entries().begin();
+  const yaml::Node key = only.first;
+  const yaml::Node body = only.second;
+  const std::string_view kind = key.Scalar();
   // what a directive lacks is reported at its kind ("add_model:")
   const Loc kind_loc = r.LocOf(key, loc);
   if (kind == "add_model") AddModel(r, body, kind_loc, ns);
@@ -178,7 +182,7 @@ void DirectivesReader::RunDirective(YamlSchemaReader& r, const YAML::Node& direc
 }
 
 std::optional<LocatedString> DirectivesReader::RequiredName(YamlSchemaReader& r,
-                                                            const YAML::Node& node,
+                                                            const yaml::Node& node,
                                                             std::string_view directive,
                                                             std::string_view key, Loc loc) {
   auto field = r.Get(node, key);
@@ -219,7 +223,7 @@ std::optional<FileId> DirectivesReader::Load(const std::string& path, Loc refere
   return file;
 }
 
-void DirectivesReader::AddModel(YamlSchemaReader& r, const YAML::Node& node, Loc loc,
+void DirectivesReader::AddModel(YamlSchemaReader& r, const yaml::Node& node, Loc loc,
                                 const std::string& ns) {
   if (!r.CheckMap(node, "add_model",
                   {"name", "file", "default_joint_positions", "default_free_body_pose"}, loc)) {
@@ -240,14 +244,15 @@ void DirectivesReader::AddModel(YamlSchemaReader& r, const YAML::Node& node, Loc
       r.CheckMap(f.value, "add_model 'default_joint_positions'", {}, f.key_loc);
       defaults_ok = false;
     } else {
-      for (auto it = f.value.begin(); it != f.value.end(); ++it) {
-        auto joint = r.String(it->first, "a joint name", f.key_loc);
-        auto values = r.Numbers(it->second, "default joint positions", r.LocOf(it->first, f.key_loc));
+      for (const yaml::Entry entry : f.value.Entries()) {
+        auto joint = r.String(entry.first, "a joint name", f.key_loc);
+        auto values =
+            r.Numbers(entry.second, "default joint positions", r.LocOf(entry.first, f.key_loc));
         if (!joint || !values) {
           defaults_ok = false;
           continue;
         }
-        joint_defaults.push_back({*joint, std::move(*values), r.LocOf(it->second, joint->loc)});
+        joint_defaults.push_back({*joint, std::move(*values), r.LocOf(entry.second, joint->loc)});
       }
     }
   }
@@ -256,10 +261,10 @@ void DirectivesReader::AddModel(YamlSchemaReader& r, const YAML::Node& node, Loc
       r.CheckMap(f.value, "add_model 'default_free_body_pose'", {}, f.key_loc);
       defaults_ok = false;
     } else {
-      for (auto it = f.value.begin(); it != f.value.end(); ++it) {
-        auto frame = r.String(it->first, "a body or frame name", f.key_loc);
-        auto pose = ReadDirectiveTransform(r, it->second, "default_free_body_pose",
-                                           r.LocOf(it->first, f.key_loc));
+      for (const yaml::Entry entry : f.value.Entries()) {
+        auto frame = r.String(entry.first, "a body or frame name", f.key_loc);
+        auto pose = ReadDirectiveTransform(r, entry.second, "default_free_body_pose",
+                                           r.LocOf(entry.first, f.key_loc));
         if (!frame || !pose) {
           defaults_ok = false;
           continue;
@@ -306,7 +311,7 @@ void DirectivesReader::AddModel(YamlSchemaReader& r, const YAML::Node& node, Loc
   }
 }
 
-void DirectivesReader::AddModelInstanceDirective(YamlSchemaReader& r, const YAML::Node& node,
+void DirectivesReader::AddModelInstanceDirective(YamlSchemaReader& r, const yaml::Node& node,
                                                  Loc loc, const std::string& ns) {
   if (!r.CheckMap(node, "add_model_instance", {"name"}, loc)) return;
   auto name = RequiredName(r, node, "add_model_instance", "name", loc);
@@ -317,7 +322,7 @@ void DirectivesReader::AddModelInstanceDirective(YamlSchemaReader& r, const YAML
   AddModelInstance(name->text, name->loc, ir::SourceFormat::Directives, sub);
 }
 
-void DirectivesReader::AddFrame(YamlSchemaReader& r, const YAML::Node& node, Loc loc,
+void DirectivesReader::AddFrame(YamlSchemaReader& r, const yaml::Node& node, Loc loc,
                                 const std::string& ns) {
   if (!r.CheckMap(node, "add_frame", {"name", "X_PF"}, loc)) return;
   auto name = RequiredName(r, node, "add_frame", "name", loc);
@@ -353,7 +358,7 @@ void DirectivesReader::AddFrame(YamlSchemaReader& r, const YAML::Node& node, Loc
   Record(std::move(edit));
 }
 
-void DirectivesReader::AddWeld(YamlSchemaReader& r, const YAML::Node& node, Loc loc,
+void DirectivesReader::AddWeld(YamlSchemaReader& r, const yaml::Node& node, Loc loc,
                                const std::string& ns) {
   if (!r.CheckMap(node, "add_weld", {"parent", "child", "X_PC"}, loc)) return;
   auto parent = RequiredName(r, node, "add_weld", "parent", loc);
@@ -372,7 +377,7 @@ void DirectivesReader::AddWeld(YamlSchemaReader& r, const YAML::Node& node, Loc 
   Record(ir::AddWeldEdit{loc, FrameName(ns, *parent), FrameName(ns, *child), pose->X});
 }
 
-void DirectivesReader::AddCollisionFilterGroup(YamlSchemaReader& r, const YAML::Node& node,
+void DirectivesReader::AddCollisionFilterGroup(YamlSchemaReader& r, const yaml::Node& node,
                                                Loc loc, const std::string& ns) {
   constexpr std::string_view kWhat = "add_collision_filter_group";
   if (!r.CheckMap(node, kWhat,
@@ -430,7 +435,7 @@ void DirectivesReader::AddCollisionFilterGroup(YamlSchemaReader& r, const YAML::
   module().Add(std::move(group));
 }
 
-void DirectivesReader::AddDirectives(YamlSchemaReader& r, const YAML::Node& node, Loc loc,
+void DirectivesReader::AddDirectives(YamlSchemaReader& r, const yaml::Node& node, Loc loc,
                                      const std::string& ns) {
   if (!r.CheckMap(node, "add_directives", {"file", "model_namespace"}, loc)) return;
   auto file = RequiredName(r, node, "add_directives", "file", loc);

@@ -13,7 +13,7 @@ bool IsRandomTag(std::string_view tag) {
          tag == "!GaussianVector" || tag == "!UniformDiscrete";
 }
 
-bool RejectRandom(YamlSchemaReader& r, const YAML::Node& node, std::string_view what,
+bool RejectRandom(YamlSchemaReader& r, const yaml::Node& node, std::string_view what,
                   Loc fallback) {
   const std::string_view tag = YamlSchemaReader::ExplicitTag(node);
   if (!IsRandomTag(tag)) return false;
@@ -27,7 +27,7 @@ bool RejectRandom(YamlSchemaReader& r, const YAML::Node& node, std::string_view 
 // Drake's deterministic wrappers (!Deterministic {value: x} and
 // !DeterministicVector {value: [...]}) hold the plain value under `value`.
 // Returns the node to read the plain value from, or nullopt after an error.
-std::optional<std::pair<YAML::Node, Loc>> Unwrap(YamlSchemaReader& r, const YAML::Node& node,
+std::optional<std::pair<yaml::Node, Loc>> Unwrap(YamlSchemaReader& r, const yaml::Node& node,
                                                  std::string_view wrapper, std::string_view what,
                                                  Loc fallback) {
   if (RejectRandom(r, node, what, fallback)) return std::nullopt;
@@ -42,21 +42,21 @@ std::optional<std::pair<YAML::Node, Loc>> Unwrap(YamlSchemaReader& r, const YAML
   return std::pair{value.value, value.key_loc};
 }
 
-std::optional<Eigen::Vector3d> ReadVector(YamlSchemaReader& r, const YAML::Node& node,
+std::optional<Eigen::Vector3d> ReadVector(YamlSchemaReader& r, const yaml::Node& node,
                                           std::string_view what, Loc fallback) {
   auto plain = Unwrap(r, node, "!DeterministicVector", what, fallback);
   if (!plain) return std::nullopt;
   return r.Vector3(plain->first, what, plain->second);
 }
 
-std::optional<double> ReadScalar(YamlSchemaReader& r, const YAML::Node& node,
+std::optional<double> ReadScalar(YamlSchemaReader& r, const yaml::Node& node,
                                  std::string_view what, Loc fallback) {
   auto plain = Unwrap(r, node, "!Deterministic", what, fallback);
   if (!plain) return std::nullopt;
   return r.Number(plain->first, what, plain->second);
 }
 
-std::optional<Eigen::Matrix3d> ReadRotation(YamlSchemaReader& r, const YAML::Node& node,
+std::optional<Eigen::Matrix3d> ReadRotation(YamlSchemaReader& r, const yaml::Node& node,
                                             Loc fallback) {
   const std::string_view tag = YamlSchemaReader::ExplicitTag(node);
   const Loc loc = r.LocOf(node, fallback);
@@ -113,7 +113,7 @@ std::optional<Eigen::Matrix3d> ReadRotation(YamlSchemaReader& r, const YAML::Nod
 }  // namespace
 
 std::optional<DirectiveTransform> ReadDirectiveTransform(YamlSchemaReader& r,
-                                                         const YAML::Node& node,
+                                                         const yaml::Node& node,
                                                          std::string_view what, Loc fallback) {
   DirectiveTransform out;
   out.loc = r.LocOf(node, fallback);

@@ -21,7 +21,7 @@ struct DirectiveTransform {
 /// Reads the transform at `node` (`what` names it in messages). nullopt
 /// after reporting a problem.
 std::optional<DirectiveTransform> ReadDirectiveTransform(YamlSchemaReader& reader,
-                                                         const YAML::Node& node,
+                                                         const yaml::Node& node,
                                                          std::string_view what, Loc fallback);
 
 }  // namespace mdlc::frontend

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/exceptions.h>
 
 #include <cmath>
 
@@ -10,9 +11,9 @@
 
 namespace mdlc::frontend {
 
-std::optional<YAML::Node> YamlSchemaReader::Parse(std::string_view contents) {
+std::unique_ptr<yaml::Document> YamlSchemaReader::Parse(std::string_view contents) {
   try {
-    return YAML::Load(std::string(contents));
+    return yaml::Document::Load(contents);
   } catch (const YAML::Exception& e) {
     // yaml-cpp's exceptions carry the position of the problem
     Loc loc{file_, 1, 1};
@@ -25,18 +26,16 @@ std::optional<YAML::Node> YamlSchemaReader::Parse(std::string_view contents) {
     diags_.Report(DiagKind::YamlSyntax, loc,
                   too_deep ? std::string("malformed YAML: nested too deeply")
                            : fmt::format("malformed YAML: {}", e.msg));
-    return std::nullopt;
+    return nullptr;
   }
 }
 
-Loc YamlSchemaReader::LocOf(const YAML::Node& node, Loc fallback) const {
-  if (!node.IsDefined()) return fallback;
-  const YAML::Mark mark = node.Mark();
-  if (mark.is_null() || mark.line < 0) return fallback;
-  return Loc{file_, static_cast<uint32_t>(mark.line + 1), static_cast<uint32_t>(mark.column + 1)};
+Loc YamlSchemaReader::LocOf(const yaml::Node& node, Loc fallback) const {
+  if (node.line() == 0) return fallback;  // undefined, or without a place
+  return Loc{file_, node.line(), node.column()};
 }
 
-void YamlSchemaReader::ReportType(const YAML::Node& node, std::string_view what,
+void YamlSchemaReader::ReportType(const yaml::Node& node, std::string_view what,
                                   std::string_view expected, Loc fallback) {
   std::string_view found = node.IsMap() ? "a map" : node.IsSequence() ? "a list" : "a scalar";
   diags_.Report(DiagKind::BadValue, LocOf(node, fallback),
@@ -47,16 +46,16 @@ void YamlSchemaReader::ReportType(const YAML::Node& node, std::string_view what,
 // which Drake's YAML reader honors) bring in, nearest first: a key of an
 // earlier map hides the same key of a later one. Breadth-first, with no
 // recursion, and bounded, so aliases cannot make it blow up.
-std::vector<YAML::Node> YamlSchemaReader::MergedMaps(const YAML::Node& map) const {
+std::vector<yaml::Node> YamlSchemaReader::MergedMaps(const yaml::Node& map) const {
   constexpr size_t kMaxMaps = 64;
-  std::vector<YAML::Node> maps = {map};
+  std::vector<yaml::Node> maps = {map};
   for (size_t i = 0; i < maps.size() && maps.size() < kMaxMaps; ++i) {
-    for (auto it = maps[i].begin(); it != maps[i].end(); ++it) {
-      if (!it->first.IsScalar() || it->first.Scalar() != "<<") continue;
-      const YAML::Node merged = it->second;
+    for (const yaml::Entry entry : maps[i].Entries()) {
+      if (!entry.first.IsScalar() || entry.first.Scalar() != "<<") continue;
+      const yaml::Node merged = entry.second;
       if (merged.IsMap()) maps.push_back(merged);
       if (merged.IsSequence()) {
-        for (const YAML::Node& m : merged) {
+        for (const yaml::Node m : merged.Items()) {
           if (m.IsMap() && maps.size() < kMaxMaps) maps.push_back(m);
         }
       }
@@ -65,7 +64,7 @@ std::vector<YAML::Node> YamlSchemaReader::MergedMaps(const YAML::Node& map) cons
   return maps;
 }
 
-bool YamlSchemaReader::CheckMap(const YAML::Node& node, std::string_view what,
+bool YamlSchemaReader::CheckMap(const yaml::Node& node, std::string_view what,
                                 std::initializer_list<std::string_view> allowed, Loc fallback) {
   if (!node.IsMap()) {
     if (node.IsNull()) {
@@ -76,23 +75,25 @@ bool YamlSchemaReader::CheckMap(const YAML::Node& node, std::string_view what,
     }
     return false;
   }
-  const std::vector<YAML::Node> maps = MergedMaps(node);
-  for (size_t m = 0; m < maps.size(); ++m) {
+  // checks one map's keys; says whether it merges others in
+  auto check_keys = [&](const yaml::Node& map) {
+    bool merges = false;
     std::vector<std::string_view> seen;
-    for (auto it = maps[m].begin(); it != maps[m].end(); ++it) {
-      const YAML::Node key = it->first;  // a copy: it-> yields a temporary
-      const Loc key_loc = LocOf(key, LocOf(maps[m], fallback));
+    for (const yaml::Entry entry : map.Entries()) {
+      const yaml::Node key = entry.first;
+      const Loc key_loc = LocOf(key, LocOf(map, fallback));
       if (!key.IsScalar()) {
         diags_.Report(DiagKind::BadValue, key_loc,
                       fmt::format("{} has a key that is not a name", what));
         continue;
       }
-      const std::string& name = key.Scalar();
+      const std::string_view name = key.Scalar();
       if (name == "<<") {
-        const YAML::Node merged = it->second;
+        merges = true;
+        const yaml::Node merged = entry.second;
         bool maps_only = merged.IsMap() || merged.IsSequence();
         if (merged.IsSequence()) {
-          for (const YAML::Node& item : merged) maps_only = maps_only && item.IsMap();
+          for (const yaml::Node item : merged.Items()) maps_only = maps_only && item.IsMap();
         }
         if (!maps_only) {
           diags_.Report(DiagKind::BadValue, LocOf(merged, key_loc),
@@ -120,24 +121,38 @@ bool YamlSchemaReader::CheckMap(const YAML::Node& node, std::string_view what,
           break;
         }
       }
-      seen.push_back(key.Scalar());
+      seen.push_back(name);
     }
-  }
+    return merges;
+  };
+  if (!check_keys(node)) return true;  // most maps merge nothing
+  const std::vector<yaml::Node> maps = MergedMaps(node);
+  for (size_t m = 1; m < maps.size(); ++m) check_keys(maps[m]);
   return true;
 }
 
-YamlSchemaReader::Field YamlSchemaReader::Get(const YAML::Node& map, std::string_view key) const {
-  for (const YAML::Node& m : MergedMaps(map)) {
-    for (auto it = m.begin(); it != m.end(); ++it) {
-      if (it->first.IsScalar() && it->first.Scalar() == key) {
-        return Field{it->second, LocOf(it->first)};
+YamlSchemaReader::Field YamlSchemaReader::Get(const yaml::Node& map, std::string_view key) const {
+  // the map's own key hides any merged one, and most maps merge nothing:
+  // one walk of the map alone settles almost every lookup
+  bool merges = false;
+  for (const yaml::Entry entry : map.Entries()) {
+    if (!entry.first.IsScalar()) continue;
+    const std::string_view name = entry.first.Scalar();
+    if (name == key) return Field{entry.second, LocOf(entry.first)};
+    merges = merges || name == "<<";
+  }
+  if (!merges) return Field{};
+  for (const yaml::Node m : MergedMaps(map)) {
+    for (const yaml::Entry entry : m.Entries()) {
+      if (entry.first.IsScalar() && entry.first.Scalar() == key) {
+        return Field{entry.second, LocOf(entry.first)};
       }
     }
   }
-  return Field{YAML::Node(YAML::NodeType::Undefined), {}};
+  return Field{};
 }
 
-std::optional<LocatedString> YamlSchemaReader::String(const YAML::Node& node, std::string_view what,
+std::optional<LocatedString> YamlSchemaReader::String(const yaml::Node& node, std::string_view what,
                                                       Loc fallback) {
   const Loc loc = LocOf(node, fallback);
   if (node.IsNull()) return LocatedString{"", loc};
@@ -145,16 +160,16 @@ std::optional<LocatedString> YamlSchemaReader::String(const YAML::Node& node, st
     ReportType(node, what, "a string", fallback);
     return std::nullopt;
   }
-  return LocatedString{node.Scalar(), loc};
+  return LocatedString{std::string(node.Scalar()), loc};
 }
 
-std::optional<double> YamlSchemaReader::Number(const YAML::Node& node, std::string_view what,
+std::optional<double> YamlSchemaReader::Number(const yaml::Node& node, std::string_view what,
                                                Loc fallback) {
   if (!node.IsScalar()) {
     ReportType(node, what, "a number", fallback);
     return std::nullopt;
   }
-  const std::string& text = node.Scalar();
+  const std::string_view text = node.Scalar();
   std::optional<double> value = xml::ParseDouble(text);
   if (!value) {
     // YAML spells the special values .inf, -.inf and .nan
@@ -177,7 +192,7 @@ std::optional<double> YamlSchemaReader::Number(const YAML::Node& node, std::stri
   return value;
 }
 
-std::optional<std::vector<double>> YamlSchemaReader::Numbers(const YAML::Node& node,
+std::optional<std::vector<double>> YamlSchemaReader::Numbers(const yaml::Node& node,
                                                              std::string_view what, Loc fallback,
                                                              std::optional<size_t> count) {
   if (!node.IsSequence()) {
@@ -193,7 +208,7 @@ std::optional<std::vector<double>> YamlSchemaReader::Numbers(const YAML::Node& n
   std::vector<double> values;
   values.reserve(node.size());
   bool ok = true;
-  for (const YAML::Node& item : node) {
+  for (const yaml::Node item : node.Items()) {
     auto v = Number(item, what, LocOf(node, fallback));
     ok = ok && v.has_value();
     if (v) values.push_back(*v);
@@ -202,14 +217,14 @@ std::optional<std::vector<double>> YamlSchemaReader::Numbers(const YAML::Node& n
   return values;
 }
 
-std::optional<Eigen::Vector3d> YamlSchemaReader::Vector3(const YAML::Node& node,
+std::optional<Eigen::Vector3d> YamlSchemaReader::Vector3(const yaml::Node& node,
                                                          std::string_view what, Loc fallback) {
   auto v = Numbers(node, what, fallback, 3);
   if (!v) return std::nullopt;
   return Eigen::Vector3d((*v)[0], (*v)[1], (*v)[2]);
 }
 
-std::optional<std::vector<LocatedString>> YamlSchemaReader::Strings(const YAML::Node& node,
+std::optional<std::vector<LocatedString>> YamlSchemaReader::Strings(const yaml::Node& node,
                                                                     std::string_view what,
                                                                     Loc fallback) {
   if (node.IsNull()) return std::vector<LocatedString>{};
@@ -220,20 +235,20 @@ std::optional<std::vector<LocatedString>> YamlSchemaReader::Strings(const YAML::
   std::vector<LocatedString> out;
   out.reserve(node.size());
   bool ok = true;
-  for (const YAML::Node& item : node) {
+  for (const yaml::Node item : node.Items()) {
     if (!item.IsScalar()) {
       ReportType(item, fmt::format("each entry of {}", what), "a name", LocOf(node, fallback));
       ok = false;
       continue;
     }
-    out.push_back({item.Scalar(), LocOf(item, LocOf(node, fallback))});
+    out.push_back({std::string(item.Scalar()), LocOf(item, LocOf(node, fallback))});
   }
   if (!ok) return std::nullopt;
   return out;
 }
 
-std::string_view YamlSchemaReader::ExplicitTag(const YAML::Node& node) {
-  const std::string& tag = node.Tag();
+std::string_view YamlSchemaReader::ExplicitTag(const yaml::Node& node) {
+  const std::string_view tag = node.Tag();
   // yaml-cpp gives "?" for an untagged plain node and "!" for a quoted one
   if (tag.empty() || tag == "?" || tag == "!") return {};
   return tag;

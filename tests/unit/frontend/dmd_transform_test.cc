@@ -21,7 +21,7 @@ class DmdTransformTest : public ::testing::Test {
     YamlSchemaReader reader(file_, diags_);
     auto doc = reader.Parse(sources_.Contents(file_));
     if (!doc) return std::nullopt;
-    auto x = reader.Get(*doc, "X");
+    auto x = reader.Get(doc->root(), "X");
     return ReadDirectiveTransform(reader, x.value, "X", x.key_loc);
   }
   // The first diagnostic's "line:col: message".
