@@ -19,6 +19,7 @@
 // Reads: Module::frame_graph. Writes: Frame::body/X_BF, Joint::parent/child/
 // X_PF/X_CM/axis, Geometry::X_BG, Camera::X_BC, Body::default_pose, and the
 // welds of static models' links (SDF-006).
+#include <absl/container/inlined_vector.h>
 #include <fmt/format.h>
 
 #include <cmath>
@@ -28,6 +29,10 @@
 
 namespace mdlc::passes {
 namespace {
+
+// A node's dependencies: one or two for nearly every node (its attachment,
+// its relative_to frame), so they are kept inline, not on the heap.
+using FrameDeps = absl::InlinedVector<FrameNodeId, 4>;
 
 using ir::FrameNode;
 using ir::FrameNodeKind;
@@ -50,8 +55,8 @@ class ResolveFramesPass : public Pass {
   std::optional<FrameNodeId> Lookup(FrameScopeId scope, const ir::NameRef& ref,
                                     std::string_view what);
   // --- graph evaluation ---
-  std::vector<FrameNodeId> PoseDependencies(FrameNodeId n) const;
-  void ChainTo(FrameNodeId x, FrameScopeId ancestor, std::vector<FrameNodeId>& out) const;
+  FrameDeps PoseDependencies(FrameNodeId n) const;
+  void ChainTo(FrameNodeId x, FrameScopeId ancestor, FrameDeps& out) const;
   FrameScopeId CommonAncestor(FrameScopeId a, FrameScopeId b) const;
   /// Pose of node x in the frame of scope C (every dependency evaluated).
   Transform PoseInScope(FrameNodeId x, FrameScopeId c) const;
@@ -148,7 +153,7 @@ FrameScopeId ResolveFramesPass::CommonAncestor(FrameScopeId a, FrameScopeId b) c
 
 // The nodes whose local poses compose the pose of x in the frame of `ancestor`.
 void ResolveFramesPass::ChainTo(FrameNodeId x, FrameScopeId ancestor,
-                                std::vector<FrameNodeId>& out) const {
+                                FrameDeps& out) const {
   out.push_back(x);
   for (FrameScopeId s = g()[x].scope; s != ancestor; s = g()[s].parent) out.push_back(g()[s].frame);
 }
@@ -165,8 +170,8 @@ Transform ResolveFramesPass::PoseInScope(FrameNodeId x, FrameScopeId c) const {
   return P2.inverse() * P1;
 }
 
-std::vector<FrameNodeId> ResolveFramesPass::PoseDependencies(FrameNodeId n) const {
-  std::vector<FrameNodeId> deps;
+FrameDeps ResolveFramesPass::PoseDependencies(FrameNodeId n) const {
+  FrameDeps deps;
   const FrameNode& node = g()[n];
   const auto& target = relative_to_[n.index()];
   if (target && *target != g()[node.scope].frame) {
@@ -244,7 +249,7 @@ bool ResolveFramesPass::Evaluate(std::string_view graph_name, Deps&& deps, Eval&
   std::vector<uint8_t> state(g().nodes.size(), kNew);
   struct Entry {
     FrameNodeId node;
-    std::vector<FrameNodeId> deps;
+    FrameDeps deps;
     size_t next = 0;
     bool ok = true;
   };
@@ -484,7 +489,7 @@ bool ResolveFramesPass::Run(PassContext& ctx) {
   Evaluate(
       "attached_to",
       [&](FrameNodeId n) {
-        std::vector<FrameNodeId> deps;
+        FrameDeps deps;
         if (auto a = AttachmentOf(n)) deps.push_back(*a);
         return deps;
       },

@@ -96,9 +96,17 @@ std::optional<std::vector<double>> SdfReader::TextDoubles(const xml::XmlElement&
 }
 
 std::optional<Eigen::Vector3d> SdfReader::TextVector3(const xml::XmlElement& e) {
-  auto v = TextDoubles(e, 3);
-  if (!v) return std::nullopt;
-  return Eigen::Vector3d((*v)[0], (*v)[1], (*v)[2]);
+  // read in place, as nearly every vector is well formed; TextDoubles says
+  // what is wrong with the others
+  std::string storage;
+  Eigen::Vector3d v;
+  if (const auto count = xml::ParseDoublesInto(e.TextView(storage), v.data(), 3);
+      count && *count == 3 && v.allFinite()) {
+    return v;
+  }
+  auto values = TextDoubles(e, 3);
+  if (!values) return std::nullopt;
+  return Eigen::Vector3d((*values)[0], (*values)[1], (*values)[2]);
 }
 
 std::optional<Eigen::Vector3d> SdfReader::ChildVector3(const xml::XmlElement& parent,
