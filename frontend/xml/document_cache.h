@@ -9,6 +9,8 @@
 //
 // Only a parse that reported nothing is shared: a document with warnings or
 // errors is parsed again at each load, so that each load reports its own.
+// A tree is kept from a path's second load on: a scene that adds many
+// different files, once each, keeps none of them past its own reading.
 #pragma once
 
 #include <absl/container/flat_hash_map.h>
@@ -31,6 +33,7 @@ class DocumentCache {
   uint64_t reused() const { return reused_; }
 
  private:
+  // by path: the tree to share, or null for a path loaded once so far
   absl::flat_hash_map<std::string, std::shared_ptr<const XmlDocument>> by_path_;
   uint64_t reused_ = 0;
 };
