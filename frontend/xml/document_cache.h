@@ -1,11 +1,11 @@
-// document_cache.h - each XML file of a compile parsed once.
+// document_cache.h - an XML file a compile loads many times, parsed at most twice.
 //
 // A file may be loaded many times in one compile: a directives scene adds
 // the same robot once per instance, a world includes one model per copy.
 // Each load is its own buffer (its own FileId, with its own "included from"
-// place), but the text is the same, and so is the tree. The cache parses a
-// file's text once and gives every later load of the same text a document
-// over that tree, placed in the later buffer.
+// place), but the text is the same, and so is the tree. The cache keeps the
+// tree of a path's second load and gives every later load of the same text
+// a document over that tree, placed in the later buffer.
 //
 // Only a parse that reported nothing is shared: a document with warnings or
 // errors is parsed again at each load, so that each load reports its own.

@@ -9,7 +9,7 @@
 //   compile/dmd_chain/N     the whole compile (frontends, passes, backend)
 // Each reports a BigO fit over N. Files go to a temporary folder, made once.
 // The floor leaves out the arm's URDF, which every add_model loads: a
-// compile parses its text once (frontend/xml/document_cache.h) and lowers
+// compile parses its text twice (frontend/xml/document_cache.h) and lowers
 // it once per instance, and the compile's time includes both.
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>

@@ -27,8 +27,9 @@ void ReadInput(const Input& input, frontend::FrontendContext& ctx) {
 }  // namespace
 
 bool Compilation::RunFrontends() {
-  // a file the inputs load many times is parsed once; the trees go when
-  // the frontends are done, as the IR holds copies of what it needs
+  // a file the inputs load many times is parsed at most twice (see
+  // document_cache.h); the trees go when the frontends are done, as the IR
+  // holds copies of what it needs
   xml::DocumentCache documents;
   frontend::FrontendContext ctx{sources, diags, module, options.frontend, packages, &documents};
   for (const Input& input : options.inputs) {
