@@ -1,12 +1,13 @@
 // yaml_schema.h - strict, located reading of YAML for schema-defined formats
 // (Model Directives).
 //
-// yaml-cpp parses, into mdlc's tree (yaml_tree.h); this reader checks it against the schema the
-// caller states field by field, the way Drake's YAML archive does: a map may
-// hold only the keys the schema names (each once), a field has one type, and
-// every problem is reported at the node's line and column. Each read reports
-// its own problem and returns nullopt, so callers skip what they could not
-// read and go on to report the next problem.
+// yaml-cpp parses the text into mdlc's tree (yaml_tree.h); this reader
+// checks the tree against the schema the caller states field by field, the
+// way Drake's YAML archive does: a map may hold only the keys the schema
+// names (each once), a field has one type, and every problem is reported at
+// the node's line and column. Each read reports its own problem and returns
+// nullopt, so callers skip what they could not read and go on to report the
+// next problem.
 #pragma once
 
 #include <Eigen/Core>

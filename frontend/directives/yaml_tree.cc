@@ -49,6 +49,9 @@ class TreeBuilder final : public YAML::EventHandler {
  private:
   std::string_view Copy(std::string_view text) {
     if (text.empty()) return {};
+    // nearly every node is untagged: yaml-cpp's "?" (plain) or "!" (quoted)
+    if (text == "?") return "?";
+    if (text == "!") return "!";
     char* out = static_cast<char*>(doc_.arena_.allocate(text.size(), 1));
     std::memcpy(out, text.data(), text.size());
     return {out, text.size()};

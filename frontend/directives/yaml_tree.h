@@ -32,11 +32,6 @@ struct NodeData {
 };
 }  // namespace detail
 
-class Node;
-
-/// One key and its value.
-struct Entry;
-
 /// A view of one node; a default Node is undefined (an absent value).
 class Node {
  public:
@@ -72,6 +67,7 @@ class Node {
   const detail::NodeData* data_ = nullptr;
 };
 
+/// One key of a map and its value.
 struct Entry {
   Node first;   // the key
   Node second;  // the value
