@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 #include <initializer_list>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
