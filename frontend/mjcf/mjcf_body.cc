@@ -7,6 +7,7 @@
 // sit in folded into a pose and a childclass (MuJoCo 3's <frame>), then
 // lowered: inertial, joints (mjcf_joint.cc), geoms, sites, cameras
 // (mjcf_geom.cc). Child bodies go back on the stack.
+#include <absl/container/inlined_vector.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -19,7 +20,8 @@ namespace {
 
 /// A body's children, sorted by what they are, frames folded in.
 struct BodyItems {
-  std::vector<BodyItem> inertials, joints, geoms, sites, cameras, bodies;
+  // a body has a few of each: kept inline, not on the heap
+  absl::InlinedVector<BodyItem, 2> inertials, joints, geoms, sites, cameras, bodies;
 };
 
 /// <composite>, <attach> and <replicate> generate bodies, joints and geoms
@@ -145,11 +147,11 @@ std::optional<ir::Inertial> ReadInertial(MjcfReader& r, const xml::XmlElement& e
     return std::nullopt;
   }
   if (diag) {
-    auto d = r.Numbers(in, "diaginertia", 3);
-    if (!d) return std::nullopt;
-    inertial.ixx = (*d)[0];
-    inertial.iyy = (*d)[1];
-    inertial.izz = (*d)[2];
+    double d[3];
+    if (!r.FixedNumbers(in, "diaginertia", d, 3)) return std::nullopt;
+    inertial.ixx = d[0];
+    inertial.iyy = d[1];
+    inertial.izz = d[2];
   } else if (full) {
     for (std::string_view alt : {"quat", "axisangle", "xyaxes", "zaxis", "euler"}) {
       if (e.Attribute(alt).present() && alt != "quat") {
@@ -158,16 +160,16 @@ std::optional<ir::Inertial> ReadInertial(MjcfReader& r, const xml::XmlElement& e
         return std::nullopt;
       }
     }
-    auto f = r.Numbers(in, "fullinertia", 6);
-    if (!f) return std::nullopt;
+    double f[6];
+    if (!r.FixedNumbers(in, "fullinertia", f, 6)) return std::nullopt;
     // the matrix is in the body's axes: MuJoCo ignores quat when fullinertia is given
     inertial.X_BI.R.setIdentity();
-    inertial.ixx = (*f)[0];
-    inertial.iyy = (*f)[1];
-    inertial.izz = (*f)[2];
-    inertial.ixy = (*f)[3];
-    inertial.ixz = (*f)[4];
-    inertial.iyz = (*f)[5];
+    inertial.ixx = f[0];
+    inertial.iyy = f[1];
+    inertial.izz = f[2];
+    inertial.ixy = f[3];
+    inertial.ixz = f[4];
+    inertial.iyz = f[5];
   } else {
     r.diags().Report(DiagKind::MissingAttribute, e.GetLoc(),
                      "the <inertial> element must have a 'diaginertia' or 'fullinertia' "

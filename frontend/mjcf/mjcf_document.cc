@@ -8,6 +8,7 @@
 // A file included twice is an error in MuJoCo ("already included"); a file
 // that includes itself, directly or not, is reported as a cycle with the
 // whole include chain as notes. Both walks use explicit stacks.
+#include <absl/container/inlined_vector.h>
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -38,9 +39,10 @@ struct ChainLink {
 
 std::vector<xml::XmlElement> MjcfDocument::Children(const xml::XmlElement& e) const {
   std::vector<xml::XmlElement> out;
+  out.reserve(8);  // a body's inertial, joints, geoms and child bodies: one allocation
   // a stack of sibling cursors: entering an include pushes the included
   // root's first child; leaving it resumes after the include
-  std::vector<xml::XmlElement> cursors{e.FirstChild()};
+  absl::InlinedVector<xml::XmlElement, 4> cursors{e.FirstChild()};
   while (!cursors.empty()) {
     xml::XmlElement& cursor = cursors.back();
     if (!cursor) {

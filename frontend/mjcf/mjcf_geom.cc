@@ -239,7 +239,7 @@ bool LowerGeom(MjcfReader& r, const BodyItem& item, BodyId body, bool is_world,
     }
   }
   if (g.Get("rgba").present()) {
-    if (auto c = r.Numbers(g, "rgba", 4)) geom.rgba = Eigen::Vector4d((*c)[0], (*c)[1], (*c)[2], (*c)[3]);
+    if (Eigen::Vector4d c; r.FixedNumbers(g, "rgba", c.data(), 4)) geom.rgba = c;
   } else if (!geom.material.id.valid() || !m[geom.material.id].rgba) {
     geom.rgba = Eigen::Vector4d(0.5, 0.5, 0.5, 1);  // MuJoCo's default geom color
   }

@@ -89,7 +89,7 @@ std::optional<bool> Limited(MjcfReader& r, const Element& j, const std::vector<d
 
 }  // namespace
 
-void LowerJoints(MjcfReader& r, const BodyContext& b, const std::vector<BodyItem>& items,
+void LowerJoints(MjcfReader& r, const BodyContext& b, std::span<const BodyItem> items,
                  bool mocap) {
   ir::Module& m = r.module();
   if (items.empty()) {
@@ -182,8 +182,8 @@ void LowerJoints(MjcfReader& r, const BodyContext& b, const std::vector<BodyItem
   for (size_t k = 0; k < joints.size() && simple_body; ++k) {
     const Attribute type = joints[k].Get("type");
     Eigen::Vector3d pos = Eigen::Vector3d::Zero(), axis = Eigen::Vector3d::UnitZ();
-    if (auto v = r.Numbers(joints[k], "pos", 3)) pos = {(*v)[0], (*v)[1], (*v)[2]};
-    if (auto v = r.Numbers(joints[k], "axis", 3)) axis = {(*v)[0], (*v)[1], (*v)[2]};
+    if (Eigen::Vector3d v; r.FixedNumbers(joints[k], "pos", v.data(), 3)) pos = v;
+    if (Eigen::Vector3d v; r.FixedNumbers(joints[k], "axis", v.data(), 3)) axis = v;
     pos = items[k].X_BF * pos;
     axis = items[k].X_BF.R * axis;
     simple_body = type.present() && type.value == "slide" && (pos.array().abs() < 1e-6).all() &&
@@ -212,8 +212,8 @@ void LowerJoints(MjcfReader& r, const BodyContext& b, const std::vector<BodyItem
 
     // pos and axis: in the body frame, through any <frame> the joint is in
     Eigen::Vector3d pos = Eigen::Vector3d::Zero(), axis = Eigen::Vector3d::UnitZ();
-    if (auto v = r.Numbers(j, "pos", 3)) pos = {(*v)[0], (*v)[1], (*v)[2]};
-    if (auto v = r.Numbers(j, "axis", 3)) axis = {(*v)[0], (*v)[1], (*v)[2]};
+    if (Eigen::Vector3d v; r.FixedNumbers(j, "pos", v.data(), 3)) pos = v;
+    if (Eigen::Vector3d v; r.FixedNumbers(j, "axis", v.data(), 3)) axis = v;
     pos = item.X_BF * pos;
     axis = item.X_BF.R * axis;
     if (jt != ir::JointType::Ball && axis.norm() < 1e-14) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -41,7 +42,7 @@ struct BodyContext {
 
 /// MJCF-021..024, BEYOND-007: the body's joints, or a weld to its parent
 /// when it has none. Adds the intermediate bodies of stacked joints.
-void LowerJoints(MjcfReader& r, const BodyContext& b, const std::vector<BodyItem>& joints,
+void LowerJoints(MjcfReader& r, const BodyContext& b, std::span<const BodyItem> joints,
                  bool mocap);
 
 /// MJCF-040..043, BEYOND-002: one geom; `index` numbers the body's geoms for
