@@ -43,14 +43,7 @@ std::string InstalledNextTo(const fs::path& binary) {
   return {};
 }
 
-}  // namespace
-
-MeshReaderLocation FindMeshReader() {
-  if (const char* named = std::getenv(kMeshReaderVariable); named && *named) {
-    if (IsExecutable(named)) return {named, {}};
-    return {{}, fmt::format("{} names '{}', which is not an executable file", kMeshReaderVariable,
-                            named)};
-  }
+MeshReaderLocation SearchNextToThisCode() {
   // the shared object this code is in (a shared library, the Python
   // module), then the program (mdlc, or a program linking mdlc statically)
   Dl_info info;
@@ -64,6 +57,21 @@ MeshReaderLocation FindMeshReader() {
   }
   return {{}, fmt::format("the mdlc-mesh-reader program was not found (set {} to its path)",
                           kMeshReaderVariable)};
+}
+
+}  // namespace
+
+MeshReaderLocation FindMeshReader() {
+  if (const char* named = std::getenv(kMeshReaderVariable); named && *named) {
+    if (IsExecutable(named)) return {named, {}};
+    return {{}, fmt::format("{} names '{}', which is not an executable file", kMeshReaderVariable,
+                            named)};
+  }
+  // where this code and the program are does not change while they run:
+  // the folders are searched once per process (a score of system calls),
+  // not once per compile
+  static const MeshReaderLocation found = SearchNextToThisCode();
+  return found;
 }
 
 }  // namespace mdlc::mesh

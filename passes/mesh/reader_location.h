@@ -18,7 +18,8 @@ struct MeshReaderLocation {
 /// The reader program: $MDLC_MESH_READER when set; else
 /// <prefix>/libexec/mdlc/mdlc-mesh-reader of the installed prefix holding
 /// the library, module or program this code is linked into; else the one
-/// this source tree built, while it exists.
+/// this source tree built. Only the variable is read anew at each call;
+/// the folders are searched once per process.
 MeshReaderLocation FindMeshReader();
 
 }  // namespace mdlc::mesh
