@@ -124,7 +124,7 @@ bool ElementsLowering::IsLimited(const Attribute& limited, const Attribute& rang
 namespace {
 
 template <typename Id>
-std::optional<Id> Find(ElementsLowering& L, const std::unordered_map<std::string, Id>& table,
+std::optional<Id> Find(ElementsLowering& L, const MjcfReader::ByName<Id>& table,
                        const Attribute& a, std::string_view element, std::string_view what) {
   auto it = table.find(std::string(a.value));
   if (it != table.end()) return it->second;

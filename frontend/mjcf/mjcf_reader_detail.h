@@ -194,11 +194,15 @@ struct MjcfReader {
   std::unordered_map<std::string, MaterialId> materials;
 
   // Entities by their MJCF name, as elements refer to them. "world" is the
-  // world body. Unnamed entities are not here.
-  std::unordered_map<std::string, BodyId> bodies;
-  std::unordered_map<std::string, JointId> joints;
-  std::unordered_map<std::string, GeometryId> geoms;  // the proximity registration when there is one
-  std::unordered_map<std::string, FrameId> sites;
+  // world body. Unnamed entities are not here. Flat tables (one is filled
+  // per body, joint, geom and site); never iterated, so their order, which
+  // varies from run to run, shows nowhere.
+  template <typename Id>
+  using ByName = absl::flat_hash_map<std::string, Id>;
+  ByName<BodyId> bodies;
+  ByName<JointId> joints;
+  ByName<GeometryId> geoms;  // the proximity registration when there is one
+  ByName<FrameId> sites;
   /// Every body in document order, world first (keyframe and equality
   /// lookups by index), and each body's MJCF joints in document order.
   std::vector<BodyId> body_order;
