@@ -32,6 +32,37 @@ struct NodeData {
 };
 }  // namespace detail
 
+class Node;
+struct Entry;
+
+/// A node's children read `kStride` at a time, each step seen as a `Value`:
+/// a sequence's items one by one (Node), a map's keys and values two by
+/// two (Entry). Made by Node::Items() and Node::Entries().
+template <typename Value, size_t kStride>
+class ChildRange {
+ public:
+  class iterator {
+   public:
+    explicit iterator(const detail::NodeData* const* at) : at_(at) {}
+    Value operator*() const;
+    iterator& operator++() {
+      at_ += kStride;
+      return *this;
+    }
+    bool operator!=(const iterator& other) const { return at_ != other.at_; }
+
+   private:
+    const detail::NodeData* const* at_;
+  };
+  ChildRange(const detail::NodeData* const* begin, size_t steps) : begin_(begin), steps_(steps) {}
+  iterator begin() const { return iterator(begin_); }
+  iterator end() const { return iterator(begin_ + kStride * steps_); }
+
+ private:
+  const detail::NodeData* const* begin_;
+  size_t steps_;
+};
+
 /// A view of one node; a default Node is undefined (an absent value).
 class Node {
  public:
@@ -52,16 +83,22 @@ class Node {
   uint32_t column() const { return data_ ? data_->column : 0; }
 
   /// Items of a sequence, entries of a map; 0 for anything else.
-  size_t size() const;
+  size_t size() const {
+    if (IsSequence()) return data_->child_count;
+    if (IsMap()) return data_->child_count / 2;
+    return 0;
+  }
   /// The i-th item of a sequence (i < size()).
   Node operator[](size_t i) const { return Node(data_->children[i]); }
 
   /// A sequence's items, in order: for (Node item : node.Items()).
-  class ItemRange;
-  ItemRange Items() const;
+  ChildRange<Node, 1> Items() const {
+    return {IsSequence() ? data_->children : nullptr, IsSequence() ? size() : 0};
+  }
   /// A map's entries, in order (repeated keys included): for (Entry e : node.Entries()).
-  class EntryRange;
-  EntryRange Entries() const;
+  ChildRange<Entry, 2> Entries() const {
+    return {IsMap() ? data_->children : nullptr, IsMap() ? size() : 0};
+  }
 
  private:
   const detail::NodeData* data_ = nullptr;
@@ -73,67 +110,13 @@ struct Entry {
   Node second;  // the value
 };
 
-class Node::ItemRange {
- public:
-  class iterator {
-   public:
-    explicit iterator(const detail::NodeData* const* at) : at_(at) {}
-    Node operator*() const { return Node(*at_); }
-    iterator& operator++() {
-      ++at_;
-      return *this;
-    }
-    bool operator!=(const iterator& other) const { return at_ != other.at_; }
-
-   private:
-    const detail::NodeData* const* at_;
-  };
-  ItemRange(const detail::NodeData* const* begin, size_t count) : begin_(begin), count_(count) {}
-  iterator begin() const { return iterator(begin_); }
-  iterator end() const { return iterator(begin_ + count_); }
-
- private:
-  const detail::NodeData* const* begin_;
-  size_t count_;
-};
-
-class Node::EntryRange {
- public:
-  class iterator {
-   public:
-    explicit iterator(const detail::NodeData* const* at) : at_(at) {}
-    Entry operator*() const { return Entry{Node(at_[0]), Node(at_[1])}; }
-    iterator& operator++() {
-      at_ += 2;
-      return *this;
-    }
-    bool operator!=(const iterator& other) const { return at_ != other.at_; }
-
-   private:
-    const detail::NodeData* const* at_;
-  };
-  EntryRange(const detail::NodeData* const* begin, size_t count) : begin_(begin), count_(count) {}
-  iterator begin() const { return iterator(begin_); }
-  iterator end() const { return iterator(begin_ + 2 * count_); }
-
- private:
-  const detail::NodeData* const* begin_;
-  size_t count_;
-};
-
-inline size_t Node::size() const {
-  if (!data_) return 0;
-  if (data_->kind == detail::NodeKind::kSequence) return data_->child_count;
-  if (data_->kind == detail::NodeKind::kMap) return data_->child_count / 2;
-  return 0;
+template <>
+inline Node ChildRange<Node, 1>::iterator::operator*() const {
+  return Node(at_[0]);
 }
-
-inline Node::ItemRange Node::Items() const {
-  return IsSequence() ? ItemRange(data_->children, data_->child_count) : ItemRange(nullptr, 0);
-}
-
-inline Node::EntryRange Node::Entries() const {
-  return IsMap() ? EntryRange(data_->children, data_->child_count / 2) : EntryRange(nullptr, 0);
+template <>
+inline Entry ChildRange<Entry, 2>::iterator::operator*() const {
+  return Entry{Node(at_[0]), Node(at_[1])};
 }
 
 /// The first document of a YAML text, owning its nodes.

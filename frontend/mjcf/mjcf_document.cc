@@ -146,8 +146,7 @@ bool LoadIncludes(const xml::XmlElement& root, const std::string& main_dir, Fron
                       fmt::format("cannot read the included file '{}'", name));
       continue;
     }
-    std::shared_ptr<const xml::XmlDocument> doc =
-        ParseXml(*id, ctx);
+    std::shared_ptr<const xml::XmlDocument> doc = ParseXml(*id, ctx);
     if (!doc) continue;  // reported by the parser, inside the included file
     document.documents.push_back(doc);
     const xml::XmlElement included_root = doc->Root();

@@ -56,8 +56,7 @@ std::optional<std::string> SdfReader::ModelFileInFolder(const std::string& dir, 
     ReportLoadError(diags(), loc, error, fmt::format("cannot read '{}'", config));
     return std::nullopt;
   }
-  std::shared_ptr<const xml::XmlDocument> doc =
-      ParseXml(*file, ctx_);
+  std::shared_ptr<const xml::XmlDocument> doc = ParseXml(*file, ctx_);
   if (!doc) return std::nullopt;
   documents_.push_back(doc);
   std::string best;
@@ -162,8 +161,7 @@ void SdfReader::ReadInclude(const xml::XmlElement& e, const SdfFile& file, Model
                                *path));
     return;
   }
-  std::shared_ptr<const xml::XmlDocument> doc =
-      ParseXml(*file_id, ctx_);
+  std::shared_ptr<const xml::XmlDocument> doc = ParseXml(*file_id, ctx_);
   if (!doc) return;
   documents_.push_back(doc);
   auto included = std::make_unique<SdfFile>();

@@ -148,8 +148,7 @@ void SdfReader::CheckChildren(const xml::XmlElement& e,
 }
 
 std::optional<ModelId> SdfReader::ReadRootFile(FileId file_id) {
-  std::shared_ptr<const xml::XmlDocument> doc =
-      ParseXml(file_id, ctx_);
+  std::shared_ptr<const xml::XmlDocument> doc = ParseXml(file_id, ctx_);
   if (!doc) return std::nullopt;
   documents_.push_back(doc);
   ReserveEntities(module(), doc->element_count());

@@ -12,8 +12,7 @@
 namespace mdlc::frontend {
 
 std::optional<ModelId> ReadUrdf(FileId file, FrontendContext& ctx) {
-  std::shared_ptr<const xml::XmlDocument> doc =
-      ParseXml(file, ctx);
+  std::shared_ptr<const xml::XmlDocument> doc = ParseXml(file, ctx);
   if (!doc) return std::nullopt;
   ReserveEntities(ctx.module, doc->element_count());
   urdf::UrdfReader reader(ctx, *doc);

@@ -11,12 +11,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "frontend/xml/xml_document.h"
+#include "tests/unit/files_under.h"
 
 namespace mdlc::xml {
 namespace {
@@ -149,24 +148,15 @@ TEST(XmlTreeOracleTest, EdgeCasesMatchLibxml2sDom) {
 
 // Compares every XML file under `roots`; returns {files, elements}.
 std::pair<int, int> CompareFilesUnder(const std::vector<std::filesystem::path>& roots) {
-  namespace fs = std::filesystem;
   int files = 0;
   int elements = 0;
-  for (const fs::path& root : roots) {
-    if (!fs::exists(root)) continue;
-    for (const auto& entry : fs::recursive_directory_iterator(root)) {
-      const std::string ext = entry.path().extension().string();
-      if (!entry.is_regular_file() || !(ext == ".urdf" || ext == ".sdf" || ext == ".xml" ||
-                                        ext == ".world" || ext == ".config" || ext == ".xacro"))
-        continue;
-      std::ifstream in(entry.path(), std::ios::binary);
-      std::stringstream text;
-      text << in.rdbuf();
-      if (text.str().find_first_not_of(" \t\r\n") == std::string::npos) continue;
-      ++files;
-      elements += CompareDocument(text.str(), entry.path().string());
-    }
-  }
+  testing::ForEachFileUnder(
+      roots, {".urdf", ".sdf", ".xml", ".world", ".config", ".xacro"},
+      [&](const std::string& path, const std::string& text) {
+        if (text.find_first_not_of(" \t\r\n") == std::string::npos) return;
+        ++files;
+        elements += CompareDocument(text, path);
+      });
   return {files, elements};
 }
 

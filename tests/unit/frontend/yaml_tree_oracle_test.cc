@@ -9,10 +9,10 @@
 #include <yaml-cpp/yaml.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
+
+#include "tests/unit/files_under.h"
 
 namespace mdlc::frontend::yaml {
 namespace {
@@ -161,21 +161,13 @@ TEST(YamlTreeOracleTest, BrokenYamlFailsAsInYamlCpp) {
 
 // Compares every YAML file under `roots`; returns {files, nodes}.
 std::pair<int, int> CompareFilesUnder(const std::vector<std::filesystem::path>& roots) {
-  namespace fs = std::filesystem;
   int files = 0;
   int nodes = 0;
-  for (const fs::path& root : roots) {
-    if (!fs::exists(root)) continue;
-    for (const auto& entry : fs::recursive_directory_iterator(root)) {
-      const std::string ext = entry.path().extension().string();
-      if (!entry.is_regular_file() || !(ext == ".yaml" || ext == ".yml")) continue;
-      std::ifstream in(entry.path(), std::ios::binary);
-      std::stringstream text;
-      text << in.rdbuf();
-      ++files;
-      nodes += CompareText(text.str(), entry.path().string());
-    }
-  }
+  testing::ForEachFileUnder(roots, {".yaml", ".yml"},
+                            [&](const std::string& path, const std::string& text) {
+                              ++files;
+                              nodes += CompareText(text, path);
+                            });
   return {files, nodes};
 }
 
