@@ -39,11 +39,21 @@ bool IsBlank(std::string_view text) {
 }
 
 template <typename T>
-T* Make(std::pmr::memory_resource& arena) {
-  return new (arena.allocate(sizeof(T), alignof(T))) T();
+T* Make(BlockCarver& arena) {
+  return new (arena.Allocate(sizeof(T), alignof(T))) T();
 }
 
 }  // namespace
+
+void* BlockCarver::Refill(size_t bytes, size_t alignment) {
+  bytes = std::max<size_t>(bytes, 1);
+  // a large piece gets its own allocation, so the current block's rest
+  // stays in use; otherwise that rest (a few bytes, as a rule) is left
+  if (bytes > kBlockSize / 4) return arena_.allocate(bytes, alignment);
+  cursor_ = static_cast<char*>(arena_.allocate(kBlockSize, alignof(std::max_align_t)));
+  end_ = cursor_ + kBlockSize;
+  return Allocate(bytes, alignment);
+}
 
 TreeBuilder::TreeBuilder(FileId file, const SourceManager& sources,
                          std::pmr::memory_resource& arena, DiagnosticEngine& diags)
@@ -139,7 +149,7 @@ void TreeBuilder::StartElement(void* parser, const unsigned char* local,
   auto* element = Make<detail::ElementNode>(arena_);
   element->name = QualifiedName(prefix, local);
   if (attribute_count > 0) {
-    auto* nodes = static_cast<detail::AttributeNode*>(arena_.allocate(
+    auto* nodes = static_cast<detail::AttributeNode*>(arena_.Allocate(
         sizeof(detail::AttributeNode) * attribute_count, alignof(detail::AttributeNode)));
     // libxml2 gives five pointers per attribute: local name, prefix, URI,
     // and the value's start and end (not NUL-terminated)
@@ -245,7 +255,7 @@ std::string_view TreeBuilder::QualifiedName(const unsigned char* prefix,
 }
 
 std::string_view TreeBuilder::Copy(std::string_view text) {
-  auto* out = static_cast<char*>(arena_.allocate(text.size() + 1, 1));
+  auto* out = static_cast<char*>(arena_.Allocate(text.size() + 1, 1));
   std::memcpy(out, text.data(), text.size());
   out[text.size()] = '\0';
   return {out, text.size()};

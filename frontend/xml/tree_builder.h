@@ -29,6 +29,34 @@ struct _xmlSAXHandler;
 
 namespace mdlc::xml {
 
+/// Carves small pieces (nodes, names, values) out of blocks taken from an
+/// arena. A monotonic_buffer_resource's allocate is a virtual call into
+/// libstdc++ for each of the three or so pieces an element makes (2% of a
+/// compile's instructions); here the common case is an inline pointer bump.
+/// Everything still lives in, and is released with, the arena.
+class BlockCarver {
+ public:
+  explicit BlockCarver(std::pmr::memory_resource& arena) : arena_(arena) {}
+
+  void* Allocate(size_t bytes, size_t alignment) {
+    const uintptr_t start = (reinterpret_cast<uintptr_t>(cursor_) + alignment - 1) &
+                            ~(static_cast<uintptr_t>(alignment) - 1);
+    if (bytes == 0 || start + bytes > reinterpret_cast<uintptr_t>(end_)) {
+      return Refill(bytes, alignment);
+    }
+    cursor_ = reinterpret_cast<char*>(start + bytes);
+    return reinterpret_cast<void*>(start);
+  }
+
+ private:
+  static constexpr size_t kBlockSize = 64 * 1024;
+  void* Refill(size_t bytes, size_t alignment);
+
+  std::pmr::memory_resource& arena_;
+  char* cursor_ = nullptr;
+  char* end_ = nullptr;
+};
+
 class TreeBuilder {
  public:
   /// Builds into `arena` the tree of `file`, whose text libxml2 is given.
@@ -87,7 +115,7 @@ class TreeBuilder {
   std::string_view CopyValue(std::string_view value);
 
   FileId file_;
-  std::pmr::memory_resource& arena_;
+  BlockCarver arena_;
   DiagnosticEngine& diags_;
   const Limits& limits_;
   StartTagLocator locator_;
