@@ -11,7 +11,9 @@
 // pass sees it.
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
+#include <span>
 
 #include "frontend/mjcf/mjcf_lowering.h"
 #include "frontend/mjcf/mjcf_orientation.h"
@@ -25,7 +27,7 @@ ir::Ref<BodyId> RefTo(const ir::Module& m, BodyId id) { return {m[id].name, m[id
 /// midpoint with +z along from - to, and sets the half length (MJCF-041).
 /// Returns the pose and updates `size`; nullopt after an error.
 std::optional<Transform> FromTo(MjcfReader& r, const Element& g, std::string_view type,
-                                std::vector<double>& size) {
+                                std::span<double, 3> size) {
   auto v = r.Numbers(g, "fromto", 6);
   if (!v) return std::nullopt;
   const Attribute at = g.Get("fromto");
@@ -59,7 +61,7 @@ std::optional<Transform> FromTo(MjcfReader& r, const Element& g, std::string_vie
 
 /// The primitive's shape from MuJoCo's size (MJCF-040), zero-sized when
 /// the size comes from a mesh (BEYOND-002).
-std::optional<ir::Shape> Primitive(std::string_view type, const std::vector<double>& s) {
+std::optional<ir::Shape> Primitive(std::string_view type, std::span<const double, 3> s) {
   if (type == "sphere") return ir::Sphere{s[0]};
   if (type == "capsule") return ir::Capsule{s[0], 2 * s[1]};
   if (type == "cylinder") return ir::Cylinder{s[0], 2 * s[1]};
@@ -72,7 +74,7 @@ std::optional<ir::Shape> Primitive(std::string_view type, const std::vector<doub
 /// a number ("size N must be positive in geom"): a missing value counts as
 /// zero, so too few values are caught here too (MJCF-040, COMMON-007).
 bool CheckPrimitiveSize(MjcfReader& r, const Element& g, std::string_view type,
-                        std::string_view name, const std::vector<double>& size) {
+                        std::string_view name, std::span<const double, 3> size) {
   const size_t needed = type == "sphere" ? 1 : (type == "capsule" || type == "cylinder") ? 2 : 3;
   for (size_t k = 0; k < needed; ++k) {
     if (std::isfinite(size[k]) && size[k] > 0) continue;
@@ -111,12 +113,12 @@ bool LowerGeom(MjcfReader& r, const BodyItem& item, BodyId body, bool is_world,
                "is not supported; the geom is ignored");
     return false;
   }
-  auto size = r.LayeredVector(g, "size", 3, {0, 0, 0});
-  if (!size) return false;
+  std::array<double, 3> size{0, 0, 0};
+  if (!r.LayeredNumbers(g, "size", size)) return false;
 
   std::optional<Transform> X_FG;
   if (g.Get("fromto").present()) {
-    X_FG = FromTo(r, g, type, *size);
+    X_FG = FromTo(r, g, type, size);
   } else {
     X_FG = r.ReadPose(g);
   }
@@ -153,10 +155,10 @@ bool LowerGeom(MjcfReader& r, const BodyItem& item, BodyId body, bool is_world,
       return false;
     }
     geom.shape = asset->mesh;
-  } else if (auto shape = Primitive(type, *size)) {
+  } else if (auto shape = Primitive(type, size)) {
     if (asset) {
       // BEYOND-002: the fit-to-mesh pass sizes and places the primitive
-      geom.shape = *Primitive(type, {0, 0, 0});
+      geom.shape = *Primitive(type, std::array<double, 3>{0, 0, 0});
       ir::MeshFit fit;
       fit.mesh = asset->mesh;
       fit.aabb = r.compiler.fitaabb;
@@ -164,7 +166,7 @@ bool LowerGeom(MjcfReader& r, const BodyItem& item, BodyId body, bool is_world,
       fit.mesh_inertia = asset->inertia;
       geom.fit_to_mesh = std::move(fit);
     } else {
-      if (!CheckPrimitiveSize(r, g, type, name, *size)) return false;
+      if (!CheckPrimitiveSize(r, g, type, name, size)) return false;
       geom.shape = *shape;
     }
   } else {
@@ -189,8 +191,8 @@ bool LowerGeom(MjcfReader& r, const BodyItem& item, BodyId body, bool is_world,
     r.WarnOnce(g.Get("condim").loc, DiagKind::UnsupportedValue, "geom", "condim",
                "other than 3 is not supported; condim=3 is used");
   }
-  auto friction = r.LayeredVector(g, "friction", 3, {1, 0.005, 0.0001});
-  if (!friction) return false;
+  std::array<double, 3> friction{1, 0.005, 0.0001};
+  if (!r.LayeredNumbers(g, "friction", friction)) return false;
   if (const Attribute f = g.Get("friction"); f.present()) {
     auto written = xml::ParseDoubleList(f.value);
     if (written && ((written->size() > 1 && (*written)[1] != 0) ||
@@ -256,7 +258,7 @@ bool LowerGeom(MjcfReader& r, const BodyItem& item, BodyId body, bool is_world,
     c.roles = ir::kProximityRole;
     c.material = {};
     c.rgba.reset();
-    c.properties.push_back({"material/coulomb_friction", std::vector<double>{(*friction)[0], (*friction)[0]}});
+    c.properties.push_back({"material/coulomb_friction", std::vector<double>{friction[0], friction[0]}});
     collision_id = m.Add(std::move(c));
     ReadOriginalName(item.e, *collision_id, r.ctx);
   }
@@ -293,7 +295,7 @@ void LowerSite(MjcfReader& r, const BodyItem& item, BodyId body) {
   std::optional<Transform> X;
   if (s.Get("fromto").present()) {
     const Attribute type = s.Get("type");
-    std::vector<double> size{0.005, 0.005, 0.005};
+    std::array<double, 3> size{0.005, 0.005, 0.005};
     X = FromTo(r, s, type.present() ? type.value : "sphere", size);
   } else {
     X = r.ReadPose(s);

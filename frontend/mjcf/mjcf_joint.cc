@@ -66,7 +66,7 @@ bool AlongBodyAxis(const Eigen::Vector3d& axis) {
 /// MJCF-004: limited = true | false | auto (limited iff a range is given,
 /// when autolimits; an error without autolimits). MuJoCo reads "a range is
 /// given" as a range other than 0 0.
-std::optional<bool> Limited(MjcfReader& r, const Element& j, const std::vector<double>& range) {
+std::optional<bool> Limited(MjcfReader& r, const Element& j, const std::array<double, 2>& range) {
   const Attribute limited = j.Get("limited");
   const bool has_range = !(range[0] == 0 && range[1] == 0);
   std::string_view value = limited.present() ? limited.value : "auto";
@@ -271,8 +271,8 @@ void LowerJoints(MjcfReader& r, const BodyContext& b, std::span<const BodyItem> 
     if (jt != ir::JointType::Ball) joint.default_positions = {ref};
 
     // range and limited (MJCF-004, MJCF-022)
-    std::vector<double> range{0, 0};
-    if (auto v = r.Numbers(j, "range", 2)) range = *v;
+    std::array<double, 2> range{0, 0};  // kept when the attribute is absent or wrong
+    if (std::array<double, 2> v; r.FixedNumbers(j, "range", v.data(), 2)) range = v;
     if (auto limited = Limited(r, j, range); limited && *limited) {
       if (jt == ir::JointType::Ball) {
         r.WarnOnce(j.Get("range").loc, DiagKind::UnsupportedAttribute, "joint", "range",

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <limits>
 #include <span>
@@ -94,16 +95,15 @@ std::optional<bool> MjcfReader::Boolean(const Element& e, std::string_view name,
   return std::nullopt;
 }
 
-std::optional<std::vector<double>> MjcfReader::LayeredVector(const Element& e,
-                                                             std::string_view name, size_t n,
-                                                             std::vector<double> init) {
-  init.resize(n, 0.0);
+bool MjcfReader::LayeredNumbers(const Element& e, std::string_view name,
+                                std::span<double> values) {
+  const size_t n = values.size();
   // MuJoCo overwrites only the values a layer gives; the rest keep the
   // class's (ParseDoublesInto writes the first values only)
   auto apply = [&](const xml::XmlElement& layer) {
     const xml::XmlAttribute a = layer.Attribute(name);
     if (!a.present()) return true;
-    const auto count = xml::ParseDoublesInto(a.value, init.data(), n);
+    const auto count = xml::ParseDoublesInto(a.value, values.data(), n);
     if (count && *count <= n) return true;
     diags().Report(DiagKind::BadValue, a.loc,
                    count ? fmt::format("attribute '{}' of <{}> has too much data: at most {} "
@@ -116,10 +116,9 @@ std::optional<std::vector<double>> MjcfReader::LayeredVector(const Element& e,
   // from the root class to the element
   const std::vector<xml::XmlElement>& classes = e.ClassLayers();
   for (auto it = classes.rbegin(); it != classes.rend(); ++it) {
-    if (!apply(*it)) return std::nullopt;
+    if (!apply(*it)) return false;
   }
-  if (!apply(e.xml())) return std::nullopt;
-  return init;
+  return apply(e.xml());
 }
 
 std::optional<std::vector<int>> MjcfReader::Integers(const Element& e, std::string_view name,
@@ -148,7 +147,16 @@ std::optional<std::vector<int>> MjcfReader::Integers(const Element& e, std::stri
 std::optional<int> MjcfReader::Integer(const Element& e, std::string_view name, int fallback) {
   const Attribute a = e.Get(name);
   if (!a.present()) return fallback;
-  // the common case without a list; Integers says what is wrong otherwise
+  // a plain whole number, as nearly every integer attribute is written, is
+  // read as one (integer from_chars is inline; the double reader is not)
+  int whole = 0;
+  const char* const end = a.value.data() + a.value.size();
+  if (const auto [stop, ec] = std::from_chars(a.value.data(), end, whole);
+      ec == std::errc() && stop == end) {
+    return whole;
+  }
+  // other spellings of a whole number ("1.0", "1e1", " 3 "), without a
+  // list; Integers says what is wrong otherwise
   constexpr double kMin = std::numeric_limits<int>::min(), kMax = std::numeric_limits<int>::max();
   double value = 0;
   if (const auto count = xml::ParseDoublesInto(a.value, &value, 1);

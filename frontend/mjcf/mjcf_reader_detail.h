@@ -27,6 +27,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -260,11 +261,11 @@ struct MjcfReader {
   /// euler) wins, then the nearest class's, then quat (own, then class).
   /// Reports bad values and more than one orientation on the element.
   std::optional<Transform> ReadPose(const Element& e);
-  /// A vector attribute of up to `n` values that MuJoCo overwrites element
-  /// by element (geom@size, geom@friction): start from `init`, then apply
-  /// each layer from the root class to the element. nullopt after an error.
-  std::optional<std::vector<double>> LayeredVector(const Element& e, std::string_view name,
-                                                   size_t n, std::vector<double> init);
+  /// A vector attribute of up to `values.size()` numbers that MuJoCo
+  /// overwrites element by element (geom@size, geom@friction): `values`
+  /// holds the starting numbers, and each layer from the root class to the
+  /// element overwrites those it gives. False after an error.
+  bool LayeredNumbers(const Element& e, std::string_view name, std::span<double> values);
   /// A number (own or default); `fallback` when absent; nullopt after an error.
   std::optional<double> Number(const Element& e, std::string_view name, double fallback);
   /// Exactly `n` numbers (own or default); nullopt when absent or bad.
