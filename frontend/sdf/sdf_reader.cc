@@ -128,7 +128,10 @@ void SdfReader::CheckChildren(const xml::XmlElement& e,
   for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
     std::string_view tag = child.Name();
     auto listed = [tag](std::initializer_list<std::string_view> names) {
-      return std::find(names.begin(), names.end(), tag) != names.end();
+      for (std::string_view name : names) {
+        if (xml::SameName(name, tag)) return true;
+      }
+      return false;
     };
     if (listed(known)) continue;
     if (listed(unsupported)) {

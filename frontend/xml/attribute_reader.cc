@@ -188,7 +188,7 @@ void AttributeReader::WarnUnknownAttributes(const XmlElement& e,
   // compare names first; build the located attribute only for an unknown one
   e.ForEachAttributeName([&](std::string_view name) {
     for (std::string_view k : known) {
-      if (k == name) return;
+      if (SameName(k, name)) return;
     }
     if (name.starts_with("xmlns")) return;
     diags_.Report(DiagKind::UnknownAttribute, e.Attribute(name).loc,

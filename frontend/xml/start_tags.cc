@@ -37,8 +37,10 @@ size_t NextStartTag(std::string_view text, size_t pos, std::optional<size_t>* en
     };
     // end tags and start tags first: they are nearly every '<' of a model
     const char kind = text[pos + 1];
-    if (kind == '/') {
-      pos = skip_past(">");
+    if (kind == '/') {  // an end tag holds no '>' before its own
+      pos = text.find('>', pos);
+      if (pos == std::string_view::npos) return std::string_view::npos;
+      ++pos;
       continue;
     }
     if (kind != '!' && kind != '?') return pos;
@@ -108,7 +110,7 @@ bool StartTagLocator::Place(detail::ElementNode& element) {
     const size_t close = text_.find(text_[i], i + 1);
     i = close == std::string_view::npos ? text_.size() : close + 1;
     auto unplaced_named = [&](uint32_t k) {
-      return attributes[k].line == 0 && attributes[k].name == name;
+      return attributes[k].line == 0 && SameName(attributes[k].name, name);
     };
     uint32_t found = count;
     if (next_unplaced < count && unplaced_named(next_unplaced)) {

@@ -172,7 +172,7 @@ Loc XmlElement::GetLoc() const { return Loc{doc_->file(), node_->line, node_->co
 
 XmlElement XmlElement::Child(std::string_view name) const {
   for (const detail::ElementNode* c = node_->first_child; c; c = c->next_sibling) {
-    if (c->name == name) return XmlElement(doc_, c);
+    if (SameName(c->name, name)) return XmlElement(doc_, c);
   }
   return {};
 }
@@ -180,7 +180,7 @@ XmlElement XmlElement::Child(std::string_view name) const {
 XmlAttribute XmlElement::Attribute(std::string_view name) const {
   for (uint32_t i = 0; i < node_->attribute_count; ++i) {
     const detail::AttributeNode& a = node_->attributes[i];
-    if (a.name != name) continue;
+    if (!SameName(a.name, name)) continue;
     // an attribute the scan could not place is reported at its element
     return XmlAttribute{a.name, a.value,
                         a.line ? Loc{doc_->file(), a.line, a.column} : GetLoc()};

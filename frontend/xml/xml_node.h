@@ -10,9 +10,26 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <string_view>
 
+namespace mdlc::xml {
+
+/// Name equality for lookups by name, which mostly meet names that differ:
+/// the length and the first and last bytes are compared inline, and memcmp
+/// is called only when all three match (a lookup among <ixx>, <iyy>, ...
+/// had called it for every sibling of the same length).
+inline bool SameName(std::string_view a, std::string_view b) {
+  const size_t n = a.size();
+  if (n != b.size()) return false;
+  if (n == 0) return true;
+  return a[0] == b[0] && a[n - 1] == b[n - 1] && std::memcmp(a.data(), b.data(), n) == 0;
+}
+
+}  // namespace mdlc::xml
+
 namespace mdlc::xml::detail {
+
 
 struct AttributeNode {
   std::string_view name;   // qualified, as written ("drake:acceleration")
