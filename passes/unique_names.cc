@@ -17,6 +17,7 @@
 // (build-kinematic-tree); afterwards the verifier's Named level holds.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <optional>
 #include <utility>
 
@@ -91,6 +92,11 @@ class UniqueNamesPass : public Pass {
 
   template <typename Entity>
   void Uniquify(PassContext& ctx, std::vector<Entity>& table, std::string_view what) {
+    // only names mdlc made can change: a table without any needs no set
+    // (in most models every body, frame and geometry is named in the file)
+    if (std::none_of(table.begin(), table.end(), [](const Entity& e) { return e.unnamed; })) {
+      return;
+    }
     ir::Module& m = ctx.module;
     TakenNames taken;
     auto is_free = [&](const Entity& e, Symbol name) {
