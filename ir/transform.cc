@@ -5,6 +5,14 @@
 namespace mdlc {
 
 Eigen::Matrix3d RotationFromRpy(const Eigen::Vector3d& rpy) {
+  // no rotation, as most poses are written: for angles of +0 the product
+  // below is exactly the identity (every sine +0, every cosine 1), so it is
+  // returned without the six sines and cosines; -0 takes the product, whose
+  // zeros may carry its sign
+  const auto positive_zero = [](double angle) { return angle == 0 && !std::signbit(angle); };
+  if (positive_zero(rpy.x()) && positive_zero(rpy.y()) && positive_zero(rpy.z())) {
+    return Eigen::Matrix3d::Identity();
+  }
   return (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
           Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
           Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
