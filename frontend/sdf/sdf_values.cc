@@ -150,11 +150,13 @@ ir::NameRef SdfReader::RelativeTo(const xml::XmlElement& pose) {
 
 Transform SdfReader::ReadPoseValue(const xml::XmlElement& pose) {
   if (!pose) return Transform::Identity();
-  attrs_.WarnUnknownAttributes(pose, {"relative_to", "frame", "rotation_format", "degrees"});
   bool degrees = false;
-  if (auto d = attrs_.Bool(pose, "degrees")) degrees = *d;
   std::string_view format = "euler_rpy";
-  if (auto f = attrs_.String(pose, "rotation_format")) format = *f;
+  if (pose.AttributeNameBits() != 0) {  // most poses have no attributes
+    attrs_.WarnUnknownAttributes(pose, {"relative_to", "frame", "rotation_format", "degrees"});
+    if (auto d = attrs_.Bool(pose, "degrees")) degrees = *d;
+    if (auto f = attrs_.String(pose, "rotation_format")) format = *f;
+  }
   std::string storage;
   const std::string_view text = pose.TextView(storage);
   if (xml::Trim(text).empty()) return Transform::Identity();
