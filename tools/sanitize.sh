@@ -29,9 +29,13 @@ if ! command -v clang++ >/dev/null 2>&1; then
 fi
 
 flags="-fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=undefined"
-flags+=" -fno-omit-frame-pointer -g -O1"
+# line tables are all a sanitizer report needs to name function, file and
+# line; full debug information would only make every object slower to build
+flags+=" -fno-omit-frame-pointer -gline-tables-only -O1"
 echo "==> configuring the sanitizer build in $build_dir"
+# a Debug build (assertions on) whose own flags, a full -g, give way to those
 cmake -S "$root" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Debug \
+  -DCMAKE_CXX_FLAGS_DEBUG= -DCMAKE_C_FLAGS_DEBUG= \
   -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \

@@ -14,11 +14,13 @@
 #include <string>
 #include <vector>
 
+#include "shared_corpus.h"
+
 namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-fs::path Corpus() { return fs::path(MDLC_SHARED_DIR) / "corpus"; }
+using mdlc::corpus_test::Corpus;
 
 /// The model files check.h says a folder walk finds, found here without
 /// mdlc: .urdf, .sdf and .dmd.yaml files, and .xml files with a <mujoco>

@@ -14,12 +14,13 @@
 
 #include "ir/printer.h"
 #include "mdlc/mdlc.h"
+#include "shared_corpus.h"
 
 namespace mdlc {
 namespace {
 namespace fs = std::filesystem;
 
-fs::path Corpus() { return fs::path(MDLC_SHARED_DIR) / "corpus"; }
+using mdlc::corpus_test::Corpus;
 
 std::vector<std::string> CorpusModels() {
   std::vector<std::string> out;

@@ -35,13 +35,14 @@
 #include <vector>
 
 #include "../oracle/oracle_util.h"
+#include "shared_corpus.h"
 
 namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-fs::path Corpus() { return fs::path(MDLC_SHARED_DIR) / "corpus"; }
-bool HaveCorpus() { return fs::exists(Corpus() / "manifest.tsv"); }
+using mdlc::corpus_test::Corpus;
+using mdlc::corpus_test::HaveCorpus;
 
 // Drake's process_model_directives_test data, relative to corpus/
 const std::string kTestDir = "drake/multibody/parsing/test/process_model_directives_test/";

@@ -22,24 +22,25 @@
 #include <vector>
 
 #include "../oracle/oracle_util.h"
+#include "shared_corpus.h"
 
 namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
-using Pose = Eigen::Isometry3d;
+using Isometry = Eigen::Isometry3d;
 
 constexpr double kDeg = std::numbers::pi / 180;
 
-Pose FromJson(const json& X) {
-  Pose T = Pose::Identity();
+Isometry FromJson(const json& X) {
+  Isometry T = Isometry::Identity();
   T.linear() = Eigen::Quaterniond(X["q"][0], X["q"][1], X["q"][2], X["q"][3]).toRotationMatrix();
   T.translation() = Eigen::Vector3d(X["p"][0], X["p"][1], X["p"][2]);
   return T;
 }
 
 // Drake's schema: translation, then fixed-axis roll-pitch-yaw in degrees
-Pose Xyz(double x, double y, double z, double r = 0, double p = 0, double yaw = 0) {
-  Pose T = Pose::Identity();
+Isometry Xyz(double x, double y, double z, double r = 0, double p = 0, double yaw = 0) {
+  Isometry T = Isometry::Identity();
   T.linear() = (Eigen::AngleAxisd(yaw * kDeg, Eigen::Vector3d::UnitZ()) *
                 Eigen::AngleAxisd(p * kDeg, Eigen::Vector3d::UnitY()) *
                 Eigen::AngleAxisd(r * kDeg, Eigen::Vector3d::UnitX()))
@@ -59,7 +60,7 @@ json Compile(const std::vector<std::string>& args) {
 
 // One compiled plant: X_W of every body and frame, by "instance::name".
 struct Poses {
-  std::map<std::string, Pose> bodies, frames;
+  std::map<std::string, Isometry> bodies, frames;
 
   explicit Poses(const json& plant) {
     for (const json& b : plant.value("bodies", json::array())) {
@@ -68,13 +69,13 @@ struct Poses {
     }
     for (const json& f : plant.value("frames", json::array())) {
       const std::string body = f["body"];
-      const Pose X_WB = body == "world" ? Pose::Identity() : bodies.at(body);
+      const Isometry X_WB = body == "world" ? Isometry::Identity() : bodies.at(body);
       frames[f["model_instance"].get<std::string>() + "::" + f["name"].get<std::string>()] =
           X_WB * FromJson(f["X_BF"]);
     }
   }
   // a body frame or an explicit frame
-  Pose Frame(const std::string& scoped) const {
+  Isometry Frame(const std::string& scoped) const {
     if (auto it = bodies.find(scoped); it != bodies.end()) return it->second;
     return frames.at(scoped);
   }
@@ -86,8 +87,8 @@ struct Placement {
   std::string instance;  // the instance the scene gives the model
   std::string file;      // the model file, compiled alone
   std::string child;     // C, a body or frame of the model (unscoped)
-  std::function<Pose(const Poses& scene_so_far)> X_W_P;
-  Pose X_PC = Pose::Identity();
+  std::function<Isometry(const Poses& scene_so_far)> X_W_P;
+  Isometry X_PC = Isometry::Identity();
 };
 
 struct Mismatch {
@@ -116,15 +117,15 @@ Mismatch Compare(const Poses& scene, const std::vector<Placement>& placements,
     const json alone_plant = Compile(args);
     const Poses alone(alone_plant);
     const std::string alone_instance = alone_plant["model_instances"].back();
-    const Pose X_W_C = p.X_W_P(scene) * p.X_PC;
-    const Pose X_C_W_alone = alone.Frame(alone_instance + "::" + p.child).inverse();
+    const Isometry X_W_C = p.X_W_P(scene) * p.X_PC;
+    const Isometry X_C_W_alone = alone.Frame(alone_instance + "::" + p.child).inverse();
     for (const auto& [name, X_W_b_alone] : alone.bodies) {
       const std::string local = name.substr(alone_instance.size() + 2);
       const std::string in_scene = p.instance + "::" + local;
       EXPECT_TRUE(scene.bodies.count(in_scene)) << in_scene;
       if (!scene.bodies.count(in_scene)) continue;
-      const Pose expected = X_W_C * X_C_W_alone * X_W_b_alone;
-      const Pose& actual = scene.bodies.at(in_scene);
+      const Isometry expected = X_W_C * X_C_W_alone * X_W_b_alone;
+      const Isometry& actual = scene.bodies.at(in_scene);
       const double error = std::max((expected.translation() - actual.translation()).norm(),
                                     (expected.linear() - actual.linear()).norm());
       ++compared;
@@ -135,12 +136,13 @@ Mismatch Compare(const Poses& scene, const std::vector<Placement>& placements,
   return worst;
 }
 
-fs::path Corpus() { return fs::path(MDLC_SHARED_DIR) / "corpus"; }
+using mdlc::corpus_test::Corpus;
 
-std::function<Pose(const Poses&)> World() {
-  return [](const Poses&) { return Pose::Identity(); };
+std::function<Isometry(const Poses&)> World() {
+  return [](const Poses&) { return Isometry::Identity(); };
 }
-std::function<Pose(const Poses&)> FrameOf(std::string scoped, Pose offset = Pose::Identity()) {
+std::function<Isometry(const Poses&)> FrameOf(std::string scoped,
+                                              Isometry offset = Isometry::Identity()) {
   return [scoped, offset](const Poses& s) { return s.Frame(scoped) * offset; };
 }
 
@@ -174,9 +176,9 @@ TEST_F(DmdRoundTrip, ArmGripperAndBoxFromTestModels) {
   const fs::path models = fs::path(MDLC_TEST_MODELS) / "dmd";
   const std::vector<std::string> packages = {"--package-path", models.string()};
   // tests/golden/dmd/weld_and_frames.dmd.yaml, by hand
-  const Pose wrist =
-      Xyz(0, 0, 0.3) *
-      Pose(Eigen::AngleAxisd(45 * kDeg, Eigen::Vector3d::UnitZ()));  // axis [0, 0, 2] normalized
+  const Isometry wrist =
+      Xyz(0, 0, 0.3) * Isometry(Eigen::AngleAxisd(
+                           45 * kDeg, Eigen::Vector3d::UnitZ()));  // axis [0, 0, 2] normalized
   const std::vector<Placement> placements = {
       {"arm", (models / "arm.urdf").string(), "base", World(), Xyz(0.5, 0, 0.75, 0, 0, 90)},
       {"gripper", (models / "gripper.sdf").string(), "__model__", FrameOf("arm::fore", wrist)},
@@ -218,11 +220,11 @@ TEST_F(DmdRoundTrip, PandaArmAndHand) {
 TEST_F(DmdRoundTrip, FurnishedLivingRoom) {
   RequireCorpus();
   const fs::path m = Corpus() / "drake_models/tutorials/models";
-  auto at = [&](const char* name, const char* file, Pose X_PC) {
+  auto at = [&](const char* name, const char* file, Isometry X_PC) {
     return Placement{name, (m / file).string(), name, World(), X_PC};
   };
   const std::vector<Placement> placements = {
-      at("living_room", "living_room.sdf", Pose::Identity()),
+      at("living_room", "living_room.sdf", Isometry::Identity()),
       at("cabinet", "cabinet.sdf", Xyz(-1.7753, 2.5818, 0)),
       at("bookshelves", "bookshelves.sdf", Xyz(2.716, -1.0716, 0, 0, 0, -90)),
       at("tall_cabinet", "tall_cabinet.sdf", Xyz(0.0235, 2.6566, 0)),

@@ -9,6 +9,8 @@
 //
 // Test names: <Format>/ReferenceRejects.MdlcFollowsTheTable/<folder>_<stem>_<index>.
 // Skipped (reported as skipped) when ../shared is absent.
+#include "reference_rejects.h"
+
 #include <gtest/gtest.h>
 
 #include <cctype>
@@ -24,7 +26,7 @@
 #include <vector>
 
 #include "../oracle/oracle_util.h"
-#include "reference_rejects.h"
+#include "shared_corpus.h"
 
 #ifndef MDLC_NODE
 #define MDLC_NODE ""
@@ -37,8 +39,8 @@ namespace mdlc::corpus {
 namespace {
 namespace fs = std::filesystem;
 
-fs::path Corpus() { return fs::path(MDLC_SHARED_DIR) / "corpus"; }
-bool HaveCorpus() { return fs::exists(Corpus() / "manifest.tsv"); }
+using mdlc::corpus_test::Corpus;
+using mdlc::corpus_test::HaveCorpus;
 
 // One entry of one format's table.
 struct Case {

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "backend/json_writer.h"
+#include "number_text.h"
 
 namespace mdlc::tools {
 namespace {
@@ -18,8 +19,6 @@ struct Graph {
   std::vector<Node> nodes;
   std::vector<Edge> edges;
 };
-
-std::string Number(double v) { return fmt::format("{:.6g}", v); }
 
 std::string Pose(const Transform& X) {
   const Eigen::Vector3d rpy = RpyFromRotation(X.R);

@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "backend/json_writer.h"
+#include "number_text.h"
 
 namespace mdlc::tools {
 namespace {
@@ -17,8 +18,6 @@ namespace {
 using backend::Plant;
 using backend::PlantJoint;
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-std::string Number(double v) { return fmt::format("{:.6g}", v); }
 
 std::string Limits(const PlantJoint& j) {
   std::string out;

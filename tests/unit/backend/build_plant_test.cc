@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "tests/unit/backend/backend_test_util.h"
+#include "tests/unit/test_values.h"
 
 namespace mdlc::backend {
 namespace {
@@ -14,7 +15,7 @@ namespace {
 using ir::JointType;
 using test_util::ModelBuilder;
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using testing::kInf;
 
 std::vector<DiagKind> Kinds(const DiagnosticEngine& diags) {
   std::vector<DiagKind> kinds;

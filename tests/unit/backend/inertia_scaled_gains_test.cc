@@ -25,9 +25,9 @@ namespace mdlc {
 namespace {
 
 /// The whole pipeline on one MJCF file (model.xml in a fresh folder).
-class Mjcf {
+class MjcfPipeline {
  public:
-  explicit Mjcf(std::string_view xml) {
+  explicit MjcfPipeline(std::string_view xml) {
     dir_ = std::filesystem::temp_directory_path() /
            fmt::format("mdlc_scaled_gains_{}_{}", ::getpid(),
                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
@@ -37,7 +37,7 @@ class Mjcf {
     c_.options.inputs = {Input::File(path.string())};
     ok_ = c_.Run();
   }
-  ~Mjcf() { std::filesystem::remove_all(dir_); }
+  ~MjcfPipeline() { std::filesystem::remove_all(dir_); }
 
   bool ok() const { return ok_; }
   const ir::Module& module() const { return c_.module; }
@@ -110,7 +110,7 @@ class Mjcf {
 // = 2 * 0.25 + 0.03 + 0.07 = 0.6; springdamper 0.5 2 gives stiffness
 // M / (0.5 * 2)^2 = 0.6 and damping 2 M / 0.5 = 2.4 (MuJoCo 3.3.8: 0.6, 2.4).
 TEST(InertiaScaledGains, Beyond007SingleHingeClosedForm) {
-  Mjcf m(R"(<mujoco model="sd">
+  MjcfPipeline m(R"(<mujoco model="sd">
  <worldbody>
   <body name="a" pos="0 0 1">
    <joint name="ja" axis="0 0 1" armature="0.07" springref="30" springdamper="0.5 2"/>
@@ -144,7 +144,7 @@ TEST(InertiaScaledGains, Beyond007SingleHingeClosedForm) {
 // -1.8027756377319946, -13.911721676341863). The home key bends the
 // chain; the gains still come from qpos0.
 TEST(InertiaScaledGains, Beyond007Beyond008DoublePendulumAtQpos0NotTheKey) {
-  Mjcf m(R"(<mujoco model="chain">
+  MjcfPipeline m(R"(<mujoco model="chain">
  <worldbody>
   <body name="a">
    <joint name="j1" axis="0 0 1" springdamper="0.4 1"/>
@@ -202,7 +202,7 @@ TEST(InertiaScaledGains, Beyond007Beyond008DoublePendulumAtQpos0NotTheKey) {
 // 10 (MuJoCo 3.3.8: 8, 8 and 10, 10).
 TEST(InertiaScaledGains, Beyond007SimpleSlideBodyUsesItsMass) {
   for (const auto& [com, expected] : {std::pair{"0 0 0", 8.0}, std::pair{"0 0 1e-5", 10.0}}) {
-    Mjcf m(fmt::format(R"(<mujoco model="s">
+    MjcfPipeline m(fmt::format(R"(<mujoco model="s">
  <worldbody>
   <body name="s" pos="0 0 1">
    <joint name="sx" type="slide" axis="1 0 0" armature="0.5" springdamper="0.5 1"/>
@@ -210,7 +210,7 @@ TEST(InertiaScaledGains, Beyond007SimpleSlideBodyUsesItsMass) {
   </body>
  </worldbody>
 </mujoco>)",
-                       com));
+                               com));
     ASSERT_TRUE(m.ok()) << m.Messages();
     const nlohmann::json plant = m.Json();
     const nlohmann::json* sx = m.Joint(plant, "sx");
@@ -222,7 +222,7 @@ TEST(InertiaScaledGains, Beyond007SimpleSlideBodyUsesItsMass) {
     EXPECT_NEAR(springs[0]["stiffness"].get<double>(), expected, 1e-12) << com;
   }
   // below a moving parent the body is not simple either: the armature counts
-  Mjcf m(R"(<mujoco model="s">
+  MjcfPipeline m(R"(<mujoco model="s">
  <worldbody>
   <body name="p"><joint name="pz" type="slide" axis="0 0 1"/><geom size="0.1"/>
    <body name="s"><joint name="sx" type="slide" axis="1 0 0" armature="0.5" springdamper="0.5 1"/>
@@ -240,7 +240,7 @@ TEST(InertiaScaledGains, Beyond007SimpleSlideBodyUsesItsMass) {
 // no ball-joint stiffness, which is warned about. On a free joint nothing
 // is kept, with a warning.
 TEST(InertiaScaledGains, Beyond007BallDampingOnlyFreeIgnored) {
-  Mjcf m(R"(<mujoco model="b">
+  MjcfPipeline m(R"(<mujoco model="b">
  <worldbody>
   <body name="ball" pos="0 0 1">
    <joint name="jb" type="ball" springdamper="0.5 1"/>
@@ -270,7 +270,7 @@ TEST(InertiaScaledGains, Beyond007BallDampingOnlyFreeIgnored) {
 // damping are ignored (MuJoCo overwrites them), with a warning each.
 TEST(InertiaScaledGains, Beyond007ZeroNegativeAndOverriddenValues) {
   {
-    Mjcf m(R"(<mujoco model="z">
+    MjcfPipeline m(R"(<mujoco model="z">
  <worldbody><body><joint name="j" springdamper="0 0" stiffness="3" damping="0.25"/>
   <geom size="0.1" pos="0.3 0 0"/></body></worldbody>
 </mujoco>)");
@@ -284,11 +284,11 @@ TEST(InertiaScaledGains, Beyond007ZeroNegativeAndOverriddenValues) {
     EXPECT_TRUE(m.module().inertia_scaled_gains.empty());
   }
   for (const char* bad : {"0 1", "0.5 -1", "-1 0"}) {
-    Mjcf m(fmt::format(R"(<mujoco model="z">
+    MjcfPipeline m(fmt::format(R"(<mujoco model="z">
  <worldbody><body><joint name="j" springdamper="{}"/>
   <geom size="0.1" pos="0.3 0 0"/></body></worldbody>
 </mujoco>)",
-                       bad));
+                               bad));
     EXPECT_FALSE(m.ok()) << bad;
     const Diagnostic* d = m.First(DiagKind::BadValue);
     ASSERT_NE(d, nullptr) << bad << "\n" << m.Messages();
@@ -297,7 +297,7 @@ TEST(InertiaScaledGains, Beyond007ZeroNegativeAndOverriddenValues) {
     EXPECT_EQ(d->loc.column, 35u) << m.Messages();  // the springdamper attribute
   }
   {
-    Mjcf m(R"(<mujoco model="z">
+    MjcfPipeline m(R"(<mujoco model="z">
  <worldbody><body><joint name="j" springdamper="0.5 1" stiffness="3" damping="0.25"/>
   <geom size="0.1" pos="0.3 0 0"/></body></worldbody>
 </mujoco>)");
@@ -319,7 +319,7 @@ TEST(InertiaScaledGains, Beyond007ZeroNegativeAndOverriddenValues) {
 // divides by about 0 (its jnt_stiffness is 4e15 here); mdlc reports it at
 // the springdamper.
 TEST(InertiaScaledGains, Beyond007SingularInertiaIsLocatedError) {
-  Mjcf m(R"(<mujoco model="s">
+  MjcfPipeline m(R"(<mujoco model="s">
  <worldbody><body name="a">
   <joint name="h1" springdamper="0.5 1"/><joint name="h2"/>
   <geom size="0.1" pos="0.2 0 0"/></body></worldbody>
@@ -344,8 +344,9 @@ TEST(InertiaScaledGains, Beyond008PositionDampratioFromDefaultClass) {
   </body>
  </worldbody>)";
   {
-    Mjcf m(R"(<mujoco model="p"><default><position kp="20" dampratio="0.7"/></default>)" + body +
-           R"(<actuator><position name="servo" joint="ja"/><position name="limp" joint="ja" kp="0"/></actuator></mujoco>)");
+    MjcfPipeline m(
+        R"(<mujoco model="p"><default><position kp="20" dampratio="0.7"/></default>)" + body +
+        R"(<actuator><position name="servo" joint="ja"/><position name="limp" joint="ja" kp="0"/></actuator></mujoco>)");
     ASSERT_TRUE(m.ok()) << m.Messages();
     EXPECT_EQ(m.Warnings(), 0u) << m.Messages();
     const nlohmann::json plant = m.Json();
@@ -359,8 +360,8 @@ TEST(InertiaScaledGains, Beyond008PositionDampratioFromDefaultClass) {
     EXPECT_TRUE((*limp)["kd"].is_null());
   }
   {
-    Mjcf m(R"(<mujoco model="p">)" + body +
-           R"(<actuator><position joint="ja" kv="1" dampratio="1"/></actuator></mujoco>)");
+    MjcfPipeline m(R"(<mujoco model="p">)" + body +
+                   R"(<actuator><position joint="ja" kv="1" dampratio="1"/></actuator></mujoco>)");
     EXPECT_FALSE(m.ok());
     EXPECT_EQ(m.Count(DiagKind::BadValue, "kv and dampratio cannot both be defined"), 1u)
         << m.Messages();
@@ -369,7 +370,7 @@ TEST(InertiaScaledGains, Beyond008PositionDampratioFromDefaultClass) {
 
 // The request is in the IR until the backend computes it (--emit=ir).
 TEST(InertiaScaledGains, IrPrinterShowsRequests) {
-  Mjcf m(R"(<mujoco model="chain">
+  MjcfPipeline m(R"(<mujoco model="chain">
  <worldbody>
   <body name="a"><joint name="j1" axis="0 0 1" ref="10" armature="0.5" springdamper="0.4 1"/>
    <inertial pos="0.5 0 0" mass="1" diaginertia="0.01 0.01 0.01"/></body>

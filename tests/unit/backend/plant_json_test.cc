@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "tests/unit/backend/backend_test_util.h"
+#include "tests/unit/test_values.h"
 
 namespace mdlc::backend {
 namespace {
@@ -20,7 +21,7 @@ using ir::JointType;
 using nlohmann::ordered_json;
 using test_util::ModelBuilder;
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using testing::kInf;
 
 std::vector<std::string> Keys(const ordered_json& object) {
   std::vector<std::string> keys;

@@ -17,17 +17,18 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "tools/driver/compiler.h"
 #include "backend/plant_json.h"
 #include "backend/positions.h"
 #include "ir/module.h"
 #include "tests/unit/diagnostic_claims.h"
+#include "tests/unit/test_values.h"
+#include "tools/driver/compiler.h"
 
 namespace mdlc {
 namespace {
 
-constexpr double kTol = 1e-12;
-const double kInf = std::numeric_limits<double>::infinity();
+using testing::kInf;
+using testing::kTol;
 
 /// The whole pipeline on one MJCF file (model.xml in a fresh folder).
 /// Strict about diagnostics (diagnostic_claims.h): Count and Line claim what

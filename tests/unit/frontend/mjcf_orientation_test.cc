@@ -6,10 +6,12 @@
 
 #include <cmath>
 
+#include "tests/unit/test_values.h"
+
 namespace mdlc::frontend::mjcf {
 namespace {
 
-constexpr double kTol = 1e-12;
+using testing::kTol;
 const double kHalfPi = M_PI / 2;
 
 Eigen::Matrix3d Ok(const RotationOrError& r) {

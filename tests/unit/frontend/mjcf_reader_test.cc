@@ -11,12 +11,13 @@
 #include <string>
 
 #include "tests/unit/mjcf_test_util.h"
+#include "tests/unit/test_values.h"
 
 namespace mdlc {
 namespace {
 
+using testing::kTol;
 using testing::LoweredMjcf;
-constexpr double kTol = 1e-12;
 constexpr uint8_t kVisual = ir::kIllustrationRole | ir::kPerceptionRole;
 constexpr uint8_t kCollision = ir::kProximityRole;
 

@@ -11,17 +11,18 @@
 #include <string>
 
 #include "tests/unit/sdf_drake_test_util.h"
+#include "tests/unit/test_values.h"
 
 namespace mdlc {
 namespace {
 
 using testing::CompiledSdf;
+using testing::kInf;
 using testing::LoweredSdf;
 using testing::Named;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // links a..d, a revolute joint a->b, and `body`
-std::string Model(std::string_view body) {
+std::string SdfModel(std::string_view body) {
   return fmt::format(R"(<model name='m'>
   <link name='a'/><link name='b'/><link name='c'/><link name='d'/>
   <joint name='rev' type='revolute'><parent>a</parent><child>b</child>
@@ -36,7 +37,7 @@ std::string Model(std::string_view body) {
 
 TEST(SdfDrakeJointTest, PlanarJointBetweenLinks) {  // EXT-001, EXT-004
   LoweredSdf l;
-  ASSERT_TRUE(l.Read(Model(R"(<drake:joint name='p' type='planar'>
+  ASSERT_TRUE(l.Read(SdfModel(R"(<drake:joint name='p' type='planar'>
     <drake:parent>b</drake:parent><drake:child>c</drake:child>
     <drake:damping>0.1 0.2 0.3</drake:damping>
   </drake:joint>)")))
@@ -56,9 +57,9 @@ TEST(SdfDrakeJointTest, PlanarNeedsThreeNonNegativeDampings) {  // EXT-004
   for (const char* damping : {"", "<drake:damping>0.1 -0.2 0.3</drake:damping>",
                               "<drake:damping>0.1 0.2</drake:damping>"}) {
     LoweredSdf l;
-    EXPECT_FALSE(l.Read(Model(fmt::format(R"(<drake:joint name='p' type='planar'>
+    EXPECT_FALSE(l.Read(SdfModel(fmt::format(R"(<drake:joint name='p' type='planar'>
       <drake:parent>b</drake:parent><drake:child>c</drake:child>{}</drake:joint>)",
-                                          damping))))
+                                             damping))))
         << damping;
     EXPECT_EQ(l.Joint("p"), nullptr);
     EXPECT_EQ(l.diags.error_count(), 1u) << l.Messages();
@@ -66,7 +67,7 @@ TEST(SdfDrakeJointTest, PlanarNeedsThreeNonNegativeDampings) {  // EXT-004
     l.ExpectDiagnostic(*damping ? DiagKind::BadValue : DiagKind::MissingElement, "");
   }
   LoweredSdf missing;
-  missing.Read(Model(R"(<drake:joint name='p' type='planar'>
+  missing.Read(SdfModel(R"(<drake:joint name='p' type='planar'>
       <drake:parent>b</drake:parent><drake:child>c</drake:child></drake:joint>)"));
   EXPECT_TRUE(missing.HasDiagnostic(DiagKind::MissingElement, "<drake:joint> needs a <drake:damping> child"))
       << missing.Messages();
@@ -74,7 +75,7 @@ TEST(SdfDrakeJointTest, PlanarNeedsThreeNonNegativeDampings) {  // EXT-004
 
 TEST(SdfDrakeJointTest, CurvilinearJointPath) {  // EXT-001, EXT-003
   LoweredSdf l;
-  ASSERT_TRUE(l.Read(Model(R"(<drake:joint name='cv' type='curvilinear'>
+  ASSERT_TRUE(l.Read(SdfModel(R"(<drake:joint name='cv' type='curvilinear'>
     <drake:parent>b</drake:parent><drake:child>c</drake:child>
     <drake:damping>0.1</drake:damping>
     <drake:initial_tangent><xyz>0 0 1</xyz></drake:initial_tangent>
@@ -108,7 +109,7 @@ TEST(SdfDrakeJointTest, CurvilinearJointPath) {  // EXT-001, EXT-003
 
 TEST(SdfDrakeJointTest, PeriodicCurvilinearIsUnlimited) {  // EXT-003
   LoweredSdf l;
-  ASSERT_TRUE(l.Read(Model(R"(<drake:joint name='cv' type='curvilinear'>
+  ASSERT_TRUE(l.Read(SdfModel(R"(<drake:joint name='cv' type='curvilinear'>
     <drake:parent>b</drake:parent><drake:child>c</drake:child>
     <drake:is_periodic>true</drake:is_periodic>
     <drake:curves><drake:circular_arc><drake:radius>1</drake:radius><drake:angle>6.283185307179586</drake:angle></drake:circular_arc></drake:curves>
@@ -154,9 +155,9 @@ TEST(SdfDrakeJointTest, CurvilinearErrors) {  // EXT-003
       body.replace(at, 4, "<drake:curves>" + line + "</drake:curves>");
     }
     LoweredSdf l;
-    EXPECT_FALSE(l.Read(Model(fmt::format(R"(<drake:joint name='cv' type='curvilinear'>
+    EXPECT_FALSE(l.Read(SdfModel(fmt::format(R"(<drake:joint name='cv' type='curvilinear'>
       <drake:parent>b</drake:parent><drake:child>c</drake:child>{}</drake:joint>)",
-                                          body))))
+                                             body))))
         << c.body;
     l.ExpectError(c.message);
     bool found = false;
@@ -194,14 +195,14 @@ TEST(SdfDrakeJointTest, AttributeTypePoseAndFrameErrors) {  // EXT-001
   };
   for (const Case& c : cases) {
     LoweredSdf l;
-    EXPECT_FALSE(l.Read(Model(c.element))) << c.element;
+    EXPECT_FALSE(l.Read(SdfModel(c.element))) << c.element;
     EXPECT_TRUE(l.HasDiagnostic(c.kind, c.message)) << c.element << "\n" << l.Messages();
   }
 }
 
 TEST(SdfDrakeJointTest, DrakePoseIsAnUnsupportedElement) {  // EXT-001, SDF-001
   LoweredSdf l;
-  EXPECT_TRUE(l.Read(Model(R"(<drake:joint name='p' type='planar'>
+  EXPECT_TRUE(l.Read(SdfModel(R"(<drake:joint name='p' type='planar'>
     <drake:parent>b</drake:parent><drake:child>c</drake:child>
     <drake:damping>0 0 0</drake:damping><drake:pose>1 0 0 0 0 0</drake:pose>
   </drake:joint>)")))
@@ -241,7 +242,7 @@ TEST(SdfDrakeJointTest, CompilesWithNestedLinksAndPlacesTheChildOnTheParent) {  
 
 TEST(SdfCollisionFilterGroupTest, LowersTextMembersAndGroups) {  // EXT-040
   LoweredSdf l;
-  ASSERT_TRUE(l.Read(Model(R"(<drake:collision_filter_group name='g'>
+  ASSERT_TRUE(l.Read(SdfModel(R"(<drake:collision_filter_group name='g'>
     <drake:member>a</drake:member>
     <drake:member> nested::x </drake:member>
     <drake:member_group>h</drake:member_group>
@@ -266,7 +267,7 @@ TEST(SdfCollisionFilterGroupTest, LowersTextMembersAndGroups) {  // EXT-040
 
 TEST(SdfCollisionFilterGroupTest, SyntaxErrors) {  // EXT-040, COMMON-050
   LoweredSdf l;
-  EXPECT_FALSE(l.Read(Model(R"(<drake:collision_filter_group/>
+  EXPECT_FALSE(l.Read(SdfModel(R"(<drake:collision_filter_group/>
   <drake:collision_filter_group name='g'>
     <drake:member></drake:member>
     <drake:member_group/>
@@ -279,7 +280,7 @@ TEST(SdfCollisionFilterGroupTest, SyntaxErrors) {  // EXT-040, COMMON-050
 }
 
 TEST(SdfCollisionFilterGroupTest, FiltersPairsInThePlant) {  // EXT-040, COMMON-051
-  CompiledSdf c(Model(R"(<drake:collision_filter_group name='g'>
+  CompiledSdf c(SdfModel(R"(<drake:collision_filter_group name='g'>
     <drake:member>c</drake:member><drake:member>d</drake:member>
     <drake:ignored_collision_filter_group>g</drake:ignored_collision_filter_group>
   </drake:collision_filter_group>)"));
@@ -291,7 +292,7 @@ TEST(SdfCollisionFilterGroupTest, FiltersPairsInThePlant) {  // EXT-040, COMMON-
 }
 
 TEST(SdfCollisionFilterGroupTest, UnknownMemberIsReportedByResolveNames) {  // COMMON-053
-  CompiledSdf c(Model(R"(<drake:collision_filter_group name='g'>
+  CompiledSdf c(SdfModel(R"(<drake:collision_filter_group name='g'>
     <drake:member>nope</drake:member></drake:collision_filter_group>)"));
   EXPECT_FALSE(c.ok());
   EXPECT_NE(c.Messages().find("not found"), std::string::npos) << c.Messages();
@@ -302,7 +303,7 @@ TEST(SdfCollisionFilterGroupTest, UnknownMemberIsReportedByResolveNames) {  // C
 
 TEST(SdfForceElementTest, LinearBushingRpy) {  // EXT-050
   LoweredSdf l;
-  ASSERT_TRUE(l.Read(Model(R"(<drake:linear_bushing_rpy>
+  ASSERT_TRUE(l.Read(SdfModel(R"(<drake:linear_bushing_rpy>
     <drake:bushing_frameA>fa</drake:bushing_frameA>
     <drake:bushing_frameC>c</drake:bushing_frameC>
     <drake:bushing_torque_stiffness>1 2 3</drake:bushing_torque_stiffness>
@@ -321,7 +322,7 @@ TEST(SdfForceElementTest, LinearBushingRpy) {  // EXT-050
   EXPECT_EQ(f.force_stiffness, Eigen::Vector3d(7, 8, 9));
   EXPECT_EQ(f.force_damping, Eigen::Vector3d(10, 11, 12));
 
-  CompiledSdf c(Model(R"(<drake:linear_bushing_rpy>
+  CompiledSdf c(SdfModel(R"(<drake:linear_bushing_rpy>
     <drake:bushing_frameA>fa</drake:bushing_frameA>
     <drake:bushing_frameC>c</drake:bushing_frameC>
     <drake:bushing_torque_stiffness>1 2 3</drake:bushing_torque_stiffness>
@@ -339,7 +340,7 @@ TEST(SdfForceElementTest, LinearBushingRpy) {  // EXT-050
 
 TEST(SdfForceElementTest, BushingErrors) {  // EXT-050
   LoweredSdf l;
-  EXPECT_FALSE(l.Read(Model(R"(<drake:linear_bushing_rpy>
+  EXPECT_FALSE(l.Read(SdfModel(R"(<drake:linear_bushing_rpy>
     <drake:bushing_frameA>fa</drake:bushing_frameA>
     <drake:bushing_torque_stiffness>1 2 3</drake:bushing_torque_stiffness>
     <drake:bushing_torque_damping>4 -5 6</drake:bushing_torque_damping>
@@ -365,7 +366,7 @@ TEST(SdfForceElementTest, LinearSpringDamper) {  // EXT-051
     <drake:linear_spring_damper_damping>{}</drake:linear_spring_damper_damping>
   </drake:linear_spring_damper>)";
   LoweredSdf l;
-  ASSERT_TRUE(l.Read(Model(fmt::format(fmt::runtime(element), 0.5, 100, 2)))) << l.Messages();
+  ASSERT_TRUE(l.Read(SdfModel(fmt::format(fmt::runtime(element), 0.5, 100, 2)))) << l.Messages();
   ASSERT_EQ(l.module.force_elements.size(), 1u);
   ASSERT_EQ(l.module.force_elements[0].type(), ir::ForceElementType::LinearSpringDamper);
   const auto& f = l.module.force_elements[0].As<ir::LinearSpringDamper>();
@@ -386,7 +387,7 @@ TEST(SdfForceElementTest, LinearSpringDamper) {  // EXT-051
                         Case{1, 1, -1, "damping> must be non-negative"}}) {
     LoweredSdf bad;
     EXPECT_FALSE(bad.Read(
-        Model(fmt::format(fmt::runtime(element), c.free_length, c.stiffness, c.damping))));
+        SdfModel(fmt::format(fmt::runtime(element), c.free_length, c.stiffness, c.damping))));
     EXPECT_TRUE(bad.HasDiagnostic(DiagKind::BadValue, c.message)) << bad.Messages();
     EXPECT_TRUE(bad.module.force_elements.empty());
   }
@@ -396,7 +397,7 @@ TEST(SdfForceElementTest, LinearSpringDamper) {  // EXT-051
 
 TEST(SdfConstraintTest, BallConstraint) {  // EXT-052
   LoweredSdf l;
-  ASSERT_TRUE(l.Read(Model(R"(<drake:ball_constraint>
+  ASSERT_TRUE(l.Read(SdfModel(R"(<drake:ball_constraint>
     <drake:ball_constraint_body_A>a</drake:ball_constraint_body_A>
     <drake:ball_constraint_body_B>c</drake:ball_constraint_body_B>
     <drake:ball_constraint_p_AP>1 2 3</drake:ball_constraint_p_AP>
@@ -412,7 +413,7 @@ TEST(SdfConstraintTest, BallConstraint) {  // EXT-052
   EXPECT_EQ(c.p_BQ, Eigen::Vector3d(4, 5, 6));
 
   LoweredSdf missing;
-  EXPECT_FALSE(missing.Read(Model(R"(<drake:ball_constraint>
+  EXPECT_FALSE(missing.Read(SdfModel(R"(<drake:ball_constraint>
     <drake:ball_constraint_body_A>a</drake:ball_constraint_body_A>
     <drake:ball_constraint_p_AP>1 2 3</drake:ball_constraint_p_AP>
     <drake:ball_constraint_p_BQ>4 5 6</drake:ball_constraint_p_BQ>
@@ -420,7 +421,7 @@ TEST(SdfConstraintTest, BallConstraint) {  // EXT-052
   EXPECT_TRUE(missing.HasDiagnostic(
       DiagKind::MissingElement, "<drake:ball_constraint> needs a <drake:ball_constraint_body_B> child"));
 
-  CompiledSdf unknown(Model(R"(<drake:ball_constraint>
+  CompiledSdf unknown(SdfModel(R"(<drake:ball_constraint>
     <drake:ball_constraint_body_A>a</drake:ball_constraint_body_A>
     <drake:ball_constraint_body_B>zz</drake:ball_constraint_body_B>
     <drake:ball_constraint_p_AP>1 2 3</drake:ball_constraint_p_AP>
@@ -442,7 +443,7 @@ TEST(SdfConstraintTest, DistanceConstraint) {  // EXT-053
     <drake:distance_constraint_stiffness>{}</drake:distance_constraint_stiffness>
     <drake:distance_constraint_damping>{}</drake:distance_constraint_damping>
   </drake:distance_constraint>)";
-  CompiledSdf c(Model(fmt::format(fmt::runtime(element), "0.5", "inf", "3")));
+  CompiledSdf c(SdfModel(fmt::format(fmt::runtime(element), "0.5", "inf", "3")));
   ASSERT_TRUE(c.ok()) << c.Messages();
   const nlohmann::json json = c.PlantJson();
   ASSERT_EQ(json["constraints"].size(), 1u);
@@ -459,7 +460,8 @@ TEST(SdfConstraintTest, DistanceConstraint) {  // EXT-053
         std::tuple{"1", "0", "1", "stiffness> must be positive"},
         std::tuple{"1", "1", "-1", "damping> must be non-negative"}}) {
     LoweredSdf bad;
-    EXPECT_FALSE(bad.Read(Model(fmt::format(fmt::runtime(element), distance, stiffness, damping))));
+    EXPECT_FALSE(
+        bad.Read(SdfModel(fmt::format(fmt::runtime(element), distance, stiffness, damping))));
     EXPECT_TRUE(bad.HasDiagnostic(DiagKind::BadValue, message)) << bad.Messages();
     EXPECT_TRUE(bad.module.constraints.empty());
   }
@@ -467,7 +469,7 @@ TEST(SdfConstraintTest, DistanceConstraint) {  // EXT-053
 
 TEST(SdfConstraintTest, TendonConstraint) {  // EXT-054
   LoweredSdf l;
-  ASSERT_TRUE(l.Read(Model(R"(<drake:tendon_constraint>
+  ASSERT_TRUE(l.Read(SdfModel(R"(<drake:tendon_constraint>
     <drake:tendon_constraint_joint name='rev' a='2'/>
     <drake:tendon_constraint_joint name='other' a='-1'/>
     <drake:tendon_constraint_offset>0.5</drake:tendon_constraint_offset>
@@ -489,7 +491,7 @@ TEST(SdfConstraintTest, TendonConstraint) {  // EXT-054
   EXPECT_EQ(c.damping, 4);
 
   LoweredSdf bad;
-  EXPECT_FALSE(bad.Read(Model(R"(<drake:tendon_constraint>
+  EXPECT_FALSE(bad.Read(SdfModel(R"(<drake:tendon_constraint>
     <drake:tendon_constraint_joint a='2'/>
     <drake:tendon_constraint_joint name='rev'/>
   </drake:tendon_constraint>
@@ -504,7 +506,7 @@ TEST(SdfConstraintTest, TendonConstraint) {  // EXT-054
 
 TEST(SdfDrakeModelElementTest, UnknownDrakeElementWarns) {  // SDF-001
   LoweredSdf l;
-  EXPECT_TRUE(l.Read(Model("<drake:flux_capacitor/>"))) << l.Messages();
+  EXPECT_TRUE(l.Read(SdfModel("<drake:flux_capacitor/>"))) << l.Messages();
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnknownElement, "<drake:flux_capacitor>"));
 }
 

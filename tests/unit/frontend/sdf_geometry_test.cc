@@ -10,6 +10,7 @@
 
 #include "frontend/frontend.h"
 #include "tests/unit/sdf_test_util.h"
+#include "tests/unit/test_values.h"
 
 namespace mdlc {
 namespace {
@@ -37,22 +38,9 @@ std::string Proximity(std::string_view children) {
                                children));
 }
 
-const ir::Property* Find(const ir::Geometry& g, std::string_view key) {
-  for (const auto& p : g.properties) {
-    if (p.key == key) return &p;
-  }
-  return nullptr;
-}
-double Number(const ir::Geometry& g, std::string_view key) {
-  const ir::Property* p = Find(g, key);
-  EXPECT_NE(p, nullptr) << key;
-  return p ? std::get<double>(p->value) : std::nan("");
-}
-std::vector<double> Numbers(const ir::Geometry& g, std::string_view key) {
-  const ir::Property* p = Find(g, key);
-  EXPECT_NE(p, nullptr) << key;
-  return p ? std::get<std::vector<double>>(p->value) : std::vector<double>{};
-}
+using testing::Find;
+using testing::Number;
+using testing::Numbers;
 
 // -- SDF-040: shapes
 

@@ -5,11 +5,12 @@
 #include <limits>
 
 #include "tests/unit/sdf_test_util.h"
+#include "tests/unit/test_values.h"
 
 namespace mdlc::testing {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using testing::kInf;
 
 std::string Joint(std::string_view limit) {
   return fmt::format(R"(<model name='m'><link name='a'/><link name='b'/>

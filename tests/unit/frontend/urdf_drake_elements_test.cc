@@ -7,13 +7,14 @@
 #include <limits>
 #include <string>
 
+#include "tests/unit/test_values.h"
 #include "tests/unit/urdf_test_util.h"
 
 namespace mdlc {
 namespace {
 
+using testing::kInf;
 using testing::Lowered;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // three links, a revolute and a prismatic joint, a frame and a planar joint
 std::string Robot(std::string_view body) {

@@ -14,21 +14,22 @@
 #include <numbers>
 #include <tuple>
 
-#include "tools/driver/compiler.h"
 #include "backend/kinematics.h"
 #include "backend/plant_json.h"
 #include "backend/positions.h"
+#include "tests/unit/test_values.h"
 #include "tests/unit/urdf_test_util.h"
+#include "tools/driver/compiler.h"
 
 namespace mdlc {
 namespace {
 
+using testing::kInf;
 using testing::Lowered;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPi = std::numbers::pi;
 
 /// A robot with links a..f and `body` (joints, transmissions) inside.
-std::string Robot(std::string_view body) {
+std::string SixLinkRobot(std::string_view body) {
   return fmt::format(R"(<robot name='r'>
     <link name='a'/><link name='b'/><link name='c'/><link name='d'/><link name='e'/>
     <link name='f'/>
@@ -45,7 +46,7 @@ Eigen::Matrix3d Rz(double angle) {
 
 TEST(UrdfDrakeJointTest, BallJointHasThreeRpyDofsAndSharedDamping) {  // EXT-001, URDF-014
   Lowered l;
-  ASSERT_TRUE(l.Read(Robot(R"(
+  ASSERT_TRUE(l.Read(SixLinkRobot(R"(
     <drake:joint name='ball' type='ball'><parent link='a'/><child link='b'/>
       <origin xyz='1 2 3'/><axis xyz='0 0 0'/><dynamics damping='0.1'/></drake:joint>)")))
       << l.Messages();
@@ -66,7 +67,7 @@ TEST(UrdfDrakeJointTest, BallJointHasThreeRpyDofsAndSharedDamping) {  // EXT-001
 
 TEST(UrdfDrakeJointTest, UniversalJointHasTwoDofsAndIgnoresItsAxis) {  // EXT-001, URDF-011
   Lowered l;
-  ASSERT_TRUE(l.Read(Robot(R"(
+  ASSERT_TRUE(l.Read(SixLinkRobot(R"(
     <drake:joint name='u' type='universal'><parent link='a'/><child link='b'/>
       <axis xyz='0 1 0'/><dynamics damping='0.25'/></drake:joint>)")))
       << l.Messages();
@@ -81,14 +82,14 @@ TEST(UrdfDrakeJointTest, UniversalJointHasTwoDofsAndIgnoresItsAxis) {  // EXT-00
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::JointWarning, "<axis> of universal joint 'u' is ignored"));
   // ...but still rejects a zero axis, as Drake does
   Lowered zero;
-  EXPECT_FALSE(zero.Read(Robot(R"(<drake:joint name='u' type='universal'>
+  EXPECT_FALSE(zero.Read(SixLinkRobot(R"(<drake:joint name='u' type='universal'>
       <parent link='a'/><child link='b'/><axis xyz='0 0 0'/></drake:joint>)")));
   EXPECT_TRUE(zero.HasDiagnostic(DiagKind::ZeroAxis, "axis is zero"));
 }
 
 TEST(UrdfDrakeJointTest, PlanarIsAcceptedAsJointAndAsDrakeJoint) {  // EXT-001, URDF-012
   Lowered l;
-  ASSERT_TRUE(l.Read(Robot(R"(
+  ASSERT_TRUE(l.Read(SixLinkRobot(R"(
     <joint name='p1' type='planar'><parent link='a'/><child link='b'/><axis xyz='1 0 0'/>
       <dynamics damping='1 2 3'/></joint>
     <drake:joint name='p2' type='planar'><parent link='a'/><child link='c'/><axis xyz='1 0 0'/>
@@ -111,9 +112,9 @@ TEST(UrdfDrakeJointTest, PlanarIsAcceptedAsJointAndAsDrakeJoint) {  // EXT-001, 
 TEST(UrdfDrakeJointTest, StandardTypeInDrakeJointIsAnError) {  // EXT-001
   for (std::string_view type : {"revolute", "continuous", "prismatic", "fixed", "floating"}) {
     Lowered l;
-    EXPECT_FALSE(l.Read(Robot(fmt::format(R"(<drake:joint name='j' type='{}'>
+    EXPECT_FALSE(l.Read(SixLinkRobot(fmt::format(R"(<drake:joint name='j' type='{}'>
         <parent link='a'/><child link='b'/></drake:joint>)",
-                                          type))))
+                                                 type))))
         << type;
     EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "standard joint type")) << l.Messages();
     EXPECT_EQ(l.diags.error_count(), 1u) << l.Messages();
@@ -129,11 +130,11 @@ TEST(UrdfDrakeJointTest, StandardTypeInDrakeJointIsAnError) {  // EXT-001
 TEST(UrdfDrakeJointTest, CustomTypeInPlainJointIsAnError) {  // EXT-001
   for (std::string_view type : {"ball", "universal", "screw", "curvilinear"}) {
     Lowered l;
-    EXPECT_FALSE(l.Read(Robot(fmt::format(R"(<joint name='j' type='{}'>
+    EXPECT_FALSE(l.Read(SixLinkRobot(fmt::format(R"(<joint name='j' type='{}'>
         <parent link='a'/><child link='b'/>
         <drake:screw_thread_pitch value='0.1'/>
         <drake:curves><drake:line_segment length='1'/></drake:curves></joint>)",
-                                          type))))
+                                                 type))))
         << type;
     EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "custom joint type")) << l.Messages();
     EXPECT_EQ(l.diags.error_count(), 1u) << l.Messages();
@@ -147,7 +148,7 @@ TEST(UrdfDrakeJointTest, CustomTypeInPlainJointIsAnError) {  // EXT-001
 
 TEST(UrdfDrakeJointTest, UnknownTypeAndMissingPartsAreLocatedErrors) {  // EXT-001
   Lowered l;
-  EXPECT_FALSE(l.Read(Robot(R"(
+  EXPECT_FALSE(l.Read(SixLinkRobot(R"(
     <drake:joint name='j1' type='hinge'><parent link='a'/><child link='b'/></drake:joint>
     <drake:joint type='ball'><parent link='a'/><child link='b'/></drake:joint>
     <drake:joint name='j3'><parent link='a'/><child link='b'/></drake:joint>
@@ -167,7 +168,7 @@ TEST(UrdfDrakeJointTest, UnknownTypeAndMissingPartsAreLocatedErrors) {  // EXT-0
 
 TEST(UrdfDrakeJointTest, ZeroOrNanAxisIsAnError) {  // EXT-001, URDF-011
   Lowered l;
-  EXPECT_FALSE(l.Read(Robot(R"(
+  EXPECT_FALSE(l.Read(SixLinkRobot(R"(
     <drake:joint name='s' type='screw'><parent link='a'/><child link='b'/>
       <axis xyz='0 0 1e-9'/><drake:screw_thread_pitch value='1'/></drake:joint>
     <drake:joint name='t' type='screw'><parent link='a'/><child link='c'/>
@@ -180,7 +181,7 @@ TEST(UrdfDrakeJointTest, ZeroOrNanAxisIsAnError) {  // EXT-001, URDF-011
 // name space, and transmissions and mimics may name a drake:joint.
 TEST(UrdfDrakeJointTest, JointsAreMadeInDocumentOrderAcrossBothElements) {  // URDF-042
   Lowered l;
-  ASSERT_TRUE(l.Read(Robot(R"(
+  ASSERT_TRUE(l.Read(SixLinkRobot(R"(
     <transmission><type>SimpleTransmission</type><joint name='s'/><actuator name='m'/>
     </transmission>
     <joint name='r1' type='revolute'><parent link='a'/><child link='b'/>
@@ -205,7 +206,7 @@ TEST(UrdfDrakeJointTest, JointsAreMadeInDocumentOrderAcrossBothElements) {  // U
   EXPECT_EQ(l.module.Text(l.module[l.module.constraints[0].As<ir::CouplerConstraint>().joint1.id].name), "s");
 
   Lowered dup;
-  EXPECT_FALSE(dup.Read(Robot(R"(
+  EXPECT_FALSE(dup.Read(SixLinkRobot(R"(
     <joint name='x' type='fixed'><parent link='a'/><child link='b'/></joint>
     <drake:joint name='x' type='ball'><parent link='a'/><child link='c'/></drake:joint>)")));
   EXPECT_TRUE(dup.HasDiagnostic(DiagKind::DuplicateName, "joint 'x' is already defined"));
@@ -213,7 +214,7 @@ TEST(UrdfDrakeJointTest, JointsAreMadeInDocumentOrderAcrossBothElements) {  // U
 
 TEST(UrdfDrakeJointTest, DrakeJointHonoursDrakeIgnoreAndMimic) {  // EXT-001, URDF-002, URDF-018
   Lowered l;
-  ASSERT_TRUE(l.Read(Robot(R"(
+  ASSERT_TRUE(l.Read(SixLinkRobot(R"(
     <drake:joint name='gone' type='ball' drake_ignore='true'><parent link='a'/>
       <child link='b'/></drake:joint>
     <joint name='lead' type='revolute'><parent link='a'/><child link='c'/></joint>
@@ -230,7 +231,7 @@ TEST(UrdfDrakeJointTest, DrakeJointHonoursDrakeIgnoreAndMimic) {  // EXT-001, UR
 
 TEST(UrdfDrakeJointTest, LimitsOfCustomTypesAreIgnoredWithAWarning) {  // EXT-001, URDF-013
   Lowered l;
-  ASSERT_TRUE(l.Read(Robot(R"(
+  ASSERT_TRUE(l.Read(SixLinkRobot(R"(
     <drake:joint name='s' type='screw'><parent link='a'/><child link='b'/>
       <drake:screw_thread_pitch value='0.5'/>
       <limit lower='-1' upper='1' effort='5' velocity='2'/></drake:joint>
@@ -249,7 +250,7 @@ TEST(UrdfDrakeJointTest, LimitsOfCustomTypesAreIgnoredWithAWarning) {  // EXT-00
 
 TEST(UrdfDrakeJointTest, NegativeOrNanDampingIsAnError) {  // URDF-014
   Lowered l;
-  EXPECT_FALSE(l.Read(Robot(R"(
+  EXPECT_FALSE(l.Read(SixLinkRobot(R"(
     <drake:joint name='b' type='ball'><parent link='a'/><child link='b'/>
       <dynamics damping='-1'/></drake:joint>
     <drake:joint name='u' type='universal'><parent link='a'/><child link='c'/>
@@ -263,7 +264,7 @@ TEST(UrdfDrakeJointTest, NegativeOrNanDampingIsAnError) {  // URDF-014
 
 TEST(UrdfDrakeJointTest, ParametersOfAnotherTypeAreIgnoredWithAWarning) {  // EXT-002, EXT-003
   Lowered l;
-  ASSERT_TRUE(l.Read(Robot(R"(
+  ASSERT_TRUE(l.Read(SixLinkRobot(R"(
     <drake:joint name='b' type='ball'><parent link='a'/><child link='b'/>
       <drake:screw_thread_pitch value='1'/><drake:curves/><foo/></drake:joint>)")))
       << l.Messages();
@@ -278,7 +279,7 @@ TEST(UrdfDrakeJointTest, ParametersOfAnotherTypeAreIgnoredWithAWarning) {  // EX
 
 TEST(UrdfDrakeJointTest, ScrewJointReadsAxisAndThreadPitch) {  // EXT-001, EXT-002
   Lowered l;
-  ASSERT_TRUE(l.Read(Robot(R"(
+  ASSERT_TRUE(l.Read(SixLinkRobot(R"(
     <drake:joint name='s' type='screw'><parent link='a'/><child link='b'/>
       <axis xyz='0 0 2'/><drake:screw_thread_pitch value='-0.04'/>
       <dynamics damping='0.1'/></drake:joint>)")))
@@ -311,9 +312,9 @@ TEST(UrdfDrakeJointTest, ScrewThreadPitchErrors) {  // EXT-002
            Case{"<drake:screw_thread_pitch value='x'/>", DiagKind::BadValue, "must be numbers"},
        }) {
     Lowered l;
-    EXPECT_FALSE(l.Read(Robot(fmt::format(R"(<drake:joint name='s' type='screw'>
+    EXPECT_FALSE(l.Read(SixLinkRobot(fmt::format(R"(<drake:joint name='s' type='screw'>
         <parent link='a'/><child link='b'/>{}</drake:joint>)",
-                                          c.pitch))))
+                                                 c.pitch))))
         << c.pitch;
     EXPECT_TRUE(l.HasDiagnostic(c.kind, c.message)) << c.pitch << "\n" << l.Messages();
     EXPECT_EQ(l.diags.error_count(), 1u) << l.Messages();
@@ -325,7 +326,7 @@ TEST(UrdfDrakeJointTest, ScrewThreadPitchErrors) {  // EXT-002
 
 TEST(UrdfDrakeJointTest, CurvilinearPathDefaultsAndSegments) {  // EXT-003
   Lowered l;
-  ASSERT_TRUE(l.Read(Robot(R"(
+  ASSERT_TRUE(l.Read(SixLinkRobot(R"(
     <drake:joint name='c' type='curvilinear'><parent link='a'/><child link='b'/>
       <dynamics damping='0.1'/>
       <drake:curves>
@@ -360,7 +361,7 @@ TEST(UrdfDrakeJointTest, CurvilinearPathDefaultsAndSegments) {  // EXT-003
 TEST(UrdfDrakeJointTest, CurvilinearPlaneTangentAndPeriodic) {  // EXT-003
   // the corpus's joint_parsing_test.urdf curvilinear_periodic joint
   Lowered l;
-  ASSERT_TRUE(l.Read(Robot(R"(
+  ASSERT_TRUE(l.Read(SixLinkRobot(R"(
     <drake:joint name='c' type='curvilinear'><parent link='a'/><child link='b'/>
       <origin xyz='3 2 1' rpy='0 0 0'/>
       <drake:initial_tangent xyz='0 0 1'/><drake:plane_normal xyz='2 0 0'/>
@@ -396,10 +397,10 @@ TEST(UrdfDrakeJointTest, IsPeriodicTakesOnlyTrueAsTrue) {  // EXT-003
        {std::tuple{"'true'", true, false}, {"'false'", false, false}, {"'1'", false, true},
         {"'True'", false, true}}) {
     Lowered l;
-    ASSERT_TRUE(l.Read(Robot(fmt::format(R"(<drake:joint name='c' type='curvilinear'>
+    ASSERT_TRUE(l.Read(SixLinkRobot(fmt::format(R"(<drake:joint name='c' type='curvilinear'>
         <parent link='a'/><child link='b'/><drake:is_periodic value={}/>
         <drake:curves><drake:line_segment length='1'/></drake:curves></drake:joint>)",
-                                         value))))
+                                                value))))
         << l.Messages();
     EXPECT_EQ(l.Joint("c")->curvilinear_path.periodic, periodic) << value;
     EXPECT_EQ(l.HasDiagnostic(DiagKind::JointWarning, "is not periodic"), warns) << value;
@@ -450,9 +451,10 @@ TEST(UrdfDrakeJointTest, CurvilinearPathErrors) {  // EXT-003
        }) {
     Lowered l;
     const bool has_curves = c.body.find("drake:curves") != std::string_view::npos;
-    EXPECT_FALSE(l.Read(Robot(fmt::format(R"(<drake:joint name='c' type='curvilinear'>
+    EXPECT_FALSE(
+        l.Read(SixLinkRobot(fmt::format(R"(<drake:joint name='c' type='curvilinear'>
         <parent link='a'/><child link='b'/>{}{}</drake:joint>)",
-                                          c.body, has_curves || c.body.empty() ? "" : line))))
+                                        c.body, has_curves || c.body.empty() ? "" : line))))
         << c.body;
     EXPECT_TRUE(l.HasDiagnostic(c.kind, c.message)) << c.body << "\n" << l.Messages();
     EXPECT_EQ(l.diags.error_count(), 1u) << c.body << "\n" << l.Messages();
@@ -465,7 +467,7 @@ TEST(UrdfDrakeJointTest, CurvilinearPathErrors) {  // EXT-003
 
 TEST(UrdfDrakeJointTest, EveryCurveErrorIsReportedInOneRun) {  // EXT-003
   Lowered l;
-  EXPECT_FALSE(l.Read(Robot(R"(<drake:joint name='c' type='curvilinear'>
+  EXPECT_FALSE(l.Read(SixLinkRobot(R"(<drake:joint name='c' type='curvilinear'>
       <parent link='a'/><child link='b'/>
       <drake:curves>
         <drake:line_segment length='-1'/>

@@ -7,10 +7,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tools/driver/compiler.h"
 #include "backend/plant_json.h"
 #include "backend/positions.h"
+#include "tests/unit/test_values.h"
 #include "tests/unit/urdf_test_util.h"
+#include "tools/driver/compiler.h"
 
 namespace mdlc {
 namespace {
@@ -22,36 +23,23 @@ std::string Link(std::string_view link_children) {
   return fmt::format("<robot name='r'><link name='a'>{}</link></robot>", link_children);
 }
 /// One collision box with `children` beside its geometry.
-std::string Collision(std::string_view children) {
+std::string UrdfCollision(std::string_view children) {
   return Link(fmt::format("<collision><geometry><box size='1 1 1'/></geometry>{}</collision>",
                           children));
 }
 /// One visual box with `children` beside its geometry.
-std::string Visual(std::string_view children) {
+std::string UrdfVisual(std::string_view children) {
   return Link(
       fmt::format("<visual><geometry><box size='1 1 1'/></geometry>{}</visual>", children));
 }
-std::string Proximity(std::string_view children) {
-  return Collision(
+std::string UrdfProximity(std::string_view children) {
+  return UrdfCollision(
       fmt::format("<drake:proximity_properties>{}</drake:proximity_properties>", children));
 }
 
-const ir::Property* Find(const ir::Geometry& g, std::string_view key) {
-  for (const auto& p : g.properties) {
-    if (p.key == key) return &p;
-  }
-  return nullptr;
-}
-double Number(const ir::Geometry& g, std::string_view key) {
-  const ir::Property* p = Find(g, key);
-  EXPECT_NE(p, nullptr) << key;
-  return p ? std::get<double>(p->value) : std::nan("");
-}
-std::vector<double> Numbers(const ir::Geometry& g, std::string_view key) {
-  const ir::Property* p = Find(g, key);
-  EXPECT_NE(p, nullptr) << key;
-  return p ? std::get<std::vector<double>>(p->value) : std::vector<double>{};
-}
+using testing::Find;
+using testing::Number;
+using testing::Numbers;
 
 /// Counts diagnostics of `kind` (all must be accounted for by the caller).
 size_t Count(const Lowered& l, DiagKind kind) {
@@ -64,7 +52,7 @@ size_t Count(const Lowered& l, DiagKind kind) {
 
 TEST(UrdfGeometryProperties, EveryProximityChildBecomesItsProperty) {  // EXT-020
   Lowered l;
-  ASSERT_TRUE(l.Read(Proximity(R"(
+  ASSERT_TRUE(l.Read(UrdfProximity(R"(
       <drake:compliant_hydroelastic/>
       <drake:hydroelastic_modulus value='5e7'/>
       <drake:mesh_resolution_hint value='0.02'/>
@@ -92,7 +80,7 @@ TEST(UrdfGeometryProperties, EveryProximityChildBecomesItsProperty) {  // EXT-02
 
 TEST(UrdfGeometryProperties, RigidHydroelastic) {  // EXT-020
   Lowered l;
-  ASSERT_TRUE(l.Read(Proximity("<drake:rigid_hydroelastic/>"))) << l.Messages();
+  ASSERT_TRUE(l.Read(UrdfProximity("<drake:rigid_hydroelastic/>"))) << l.Messages();
   const ir::Geometry& g = l.module.geometries[0];
   ASSERT_EQ(g.properties.size(), 1u);
   EXPECT_EQ(std::get<std::string>(Find(g, "hydroelastic/compliance_type")->value), "rigid");
@@ -101,17 +89,17 @@ TEST(UrdfGeometryProperties, RigidHydroelastic) {  // EXT-020
 TEST(UrdfGeometryProperties, NoProximityPropertiesMeansNoProperties) {  // EXT-021
   // the plant's default friction applies; it is not listed as a property
   Lowered l;
-  ASSERT_TRUE(l.Read(Collision(""))) << l.Messages();
+  ASSERT_TRUE(l.Read(UrdfCollision(""))) << l.Messages();
   EXPECT_TRUE(l.module.geometries[0].properties.empty());
   Lowered empty;
-  ASSERT_TRUE(empty.Read(Proximity(""))) << empty.Messages();
+  ASSERT_TRUE(empty.Read(UrdfProximity(""))) << empty.Messages();
   EXPECT_TRUE(empty.module.geometries[0].properties.empty());
 }
 
 TEST(UrdfGeometryProperties, OneFrictionCoefficientGivesBoth) {  // EXT-020, EXT-021
   for (const char* tag : {"drake:mu_dynamic", "drake:mu_static"}) {
     Lowered l;
-    ASSERT_TRUE(l.Read(Proximity(fmt::format("<{} value='0.4'/>", tag)))) << l.Messages();
+    ASSERT_TRUE(l.Read(UrdfProximity(fmt::format("<{} value='0.4'/>", tag)))) << l.Messages();
     EXPECT_EQ(Numbers(l.module.geometries[0], "material/coulomb_friction"),
               (std::vector<double>{0.4, 0.4}))
         << tag;
@@ -120,7 +108,7 @@ TEST(UrdfGeometryProperties, OneFrictionCoefficientGivesBoth) {  // EXT-020, EXT
 
 TEST(UrdfGeometryProperties, FrictionFollowsCoulombRules) {  // EXT-020
   Lowered negative;
-  EXPECT_FALSE(negative.Read(Proximity("<drake:mu_dynamic value='-0.1'/>")));
+  EXPECT_FALSE(negative.Read(UrdfProximity("<drake:mu_dynamic value='-0.1'/>")));
   EXPECT_TRUE(negative.HasDiagnostic(DiagKind::BadValue, "must not be negative"));
   EXPECT_EQ(negative.diags.error_count(), 1u) << negative.Messages();  // reported once
   EXPECT_TRUE(negative.module.geometries[0].properties.empty());
@@ -128,12 +116,12 @@ TEST(UrdfGeometryProperties, FrictionFollowsCoulombRules) {  // EXT-020
   // Drake's CoulombFriction: dynamic may not exceed static
   Lowered inverted;
   EXPECT_FALSE(inverted.Read(
-      Proximity("<drake:mu_static value='0.2'/><drake:mu_dynamic value='0.5'/>")));
+      UrdfProximity("<drake:mu_static value='0.2'/><drake:mu_dynamic value='0.5'/>")));
   EXPECT_TRUE(inverted.HasDiagnostic(DiagKind::BadValue, "greater than the static"));
 
   Lowered equal;
   EXPECT_TRUE(
-      equal.Read(Proximity("<drake:mu_static value='0.5'/><drake:mu_dynamic value='0.5'/>")))
+      equal.Read(UrdfProximity("<drake:mu_static value='0.5'/><drake:mu_dynamic value='0.5'/>")))
       << equal.Messages();
 }
 
@@ -153,13 +141,13 @@ TEST(UrdfGeometryProperties, OutOfRangeValuesAreErrors) {  // EXT-020
            {"<drake:mesh_resolution_hint value='0'/>", "mesh resolution hint"},
        }) {
     Lowered l;
-    EXPECT_FALSE(l.Read(Proximity(c.xml))) << c.xml;
+    EXPECT_FALSE(l.Read(UrdfProximity(c.xml))) << c.xml;
     EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, c.message)) << c.xml << "\n" << l.Messages();
     EXPECT_TRUE(l.module.geometries[0].properties.empty()) << c.xml;
   }
   // zero is allowed where only negatives are rejected
   Lowered zero;
-  ASSERT_TRUE(zero.Read(Proximity(R"(<drake:relaxation_time value='0'/>
+  ASSERT_TRUE(zero.Read(UrdfProximity(R"(<drake:relaxation_time value='0'/>
       <drake:hydroelastic_margin value='0'/><drake:hunt_crossley_dissipation value='0'/>)")))
       << zero.Messages();
   EXPECT_EQ(zero.module.geometries[0].properties.size(), 3u);
@@ -167,34 +155,33 @@ TEST(UrdfGeometryProperties, OutOfRangeValuesAreErrors) {  // EXT-020
 
 TEST(UrdfGeometryProperties, ValueAttributeIsRequiredAndNumeric) {  // EXT-020
   Lowered missing;
-  EXPECT_FALSE(missing.Read(Proximity("<drake:mu_dynamic/>")));
+  EXPECT_FALSE(missing.Read(UrdfProximity("<drake:mu_dynamic/>")));
   EXPECT_TRUE(missing.HasDiagnostic(DiagKind::MissingAttribute, "'value'"));
   Lowered text;
-  EXPECT_FALSE(text.Read(Proximity("<drake:hydroelastic_modulus value='soft'/>")));
+  EXPECT_FALSE(text.Read(UrdfProximity("<drake:hydroelastic_modulus value='soft'/>")));
   EXPECT_TRUE(text.diags.has_errors());
   text.ExpectDiagnostic(DiagKind::BadValue, "must be numbers");
   Lowered nan;
-  EXPECT_FALSE(nan.Read(Proximity("<drake:hydroelastic_modulus value='nan'/>")));
+  EXPECT_FALSE(nan.Read(UrdfProximity("<drake:hydroelastic_modulus value='nan'/>")));
   EXPECT_TRUE(nan.diags.has_errors());
   nan.ExpectDiagnostic(DiagKind::NonFinite, "must be finite");
   // the number is an attribute in URDF; text content is not read
   Lowered content;
-  EXPECT_FALSE(content.Read(Proximity("<drake:mu_dynamic>0.5</drake:mu_dynamic>")));
+  EXPECT_FALSE(content.Read(UrdfProximity("<drake:mu_dynamic>0.5</drake:mu_dynamic>")));
   EXPECT_TRUE(content.HasDiagnostic(DiagKind::MissingAttribute, "'value'"));
 }
 
 TEST(UrdfGeometryProperties, RigidAndCompliantAreExclusive) {  // EXT-020
   Lowered l;
-  EXPECT_FALSE(
-      l.Read(Proximity("<drake:rigid_hydroelastic/><drake:compliant_hydroelastic/>")));
+  EXPECT_FALSE(l.Read(UrdfProximity("<drake:rigid_hydroelastic/><drake:compliant_hydroelastic/>")));
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "mutually exclusive"));
   EXPECT_EQ(Find(l.module.geometries[0], "hydroelastic/compliance_type"), nullptr);
 }
 
 TEST(UrdfGeometryProperties, ModulusOnRigidIsIgnoredWithAWarning) {  // EXT-020
   Lowered l;
-  ASSERT_TRUE(l.Read(Proximity(
-      "<drake:rigid_hydroelastic/><drake:hydroelastic_modulus value='1e7'/>")))
+  ASSERT_TRUE(
+      l.Read(UrdfProximity("<drake:rigid_hydroelastic/><drake:hydroelastic_modulus value='1e7'/>")))
       << l.Messages();
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedElement, "ignored on a rigid"));
   const ir::Geometry& g = l.module.geometries[0];
@@ -204,13 +191,13 @@ TEST(UrdfGeometryProperties, ModulusOnRigidIsIgnoredWithAWarning) {  // EXT-020
 
 TEST(UrdfGeometryProperties, SoftHydroelasticIsNoLongerSupported) {  // EXT-020
   Lowered l;
-  EXPECT_FALSE(l.Read(Proximity("<drake:soft_hydroelastic/>")));
+  EXPECT_FALSE(l.Read(UrdfProximity("<drake:soft_hydroelastic/>")));
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "drake:compliant_hydroelastic"));
 }
 
 TEST(UrdfGeometryProperties, UnknownAndRepeatedChildrenAreReported) {  // EXT-020, COMMON-003
   Lowered l;
-  ASSERT_TRUE(l.Read(Proximity(R"(<drake:mu_dynamic value='0.3'/>
+  ASSERT_TRUE(l.Read(UrdfProximity(R"(<drake:mu_dynamic value='0.3'/>
       <drake:mu_dynamic value='0.9'/><drake:mu_dyanmic value='1'/>)")))
       << l.Messages();
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedElement, "only the first one is used"));
@@ -220,7 +207,7 @@ TEST(UrdfGeometryProperties, UnknownAndRepeatedChildrenAreReported) {  // EXT-02
 
   // a second drake:proximity_properties is ignored, as Drake reads only the first
   Lowered twice;
-  ASSERT_TRUE(twice.Read(Collision(R"(
+  ASSERT_TRUE(twice.Read(UrdfCollision(R"(
       <drake:proximity_properties><drake:mu_static value='0.7'/></drake:proximity_properties>
       <drake:proximity_properties><drake:mu_static value='0.1'/></drake:proximity_properties>)")))
       << twice.Messages();
@@ -232,7 +219,7 @@ TEST(UrdfGeometryProperties, UnknownAndRepeatedChildrenAreReported) {  // EXT-02
 
 TEST(UrdfGeometryProperties, ProximityPropertiesOnAVisualIsUnknown) {  // EXT-020
   Lowered l;
-  ASSERT_TRUE(l.Read(Visual("<drake:proximity_properties/>"))) << l.Messages();
+  ASSERT_TRUE(l.Read(UrdfVisual("<drake:proximity_properties/>"))) << l.Messages();
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnknownElement, "drake:proximity_properties"));
 }
 
@@ -240,7 +227,7 @@ TEST(UrdfGeometryProperties, ProximityPropertiesOnAVisualIsUnknown) {  // EXT-02
 
 TEST(UrdfGeometryProperties, DrakeComplianceGivesFriction) {  // URDF-033
   Lowered l;
-  ASSERT_TRUE(l.Read(Collision(R"(<drake_compliance>
+  ASSERT_TRUE(l.Read(UrdfCollision(R"(<drake_compliance>
       <youngs_modulus>1e8</youngs_modulus><dissipation>5</dissipation>
       <static_friction>0.9</static_friction><dynamic_friction>0.5</dynamic_friction>
     </drake_compliance>)")))
@@ -255,17 +242,18 @@ TEST(UrdfGeometryProperties, DrakeComplianceGivesFriction) {  // URDF-033
 TEST(UrdfGeometryProperties, DrakeComplianceNeedsBothCoefficients) {  // URDF-033
   Lowered l;
   EXPECT_FALSE(
-      l.Read(Collision("<drake_compliance><static_friction>0.9</static_friction>"
-                       "</drake_compliance>")));
+      l.Read(UrdfCollision("<drake_compliance><static_friction>0.9</static_friction>"
+                           "</drake_compliance>")));
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::MissingElement, "both static and dynamic"));
   Lowered bad;
-  EXPECT_FALSE(bad.Read(Collision("<drake_compliance><static_friction>high</static_friction>"
-                                  "<dynamic_friction>0.1</dynamic_friction></drake_compliance>")));
+  EXPECT_FALSE(
+      bad.Read(UrdfCollision("<drake_compliance><static_friction>high</static_friction>"
+                             "<dynamic_friction>0.1</dynamic_friction></drake_compliance>")));
   EXPECT_TRUE(bad.HasDiagnostic(DiagKind::BadValue, "must hold a number"));
   Lowered inverted;
   EXPECT_FALSE(
-      inverted.Read(Collision("<drake_compliance><static_friction>0.1</static_friction>"
-                              "<dynamic_friction>0.2</dynamic_friction></drake_compliance>")));
+      inverted.Read(UrdfCollision("<drake_compliance><static_friction>0.1</static_friction>"
+                                  "<dynamic_friction>0.2</dynamic_friction></drake_compliance>")));
   EXPECT_TRUE(inverted.HasDiagnostic(DiagKind::BadValue, "greater than the static"));
 }
 
@@ -279,8 +267,8 @@ TEST(UrdfGeometryProperties, ProximityFrictionBeatsDrakeCompliance) {  // EXT-02
         "<drake:proximity_properties><drake:mu_dynamic value='0.3'/>"
         "</drake:proximity_properties>";
     Lowered l;
-    ASSERT_TRUE(l.Read(Collision(compliance_first ? compliance + proximity
-                                                  : proximity + compliance)))
+    ASSERT_TRUE(
+        l.Read(UrdfCollision(compliance_first ? compliance + proximity : proximity + compliance)))
         << l.Messages();
     EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedElement, "<drake_compliance> is ignored"));
     const ir::Geometry& g = l.module.geometries[0];
@@ -289,7 +277,7 @@ TEST(UrdfGeometryProperties, ProximityFrictionBeatsDrakeCompliance) {  // EXT-02
   }
   // proximity properties without friction leave the friction to drake_compliance
   Lowered l;
-  ASSERT_TRUE(l.Read(Collision(
+  ASSERT_TRUE(l.Read(UrdfCollision(
       "<drake:proximity_properties><drake:rigid_hydroelastic/></drake:proximity_properties>"
       "<drake_compliance><static_friction>0.9</static_friction>"
       "<dynamic_friction>0.8</dynamic_friction></drake_compliance>")))
@@ -315,7 +303,7 @@ TEST(UrdfGeometryProperties, VisualRolesFollowEnabled) {  // EXT-030
            {"<drake:perception_properties enabled='false'/>", ir::kIllustrationRole},
        }) {
     Lowered l;
-    ASSERT_TRUE(l.Read(Visual(c.xml))) << c.xml << "\n" << l.Messages();
+    ASSERT_TRUE(l.Read(UrdfVisual(c.xml))) << c.xml << "\n" << l.Messages();
     EXPECT_TRUE(l.diags.diagnostics().empty()) << c.xml << "\n" << l.Messages();
     ASSERT_EQ(l.module.geometries.size(), 1u);
     EXPECT_EQ(l.module.geometries[0].roles, c.roles) << c.xml;
@@ -325,7 +313,8 @@ TEST(UrdfGeometryProperties, VisualRolesFollowEnabled) {  // EXT-030
 TEST(UrdfGeometryProperties, InvalidEnabledIsAnError) {  // EXT-030
   for (const char* value : {"no", "1", "False", ""}) {
     Lowered l;
-    EXPECT_FALSE(l.Read(Visual(fmt::format("<drake:perception_properties enabled='{}'/>", value))))
+    EXPECT_FALSE(
+        l.Read(UrdfVisual(fmt::format("<drake:perception_properties enabled='{}'/>", value))))
         << value;
     EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "expected 'true' or 'false'")) << value;
   }
@@ -348,7 +337,7 @@ TEST(UrdfGeometryProperties, VisualWithNoRoleIsDropped) {  // EXT-030
 
 TEST(UrdfGeometryProperties, AcceptingRenderersAreASortedSet) {  // EXT-031
   Lowered l;
-  ASSERT_TRUE(l.Read(Visual(R"(<drake:accepting_renderer name='vtk'/>
+  ASSERT_TRUE(l.Read(UrdfVisual(R"(<drake:accepting_renderer name='vtk'/>
       <drake:accepting_renderer name='gl'/><drake:accepting_renderer name='vtk'/>)")))
       << l.Messages();
   const ir::Property* p = Find(l.module.geometries[0], "renderer/accepting");
@@ -358,10 +347,10 @@ TEST(UrdfGeometryProperties, AcceptingRenderersAreASortedSet) {  // EXT-031
 
 TEST(UrdfGeometryProperties, AcceptingRendererNeedsAName) {  // EXT-031
   Lowered missing;
-  EXPECT_FALSE(missing.Read(Visual("<drake:accepting_renderer/>")));
+  EXPECT_FALSE(missing.Read(UrdfVisual("<drake:accepting_renderer/>")));
   EXPECT_TRUE(missing.HasDiagnostic(DiagKind::MissingAttribute, "'name'"));
   Lowered empty;
-  EXPECT_FALSE(empty.Read(Visual("<drake:accepting_renderer name=''/>")));
+  EXPECT_FALSE(empty.Read(UrdfVisual("<drake:accepting_renderer name=''/>")));
   EXPECT_TRUE(empty.HasDiagnostic(DiagKind::BadValue, "empty 'name'"));
 }
 
@@ -372,7 +361,7 @@ TEST(UrdfGeometryProperties, AcceptingRendererWithoutPerceptionIsIgnored) {  // 
                           "<drake:accepting_renderer name='vtk'/>"
                           "<drake:perception_properties enabled='false'/>"}) {
     Lowered l;
-    ASSERT_TRUE(l.Read(Visual(xml))) << l.Messages();
+    ASSERT_TRUE(l.Read(UrdfVisual(xml))) << l.Messages();
     EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedElement, "perception role"));
     EXPECT_EQ(Find(l.module.geometries[0], "renderer/accepting"), nullptr);
     EXPECT_EQ(l.module.geometries[0].roles, ir::kIllustrationRole);
@@ -409,8 +398,9 @@ TEST(UrdfGeometryProperties, TextureBecomesDiffuseMap) {  // EXT-033
 
 TEST(UrdfGeometryProperties, RepeatedRoleElementsKeepTheFirst) {  // EXT-030
   Lowered l;
-  ASSERT_TRUE(l.Read(Visual("<drake:perception_properties enabled='false'/>"
-                            "<drake:perception_properties enabled='true'/>")))
+  ASSERT_TRUE(
+      l.Read(UrdfVisual("<drake:perception_properties enabled='false'/>"
+                        "<drake:perception_properties enabled='true'/>")))
       << l.Messages();
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedElement, "only the first one is used"));
   EXPECT_EQ(l.module.geometries[0].roles, ir::kIllustrationRole);

@@ -13,6 +13,7 @@
 #include "passes/mesh/convex_hull.h"
 #include "passes/mesh/mesh_loader.h"
 #include "tests/unit/mesh/mesh_test_util.h"
+#include "tests/unit/test_values.h"
 
 namespace mdlc::testing {
 namespace {
@@ -23,11 +24,7 @@ mesh::TriangleMesh Load(std::string_view name, Eigen::Vector3d scale = Eigen::Ve
   return m.ok() ? mesh::Scaled(*m.mesh, scale) : mesh::TriangleMesh{};
 }
 
-Eigen::Matrix3d Sym(double xx, double yy, double zz, double xy, double xz, double yz) {
-  Eigen::Matrix3d I;
-  I << xx, xy, xz, xy, yy, yz, xz, yz, zz;
-  return I;
-}
+using testing::Sym;
 
 TEST(SolidMassPropertiesTest, TetrahedronClosedForm) {  // BEYOND-001
   const mesh::MassProperties p = mesh::SolidMassProperties(Load("tetra.obj"));

@@ -12,17 +12,14 @@
 #include <numbers>
 
 #include "tests/unit/mesh/mesh_test_util.h"
+#include "tests/unit/test_values.h"
 
 namespace mdlc::testing {
 namespace {
 
 using MI = ir::MeshInertia;
 
-Eigen::Matrix3d Sym(double xx, double yy, double zz, double xy, double xz, double yz) {
-  Eigen::Matrix3d I;
-  I << xx, xy, xz, xy, yy, yz, xz, yz, zz;
-  return I;
-}
+using testing::Sym;
 
 struct Expected {
   double mass;

@@ -9,11 +9,12 @@
 #include <numbers>
 
 #include "tests/unit/sdf_test_util.h"
+#include "tests/unit/test_values.h"
 
 namespace mdlc::testing {
 namespace {
 
-constexpr double kTol = 1e-12;
+using testing::kTol;
 
 const ir::Body& BodyNamed(const ir::Module& m, std::string_view model, std::string_view name) {
   for (const ir::Body& b : m.bodies) {
