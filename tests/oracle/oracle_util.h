@@ -198,6 +198,139 @@ inline RunResult RunProcess(const std::vector<std::string>& argv, double timeout
   return r;
 }
 
+/// A helper process that answers one line of stdout per line written to its
+/// stdin, kept running across requests: a dump tool whose start-up dwarfs a
+/// single answer (Node.js and MuJoCo's WebAssembly: 0.4 s to start, tens of
+/// milliseconds per file) is started once per test process, not once per
+/// file. Its stderr is drained as it comes and kept for failure messages. On
+/// a timeout, a closed stdout or a failed write the process is killed, and
+/// the next request starts a new one.
+class LineServer {
+ public:
+  explicit LineServer(std::vector<std::string> argv) : argv_(std::move(argv)) {}
+  LineServer(const LineServer&) = delete;
+  LineServer& operator=(const LineServer&) = delete;
+  ~LineServer() { Stop(); }
+
+  /// Writes `request` (one line, no newline in it) and returns the answering
+  /// line; nullopt with *problem set when there was none in `timeout_s`.
+  std::optional<std::string> Ask(const std::string& request, double timeout_s, std::string* problem) {
+    if (request.find('\n') != std::string::npos) {
+      *problem = "request holds a newline";
+      return std::nullopt;
+    }
+    if (pid_ <= 0 && !Start(problem)) return std::nullopt;
+    const std::string line = request + "\n";
+    for (size_t done = 0; done < line.size();) {
+      const ssize_t n = write(in_, line.data() + done, line.size() - done);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) return Fail("write to the helper: " + std::string(std::strerror(errno)), problem);
+      done += static_cast<size_t>(n);
+    }
+    const auto deadline = std::chrono::steady_clock::now() +
+                          std::chrono::milliseconds(static_cast<int64_t>(timeout_s * 1000));
+    for (;;) {
+      if (const size_t eol = out_buf_.find('\n'); eol != std::string::npos) {
+        std::string answer = out_buf_.substr(0, eol);
+        out_buf_.erase(0, eol + 1);
+        return answer;
+      }
+      const auto now = std::chrono::steady_clock::now();
+      if (now >= deadline) return Fail("timed out", problem);
+      const int ms = static_cast<int>(
+          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count()) + 1;
+      pollfd fds[2] = {{out_, POLLIN, 0}, {err_, POLLIN, 0}};
+      const int n = poll(fds, err_ >= 0 ? 2 : 1, ms);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) return Fail("poll: " + std::string(std::strerror(errno)), problem);
+      char buf[65536];
+      if (err_ >= 0 && (fds[1].revents & (POLLIN | POLLHUP | POLLERR))) {
+        const ssize_t got = read(err_, buf, sizeof buf);
+        if (got > 0) {
+          err_tail_.append(buf, static_cast<size_t>(got));
+          if (err_tail_.size() > 4000) err_tail_.erase(0, err_tail_.size() - 4000);
+        } else if (got == 0) {
+          close(err_);
+          err_ = -1;
+        }
+      }
+      if (fds[0].revents & (POLLIN | POLLHUP | POLLERR)) {
+        const ssize_t got = read(out_, buf, sizeof buf);
+        if (got > 0) {
+          out_buf_.append(buf, static_cast<size_t>(got));
+        } else if (got == 0 || errno != EINTR) {
+          return Fail("the helper closed its output", problem);
+        }
+      }
+    }
+  }
+
+ private:
+  bool Start(std::string* problem) {
+    // a helper that died must fail the write, not end the test with SIGPIPE
+    signal(SIGPIPE, SIG_IGN);
+    int in_pipe[2], out_pipe[2], err_pipe[2];
+    if (pipe2(in_pipe, O_CLOEXEC) != 0) return StartFailed("pipe", problem);
+    if (pipe2(out_pipe, O_CLOEXEC) != 0) {
+      close(in_pipe[0]), close(in_pipe[1]);
+      return StartFailed("pipe", problem);
+    }
+    if (pipe2(err_pipe, O_CLOEXEC) != 0) {
+      close(in_pipe[0]), close(in_pipe[1]), close(out_pipe[0]), close(out_pipe[1]);
+      return StartFailed("pipe", problem);
+    }
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_adddup2(&fa, in_pipe[0], 0);
+    posix_spawn_file_actions_adddup2(&fa, out_pipe[1], 1);
+    posix_spawn_file_actions_adddup2(&fa, err_pipe[1], 2);
+    std::vector<char*> cargv;
+    for (const auto& a : argv_) cargv.push_back(const_cast<char*>(a.c_str()));
+    cargv.push_back(nullptr);
+    pid_t pid = 0;
+    const int rc = posix_spawn(&pid, cargv[0], &fa, nullptr, cargv.data(), environ);
+    posix_spawn_file_actions_destroy(&fa);
+    close(in_pipe[0]), close(out_pipe[1]), close(err_pipe[1]);
+    if (rc != 0) {
+      close(in_pipe[1]), close(out_pipe[0]), close(err_pipe[0]);
+      *problem = "posix_spawn(" + argv_[0] + "): " + std::strerror(rc);
+      return false;
+    }
+    pid_ = pid, in_ = in_pipe[1], out_ = out_pipe[0], err_ = err_pipe[0];
+    out_buf_.clear();
+    err_tail_.clear();
+    return true;
+  }
+
+  bool StartFailed(const char* what, std::string* problem) {
+    *problem = std::string(what) + ": " + std::strerror(errno);
+    return false;
+  }
+
+  std::nullopt_t Fail(const std::string& why, std::string* problem) {
+    *problem = why + (err_tail_.empty() ? "" : ": " + err_tail_.substr(0, 2000));
+    Stop();
+    return std::nullopt;
+  }
+
+  void Stop() {
+    if (pid_ <= 0) return;
+    kill(pid_, SIGKILL);  // our own child only
+    for (int fd : {in_, out_, err_}) {
+      if (fd >= 0) close(fd);
+    }
+    int status = 0;
+    while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    }
+    pid_ = -1, in_ = out_ = err_ = -1;
+  }
+
+  std::vector<std::string> argv_;
+  pid_t pid_ = -1;
+  int in_ = -1, out_ = -1, err_ = -1;
+  std::string out_buf_, err_tail_;
+};
+
 // ---------------------------------------------------------------------------
 // The mdlc CLI and its plant-json dump
 // ---------------------------------------------------------------------------

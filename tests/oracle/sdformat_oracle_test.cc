@@ -1248,12 +1248,27 @@ std::vector<std::pair<std::string, double>> Configuration(const Oracle& o, int i
   return q;
 }
 
+// BuildOracle, remembered per file for the life of the test process: each
+// file's two checks (and a run of many files, as for the converted models)
+// load it with libsdformat once, which is most of a check's time.
+std::string CachedOracle(const std::string& path, Oracle* o) {
+  static std::map<std::string, std::pair<std::string, Oracle>> built;
+  auto it = built.find(path);
+  if (it == built.end()) {
+    std::pair<std::string, Oracle> entry;
+    entry.first = BuildOracle(path, &entry.second);
+    it = built.emplace(path, std::move(entry)).first;
+  }
+  *o = it->second.second;
+  return it->second.first;
+}
+
 class SdformatOracle : public ::testing::TestWithParam<ModelCase> {
  protected:
   void SetUp() override {
     const ModelCase& mc = GetParam();
     if (!mc.skip_reason.empty()) GTEST_SKIP() << mc.skip_reason;
-    const std::string err = BuildOracle(mc.path, &oracle_);
+    const std::string err = CachedOracle(mc.path, &oracle_);
     // A listed disagreement may be a file the oracle cannot build either;
     // mdlc rejecting it skips the case, mdlc accepting it fails it (stale).
     oracle_ok_ = err.empty();
@@ -1354,7 +1369,9 @@ std::vector<ModelCase> ConvertedCases() {
     c.id = Sanitize(f.stem().string());
     c.path = fs::absolute(f).string();
     c.display = f.string();
-    c.package_path = fs::absolute(f).parent_path().string();
+    // no --package-path: the writer refers to meshes by relative paths, and
+    // a package path would have mdlc search this folder of hundreds of
+    // converted models for package.xml on every run
     std::ifstream in(f);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (text.find("<drake:joint") != std::string::npos) {

@@ -5,6 +5,7 @@
 //
 //   node mujoco_dump.mjs --version
 //   node mujoco_dump.mjs [options] FILE...
+//   node mujoco_dump.mjs [options] --serve   (FILEs on stdin, one per line)
 //
 // Options (apply to every FILE):
 //   --configs N      N seeded random configurations besides qpos0 (default 3)
@@ -12,6 +13,8 @@
 //   --q NAME=V,...   one explicit configuration (repeatable): joint NAME at V
 //   --brief          only {file, ok, error, nbody, njnt, ngeom, nv}
 //   --root DIR       mirror DIR instead of the file's folder (see below)
+//   --serve          read FILEs from stdin, one per line, answering each as
+//                    it arrives (one Node.js start for many files)
 //
 // Prints one JSON object per FILE, one per line (JSON Lines), in order:
 //   {"file", "ok": false, "error": "..."}                       load failed, or
@@ -73,12 +76,12 @@ const BIAS_TYPES = ['none', 'affine', 'muscle', 'user'];
 
 function usage(msg) {
   process.stderr.write(`mujoco_dump: ${msg}\nusage: node mujoco_dump.mjs [--configs N] [--seed S] ` +
-                       `[--q NAME=V,...]... [--brief] [--root DIR] FILE... | --version\n`);
+                       `[--q NAME=V,...]... [--brief] [--root DIR] (FILE... | --serve) | --version\n`);
   process.exit(2);
 }
 
 // ---------------------------------------------------------------- arguments
-const opts = { configs: 3, seed: 1, explicit: [], brief: false, root: null, version: false };
+const opts = { configs: 3, seed: 1, explicit: [], brief: false, root: null, version: false, serve: false };
 const files = [];
 {
   const argv = process.argv.slice(2);
@@ -89,6 +92,7 @@ const files = [];
     else if (a === '--configs') opts.configs = Number.parseInt(next(), 10);
     else if (a === '--seed') opts.seed = Number.parseInt(next(), 10);
     else if (a === '--brief') opts.brief = true;
+    else if (a === '--serve') opts.serve = true;
     else if (a === '--root') opts.root = path.resolve(next());
     else if (a === '--q') {
       const q = {};
@@ -101,17 +105,18 @@ const files = [];
     } else if (a.startsWith('--')) usage(`unknown option ${a}`);
     else files.push(path.resolve(a));
   }
-  if (!opts.version && files.length === 0) usage('no FILE');
+  if (!opts.version && !opts.serve && files.length === 0) usage('no FILE');
   if (!(opts.configs >= 0)) usage('--configs must be >= 0');
 }
 
 // Messages the module prints (e.g. "Loading error: ...") are collected per
 // file instead of going to the terminal.
 let printed = [];
-const mj = await loadMujoco({
+const startModule = () => loadMujoco({
   print: (s) => printed.push(String(s)),
   printErr: (s) => printed.push(String(s)),
 });
+let mj = await startModule();
 
 if (opts.version) {
   process.stdout.write(JSON.stringify({ version: mj.mj_versionString() }) + '\n');
@@ -413,25 +418,49 @@ function dumpModel(file, m) {
   return out;
 }
 
-for (const file of files) {
+// A module that failed a file is not used again: MuJoCo's compiler leaves
+// its error handler installed when a load ends in an exception, so the next
+// model's runtime error (mju_error) would jump into a finished compile and
+// surface as a bare "Error". A fresh instance (about 0.1 s) keeps every
+// file's dump what a process of its own would print.
+let moduleFailed = false;
+
+// One file's line of output.
+async function dumpFile(file) {
   printed = [];
-  let line;
-  if (!fs.existsSync(file)) {
-    line = { file, ok: false, error: `no such file: ${file}` };
-  } else {
-    mirror(rootFor(file));
-    let m = null;
-    try {
-      m = mj.MjModel.loadFromXML(file);
-      if (!m) line = { file, ok: false, error: printed.join('\n').trim() || 'load failed' };
-      else line = dumpModel(file, m);
-    } catch (e) {
-      line = { file, ok: false, error: exceptionText(e) };
-    } finally {
-      if (m) m.delete();
-    }
-    const warnings = printed.filter((s) => s.trim());
-    if (line.ok && warnings.length) line.messages = warnings;
+  if (!fs.existsSync(file)) return { file, ok: false, error: `no such file: ${file}` };
+  if (moduleFailed) {
+    mj = await startModule();
+    mirrored.clear();
+    moduleFailed = false;
   }
-  process.stdout.write(JSON.stringify(line) + '\n');
+  mirror(rootFor(file));
+  let line;
+  let m = null;
+  try {
+    m = mj.MjModel.loadFromXML(file);
+    if (!m) line = { file, ok: false, error: printed.join('\n').trim() || 'load failed' };
+    else line = dumpModel(file, m);
+  } catch (e) {
+    line = { file, ok: false, error: exceptionText(e) };
+  } finally {
+    if (m) m.delete();
+  }
+  const warnings = printed.filter((s) => s.trim());
+  if (line.ok && warnings.length) line.messages = warnings;
+  if (!line.ok) moduleFailed = true;
+  return line;
+}
+
+if (opts.serve) {
+  // One path per line on stdin, one line out per path, in order, until
+  // stdin closes: a test dumping many files starts Node.js and MuJoCo once.
+  const readline = await import('node:readline');
+  const lines = readline.createInterface({ input: process.stdin, crlfDelay: Infinity });
+  for await (const request of lines) {
+    if (!request) continue;
+    process.stdout.write(JSON.stringify(await dumpFile(path.resolve(request))) + '\n');
+  }
+} else {
+  for (const file of files) process.stdout.write(JSON.stringify(await dumpFile(file)) + '\n');
 }
