@@ -29,6 +29,7 @@
 #include <set>
 #include <sstream>
 
+#include "../corpus/shared_corpus.h"
 #include "mdlc/mdlc.h"
 
 namespace mdlc {
@@ -37,7 +38,8 @@ namespace fs = std::filesystem;
 
 constexpr double kTolerance = 1e-12;
 
-fs::path Corpus() { return fs::path(MDLC_SHARED_DIR) / "corpus"; }
+using corpus_test::Corpus;
+using corpus_test::HaveCorpus;
 
 struct ModelCase {
   fs::path path;
@@ -438,7 +440,7 @@ INSTANTIATE_TEST_SUITE_P(To, OwnRoundTrip, ::testing::ValuesIn(kTargets),
 class CorpusRoundTrip
     : public ::testing::TestWithParam<std::tuple<Target, const char*>> {};
 TEST_P(CorpusRoundTrip, Converts) {
-  if (!fs::exists(Corpus() / "manifest.tsv")) GTEST_SKIP() << "the shared corpus is absent";
+  if (!HaveCorpus()) GTEST_SKIP() << "the shared corpus is absent";
   const auto& [to, format] = GetParam();
   RunSuite(CorpusModels(format), to, fmt::format("corpus {}", format));
 }
