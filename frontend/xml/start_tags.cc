@@ -71,7 +71,7 @@ size_t NextStartTag(std::string_view text, size_t pos, std::optional<size_t>* en
   }
 }
 
-Loc LineTracker::At(size_t offset) {
+Loc LineTracker::AtAfterNewlines(size_t offset) {
   if (offset < scanned_) return sources_.LocForOffset(file_, offset);  // a guard: callers go forward
   const char* data = text_.data();
   for (const char* p = data + scanned_;
@@ -80,6 +80,10 @@ Loc LineTracker::At(size_t offset) {
     ++line_;
     line_start_ = static_cast<size_t>(p - data);
   }
+  const void* next =
+      offset < text_.size() ? std::memchr(data + offset, '\n', text_.size() - offset) : nullptr;
+  next_newline_ = next ? static_cast<size_t>(static_cast<const char*>(next) - data) : text_.size();
+  next_newline_known_ = true;
   scanned_ = offset;
   return Loc{file_, line_, static_cast<uint32_t>(offset - line_start_ + 1)};
 }
@@ -95,20 +99,23 @@ bool StartTagLocator::Place(detail::ElementNode& element) {
   detail::AttributeNode* attributes = element.attributes;
   const uint32_t count = element.attribute_count;
   uint32_t next_unplaced = 0;
-  size_t i = start + 1;
-  while (i < text_.size() && IsNameChar(text_[i])) ++i;
-  while (i < text_.size()) {
-    while (i < text_.size() && IsXmlSpace(text_[i])) ++i;
-    if (i >= text_.size() || text_[i] == '>' || text_[i] == '/') break;
-    const size_t name_start = i;
-    while (i < text_.size() && IsNameChar(text_[i])) ++i;
-    const std::string_view name = text_.substr(name_start, i - name_start);
-    while (i < text_.size() && text_[i] != '"' && text_[i] != '\'') ++i;
-    if (i >= text_.size()) break;
+  const char* const begin = text_.data();
+  const char* const end = begin + text_.size();
+  const char* p = begin + start + 1;
+  while (p < end && IsNameChar(*p)) ++p;
+  while (p < end) {
+    while (p < end && IsXmlSpace(*p)) ++p;
+    if (p >= end || *p == '>' || *p == '/') break;
+    const char* const name_start = p;
+    while (p < end && IsNameChar(*p)) ++p;
+    const std::string_view name(name_start, static_cast<size_t>(p - name_start));
+    while (p < end && *p != '"' && *p != '\'') ++p;
+    if (p >= end) break;
     // a value holds no '<' and its own quote only as a reference, so the
     // next such quote closes it
-    const size_t close = text_.find(text_[i], i + 1);
-    i = close == std::string_view::npos ? text_.size() : close + 1;
+    const void* close = std::memchr(p + 1, *p, static_cast<size_t>(end - p - 1));
+    p = close ? static_cast<const char*>(close) + 1 : end;
+    if (count == 0) continue;
     auto unplaced_named = [&](uint32_t k) {
       return attributes[k].line == 0 && SameName(attributes[k].name, name);
     };
@@ -121,10 +128,11 @@ bool StartTagLocator::Place(detail::ElementNode& element) {
       }
     }
     if (found == count) continue;
-    SetPosition(attributes[found].line, attributes[found].column, lines_.At(name_start));
+    SetPosition(attributes[found].line, attributes[found].column,
+                lines_.At(static_cast<size_t>(name_start - begin)));
     if (found == next_unplaced) ++next_unplaced;
   }
-  pos_ = i;
+  pos_ = static_cast<size_t>(p - begin);
   return true;
 }
 

@@ -30,15 +30,28 @@ class LineTracker {
  public:
   LineTracker(std::string_view text, FileId file, const SourceManager& sources)
       : text_(text), file_(file), sources_(sources) {}
-  Loc At(size_t offset);
+  Loc At(size_t offset) {
+    if (next_newline_known_ && offset >= scanned_ && offset <= next_newline_) {
+      scanned_ = offset;  // on the current line
+      return Loc{file_, line_, static_cast<uint32_t>(offset - line_start_ + 1)};
+    }
+    return AtAfterNewlines(offset);
+  }
 
  private:
+  Loc AtAfterNewlines(size_t offset);
+
   std::string_view text_;
   FileId file_;
   const SourceManager& sources_;
   size_t scanned_ = 0;     // newlines before here are counted
   uint32_t line_ = 1;      // the line `scanned_` is on
   size_t line_start_ = 0;  // that line's first offset
+  // the first newline at or after `scanned_` (the text's size when none is
+  // left): offsets before it are on the current line, found with no search,
+  // as most attributes are (a start tag's attributes share its line)
+  size_t next_newline_ = 0;
+  bool next_newline_known_ = false;
 };
 
 /// Places elements, in document order, at their start tags.

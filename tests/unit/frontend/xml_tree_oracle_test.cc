@@ -2,8 +2,9 @@
 // tree from libxml2's SAX events (frontend/xml/tree_builder.h), so every
 // document the readers see must hold what libxml2's DOM, parsed as mdlc once
 // parsed it (XML_PARSE_NOBLANKS), holds: the same elements, attributes in
-// order with the same decoded values, the same text and the same comments.
-// Compared on hand-made edge cases and on every XML file of the test models,
+// order with the same decoded values, the same text and the same comments;
+// and mdlc's exact places for elements and attributes must be where the
+// text writes them. Compared on hand-made edge cases and on every XML file of the test models,
 // diagnostics inputs, fuzz regressions and examples.
 #include <libxml/parser.h>
 #include <libxml/tree.h>
@@ -51,8 +52,45 @@ Expected FromDom(xmlNode* node) {
   return e;
 }
 
-// Compares the two trees element by element; returns how many it compared.
-int CompareTrees(xmlNode* dom, XmlElement mine, const std::string& where) {
+// The offset in `text` of a 1-based line and byte column; npos when the
+// text has no such place.
+size_t OffsetOf(const std::vector<size_t>& line_starts, const std::string& text, Loc loc) {
+  if (loc.line == 0 || loc.line > line_starts.size() || loc.column == 0) return std::string::npos;
+  const size_t offset = line_starts[loc.line - 1] + loc.column - 1;
+  return offset < text.size() ? offset : std::string::npos;
+}
+
+// Where mdlc places an element and its attributes (frontend/xml/start_tags.h)
+// is where they are written: the element at the '<' of its start tag, on a
+// line no later than the one libxml2 records for it; each attribute at its
+// name, which an '=' follows.
+void CheckLocations(xmlNode* node, XmlElement element, const std::string& text,
+                    const std::vector<size_t>& line_starts, const std::string& at) {
+  const Loc loc = element.GetLoc();
+  const size_t offset = OffsetOf(line_starts, text, loc);
+  ASSERT_NE(offset, std::string::npos) << at;
+  EXPECT_EQ(text.compare(offset, element.Name().size() + 1, "<" + std::string(element.Name())), 0)
+      << at << ": placed at " << loc.line << ":" << loc.column;
+  EXPECT_LE(loc.line, static_cast<uint32_t>(xmlGetLineNo(node))) << at;
+  element.ForEachAttributeName([&](std::string_view name) {
+    const Loc a = element.Attribute(name).loc;
+    const size_t o = OffsetOf(line_starts, text, a);
+    ASSERT_NE(o, std::string::npos) << at << " @" << name;
+    EXPECT_GT(o, offset) << at << " @" << name;
+    EXPECT_EQ(text.compare(o, name.size(), name), 0) << at << " @" << name << " placed at "
+                                                     << a.line << ":" << a.column;
+    const size_t eq = text.find_first_not_of(" \t\r\n", o + name.size());
+    EXPECT_TRUE(eq != std::string::npos && text[eq] == '=') << at << " @" << name;
+  });
+}
+
+// Compares the two trees element by element, and the elements' places in
+// `text`; returns how many it compared.
+int CompareTrees(xmlNode* dom, XmlElement mine, const std::string& text, const std::string& where) {
+  std::vector<size_t> line_starts{0};
+  for (size_t i = text.find('\n'); i != std::string::npos; i = text.find('\n', i + 1)) {
+    line_starts.push_back(i + 1);
+  }
   int compared = 0;
   std::vector<std::pair<xmlNode*, XmlElement>> stack{{dom, mine}};
   while (!stack.empty()) {
@@ -72,6 +110,7 @@ int CompareTrees(xmlNode* dom, XmlElement mine, const std::string& where) {
     std::string storage;
     EXPECT_EQ(element.TextView(storage), e.text) << at;
     EXPECT_EQ(element.Comments(), e.comments) << at;
+    CheckLocations(node, element, text, line_starts, at);
     std::vector<XmlElement> children;
     for (XmlElement c = element.FirstChild(); c; c = c.NextSibling()) {
       EXPECT_EQ(c.Parent().raw(), element.raw()) << at;
@@ -109,7 +148,7 @@ int CompareDocument(const std::string& text, const std::string& where) {
     EXPECT_FALSE(mine) << where << ": libxml2 refuses it, so must mdlc";
   } else {
     EXPECT_TRUE(mine) << where << ": libxml2 accepts it, so must mdlc";
-    if (mine) compared = CompareTrees(xmlDocGetRootElement(dom), mine->Root(), where);
+    if (mine) compared = CompareTrees(xmlDocGetRootElement(dom), mine->Root(), text, where);
   }
   xmlFreeDoc(dom);
   return compared;
