@@ -37,10 +37,8 @@ size_t NextStartTag(std::string_view text, size_t pos, std::optional<size_t>* en
     };
     // end tags and start tags first: they are nearly every '<' of a model
     const char kind = text[pos + 1];
-    if (kind == '/') {  // an end tag holds no '>' before its own
-      pos = text.find('>', pos);
-      if (pos == std::string_view::npos) return std::string_view::npos;
-      ++pos;
+    if (kind == '/') {  // an end tag holds no '<': the next one is past it
+      pos += 2;
       continue;
     }
     if (kind != '!' && kind != '?') return pos;
@@ -74,7 +72,12 @@ size_t NextStartTag(std::string_view text, size_t pos, std::optional<size_t>* en
 Loc LineTracker::AtAfterNewlines(size_t offset) {
   if (offset < scanned_) return sources_.LocForOffset(file_, offset);  // a guard: callers go forward
   const char* data = text_.data();
-  for (const char* p = data + scanned_;
+  size_t from = scanned_;
+  if (next_newline_known_ && next_newline_ < offset) {  // the newline already found
+    ++line_;
+    line_start_ = from = next_newline_ + 1;
+  }
+  for (const char* p = data + from;
        (p = static_cast<const char*>(std::memchr(p, '\n', offset - (p - data))));) {
     ++p;
     ++line_;
