@@ -131,6 +131,26 @@ struct RunResult {
   std::string spawn_error;
 };
 
+/// Starts argv[0] with `in` (-1: this process's own), `out` and `err` as its
+/// standard streams; its pid, or -1 with *error set.
+inline pid_t SpawnWith(const std::vector<std::string>& argv, int in, int out, int err,
+                       std::string* error) {
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  if (in >= 0) posix_spawn_file_actions_adddup2(&fa, in, 0);
+  posix_spawn_file_actions_adddup2(&fa, out, 1);
+  posix_spawn_file_actions_adddup2(&fa, err, 2);
+  std::vector<char*> cargv;
+  for (const auto& a : argv) cargv.push_back(const_cast<char*>(a.c_str()));
+  cargv.push_back(nullptr);
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, cargv[0], &fa, nullptr, cargv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  if (rc == 0) return pid;
+  *error = "posix_spawn(" + argv[0] + "): " + std::strerror(rc);
+  return -1;
+}
+
 inline RunResult RunProcess(const std::vector<std::string>& argv, double timeout_s) {
   RunResult r;
   int out_pipe[2], err_pipe[2];
@@ -138,22 +158,12 @@ inline RunResult RunProcess(const std::vector<std::string>& argv, double timeout
     r.spawn_error = std::string("pipe: ") + std::strerror(errno);
     return r;
   }
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_adddup2(&fa, out_pipe[1], 1);
-  posix_spawn_file_actions_adddup2(&fa, err_pipe[1], 2);
-  std::vector<char*> cargv;
-  for (const auto& a : argv) cargv.push_back(const_cast<char*>(a.c_str()));
-  cargv.push_back(nullptr);
-  pid_t pid = 0;
-  const int rc = posix_spawn(&pid, cargv[0], &fa, nullptr, cargv.data(), environ);
-  posix_spawn_file_actions_destroy(&fa);
+  const pid_t pid = SpawnWith(argv, -1, out_pipe[1], err_pipe[1], &r.spawn_error);
   close(out_pipe[1]);
   close(err_pipe[1]);
-  if (rc != 0) {
+  if (pid < 0) {
     close(out_pipe[0]);
     close(err_pipe[0]);
-    r.spawn_error = "posix_spawn(" + argv[0] + "): " + std::strerror(rc);
     return r;
   }
   const auto deadline = std::chrono::steady_clock::now() +
@@ -279,21 +289,10 @@ class LineServer {
       close(in_pipe[0]), close(in_pipe[1]), close(out_pipe[0]), close(out_pipe[1]);
       return StartFailed("pipe", problem);
     }
-    posix_spawn_file_actions_t fa;
-    posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_adddup2(&fa, in_pipe[0], 0);
-    posix_spawn_file_actions_adddup2(&fa, out_pipe[1], 1);
-    posix_spawn_file_actions_adddup2(&fa, err_pipe[1], 2);
-    std::vector<char*> cargv;
-    for (const auto& a : argv_) cargv.push_back(const_cast<char*>(a.c_str()));
-    cargv.push_back(nullptr);
-    pid_t pid = 0;
-    const int rc = posix_spawn(&pid, cargv[0], &fa, nullptr, cargv.data(), environ);
-    posix_spawn_file_actions_destroy(&fa);
+    const pid_t pid = SpawnWith(argv_, in_pipe[0], out_pipe[1], err_pipe[1], problem);
     close(in_pipe[0]), close(out_pipe[1]), close(err_pipe[1]);
-    if (rc != 0) {
+    if (pid < 0) {
       close(in_pipe[1]), close(out_pipe[0]), close(err_pipe[0]);
-      *problem = "posix_spawn(" + argv_[0] + "): " + std::strerror(rc);
       return false;
     }
     pid_ = pid, in_ = in_pipe[1], out_ = out_pipe[0], err_ = err_pipe[0];
