@@ -44,7 +44,7 @@
 #include "frontend/xml/xml_document.h"
 #include "model_gen.h"
 #include "model_gen_mjcf.h"
-#include "warm_heap.h"
+#include "tools/driver/heap_policy.h"
 
 #ifdef MDLC_BENCH_HAVE_MUJOCO
 #include <mujoco/mujoco.h>
@@ -271,7 +271,7 @@ int WriteModels(const std::filesystem::path& dir) {
 }  // namespace mdlc::bench
 
 int main(int argc, char** argv) {
-  mdlc::bench::KeepHeapWarm();
+  mdlc::KeepFreedMemoryForReuse();
   // our own flag first; Google Benchmark rejects flags it does not know
   constexpr std::string_view kWriteModels = "--write_models=";
   for (int i = 1; i < argc; ++i) {

@@ -21,7 +21,7 @@
 #include <map>
 
 #include "tools/driver/compiler.h"
-#include "warm_heap.h"
+#include "tools/driver/heap_policy.h"
 
 namespace mdlc::bench {
 namespace {
@@ -143,7 +143,7 @@ void RegisterAll() {
 }  // namespace mdlc::bench
 
 int main(int argc, char** argv) {
-  mdlc::bench::KeepHeapWarm();
+  mdlc::KeepFreedMemoryForReuse();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   mdlc::bench::RegisterAll();

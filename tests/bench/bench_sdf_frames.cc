@@ -44,7 +44,7 @@
 #include "tools/driver/compiler.h"
 #include "frontend/xml/xml_document.h"
 #include "model_gen_sdf.h"
-#include "warm_heap.h"
+#include "tools/driver/heap_policy.h"
 
 #ifdef MDLC_BENCH_HAVE_SDFORMAT
 #include <sdf/Root.hh>
@@ -249,7 +249,7 @@ int WriteModels(const std::filesystem::path& dir) {
 }  // namespace mdlc::bench
 
 int main(int argc, char** argv) {
-  mdlc::bench::KeepHeapWarm();
+  mdlc::KeepFreedMemoryForReuse();
   // our own flags first (removed from argv); Google Benchmark rejects flags it does not know
   constexpr std::string_view kWriteModels = "--write_models=";
   constexpr std::string_view kSdformatMaxN = "--sdformat_max_n=";

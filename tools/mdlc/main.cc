@@ -18,33 +18,16 @@
 // ones share is in cli_compile.h.
 //
 // Exit status: 0 on success, 1 when any error was reported, 2 on bad usage.
-#include <malloc.h>
-
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "mdlc/mdlc.h"
 #include "passes/pass_registry.h"
 #include "subcommands.h"
-
-namespace {
-// A compile grows its tables by doubling and frees what it outgrows. By
-// default glibc serves every block over 128 KiB with a fresh mapping and
-// returns it on free, so each growth step, and every later large block,
-// faults its pages in anew: a world of 100,000 models took 216,000 page
-// faults. Keeping freed memory in the heap for reuse cuts that to 152,000
-// and a sixth of the CPU time, for a peak 13% higher. The command is one
-// batch that exits when done, so nothing is lost by not returning memory to
-// the system early; the library leaves its embedder's allocator alone.
-void KeepFreedMemoryForReuse() {
-  constexpr int kNever = 1 << 30;  // bytes
-  mallopt(M_MMAP_THRESHOLD, kNever);
-  mallopt(M_TRIM_THRESHOLD, kNever);
-}
-}  // namespace
+#include "tools/driver/heap_policy.h"
 
 int main(int argc, char** argv) {
-  KeepFreedMemoryForReuse();
+  mdlc::KeepFreedMemoryForReuse();  // one batch that exits when done
   CLI::App app{"mdlc - a model compiler for robotics (URDF, SDFormat, MJCF, Model Directives)"};
   app.set_version_flag("--version", fmt::format("mdlc {}", mdlc::kVersion));
   app.require_subcommand(0, 1);
