@@ -171,6 +171,10 @@ TEST(XmlTreeOracleTest, EdgeCasesMatchLibxml2sDom) {
       "<!DOCTYPE r [<!ATTLIST r d CDATA 'dflt'> <!ELEMENT r ANY>]><r e='1'><!-- x --></r>",
       // comments and PIs outside the root; an external DTD never read
       "<?xml version='1.0'?><!-- before --><!DOCTYPE r SYSTEM 'none.dtd'><r/><!-- after -->",
+      // places: CRLF line ends, attributes on lines of their own, a value
+      // holding a newline, '>' and '/', several tags on one line, no final newline
+      "<r\r\n  a='1'\r\n\tb=\"2\"><c\n/><d e='x\ny' f='>' g=\"/\"/><e h='1'/><e h='2'/>\r\n</r>",
+      "<r><a b='1'\n\n\n c='2'\n/>\n\n<d/></r>",
       // unclosed, and a duplicate attribute: refused by both
       "<r><a>",
       "<r a='1' a='2'/>",
