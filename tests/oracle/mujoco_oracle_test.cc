@@ -649,6 +649,17 @@ Reference BuildReference(const json& d) {
   return r;
 }
 
+// A dump tool's line for one file, parsed; an error in *problem when it is
+// not JSON.
+json ParseDumpLine(const std::string& line, std::string* problem) {
+  try {
+    return json::parse(line);
+  } catch (const std::exception& e) {
+    *problem = std::string("unreadable dump (") + e.what() + "): " + line.substr(0, 300);
+    return json();
+  }
+}
+
 // Runs a dump tool on one file; the parsed line, or an error in *problem.
 json RunDump(const std::vector<std::string>& argv, std::string* problem) {
   const RunResult r = RunProcess(argv, 600.0);
@@ -661,12 +672,7 @@ json RunDump(const std::vector<std::string>& argv, std::string* problem) {
                ": " + r.err.substr(0, 2000);
     return json();
   }
-  try {
-    return json::parse(r.out.substr(0, r.out.find('\n')));
-  } catch (const std::exception& e) {
-    *problem = std::string("unreadable dump (") + e.what() + "): " + r.out.substr(0, 300);
-    return json();
-  }
+  return ParseDumpLine(r.out.substr(0, r.out.find('\n')), problem);
 }
 
 int NumConfigs() { return std::max(0, EnvInt("MDLC_ORACLE_CONFIGS", 3)); }
@@ -681,12 +687,7 @@ json DumpMujoco3(const std::string& file, std::string* problem) {
     *problem = "MuJoCo 3.3.8 dump helper: " + *problem;
     return json();
   }
-  try {
-    return json::parse(*line);
-  } catch (const std::exception& e) {
-    *problem = std::string("unreadable dump (") + e.what() + "): " + line->substr(0, 300);
-    return json();
-  }
+  return ParseDumpLine(*line, problem);
 }
 
 json DumpMujoco2(const std::string& file, std::string* problem) {

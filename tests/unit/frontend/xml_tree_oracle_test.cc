@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "frontend/xml/xml_document.h"
+#include "tests/corpus/shared_corpus.h"
 #include "tests/unit/files_under.h"
 
 namespace mdlc::xml {
@@ -212,7 +213,7 @@ TEST(XmlTreeOracleTest, EveryTestModelMatchesLibxml2sDom) {
 }
 
 TEST(XmlTreeOracleTest, EveryCorpusFileMatchesLibxml2sDom) {
-  const std::filesystem::path corpus = std::filesystem::path(MDLC_SHARED_DIR) / "corpus";
+  const std::filesystem::path corpus = corpus_test::Corpus();
   if (!std::filesystem::exists(corpus)) GTEST_SKIP() << "no corpus beside the project";
   auto [files, elements] = CompareFilesUnder({corpus});
   EXPECT_GE(files, 300);

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/corpus/shared_corpus.h"
 #include "tests/unit/files_under.h"
 
 namespace mdlc::frontend::yaml {
@@ -179,7 +180,7 @@ TEST(YamlTreeOracleTest, EveryProjectYamlFileMatchesYamlCpp) {
 }
 
 TEST(YamlTreeOracleTest, EveryCorpusYamlFileMatchesYamlCpp) {
-  const std::filesystem::path corpus = std::filesystem::path(MDLC_SHARED_DIR) / "corpus";
+  const std::filesystem::path corpus = corpus_test::Corpus();
   if (!std::filesystem::exists(corpus)) GTEST_SKIP() << "no corpus beside the project";
   auto [files, nodes] = CompareFilesUnder({corpus});
   EXPECT_GE(files, 20);

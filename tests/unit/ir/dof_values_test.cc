@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ir/entities.h"
+#include "tests/unit/test_values.h"
 
 namespace mdlc::ir {
 namespace {
@@ -69,8 +70,8 @@ TEST(DofValues, RefusesMoreThanAJointHas) {
 }
 
 TEST(DofValues, UnboundedLimitsHaveOneEntryPerVelocity) {
-  constexpr double kInf = std::numeric_limits<double>::infinity();
   const JointLimits six = JointLimits::Unbounded(6);
+  using mdlc::testing::kInf;
   EXPECT_EQ(six.lower, DofValues(6, -kInf));
   EXPECT_EQ(six.upper, DofValues(6, kInf));
   EXPECT_EQ(six.effort, DofValues(6, kInf));
