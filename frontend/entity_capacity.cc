@@ -16,13 +16,17 @@ void ReserveMore(Table& table, size_t more) {
 }
 }  // namespace
 
-void ReserveEntities(ir::Module& module, uint64_t elements) {
-  const auto room = static_cast<size_t>(elements / 8);
-  ReserveMore(module.bodies, room);
-  ReserveMore(module.frames, room);
-  ReserveMore(module.joints, room);
-  ReserveMore(module.geometries, room);
-  ReserveMore(module.frame_graph.nodes, room);
+EntityRoom EntityRoom::ForElements(uint64_t elements) {
+  const auto eighth = static_cast<size_t>(elements / 8);
+  return {eighth, eighth, eighth, eighth, eighth};
+}
+
+void ReserveEntities(ir::Module& module, const EntityRoom& room) {
+  ReserveMore(module.bodies, room.bodies);
+  ReserveMore(module.frames, room.frames);
+  ReserveMore(module.joints, room.joints);
+  ReserveMore(module.geometries, room.geometries);
+  ReserveMore(module.frame_graph.nodes, room.frame_nodes);
 }
 
 }  // namespace mdlc::frontend

@@ -1,13 +1,14 @@
 // mjcf_reader.cc - the MJCF frontend's entry point and its phases (MJCF-001,
 // MJCF-008, COMMON-021): document and includes, settings and assets from
 // anywhere in the file, then the worldbody and the model elements.
+#include <absl/container/flat_hash_map.h>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <tuple>
 
-#include "frontend/entity_capacity.h"
+#include "frontend/mjcf/mjcf_capacity.h"
 #include "frontend/mjcf/mjcf_reader_detail.h"
 #include "frontend/model_naming.h"
 
@@ -17,7 +18,6 @@ namespace {
 std::optional<ModelId> Read(FileId file, FrontendContext& ctx) {
   std::shared_ptr<const xml::XmlDocument> doc = ParseXml(file, ctx);
   if (!doc) return std::nullopt;
-  ReserveEntities(ctx.module, doc->element_count());
   const xml::XmlElement root = doc->Root();
   if (root.Name() != "mujoco") {
     ctx.diags.Report(DiagKind::WrongRoot, root.GetLoc(),
@@ -72,6 +72,7 @@ std::optional<ModelId> Read(FileId file, FrontendContext& ctx) {
   ctx.module[r.model].mass_adjustments = r.compiler.mass_adjustments;
 
   // phase 3: the body tree, then what refers to it
+  ReserveEntities(ctx.module, MjcfEntityRoom(root));
   r.body_order.push_back(ir::kWorldBody);
   r.bodies.emplace("world", ir::kWorldBody);
   for (const auto& e : top) {
@@ -97,18 +98,28 @@ std::optional<ModelId> Read(FileId file, FrontendContext& ctx) {
   // Drake names a floating joint after its body, prefixing '_' while the
   // name is taken by another joint of the model
   ir::Module& m = ctx.module;
-  for (JointId id : r.free_joints) {
-    std::string joint_name(m.Text(m[m[id].child.id].name));
-    auto taken = [&](const std::string& n) {
-      Symbol s = m.symbols.Find(n);
-      if (s.empty()) return false;
-      for (size_t j = 0; j < m.joints.size(); ++j) {
-        if (j != id.index() && m.joints[j].model == r.model && m.joints[j].name == s) return true;
-      }
-      return false;
-    };
-    while (taken(joint_name)) joint_name = "_" + joint_name;
-    m[id].name = m.Intern(joint_name);
+  if (!r.free_joints.empty()) {
+    // How many of the model's joints bear each name, so a scene of many
+    // free bodies names each in constant time. As in Drake, which adds the
+    // floating joints one by one in body order, a floating joint not yet
+    // named holds no name: its placeholder (the body's name) does not count.
+    absl::flat_hash_map<uint32_t, int> joints_named;
+    for (const ir::Joint& j : m.joints) {
+      if (j.model == r.model) ++joints_named[j.name.value];
+    }
+    for (JointId id : r.free_joints) --joints_named[m[id].name.value];
+    for (JointId id : r.free_joints) {
+      std::string joint_name(m.Text(m[m[id].child.id].name));
+      auto taken = [&](const std::string& n) {
+        const Symbol s = m.symbols.Find(n);
+        if (s.empty()) return false;
+        const auto it = joints_named.find(s.value);
+        return it != joints_named.end() && it->second > 0;
+      };
+      while (taken(joint_name)) joint_name = "_" + joint_name;
+      m[id].name = m.Intern(joint_name);
+      ++joints_named[m[id].name.value];
+    }
   }
   LowerModelElements(r, top);
   // BEYOND-007/008: gains from the inertia at qpos0, for the backend

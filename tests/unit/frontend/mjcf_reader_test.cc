@@ -234,6 +234,37 @@ TEST(MjcfReader, Mjcf021FreeJointStartsAtWorldPose) {
   ASSERT_TRUE(r.Body("free")->default_pose.has_value());
 }
 
+// A floating joint is named after its body, with '_' prefixed while another
+// joint of the model bears the name: other floating joints renamed before it
+// included, and never itself.
+TEST(MjcfReader, Mjcf021FreeJointNamePrefixedWhileTaken) {
+  LoweredMjcf r(Model(R"(<worldbody>
+    <body name="a"><freejoint/><geom size="1"/></body>
+    <body name="h" pos="0 0 2"><joint name="a"/><joint name="_a"/><geom size="1"/></body>
+    <body name="b" pos="0 0 4"><freejoint/><geom size="1"/></body>
+    <body name="k" pos="0 0 6"><joint name="b"/><geom size="1"/></body>
+    <body name="_b" pos="0 0 8"><freejoint/><geom size="1"/></body>
+    <body name="c" pos="0 0 9"><freejoint/><geom size="1"/></body></worldbody>)"));
+  ASSERT_TRUE(r.ok()) << r.Messages();
+  const ir::Body* a = r.Body("a");
+  const ir::Body* b = r.Body("b");
+  const ir::Body* b2 = r.Body("_b");
+  const ir::Body* c = r.Body("c");
+  ASSERT_TRUE(a && b && b2 && c);
+  auto floating_joint_of = [&](const ir::Body* body) {
+    for (const ir::Joint& j : r.module.joints) {
+      if (j.type == ir::JointType::QuaternionFloating && &r.module[j.child.id] == body) {
+        return std::string(r.module.Text(j.name));
+      }
+    }
+    return std::string();
+  };
+  EXPECT_EQ(floating_joint_of(a), "__a");
+  EXPECT_EQ(floating_joint_of(b), "_b");
+  EXPECT_EQ(floating_joint_of(b2), "__b");  // "_b" is b's floating joint by now
+  EXPECT_EQ(floating_joint_of(c), "c");
+}
+
 TEST(MjcfReader, Mjcf021MocapBodyIsWeldedWithWarning) {
   LoweredMjcf r(Model(R"(<worldbody><body name="target" mocap="true" pos="1 2 3"><geom size="1"/></body></worldbody>)"));
   ASSERT_TRUE(r.ok()) << r.Messages();
