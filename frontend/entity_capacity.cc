@@ -16,9 +16,23 @@ void ReserveMore(Table& table, size_t more) {
 }
 }  // namespace
 
-EntityRoom EntityRoom::ForElements(uint64_t elements) {
-  const auto eighth = static_cast<size_t>(elements / 8);
-  return {eighth, eighth, eighth, eighth, eighth};
+EntityRoom UrdfEntityRoom(const xml::XmlDocument& doc) {
+  EntityRoom room;
+  room.bodies = doc.CountOf("link");
+  room.joints = doc.CountOf("joint") + doc.CountOf("drake:joint");
+  room.geometries = doc.CountOf("visual") + doc.CountOf("collision");
+  room.frames = doc.CountOf("frame");
+  return room;
+}
+
+EntityRoom SdfEntityRoom(const xml::XmlDocument& doc) {
+  EntityRoom room = UrdfEntityRoom(doc);
+  const size_t models = doc.CountOf("model");
+  const size_t explicit_frames = room.frames;
+  room.frames += models;  // each model's own frame
+  room.frame_nodes = doc.CountOf("world") + models + room.bodies + room.joints + explicit_frames +
+                     room.geometries + doc.CountOf("sensor");
+  return room;
 }
 
 void ReserveEntities(ir::Module& module, const EntityRoom& room) {

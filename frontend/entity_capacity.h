@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "frontend/xml/xml_document.h"
 #include "ir/module.h"
 
 namespace mdlc::frontend {
@@ -12,14 +13,17 @@ namespace mdlc::frontend {
 /// How many entities of each kind a document is expected to add.
 struct EntityRoom {
   size_t bodies = 0, frames = 0, joints = 0, geometries = 0, frame_nodes = 0;
-
-  /// For a format in which every entity comes from an element written with
-  /// several others around it (a URDF link has its inertial, origin, mass,
-  /// inertia, visual and collision; an SDFormat link its pose and more): an
-  /// eighth of the document's element count for every table. Room left over
-  /// in a large table is address space that is never touched.
-  static EntityRoom ForElements(uint64_t elements);
 };
+
+/// What a URDF document adds, from its element counts: a body per <link>, a
+/// joint per <joint> and <drake:joint>, a geometry per <visual> and
+/// <collision>, a frame per <frame>.
+EntityRoom UrdfEntityRoom(const xml::XmlDocument& doc);
+/// What an SDFormat document adds itself (included files reserve their own
+/// room when they are read): as URDF, plus a frame per <model> (its model
+/// frame) and a frame-graph node per world, model, link, joint, frame,
+/// visual, collision and sensor.
+EntityRoom SdfEntityRoom(const xml::XmlDocument& doc);
 
 /// Reserves `room` past the entities the module already holds, so that
 /// lowering a large model does not grow its tables by doubling, which moves

@@ -48,7 +48,8 @@ def run_benchmarks(exe, pattern, repetitions, min_time):
         return {}
     out = subprocess.run(
         [exe, f"--benchmark_filter={pattern}", f"--benchmark_repetitions={repetitions}",
-         f"--benchmark_min_time={min_time}", "--benchmark_format=json"],
+         f"--benchmark_min_time={min_time}", "--benchmark_enable_random_interleaving=true",
+         "--benchmark_format=json"],
         check=True, capture_output=True, text=True).stdout
     scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
     times = {}

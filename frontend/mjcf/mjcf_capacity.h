@@ -7,9 +7,9 @@
 
 namespace mdlc::frontend::mjcf {
 
-/// Counts the <worldbody>s' bodies, joints, geoms and sites under `root`.
-/// MJCF is dense, five elements to a body with two geoms, so the generic
-/// eighth of the element count would leave every table short. A body adds
+/// Counts the <worldbody>s' bodies, joints, geoms and sites under `root`:
+/// element counts alone cannot say how many bodies and joints, since a body
+/// with no joint still adds a joint (a weld). A body adds
 /// one IR body and one joint per joint it has (a weld when it has none; each
 /// joint past its first adds a massless body), a geom up to two geometries
 /// (illustration and proximity) and a site a frame. A <replicate>'s copies

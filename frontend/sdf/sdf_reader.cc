@@ -154,7 +154,7 @@ std::optional<ModelId> SdfReader::ReadRootFile(FileId file_id) {
   std::shared_ptr<const xml::XmlDocument> doc = ParseXml(file_id, ctx_);
   if (!doc) return std::nullopt;
   documents_.push_back(doc);
-  ReserveEntities(module(), EntityRoom::ForElements(doc->element_count()));
+  ReserveEntities(module(), SdfEntityRoom(*doc));
   auto file = std::make_unique<SdfFile>();
   file->doc = doc.get();
   file->path = std::string(ctx_.sources.Path(file_id));

@@ -14,7 +14,7 @@ namespace mdlc::frontend {
 std::optional<ModelId> ReadUrdf(FileId file, FrontendContext& ctx) {
   std::shared_ptr<const xml::XmlDocument> doc = ParseXml(file, ctx);
   if (!doc) return std::nullopt;
-  ReserveEntities(ctx.module, EntityRoom::ForElements(doc->element_count()));
+  ReserveEntities(ctx.module, UrdfEntityRoom(*doc));
   urdf::UrdfReader reader(ctx, *doc);
   return reader.Read();
 }

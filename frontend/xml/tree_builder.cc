@@ -148,6 +148,7 @@ void TreeBuilder::StartElement(void* parser, const unsigned char* local,
   }
   auto* element = Make<detail::ElementNode>(arena_);
   element->name = QualifiedName(prefix, local);
+  element_counts_.Add(element->name);
   if (attribute_count > 0) {
     auto* nodes = static_cast<detail::AttributeNode*>(arena_.Allocate(
         sizeof(detail::AttributeNode) * attribute_count, alignof(detail::AttributeNode)));

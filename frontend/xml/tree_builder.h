@@ -20,6 +20,7 @@
 
 #include <absl/container/flat_hash_map.h>
 
+#include "frontend/xml/element_counts.h"
 #include "frontend/xml/start_tags.h"
 #include "frontend/xml/xml_node.h"
 #include "ir/diagnostics.h"
@@ -69,6 +70,8 @@ class TreeBuilder {
 
   detail::ElementNode* root() const { return root_; }
   uint64_t element_count() const { return elements_; }
+  /// How many elements of each name (moved out once the tree is built).
+  ElementCounts& element_counts() { return element_counts_; }
   /// The document declared an entity (the parse stopped there).
   bool declared_entity() const { return declared_entity_; }
   /// An element went over a limit, reported (the parse stopped there).
@@ -126,6 +129,7 @@ class TreeBuilder {
   // joined names by libxml2's interned (prefix, local) pointers
   absl::flat_hash_map<std::pair<const void*, const void*>, std::string_view> joined_names_;
   uint64_t elements_ = 0;
+  ElementCounts element_counts_;
   bool declared_entity_ = false;
   bool over_limit_ = false;
 };

@@ -19,6 +19,7 @@
 #include <string_view>
 #include <vector>
 
+#include "frontend/xml/element_counts.h"
 #include "frontend/xml/xml_node.h"
 #include "ir/diagnostics.h"
 #include "ir/location.h"
@@ -114,6 +115,8 @@ class XmlDocument {
   FileId file() const { return file_; }
   /// How many elements the document holds.
   uint64_t element_count() const { return element_count_; }
+  /// How many elements are named `name` ("link", "drake:joint").
+  uint64_t CountOf(std::string_view name) const { return element_counts_.Of(name); }
   const SourceManager& sources() const { return *sources_; }
 
  private:
@@ -127,6 +130,7 @@ class XmlDocument {
   FileId file_;
   const SourceManager* sources_ = nullptr;
   uint64_t element_count_ = 0;
+  ElementCounts element_counts_;
   // the document whose arena holds the tree, for a SameTextAs copy
   std::shared_ptr<const XmlDocument> original_;
 };

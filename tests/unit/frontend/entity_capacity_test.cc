@@ -1,11 +1,14 @@
 // ReserveEntities: room in the entity tables before a document is lowered,
 // growing geometrically when many small documents each ask for a little
-// (issue 16: large scenes stay linear); and the MJCF frontend's count of the
-// entities its body tree adds (MJCF-020..024, MJCF-040, BEYOND-004).
+// (issue 16: large scenes stay linear); the element counts a document keeps;
+// and each XML frontend's room, which must be exactly what its lowering adds
+// (URDF-001, SDF-002, MJCF-020..024, MJCF-040, BEYOND-004).
 #include "frontend/entity_capacity.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "frontend/frontend.h"
 #include "frontend/mjcf/mjcf_capacity.h"
 #include "ir/diagnostics.h"
 #include "ir/source_manager.h"
@@ -14,15 +17,15 @@
 namespace mdlc::frontend {
 namespace {
 
-TEST(ReserveEntitiesTest, RoomForAnEighthOfTheElements) {
+TEST(ReserveEntitiesTest, RoomPastTheEntitiesAlreadyThere) {
   ir::Module m;
-  const size_t before = m.bodies.size();
-  ReserveEntities(m, EntityRoom::ForElements(800));
-  EXPECT_GE(m.bodies.capacity(), before + 100);
-  EXPECT_GE(m.joints.capacity(), m.joints.size() + 100);
-  EXPECT_GE(m.geometries.capacity(), m.geometries.size() + 100);
-  EXPECT_GE(m.frames.capacity(), m.frames.size() + 100);
-  EXPECT_GE(m.frame_graph.nodes.capacity(), m.frame_graph.nodes.size() + 100);
+  m.bodies.resize(5);
+  ReserveEntities(m, EntityRoom{100, 200, 300, 400, 500});
+  EXPECT_GE(m.bodies.capacity(), 105u);
+  EXPECT_GE(m.frames.capacity(), m.frames.size() + 200);
+  EXPECT_GE(m.joints.capacity(), m.joints.size() + 300);
+  EXPECT_GE(m.geometries.capacity(), m.geometries.size() + 400);
+  EXPECT_GE(m.frame_graph.nodes.capacity(), m.frame_graph.nodes.size() + 500);
 }
 
 // A scene of 10,000 small files, each reserving before its entities are
@@ -32,7 +35,7 @@ TEST(ReserveEntitiesTest, ManySmallDocumentsGrowTheTablesGeometrically) {
   int moves = 0;
   const ir::Body* storage = m.bodies.data();
   for (int file = 0; file < 10000; ++file) {
-    ReserveEntities(m, EntityRoom::ForElements(24));  // a three-element room per file
+    ReserveEntities(m, EntityRoom{.bodies = 3});  // a three-body room per file
     for (int i = 0; i < 3; ++i) m.bodies.emplace_back();
     if (m.bodies.data() != storage) {
       ++moves;
@@ -40,6 +43,88 @@ TEST(ReserveEntitiesTest, ManySmallDocumentsGrowTheTablesGeometrically) {
     }
   }
   EXPECT_LE(moves, 20);
+}
+
+// A document's element counts, prefixed names and a document with more
+// distinct names than the count table first holds included.
+TEST(ElementCountsTest, CountsEveryName) {
+  std::string xml = "<r xmlns:drake='d'>";
+  for (int i = 0; i < 100; ++i) xml += fmt::format("<e{}/><link/><drake:joint/>", i % 70);
+  xml += "</r>";
+  SourceManager sources;
+  DiagnosticEngine diags;
+  auto doc = xml::XmlDocument::Parse(sources.AddBuffer("c.xml", xml), sources, diags);
+  ASSERT_NE(doc, nullptr);
+  EXPECT_EQ(doc->CountOf("r"), 1u);
+  EXPECT_EQ(doc->CountOf("link"), 100u);
+  EXPECT_EQ(doc->CountOf("drake:joint"), 100u);
+  EXPECT_EQ(doc->CountOf("joint"), 0u);
+  EXPECT_EQ(doc->CountOf("e0"), 2u);   // i = 0 and 70
+  EXPECT_EQ(doc->CountOf("e69"), 1u);
+  uint64_t named_e = 0;
+  for (int k = 0; k < 70; ++k) named_e += doc->CountOf(fmt::format("e{}", k));
+  EXPECT_EQ(named_e, 100u);
+}
+
+// How much each table of a module grew from `before`.
+EntityRoom Added(const ir::Module& before, const ir::Module& after) {
+  return {after.bodies.size() - before.bodies.size(), after.frames.size() - before.frames.size(),
+          after.joints.size() - before.joints.size(),
+          after.geometries.size() - before.geometries.size(),
+          after.frame_graph.nodes.size() - before.frame_graph.nodes.size()};
+}
+
+void ExpectRoomIsWhatTheLoweringAdds(Format format, const std::string& text,
+                                     EntityRoom (*room_of)(const xml::XmlDocument&)) {
+  SourceManager sources;
+  DiagnosticEngine diags;
+  ir::Module module;
+  const ir::Module empty;
+  const FileId file = sources.AddBuffer("model.xml", text);
+  auto doc = xml::XmlDocument::Parse(file, sources, diags);
+  ASSERT_NE(doc, nullptr);
+  const EntityRoom room = room_of(*doc);
+  frontend::FrontendContext ctx{sources, diags, module, {}};
+  ASSERT_TRUE(frontend::ReadModel(file, format, ctx).has_value());
+  ASSERT_FALSE(diags.has_errors());
+  const EntityRoom added = Added(empty, module);
+  EXPECT_EQ(room.bodies, added.bodies);
+  EXPECT_EQ(room.frames, added.frames);
+  EXPECT_EQ(room.joints, added.joints);
+  EXPECT_EQ(room.geometries, added.geometries);
+  EXPECT_EQ(room.frame_nodes, added.frame_nodes);
+}
+
+TEST(UrdfEntityRoomTest, CountsWhatTheRobotAdds) {
+  ExpectRoomIsWhatTheLoweringAdds(Format::Urdf, R"(<robot name="r" xmlns:drake="http://drake.mit.edu">
+  <link name="a"><visual><geometry><box size="1 1 1"/></geometry></visual>
+    <collision><geometry><sphere radius="1"/></geometry></collision></link>
+  <link name="b"><collision><geometry><sphere radius="1"/></geometry></collision></link>
+  <link name="c"/>
+  <joint name="j" type="revolute"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/>
+    <limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+  <drake:joint name="k" type="planar"><parent link="b"/><child link="c"/>
+    <axis xyz="0 0 1"/></drake:joint>
+  <frame name="f" link="a" xyz="0 0 1" rpy="0 0 0"/>
+</robot>)",
+                                  UrdfEntityRoom);
+}
+
+TEST(SdfEntityRoomTest, CountsWhatTheWorldAdds) {
+  ExpectRoomIsWhatTheLoweringAdds(Format::Sdf, R"(<?xml version="1.0"?>
+<sdf version="1.9"><world name="w">
+  <model name="m">
+    <link name="a"><visual name="v"><geometry><box><size>1 1 1</size></box></geometry></visual>
+      <collision name="c"><geometry><sphere><radius>1</radius></sphere></geometry></collision></link>
+    <link name="b"><pose>0 0 1 0 0 0</pose></link>
+    <joint name="j" type="revolute"><parent>a</parent><child>b</child>
+      <axis><xyz>0 0 1</xyz></axis></joint>
+    <frame name="f" attached_to="a"/>
+    <model name="inner"><link name="c"/></model>
+  </model>
+  <model name="free"><link name="d"/></model>
+</world></sdf>)",
+                                  SdfEntityRoom);
 }
 
 // The room counted from an MJCF document is exactly what its lowering adds:
