@@ -69,7 +69,6 @@ class TreeBuilder {
   static void Install(_xmlSAXHandler& sax);
 
   detail::ElementNode* root() const { return root_; }
-  uint64_t element_count() const { return elements_; }
   /// How many elements of each name (moved out once the tree is built).
   ElementCounts& element_counts() { return element_counts_; }
   /// The document declared an entity (the parse stopped there).

@@ -149,7 +149,6 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
     return nullptr;
   }
   document->root_ = builder.root();
-  document->element_count_ = builder.element_count();
   document->element_counts_ = std::move(builder.element_counts());
   return document;
 }
@@ -160,7 +159,6 @@ std::unique_ptr<XmlDocument> XmlDocument::SameTextAs(std::shared_ptr<const XmlDo
   doc->root_ = original->root_;
   doc->file_ = file;
   doc->sources_ = original->sources_;
-  doc->element_count_ = original->element_count_;
   doc->element_counts_ = original->element_counts_;
   doc->original_ = std::move(original);
   return doc;

@@ -113,8 +113,6 @@ class XmlDocument {
 
   XmlElement Root() const;
   FileId file() const { return file_; }
-  /// How many elements the document holds.
-  uint64_t element_count() const { return element_count_; }
   /// How many elements are named `name` ("link", "drake:joint").
   uint64_t CountOf(std::string_view name) const { return element_counts_.Of(name); }
   const SourceManager& sources() const { return *sources_; }
@@ -129,7 +127,6 @@ class XmlDocument {
   _xmlDict* names_ = nullptr;
   FileId file_;
   const SourceManager* sources_ = nullptr;
-  uint64_t element_count_ = 0;
   ElementCounts element_counts_;
   // the document whose arena holds the tree, for a SameTextAs copy
   std::shared_ptr<const XmlDocument> original_;
