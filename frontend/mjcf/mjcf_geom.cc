@@ -246,15 +246,17 @@ bool LowerGeom(MjcfReader& r, const BodyItem& item, BodyId body, bool is_world,
     geom.rgba = Eigen::Vector4d(0.5, 0.5, 0.5, 1);  // MuJoCo's default geom color
   }
 
+  // registered as illustration, proximity or both: the last registration
+  // takes `geom` itself, and only a geom registered twice is copied
   std::optional<GeometryId> visual_id, collision_id;
   if (visual) {
-    ir::Geometry v = geom;
+    ir::Geometry v = collision ? ir::Geometry(geom) : std::move(geom);
     v.roles = ir::kIllustrationRole | ir::kPerceptionRole;
     visual_id = m.Add(std::move(v));
     ReadOriginalName(item.e, *visual_id, r.ctx);
   }
   if (collision) {
-    ir::Geometry c = geom;
+    ir::Geometry c = std::move(geom);
     c.roles = ir::kProximityRole;
     c.material = {};
     c.rgba.reset();
@@ -268,7 +270,7 @@ bool LowerGeom(MjcfReader& r, const BodyItem& item, BodyId body, bool is_world,
     } else if (visual_id) {
       m[*visual_id].mass_contribution = mass;
     } else {
-      ir::Geometry carrier = geom;
+      ir::Geometry carrier = std::move(geom);  // neither branch above took it
       carrier.roles = 0;  // registered nowhere; carries MuJoCo's mass only
       carrier.mass_contribution = mass;
       collision_id = m.Add(std::move(carrier));
