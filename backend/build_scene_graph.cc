@@ -2,6 +2,7 @@
 #include "backend/build_scene_graph.h"
 
 #include <algorithm>
+#include <cstddef>
 
 #include "backend/collision_filters.h"
 #include "backend/ref_check.h"
@@ -15,20 +16,33 @@ bool HasKey(const std::vector<ir::Property>& properties, std::string_view key) {
                      [&](const ir::Property& p) { return p.key == key; });
 }
 
-/// Sorted by key, one entry per key (the last one given wins).
+/// Sorted by key, one entry per key (the last one given wins), in place: a
+/// geometry has a handful of properties, and a stable sort into a second
+/// vector allocated twice for each of them.
 std::vector<ir::Property> Canonical(std::vector<ir::Property> properties) {
-  std::stable_sort(properties.begin(), properties.end(),
-                   [](const ir::Property& a, const ir::Property& b) { return a.key < b.key; });
-  std::vector<ir::Property> out;
+  auto by_key = [](const ir::Property& a, const ir::Property& b) { return a.key < b.key; };
+  constexpr size_t kInsertionSortMax = 16;
+  if (properties.size() <= kInsertionSortMax) {
+    for (size_t i = 1; i < properties.size(); ++i) {  // stable: equal keys never pass
+      for (size_t j = i; j > 0 && by_key(properties[j], properties[j - 1]); --j) {
+        std::swap(properties[j], properties[j - 1]);
+      }
+    }
+  } else {
+    std::stable_sort(properties.begin(), properties.end(), by_key);
+  }
+  size_t kept = 0;
   for (size_t i = 0; i < properties.size(); ++i) {
     if (i + 1 < properties.size() && properties[i + 1].key == properties[i].key) continue;
-    out.push_back(std::move(properties[i]));
+    if (kept != i) properties[kept] = std::move(properties[i]);
+    ++kept;
   }
-  for (ir::Property& p : out) {
+  properties.erase(properties.begin() + static_cast<std::ptrdiff_t>(kept), properties.end());
+  for (ir::Property& p : properties) {
     auto* names = std::get_if<std::vector<std::string>>(&p.value);
     if (names && p.key == "renderer/accepting") std::sort(names->begin(), names->end());
   }
-  return out;
+  return properties;
 }
 
 class SceneBuilder {
@@ -75,8 +89,10 @@ class SceneBuilder {
 
   /// The IR properties plus color and texture for the geometries that show.
   std::vector<ir::Property> WithAppearance(const ir::Geometry& src) {
-    std::vector<ir::Property> properties = src.properties;
-    if (!(src.roles & (ir::kIllustrationRole | ir::kPerceptionRole))) return properties;
+    if (!(src.roles & (ir::kIllustrationRole | ir::kPerceptionRole))) return src.properties;
+    std::vector<ir::Property> properties;
+    properties.reserve(src.properties.size() + 2);  // and the color and texture
+    properties.assign(src.properties.begin(), src.properties.end());
     const ir::Material* material = nullptr;
     if (!src.material.name.empty() || src.material.id.valid()) {
       if (CheckRef(m_, src.material, m_.materials.size(), "material", src.loc, diags_)) {

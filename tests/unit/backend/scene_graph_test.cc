@@ -2,6 +2,7 @@
 // (backend/build_scene_graph.h, backend/collision_filters.h).
 #include "backend/build_scene_graph.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "tests/unit/backend/backend_test_util.h"
@@ -121,6 +122,29 @@ TEST(BackendCollisionFilters, UnresolvedGroupReferenceIsAnError) {
   EXPECT_FALSE(Instantiate(b.module(), diags));
   ASSERT_EQ(diags.diagnostics().size(), 1u);
   EXPECT_EQ(diags.diagnostics()[0].kind, DiagKind::VerifierFailure);
+}
+
+// Many properties on one geometry (more than the short in-place sort
+// handles): still sorted by key, one per key, the last one given winning.
+TEST(BackendSceneGraph, ManyPropertiesSortedOnePerKeyLastWins) {
+  ModelBuilder b;
+  const BodyId link = b.AddMasslessBody("link");
+  b.AddJoint("j", JointType::Revolute, ir::kWorldBody, link);
+  ir::Module& m = b.module();
+  const GeometryId id = b.AddGeometry("g", link, ir::Sphere{1}, ir::kProximityRole);
+  for (int round = 0; round < 2; ++round) {
+    for (int k = 29; k >= 0; --k) {
+      m[id].properties.push_back({fmt::format("group/p{:02}", k), double(100 * round + k)});
+    }
+  }
+  auto model = test_util::InstantiateOk(m);
+  ASSERT_TRUE(model);
+  const auto& properties = model->scene.geometries.at(0).properties;
+  ASSERT_EQ(properties.size(), 30u);
+  for (int k = 0; k < 30; ++k) {
+    EXPECT_EQ(properties[k].key, fmt::format("group/p{:02}", k));
+    EXPECT_EQ(std::get<double>(properties[k].value), 100 + k);  // the second round's
+  }
 }
 
 TEST(BackendSceneGraph, ColorBecomesPhongDiffuseForVisibleGeometry) {
