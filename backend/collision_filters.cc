@@ -90,14 +90,19 @@ void AddWeldedPairs(const Plant& plant, PairCollector& pairs) {
   for (const PlantJoint& joint : plant.joints) {
     if (joint.type == ir::JointType::Weld) sets.Union(joint.parent.value, joint.child.value);
   }
-  // proximity bodies of each composite, then every pair within it
-  std::vector<std::vector<uint32_t>> members(plant.bodies.size());
+  // proximity bodies by composite (one list, not a list per body, as most
+  // bodies are composites of their own), then every pair within each
+  std::vector<BodyPair> by_composite;  // (composite, body)
   for (uint32_t b = 0; b < plant.bodies.size(); ++b) {
-    if (pairs.HasProximity(b)) members[sets.Find(b)].push_back(b);
+    if (pairs.HasProximity(b)) by_composite.emplace_back(sets.Find(b), b);
   }
-  for (const std::vector<uint32_t>& group : members) {
-    for (size_t i = 0; i < group.size(); ++i) {
-      for (size_t k = i + 1; k < group.size(); ++k) pairs.Add(group[i], group[k]);
+  std::sort(by_composite.begin(), by_composite.end());
+  for (size_t begin = 0, end = 0; begin < by_composite.size(); begin = end) {
+    while (end < by_composite.size() && by_composite[end].first == by_composite[begin].first) {
+      ++end;
+    }
+    for (size_t i = begin; i < end; ++i) {
+      for (size_t k = i + 1; k < end; ++k) pairs.Add(by_composite[i].second, by_composite[k].second);
     }
   }
 }
