@@ -11,8 +11,9 @@ does; the one-shot rows pay every first touch.
     python3 tools/bench_table.py [BUILD_DIR] [--repetitions=3] [--readme=README.md]
 
 BUILD_DIR (default: build) must hold mdlc, mdlc_bench, mdlc_bench_sdf and
-mdlc_bench_dmd. Each benchmark runs --repetitions times and its fastest CPU
-time is used: within one process the parse floor's time depends on the heap
+mdlc_bench_dmd. Each benchmark runs --repetitions times, interleaved at
+random with the others of its binary (a slow stretch of the machine then
+falls on the floor and the compile alike), and its fastest CPU time is used: within one process the parse floor's time depends on the heap
 its previous run left behind (glibc consolidating millions of freed DOM
 nodes), and falls into two modes, one about twice the other; the fastest
 run is the parse's own cost, and mdlc's compile is read the same way. The
