@@ -14,9 +14,10 @@ void ReserveMore(Table& table, size_t more) {
   const size_t wanted = table.size() + more;
   if (wanted > table.capacity()) table.reserve(std::max(wanted, 2 * table.capacity()));
 }
-}  // namespace
 
-EntityRoom UrdfEntityRoom(const xml::XmlDocument& doc) {
+// what URDF and SDFormat both make of an element: links, joints, visuals,
+// collisions and frames
+EntityRoom CountedFromElements(const xml::XmlDocument& doc) {
   EntityRoom room;
   room.bodies = doc.CountOf("link");
   room.joints = doc.CountOf("joint") + doc.CountOf("drake:joint");
@@ -25,14 +26,26 @@ EntityRoom UrdfEntityRoom(const xml::XmlDocument& doc) {
   return room;
 }
 
-EntityRoom SdfEntityRoom(const xml::XmlDocument& doc) {
-  EntityRoom room = UrdfEntityRoom(doc);
-  const size_t models = doc.CountOf("model");
-  const size_t explicit_frames = room.frames;
-  room.frames += models;  // each model's own frame
-  room.frame_nodes = doc.CountOf("world") + models + room.bodies + room.joints + explicit_frames +
-                     room.geometries + doc.CountOf("sensor");
+// The kinematic-tree pass gives every root body a floating joint; room for
+// one per robot or model keeps that from moving a table sized to the file
+EntityRoom WithFloatingJoints(EntityRoom room, size_t roots) {
+  room.joints += roots;
   return room;
+}
+}  // namespace
+
+EntityRoom UrdfEntityRoom(const xml::XmlDocument& doc) {
+  return WithFloatingJoints(CountedFromElements(doc), doc.CountOf("robot"));
+}
+
+EntityRoom SdfEntityRoom(const xml::XmlDocument& doc) {
+  const size_t models = doc.CountOf("model");
+  EntityRoom room = CountedFromElements(doc);
+  // the world's node comes first, whether the file has a <world> or a model
+  room.frame_nodes = 1 + models + room.bodies + room.joints + room.frames + room.geometries +
+                     doc.CountOf("sensor");
+  room.frames += models;  // each model's own frame
+  return WithFloatingJoints(room, models);
 }
 
 void ReserveEntities(ir::Module& module, const EntityRoom& room) {

@@ -17,12 +17,13 @@ struct EntityRoom {
 
 /// What a URDF document adds, from its element counts: a body per <link>, a
 /// joint per <joint> and <drake:joint>, a geometry per <visual> and
-/// <collision>, a frame per <frame>.
+/// <collision>, a frame per <frame>; and a joint for the root link to float
+/// on, which the kinematic-tree pass adds.
 EntityRoom UrdfEntityRoom(const xml::XmlDocument& doc);
 /// What an SDFormat document adds itself (included files reserve their own
-/// room when they are read): as URDF, plus a frame per <model> (its model
-/// frame) and a frame-graph node per world, model, link, joint, frame,
-/// visual, collision and sensor.
+/// room when they are read): as URDF, with a floating joint per <model>,
+/// plus a frame per <model> (its model frame) and a frame-graph node for the
+/// world and per model, link, joint, frame, visual, collision and sensor.
 EntityRoom SdfEntityRoom(const xml::XmlDocument& doc);
 
 /// Reserves `room` past the entities the module already holds, so that

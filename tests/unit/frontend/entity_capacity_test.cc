@@ -74,8 +74,11 @@ EntityRoom Added(const ir::Module& before, const ir::Module& after) {
           after.frame_graph.nodes.size() - before.frame_graph.nodes.size()};
 }
 
+// `floating`: the floating joints the kinematic-tree pass will add, which
+// the room holds beyond what the frontend adds.
 void ExpectRoomIsWhatTheLoweringAdds(Format format, const std::string& text,
-                                     EntityRoom (*room_of)(const xml::XmlDocument&)) {
+                                     EntityRoom (*room_of)(const xml::XmlDocument&),
+                                     size_t floating) {
   SourceManager sources;
   DiagnosticEngine diags;
   ir::Module module;
@@ -90,7 +93,7 @@ void ExpectRoomIsWhatTheLoweringAdds(Format format, const std::string& text,
   const EntityRoom added = Added(empty, module);
   EXPECT_EQ(room.bodies, added.bodies);
   EXPECT_EQ(room.frames, added.frames);
-  EXPECT_EQ(room.joints, added.joints);
+  EXPECT_EQ(room.joints, added.joints + floating);
   EXPECT_EQ(room.geometries, added.geometries);
   EXPECT_EQ(room.frame_nodes, added.frame_nodes);
 }
@@ -107,7 +110,7 @@ TEST(UrdfEntityRoomTest, CountsWhatTheRobotAdds) {
     <axis xyz="0 0 1"/></drake:joint>
   <frame name="f" link="a" xyz="0 0 1" rpy="0 0 0"/>
 </robot>)",
-                                  UrdfEntityRoom);
+                                  UrdfEntityRoom, /*floating=*/1);
 }
 
 TEST(SdfEntityRoomTest, CountsWhatTheWorldAdds) {
@@ -124,7 +127,20 @@ TEST(SdfEntityRoomTest, CountsWhatTheWorldAdds) {
   </model>
   <model name="free"><link name="d"/></model>
 </world></sdf>)",
-                                  SdfEntityRoom);
+                                  SdfEntityRoom, /*floating=*/3);
+}
+
+// A file holding one model, not a world, still has the world's node.
+TEST(SdfEntityRoomTest, CountsWhatAModelFileAdds) {
+  ExpectRoomIsWhatTheLoweringAdds(Format::Sdf, R"(<?xml version="1.0"?>
+<sdf version="1.9"><model name="m">
+  <link name="a"><collision name="c"><geometry><sphere><radius>1</radius></sphere></geometry>
+    </collision></link>
+  <link name="b"/>
+  <joint name="j" type="revolute"><parent>a</parent><child>b</child>
+    <axis><xyz>0 0 1</xyz></axis></joint>
+</model></sdf>)",
+                                  SdfEntityRoom, /*floating=*/1);
 }
 
 // The room counted from an MJCF document is exactly what its lowering adds:
