@@ -17,8 +17,8 @@ bool HasKey(const std::vector<ir::Property>& properties, std::string_view key) {
 }
 
 /// Sorted by key, one entry per key (the last one given wins), in place: a
-/// geometry has a handful of properties, and a stable sort into a second
-/// vector allocated twice for each of them.
+/// geometry has a handful of properties, for which a stable sort's buffer
+/// and a second vector would be two allocations per geometry.
 std::vector<ir::Property> Canonical(std::vector<ir::Property> properties) {
   auto by_key = [](const ir::Property& a, const ir::Property& b) { return a.key < b.key; };
   constexpr size_t kInsertionSortMax = 16;

@@ -20,8 +20,8 @@ struct EntityRoom {
 /// <collision>, a frame per <frame>; and a joint for the root link to float
 /// on, which the kinematic-tree pass adds.
 EntityRoom UrdfEntityRoom(const xml::XmlDocument& doc);
-/// What an SDFormat document adds itself (included files reserve their own
-/// room when they are read): as URDF, with a floating joint per <model>,
+/// What an SDFormat document adds itself (each file it includes reserves
+/// its own room when it is read): as URDF, with a floating joint per <model>,
 /// plus a frame per <model> (its model frame) and a frame-graph node for the
 /// world and per model, link, joint, frame, visual, collision and sensor.
 EntityRoom SdfEntityRoom(const xml::XmlDocument& doc);
