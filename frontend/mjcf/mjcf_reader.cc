@@ -103,22 +103,22 @@ std::optional<ModelId> Read(FileId file, FrontendContext& ctx) {
     // free bodies names each in constant time. As in Drake, which adds the
     // floating joints one by one in body order, a floating joint not yet
     // named holds no name: its placeholder (the body's name) does not count.
-    absl::flat_hash_map<uint32_t, int> joints_named;
+    absl::flat_hash_map<Symbol, int, SymbolHash> joints_named;
     for (const ir::Joint& j : m.joints) {
-      if (j.model == r.model) ++joints_named[j.name.value];
+      if (j.model == r.model) ++joints_named[j.name];
     }
-    for (JointId id : r.free_joints) --joints_named[m[id].name.value];
+    for (JointId id : r.free_joints) --joints_named[m[id].name];
     for (JointId id : r.free_joints) {
       std::string joint_name(m.Text(m[m[id].child.id].name));
       auto taken = [&](const std::string& n) {
         const Symbol s = m.symbols.Find(n);
         if (s.empty()) return false;
-        const auto it = joints_named.find(s.value);
+        const auto it = joints_named.find(s);
         return it != joints_named.end() && it->second > 0;
       };
       while (taken(joint_name)) joint_name = "_" + joint_name;
       m[id].name = m.Intern(joint_name);
-      ++joints_named[m[id].name.value];
+      ++joints_named[m[id].name];
     }
   }
   LowerModelElements(r, top);

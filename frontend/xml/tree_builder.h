@@ -69,8 +69,8 @@ class TreeBuilder {
   static void Install(_xmlSAXHandler& sax);
 
   detail::ElementNode* root() const { return root_; }
-  /// How many elements of each name (moved out once the tree is built).
-  ElementCounts& element_counts() { return element_counts_; }
+  /// How many elements of each name, handed over once the tree is built.
+  ElementCounts TakeElementCounts() { return std::move(element_counts_); }
   /// The document declared an entity (the parse stopped there).
   bool declared_entity() const { return declared_entity_; }
   /// An element went over a limit, reported (the parse stopped there).

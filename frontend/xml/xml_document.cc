@@ -149,7 +149,7 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
     return nullptr;
   }
   document->root_ = builder.root();
-  document->element_counts_ = std::move(builder.element_counts());
+  document->element_counts_ = builder.TakeElementCounts();
   return document;
 }
 

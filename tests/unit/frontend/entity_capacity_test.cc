@@ -179,13 +179,14 @@ TEST(MjcfEntityRoomTest, CountsWhatTheBodyTreeAdds) {
   ASSERT_NE(doc, nullptr);
   const EntityRoom room = mjcf::MjcfEntityRoom(doc->Root());
 
-  EXPECT_EQ(room.bodies, lowered.module.bodies.size() - empty.bodies.size());
-  EXPECT_EQ(room.joints, lowered.module.joints.size() - empty.joints.size());
-  EXPECT_EQ(room.frames, lowered.module.frames.size() - empty.frames.size());
+  const EntityRoom added = Added(empty, lowered.module);
+  EXPECT_EQ(room.bodies, added.bodies);
+  EXPECT_EQ(room.joints, added.joints);
+  EXPECT_EQ(room.frames, added.frames);
   // room for each of the seven geoms twice (illustration and proximity),
   // which holds what the lowering added
   EXPECT_EQ(room.geometries, 2 * 7u);
-  EXPECT_LE(lowered.module.geometries.size() - empty.geometries.size(), room.geometries);
+  EXPECT_LE(added.geometries, room.geometries);
 }
 
 }  // namespace
