@@ -8,15 +8,18 @@ comparison with libsdformat and MuJoCo 2.2.2. The benchmark binaries keep
 freed memory for reuse (tools/driver/heap_policy.h), as the mdlc command
 does; the one-shot rows pay every first touch.
 
-    python3 tools/bench_table.py [BUILD_DIR] [--repetitions=3] [--readme=README.md]
+    python3 tools/bench_table.py [BUILD_DIR] [--repetitions=3] [--rounds=3]
+                                 [--readme=README.md]
 
 BUILD_DIR (default: build) must hold mdlc, mdlc_bench, mdlc_bench_sdf and
 mdlc_bench_dmd. Each benchmark runs --repetitions times, interleaved at
 random with the others of its binary (a slow stretch of the machine then
-falls on the floor and the compile alike), and its fastest CPU time is used: within one process the parse floor's time depends on the heap
-its previous run left behind (glibc consolidating millions of freed DOM
-nodes), and falls into two modes, one about twice the other; the fastest
-run is the parse's own cost, and mdlc's compile is read the same way. The
+falls on the floor and the compile alike), in each of --rounds processes
+of its binary, and its fastest CPU time over all of them is used: within
+one process the parse floor's time depends on the heap its previous run
+left behind (glibc consolidating millions of freed DOM nodes), and falls
+into two modes, one about twice the other; the fastest run is the parse's
+own cost, and mdlc's compile is read the same way. The
 one-shot processes, fresh each time, use the median. With --readme, the
 table between the bench-table markers of that file is replaced as well.
 
@@ -25,7 +28,8 @@ neighbours, a kernel that pages out idle memory), so the table also counts
 the work in instructions, with valgrind's callgrind where it is installed:
 mdlc's compile against libxml2's parse and free of the same file, the same
 on every run and every machine. --no-instructions skips that part. Takes
-a few minutes, and a few more with the instruction counts.
+about ten minutes with the default rounds, and a few more with the
+instruction counts.
 """
 
 import argparse
@@ -39,6 +43,19 @@ import tempfile
 
 BEGIN = "<!-- bench-table:begin -->"
 END = "<!-- bench-table:end -->"
+
+
+# (binary, the benchmarks of it that the table reads)
+BENCHMARKS = [
+    ("mdlc_bench",
+     r"^(libxml2_parse|compile)/(chain|tree|mjcf_chain|mjcf_tree)/(1000|10000)$"
+     r"|^mujoco_load/mjcf_tree/1000$"),
+    ("mdlc_bench_sdf",
+     r"^(libxml2_parse|compile)/(sdf_chain|nested_models)/(1000|10000)$"
+     r"|^(libxml2_parse|compile)/world/(1000|10000|100000)$"
+     r"|^libsdformat_load/(sdf_chain|world)/1000$"),
+    ("mdlc_bench_dmd", r"^(yaml_parse|compile)/dmd_chain/(100|1000)$"),
+]
 
 
 def run_benchmarks(exe, pattern, repetitions, min_time):
@@ -144,6 +161,8 @@ def main():
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("build", nargs="?", default="build")
     parser.add_argument("--repetitions", type=int, default=3)
+    parser.add_argument("--rounds", type=int, default=3,
+                        help="run every benchmark binary this many times, one process each")
     parser.add_argument("--min_time", default="0.1")
     parser.add_argument("--readme", help="replace the table between the markers in this file")
     parser.add_argument("--no-instructions", dest="instructions", action="store_false",
@@ -154,19 +173,16 @@ def main():
     mdlc = os.path.join(args.build, "tools", "mdlc", "mdlc")
     reps, min_time = args.repetitions, args.min_time
 
+    # Each round runs every binary once, in its own process; a benchmark's
+    # time is its fastest over all rounds. A slow stretch of the machine then
+    # has to last the whole table to move a row, where one process's
+    # repetitions all fall within the same few seconds.
     t = {}
-    t.update(run_benchmarks(
-        os.path.join(bench_dir, "mdlc_bench"),
-        r"^(libxml2_parse|compile)/(chain|tree|mjcf_chain|mjcf_tree)/(1000|10000)$"
-        r"|^mujoco_load/mjcf_tree/1000$", reps, min_time))
-    t.update(run_benchmarks(
-        os.path.join(bench_dir, "mdlc_bench_sdf"),
-        r"^(libxml2_parse|compile)/(sdf_chain|nested_models)/(1000|10000)$"
-        r"|^(libxml2_parse|compile)/world/(1000|10000|100000)$"
-        r"|^libsdformat_load/(sdf_chain|world)/1000$", reps, min_time))
-    t.update(run_benchmarks(
-        os.path.join(bench_dir, "mdlc_bench_dmd"),
-        r"^(yaml_parse|compile)/dmd_chain/(100|1000)$", reps, min_time))
+    for _ in range(args.rounds):
+        for exe, pattern in BENCHMARKS:
+            for name, ms in run_benchmarks(os.path.join(bench_dir, exe), pattern, reps,
+                                           min_time).items():
+                t[name] = min(ms, t.get(name, ms))
     get = t.get
 
     lines = []
@@ -175,8 +191,9 @@ def main():
         "goal ≤ 1.5x), and growth per element from the small to the large size "
         "(goal ≤ 1.1x): the compile's, the floor's own, and the compile's over the floor's "
         "(how much faster than the parse mdlc's own work grows); the fastest CPU time of "
-        f"{reps} runs in one process, for the floor and the compile alike (the floor's runs "
-        "fall into two modes, one about twice the other, by the heap its previous run left).")
+        f"{reps} runs in each of {args.rounds} processes, for the floor and the compile alike "
+        "(the floor's runs fall into two modes, one about twice the other, by the heap its "
+        "previous run left).")
     add("")
     add("| input | floor, small / large (ms) | compile, small / large (ms) "
         "| compile/floor, small | compile/floor, large | growth per element "
