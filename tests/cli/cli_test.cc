@@ -205,6 +205,35 @@ TEST_F(CliTest, TenThousandLinkChainCompiles) {
   EXPECT_NE(r.out.find("bodies: 10001"), std::string::npos) << r.out;
 }
 
+TEST_F(CliTest, AFloodOfWarningsIsPrintedWholeAndInOrder) {
+  // the warnings of a flood are gathered into few writes (diagnostic_stream.h);
+  // none may be lost or reordered, in text or JSON, with output after them
+  std::string urdf = "<robot name=\"chain\">\n<link name=\"l0\"/>\n";
+  for (int i = 1; i <= 2000; ++i) {
+    urdf += fmt::format(
+        "<link name=\"l{0}\"/>\n<joint name=\"j{0}\" type=\"revolute\"><parent link=\"l{1}\"/>"
+        "<child link=\"l{0}\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>"
+        "<dynamics friction=\"0.1\"/></joint>\n",
+        i, i - 1);
+  }
+  urdf += "</robot>\n";
+  const std::string path = Write("chain.urdf", urdf).string();
+  for (const std::string format : {"text", "json"}) {
+    Outcome r = Mdlc("compile --emit=summary --diagnostics-format=" + format + " " + path);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("bodies: 2001"), std::string::npos) << r.out;
+    // joint j<i> is on line 2 * i + 2 of the file, one warning each
+    size_t from = 0;
+    for (int i = 1; i <= 2000; ++i) {
+      const std::string where = format == "text" ? fmt::format("chain.urdf:{}:", 2 * i + 2)
+                                                 : fmt::format("\"line\":{},", 2 * i + 2);
+      const size_t at = r.err.find(where, from);
+      ASSERT_NE(at, std::string::npos) << format << ": no warning for joint j" << i;
+      from = at + where.size();
+    }
+  }
+}
+
 TEST_F(CliTest, DeeplyNestedXmlDoesNotCrash) {
   // 100,000 nested unknown elements: warned about, never recursed into
   std::string deep = "<robot name=\"r\"><link name=\"a\"/>";

@@ -355,8 +355,6 @@ TEST_F(CheckTest, SarifForCodeHosts) {
   EXPECT_TRUE(error_seen);
 }
 
-}  // namespace
-
 // `mdlc view`: the page itself (the browser test, view_test.py, opens it)
 class ViewTest : public InspectTest {
  protected:
@@ -415,3 +413,5 @@ TEST_F(ViewTest, ABrokenModelWritesNoPage) {
   EXPECT_NE(r.err.find("error:"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "bad.html"));
 }
+
+}  // namespace

@@ -6,6 +6,10 @@
 
 #include <cstdio>
 #include <fstream>
+#include <memory>
+#include <string_view>
+
+#include "diagnostic_stream.h"
 
 namespace mdlc::cli {
 namespace {
@@ -124,14 +128,14 @@ CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup) {
   const bool json = flags.diagnostics_format == "json";
   const bool color =
       flags.color == "always" || (flags.color == "auto" && isatty(STDERR_FILENO) && !json);
+  std::shared_ptr<DiagnosticStream> stream;
   switch (setup.diagnostics) {
     case DiagnosticOutput::Stream:
-      options.on_diagnostic = [json, color](const Diagnostic& d, const SourceManager& s) {
-        if (json) {
-          fmt::print(stderr, "{}\n", FormatDiagnosticJson(d, s));
-        } else {
-          fmt::print(stderr, "{}", FormatDiagnosticText(d, s, color));
-        }
+      stream = std::make_shared<DiagnosticStream>([](std::string_view text) {
+        std::fwrite(text.data(), 1, text.size(), stderr);
+      });
+      options.on_diagnostic = [json, color, stream](const Diagnostic& d, const SourceManager& s) {
+        stream->Write(json ? FormatDiagnosticJson(d, s) + "\n" : FormatDiagnosticText(d, s, color));
       };
       break;
     case DiagnosticOutput::Collect:
@@ -146,6 +150,7 @@ CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup) {
   std::vector<Input> inputs;
   for (const std::string& file : flags.files) inputs.push_back(Input::File(file));
   Result& result = KeepUntilExit(Compile(inputs, options));
+  if (stream) stream->Finish();
   if (setup.diagnostics == DiagnosticOutput::ErrorsAfter) {
     for (const Diagnostic& d : result.diagnostics()) {
       if (d.severity == Severity::Error) fmt::print(stderr, "{}", result.FormatText(d));
