@@ -12,14 +12,16 @@ does; the one-shot rows pay every first touch.
                                  [--readme=README.md]
 
 BUILD_DIR (default: build) must hold mdlc, mdlc_bench, mdlc_bench_sdf and
-mdlc_bench_dmd. Each benchmark runs --repetitions times, interleaved at
-random with the others of its binary (a slow stretch of the machine then
-falls on the floor and the compile alike), in each of --rounds processes
-of its binary, and its fastest CPU time over all of them is used: within
-one process the parse floor's time depends on the heap its previous run
-left behind (glibc consolidating millions of freed DOM nodes), and falls
-into two modes, one about twice the other; the fastest run is the parse's
-own cost, and mdlc's compile is read the same way. The
+mdlc_bench_dmd. Ratios are paired: one process runs a family's floor and
+compile at both sizes, --repetitions times each, interleaved at random, and
+the family's ratios are read from that process's fastest CPU times; each
+number in the table is the median over --rounds such processes. A slow
+stretch of the machine, which can last minutes, then moves both sides of a
+ratio alike. The fastest run, not the median, is read within a process:
+there the parse floor's time depends on the heap its previous run left
+behind (glibc consolidating millions of freed DOM nodes), and falls into
+two modes, one about twice the other; the fastest run is the parse's own
+cost, and mdlc's compile is read the same way. The
 one-shot processes, fresh each time, use the median. With --readme, the
 table between the bench-table markers of that file is replaced as well.
 
@@ -45,16 +47,27 @@ BEGIN = "<!-- bench-table:begin -->"
 END = "<!-- bench-table:end -->"
 
 
-# (binary, the benchmarks of it that the table reads)
-BENCHMARKS = [
-    ("mdlc_bench",
-     r"^(libxml2_parse|compile)/(chain|tree|mjcf_chain|mjcf_tree)/(1000|10000)$"
-     r"|^mujoco_load/mjcf_tree/1000$"),
-    ("mdlc_bench_sdf",
-     r"^(libxml2_parse|compile)/(sdf_chain|nested_models)/(1000|10000)$"
-     r"|^(libxml2_parse|compile)/world/(1000|10000|100000)$"
-     r"|^libsdformat_load/(sdf_chain|world)/1000$"),
-    ("mdlc_bench_dmd", r"^(yaml_parse|compile)/dmd_chain/(100|1000)$"),
+# (label, family, floor benchmark, sizes, binary): each family's floor and
+# compile at every size run in one process of their own, interleaved.
+FAMILIES = [
+    ("URDF chain", "chain", "libxml2_parse", (1000, 10000), "mdlc_bench"),
+    ("URDF tree", "tree", "libxml2_parse", (1000, 10000), "mdlc_bench"),
+    ("MJCF chain", "mjcf_chain", "libxml2_parse", (1000, 10000), "mdlc_bench"),
+    ("MJCF tree", "mjcf_tree", "libxml2_parse", (1000, 10000), "mdlc_bench"),
+    ("SDFormat chain", "sdf_chain", "libxml2_parse", (1000, 10000), "mdlc_bench_sdf"),
+    ("SDFormat nested models (N deep)", "nested_models", "libxml2_parse", (1000, 10000),
+     "mdlc_bench_sdf"),
+    ("SDFormat world of N one-link models", "world", "libxml2_parse", (1000, 10000, 100000),
+     "mdlc_bench_sdf"),
+    ("Model Directives, N three-link arms", "dmd_chain", "yaml_parse", (100, 1000),
+     "mdlc_bench_dmd"),
+]
+# (name, binary, the reference loader's benchmark, mdlc's compile of the same file)
+REFERENCES = [
+    ("mujoco", "mdlc_bench", "mujoco_load/mjcf_tree/1000", "compile/mjcf_tree/1000"),
+    ("sdformat_chain", "mdlc_bench_sdf", "libsdformat_load/sdf_chain/1000",
+     "compile/sdf_chain/1000"),
+    ("sdformat_world", "mdlc_bench_sdf", "libsdformat_load/world/1000", "compile/world/1000"),
 ]
 
 
@@ -162,7 +175,7 @@ def main():
     parser.add_argument("build", nargs="?", default="build")
     parser.add_argument("--repetitions", type=int, default=3)
     parser.add_argument("--rounds", type=int, default=3,
-                        help="run every benchmark binary this many times, one process each")
+                        help="processes per family; the table shows medians over them")
     parser.add_argument("--min_time", default="0.1")
     parser.add_argument("--readme", help="replace the table between the markers in this file")
     parser.add_argument("--no-instructions", dest="instructions", action="store_false",
@@ -173,66 +186,86 @@ def main():
     mdlc = os.path.join(args.build, "tools", "mdlc", "mdlc")
     reps, min_time = args.repetitions, args.min_time
 
-    # Each round runs every binary once, in its own process; a benchmark's
-    # time is its fastest over all rounds. A slow stretch of the machine then
-    # has to last the whole table to move a row, where one process's
-    # repetitions all fall within the same few seconds.
-    t = {}
+    # Ratios are paired: each round runs every family in a process of its
+    # own, its floor and compile at both sizes interleaved within a few
+    # seconds, and reads the family's ratios from that process alone. The
+    # table shows each ratio's median over the rounds. A slow stretch of the
+    # machine, which can last minutes, then moves the floor and the compile
+    # of a ratio alike, where the fastest runs of separate processes may
+    # come from a fast and a slow stretch.
+    family_rounds = {family: [] for _, family, _, _, _ in FAMILIES}
+    reference_rounds = {name: [] for name, _, _, _ in REFERENCES}
     for _ in range(args.rounds):
-        for exe, pattern in BENCHMARKS:
-            for name, ms in run_benchmarks(os.path.join(bench_dir, exe), pattern, reps,
-                                           min_time).items():
-                t[name] = min(ms, t.get(name, ms))
-    get = t.get
+        for _, family, floor, sizes, exe in FAMILIES:
+            pattern = rf"^({floor}|compile)/{family}/({'|'.join(map(str, sizes))})$"
+            family_rounds[family].append(
+                run_benchmarks(os.path.join(bench_dir, exe), pattern, reps, min_time))
+        for name, exe, reference, compile_name in REFERENCES:
+            pattern = f"^({re.escape(reference)}|{re.escape(compile_name)})$"
+            times = run_benchmarks(os.path.join(bench_dir, exe), pattern, reps, min_time)
+            reference_rounds[name].append(ratio(times.get(reference), times.get(compile_name)))
+
+    def paired(family, value):
+        """The median over the rounds of value(times of one round's process)."""
+        return median([v for v in (value(times.get) for times in family_rounds[family])
+                       if v is not None])
+
 
     lines = []
     add = lines.append
     add("Compile time over the parse floor (the libxml2 or yaml-cpp parse of the same input; "
         "goal ≤ 1.5x), and growth per element from the small to the large size "
         "(goal ≤ 1.1x): the compile's, the floor's own, and the compile's over the floor's "
-        "(how much faster than the parse mdlc's own work grows); the fastest CPU time of "
-        f"{reps} runs in each of {args.rounds} processes, for the floor and the compile alike "
-        "(the floor's runs fall into two modes, one about twice the other, by the heap its "
-        "previous run left).")
+        "(how much faster than the parse mdlc's own work grows). Each family's floor and "
+        "compile, at both sizes, run interleaved in one process, and every number is read "
+        f"from one process's fastest CPU times of {reps} runs; the table shows its median over "
+        f"{args.rounds} such processes, run one family after another (the floor's runs fall "
+        "into two modes, one about twice the other, by the heap its previous run left).")
     add("")
     add("| input | floor, small / large (ms) | compile, small / large (ms) "
         "| compile/floor, small | compile/floor, large | growth per element "
         "| floor's growth | growth over the floor's |")
     add("|---|---|---|---|---|---|---|---|")
-    families = [
-        ("URDF chain", "chain", "libxml2_parse", 1000, 10000),
-        ("URDF tree", "tree", "libxml2_parse", 1000, 10000),
-        ("MJCF chain", "mjcf_chain", "libxml2_parse", 1000, 10000),
-        ("MJCF tree", "mjcf_tree", "libxml2_parse", 1000, 10000),
-        ("SDFormat chain", "sdf_chain", "libxml2_parse", 1000, 10000),
-        ("SDFormat nested models (N deep)", "nested_models", "libxml2_parse", 1000, 10000),
-        ("SDFormat world of N one-link models", "world", "libxml2_parse", 1000, 100000),
-        ("Model Directives, N three-link arms", "dmd_chain", "yaml_parse", 100, 1000),
-    ]
     summary = {}
-    for label, family, floor, small, large in families:
-        fs, fl = get(f"{floor}/{family}/{small}"), get(f"{floor}/{family}/{large}")
-        cs, cl = get(f"compile/{family}/{small}"), get(f"compile/{family}/{large}")
-        growth = ratio(ratio(cl, large), ratio(cs, small))
-        floor_growth = ratio(ratio(fl, large), ratio(fs, small))
-        relative = ratio(growth, floor_growth)
-        summary[family] = (ratio(cs, fs), ratio(cl, fl), growth, floor_growth, relative)
+    for label, family, floor, sizes, _ in FAMILIES:
+        small, large = sizes[0], sizes[-1]
+        fs, fl, cs, cl = (paired(family, lambda get, name=name: get(name)) for name in (
+            f"{floor}/{family}/{small}", f"{floor}/{family}/{large}",
+            f"compile/{family}/{small}", f"compile/{family}/{large}"))
+
+        def growth(get, bench, family=family, small=small, large=large):
+            return ratio(ratio(get(f"{bench}/{family}/{large}"), large),
+                         ratio(get(f"{bench}/{family}/{small}"), small))
+
+        def over_floor(get, size, family=family, floor=floor):
+            return ratio(get(f"compile/{family}/{size}"), get(f"{floor}/{family}/{size}"))
+
+        row = (paired(family, lambda get: over_floor(get, small)),
+               paired(family, lambda get: over_floor(get, large)),
+               paired(family, lambda get: growth(get, "compile")),
+               paired(family, lambda get, floor=floor: growth(get, floor)),
+               paired(family, lambda get, floor=floor: ratio(growth(get, "compile"),
+                                                             growth(get, floor))))
+        summary[family] = row
         add(f"| {label}, N = {small} / {large} | {fmt_ms(fs)} / {fmt_ms(fl)} "
-            f"| {fmt_ms(cs)} / {fmt_ms(cl)} | {fmt_ratio(ratio(cs, fs))} "
-            f"| {fmt_ratio(ratio(cl, fl))} | {fmt_ratio(growth)} | {fmt_ratio(floor_growth)} "
-            f"| {fmt_ratio(relative)} |")
+            f"| {fmt_ms(cs)} / {fmt_ms(cl)} | " + " | ".join(fmt_ratio(v) for v in row) + " |")
     add("")
 
     # worlds: the per-model cost at each size
     add("| world of N one-link models | N = 1000 | N = 10000 | N = 100000 |")
     add("|---|---|---|---|")
     sizes = (1000, 10000, 100000)
-    add("| compile (ms) | " + " | ".join(fmt_ms(get(f"compile/world/{n}")) for n in sizes) + " |")
+    add("| compile (ms) | " + " | ".join(
+        fmt_ms(paired("world", lambda get, n=n: get(f"compile/world/{n}"))) for n in sizes) + " |")
     add("| compile/floor | " + " | ".join(
-        fmt_ratio(ratio(get(f"compile/world/{n}"), get(f"libxml2_parse/world/{n}")))
+        fmt_ratio(paired("world", lambda get, n=n: ratio(get(f"compile/world/{n}"),
+                                                         get(f"libxml2_parse/world/{n}"))))
         for n in sizes) + " |")
-    per_model = [ratio(get(f"compile/world/{n}"), n / 1000.0) for n in sizes]
+    per_model = [paired("world", lambda get, n=n: ratio(get(f"compile/world/{n}"), n / 1000.0))
+                 for n in sizes]
     add("| compile per 1000 models (ms) | " + " | ".join(fmt_ms(p) for p in per_model) + " |")
+    world_growth = paired("world", lambda get: ratio(
+        ratio(get("compile/world/100000"), 100), get("compile/world/1000")))
     add("")
 
     # whole processes: peak memory against the DOM's (xmllint's parse of the
@@ -331,13 +364,17 @@ def main():
                           if label != "SDFormat world, N = 1000" and ratio(c, p) is not None),
                          default=None)
 
-    nest = ratio(get("compile/nested_models/10000"), get("compile/nested_models/1000"))
-    nest_floor = ratio(get("libxml2_parse/nested_models/10000"),
-                       get("libxml2_parse/nested_models/1000"))
-    sdformat_chain = ratio(get("libsdformat_load/sdf_chain/1000"), get("compile/sdf_chain/1000"))
-    sdformat_world = ratio(get("libsdformat_load/world/1000"), get("compile/world/1000"))
-    mujoco = ratio(get("mujoco_load/mjcf_tree/1000"), get("compile/mjcf_tree/1000"))
-    world_growth = ratio(per_model[2], per_model[0])
+    nest = paired("nested_models", lambda get: ratio(get("compile/nested_models/10000"),
+                                                     get("compile/nested_models/1000")))
+    nest_floor = paired("nested_models", lambda get: ratio(
+        get("libxml2_parse/nested_models/10000"), get("libxml2_parse/nested_models/1000")))
+    nest_relative = paired("nested_models", lambda get: ratio(
+        ratio(get("compile/nested_models/10000"), get("compile/nested_models/1000")),
+        ratio(get("libxml2_parse/nested_models/10000"), get("libxml2_parse/nested_models/1000"))))
+    reference = {name: median([r for r in rounds if r is not None])
+                 for name, rounds in reference_rounds.items()}
+    sdformat_chain, sdformat_world = reference["sdformat_chain"], reference["sdformat_world"]
+    mujoco = reference["mujoco"]
 
     add("| goal | measured | |")
     add("|---|---|---|")
@@ -371,7 +408,7 @@ def main():
     add(f"| nesting 10,000 deep vs 1,000 deep (linear: about 10x) | {fmt_ratio(nest)} "
         f"(the parse floor alone: {fmt_ratio(nest_floor)}) | {verdict(nest, 12)} |")
     add(f"| nesting: growth over the parse floor's ≤ 1.1x | "
-        f"{fmt_ratio(ratio(nest, nest_floor))} | {verdict(ratio(nest, nest_floor), 1.1)} |")
+        f"{fmt_ratio(nest_relative)} | {verdict(nest_relative, 1.1)} |")
     worst_memory = max(memory.values(), default=None)
     add(f"| peak memory ≤ 2x the DOM's | worst {fmt_ratio(worst_memory)} "
         f"| {verdict(worst_memory, 2)} |")
