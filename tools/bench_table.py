@@ -8,7 +8,7 @@ comparison with libsdformat and MuJoCo 2.2.2. The benchmark binaries keep
 freed memory for reuse (tools/driver/heap_policy.h), as the mdlc command
 does; the one-shot rows pay every first touch.
 
-    python3 tools/bench_table.py [BUILD_DIR] [--repetitions=3] [--rounds=3]
+    python3 tools/bench_table.py [BUILD_DIR] [--repetitions=3] [--rounds=5]
                                  [--readme=README.md]
 
 BUILD_DIR (default: build) must hold mdlc, mdlc_bench, mdlc_bench_sdf and
@@ -174,7 +174,7 @@ def main():
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("build", nargs="?", default="build")
     parser.add_argument("--repetitions", type=int, default=3)
-    parser.add_argument("--rounds", type=int, default=3,
+    parser.add_argument("--rounds", type=int, default=5,
                         help="processes per family; the table shows medians over them")
     parser.add_argument("--min_time", default="0.1")
     parser.add_argument("--readme", help="replace the table between the markers in this file")
