@@ -133,6 +133,19 @@ XMLLINT_PARSE_FUNCTIONS = ["xmlReadFile", "xmlFreeDoc"]
 XMLLINT = ["--noout", "--huge", "--noblanks"]
 
 
+def family_numbers(get, family, floor, small, large):
+    """One process's numbers for a family: the floor's and the compile's
+    times at the small and the large size, the compile over the floor at
+    each size, the growth per element of the compile and of the floor, and
+    the one over the other."""
+    fs, fl = get(f"{floor}/{family}/{small}"), get(f"{floor}/{family}/{large}")
+    cs, cl = get(f"compile/{family}/{small}"), get(f"compile/{family}/{large}")
+    growth = ratio(ratio(cl, large), ratio(cs, small))
+    floor_growth = ratio(ratio(fl, large), ratio(fs, small))
+    return (fs, fl, cs, cl, ratio(cs, fs), ratio(cl, fl), growth, floor_growth,
+            ratio(growth, floor_growth))
+
+
 def median(values):
     values = sorted(values)
     n = len(values)
@@ -206,10 +219,9 @@ def main():
             reference_rounds[name].append(ratio(times.get(reference), times.get(compile_name)))
 
     def paired(family, value):
-        """The median over the rounds of value(times of one round's process)."""
+        """The median over the rounds of value(one round's times of the family)."""
         return median([v for v in (value(times.get) for times in family_rounds[family])
                        if v is not None])
-
 
     lines = []
     add = lines.append
@@ -229,23 +241,10 @@ def main():
     summary = {}
     for label, family, floor, sizes, _ in FAMILIES:
         small, large = sizes[0], sizes[-1]
-        fs, fl, cs, cl = (paired(family, lambda get, name=name: get(name)) for name in (
-            f"{floor}/{family}/{small}", f"{floor}/{family}/{large}",
-            f"compile/{family}/{small}", f"compile/{family}/{large}"))
-
-        def growth(get, bench, family=family, small=small, large=large):
-            return ratio(ratio(get(f"{bench}/{family}/{large}"), large),
-                         ratio(get(f"{bench}/{family}/{small}"), small))
-
-        def over_floor(get, size, family=family, floor=floor):
-            return ratio(get(f"compile/{family}/{size}"), get(f"{floor}/{family}/{size}"))
-
-        row = (paired(family, lambda get: over_floor(get, small)),
-               paired(family, lambda get: over_floor(get, large)),
-               paired(family, lambda get: growth(get, "compile")),
-               paired(family, lambda get, floor=floor: growth(get, floor)),
-               paired(family, lambda get, floor=floor: ratio(growth(get, "compile"),
-                                                             growth(get, floor))))
+        numbers = [family_numbers(times.get, family, floor, small, large)
+                   for times in family_rounds[family]]
+        fs, fl, cs, cl, *row = (median([n[i] for n in numbers if n[i] is not None])
+                                for i in range(9))
         summary[family] = row
         add(f"| {label}, N = {small} / {large} | {fmt_ms(fs)} / {fmt_ms(fl)} "
             f"| {fmt_ms(cs)} / {fmt_ms(cl)} | " + " | ".join(fmt_ratio(v) for v in row) + " |")
@@ -364,13 +363,10 @@ def main():
                           if label != "SDFormat world, N = 1000" and ratio(c, p) is not None),
                          default=None)
 
-    nest = paired("nested_models", lambda get: ratio(get("compile/nested_models/10000"),
-                                                     get("compile/nested_models/1000")))
-    nest_floor = paired("nested_models", lambda get: ratio(
-        get("libxml2_parse/nested_models/10000"), get("libxml2_parse/nested_models/1000")))
-    nest_relative = paired("nested_models", lambda get: ratio(
-        ratio(get("compile/nested_models/10000"), get("compile/nested_models/1000")),
-        ratio(get("libxml2_parse/nested_models/10000"), get("libxml2_parse/nested_models/1000"))))
+    # nesting ten times deeper: ten times the elements
+    nest_growth, nest_floor_growth, nest_relative = summary["nested_models"][2:5]
+    nest = None if nest_growth is None else 10 * nest_growth
+    nest_floor = None if nest_floor_growth is None else 10 * nest_floor_growth
     reference = {name: median([r for r in rounds if r is not None])
                  for name, rounds in reference_rounds.items()}
     sdformat_chain, sdformat_world = reference["sdformat_chain"], reference["sdformat_world"]
