@@ -199,13 +199,7 @@ def main():
     mdlc = os.path.join(args.build, "tools", "mdlc", "mdlc")
     reps, min_time = args.repetitions, args.min_time
 
-    # Ratios are paired: each round runs every family in a process of its
-    # own, its floor and compile at both sizes interleaved within a few
-    # seconds, and reads the family's ratios from that process alone. The
-    # table shows each ratio's median over the rounds. A slow stretch of the
-    # machine, which can last minutes, then moves the floor and the compile
-    # of a ratio alike, where the fastest runs of separate processes may
-    # come from a fast and a slow stretch.
+    # paired ratios (see the module's docstring): a process per family and round
     family_rounds = {family: [] for _, family, _, _, _ in FAMILIES}
     reference_rounds = {name: [] for name, _, _, _ in REFERENCES}
     for _ in range(args.rounds):
@@ -263,8 +257,7 @@ def main():
     per_model = [paired("world", lambda get, n=n: ratio(get(f"compile/world/{n}"), n / 1000.0))
                  for n in sizes]
     add("| compile per 1000 models (ms) | " + " | ".join(fmt_ms(p) for p in per_model) + " |")
-    world_growth = paired("world", lambda get: ratio(
-        ratio(get("compile/world/100000"), 100), get("compile/world/1000")))
+    world_growth = summary["world"][2]  # the family's growth per model, 1k to 100k
     add("")
 
     # whole processes: peak memory against the DOM's (xmllint's parse of the
