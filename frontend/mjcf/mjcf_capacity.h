@@ -1,19 +1,25 @@
-// mjcf_capacity.h - how many entities an MJCF document's body tree adds, so
+// mjcf_capacity.h - how many entities an MJCF model's body tree adds, so
 // the IR's tables are sized once before it is lowered. Private to frontend/mjcf.
 #pragma once
+
+#include <memory>
+#include <vector>
 
 #include "frontend/entity_capacity.h"
 #include "frontend/xml/xml_document.h"
 
 namespace mdlc::frontend::mjcf {
 
-/// Counts the <worldbody>s' bodies, joints, geoms and sites under `root`:
-/// element counts alone cannot say how many bodies and joints, since a body
-/// with no joint still adds a joint (a weld). A body adds
-/// one IR body and one joint per joint it has (a weld when it has none; each
-/// joint past its first adds a massless body), a geom up to two geometries
-/// (illustration and proximity) and a site a frame. A <replicate>'s copies
-/// are counted once: the tables still grow by doubling past the room.
-EntityRoom MjcfEntityRoom(const xml::XmlElement& root);
+/// Room for what the model's files (the main file and its includes) can add,
+/// from their element counts alone, without a walk over the tree: at
+/// 10,000 bodies such a walk found the tree out of the cache and cost as
+/// much per body as lowering the body's joints. A body adds one IR body and
+/// one joint per joint it has, or a weld when it has none, so both tables
+/// get a slot per <body> and per joint, which is never too few. A geom adds
+/// up to two geometries (illustration and proximity), a site a frame. Joints
+/// and geoms of <default> classes are counted too, and a <replicate>'s
+/// copies once: the first is too much room, and past the second the tables
+/// grow by doubling.
+EntityRoom MjcfEntityRoom(const std::vector<std::shared_ptr<const xml::XmlDocument>>& documents);
 
 }  // namespace mdlc::frontend::mjcf

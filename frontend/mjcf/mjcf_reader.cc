@@ -72,7 +72,7 @@ std::optional<ModelId> Read(FileId file, FrontendContext& ctx) {
   ctx.module[r.model].mass_adjustments = r.compiler.mass_adjustments;
 
   // phase 3: the body tree, then what refers to it
-  ReserveEntities(ctx.module, MjcfEntityRoom(root));
+  ReserveEntities(ctx.module, MjcfEntityRoom(r.document.documents));
   r.body_order.push_back(ir::kWorldBody);
   r.bodies.emplace("world", ir::kWorldBody);
   for (const auto& e : top) {

