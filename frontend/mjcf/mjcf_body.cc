@@ -196,7 +196,7 @@ void MjcfReader::LowerWorldBody(const xml::XmlElement& worldbody) {
   ir::Module& m = module();
   if (body_order.empty()) {
     body_order.push_back(ir::kWorldBody);
-    bodies.emplace("world", ir::kWorldBody);
+    bodies.Insert(m.Intern("world"), ir::kWorldBody);
   }
   worldbody.ForEachAttributeName([&](std::string_view name) {
     diags().Report(DiagKind::BadValue, worldbody.Attribute(name).loc,
@@ -284,12 +284,12 @@ void MjcfReader::LowerWorldBody(const xml::XmlElement& worldbody) {
     b.original = ReadOriginalName(e, b.body, ctx);
     body_order.push_back(b.body);
     if (name_attr.present()) {
-      auto [it, inserted] = bodies.emplace(b.name, b.body);
+      auto [first, inserted] = bodies.Insert(m.Intern(b.name), b.body);
       if (!inserted) {
         diags()
             .Report(DiagKind::DuplicateName, name_attr.loc,
                     fmt::format("repeated body name '{}'", b.name))
-            .Note(m[it->second].loc, "the first body of that name is here");
+            .Note(m[first].loc, "the first body of that name is here");
       }
     }
 

@@ -126,8 +126,7 @@ namespace {
 template <typename Id>
 std::optional<Id> Find(ElementsLowering& L, const MjcfReader::ByName<Id>& table,
                        const Attribute& a, std::string_view element, std::string_view what) {
-  auto it = table.find(std::string(a.value));
-  if (it != table.end()) return it->second;
+  if (auto id = table.Find(L.module().symbols, a.value)) return id;
   L.diags().Report(DiagKind::UnknownReference, a.loc,
                    fmt::format("<{}> {}=\"{}\" names no {} of that name", element, a.name,
                                a.value, what));
@@ -158,8 +157,7 @@ std::optional<BodyId> ElementsLowering::BodyOf(const ir::Ref<BodyId>& ref) const
   if (ref.resolved()) return ref.id;
   const std::string_view name = r.ctx.module.Text(ref.name);
   if (name == "world") return ir::kWorldBody;
-  auto it = r.bodies.find(std::string(name));
-  if (it != r.bodies.end()) return it->second;
+  if (auto id = r.bodies.Find(r.ctx.module.symbols, name)) return id;
   // a body the frontend created itself (a stacked-joint body) by its IR name
   for (size_t i = 0; i < r.ctx.module.bodies.size(); ++i) {
     const ir::Body& b = r.ctx.module.bodies[i];

@@ -72,7 +72,7 @@ void LowerPair(ElementsLowering& L, const Element& e) {
     return;
   }
   for (const Attribute* g : {&g1, &g2}) {
-    if (L.r.geoms.count(std::string(g->value))) continue;
+    if (L.r.geoms.Find(L.module().symbols, g->value)) continue;
     L.diags().Report(DiagKind::IgnoredReference, g->loc,
                      fmt::format("contact pair specified unknown {} {} and will be ignored.",
                                  g->name, g->value));
@@ -80,8 +80,8 @@ void LowerPair(ElementsLowering& L, const Element& e) {
   }
   L.WarnAttribute(e, "pair", "condim");
   L.WarnAttribute(e, "pair", "friction");
-  const ir::Geometry& geom1 = L.module()[L.r.geoms.at(std::string(g1.value))];
-  const ir::Geometry& geom2 = L.module()[L.r.geoms.at(std::string(g2.value))];
+  const ir::Geometry& geom1 = L.module()[*L.r.geoms.Find(L.module().symbols, g1.value)];
+  const ir::Geometry& geom2 = L.module()[*L.r.geoms.Find(L.module().symbols, g2.value)];
   if (!(geom1.roles & ir::kProximityRole) || !(geom2.roles & ir::kProximityRole)) {
     L.WarnValueOnce("pair/no-proximity", e.loc(),
                     fmt::format("contact pair between geoms {} and {}: a geom without a "

@@ -279,11 +279,11 @@ bool LowerGeom(MjcfReader& r, const BodyItem& item, BodyId body, bool is_world,
   if (name_attr.present()) {
     const auto id = collision_id ? collision_id : visual_id;
     if (id) {
-      auto [it, inserted] = r.geoms.emplace(name, *id);
+      auto [first, inserted] = r.geoms.Insert(m.Intern(name), *id);
       if (!inserted) {
         r.diags()
             .Report(DiagKind::DuplicateName, name_attr.loc, fmt::format("repeated geom name '{}'", name))
-            .Note(m[it->second].loc, "the first geom of that name is here");
+            .Note(m[first].loc, "the first geom of that name is here");
       }
     }
   }
@@ -313,11 +313,11 @@ void LowerSite(MjcfReader& r, const BodyItem& item, BodyId body) {
   f.X_BF = item.X_BF * *X;
   const FrameId id = m.Add(std::move(f));
   ReadOriginalName(item.e, id, r.ctx);
-  auto [it, inserted] = r.sites.emplace(std::string(name.value), id);
+  auto [first, inserted] = r.sites.Insert(m.Intern(name.value), id);
   if (!inserted) {
     r.diags()
         .Report(DiagKind::DuplicateName, name.loc, fmt::format("repeated site name '{}'", name.value))
-        .Note(m.frames[it->second.index()].loc, "the first site of that name is here");
+        .Note(m.frames[first.index()].loc, "the first site of that name is here");
   }
 }
 

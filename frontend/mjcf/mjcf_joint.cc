@@ -171,7 +171,7 @@ void LowerJoints(MjcfReader& r, const BodyContext& b, std::span<const BodyItem> 
     r.joint_order.push_back(id);
     r.scaled_gains.joints.push_back(
         {id, 0, j.xml().Name() == "joint" ? r.Number(j, "armature", 0).value_or(0) : 0.0});
-    if (auto name = j.xml().Attribute("name"); name.present()) r.joints.emplace(name.value, id);
+    if (auto name = j.xml().Attribute("name"); name.present()) r.joints.Insert(m.Intern(name.value), id);
     return;
   }
 
@@ -294,12 +294,12 @@ void LowerJoints(MjcfReader& r, const BodyContext& b, std::span<const BodyItem> 
     ReadOriginalName(j.xml(), id, r.ctx);
     r.joint_order.push_back(id);
     if (name.present()) {
-      auto [it, inserted] = r.joints.emplace(std::string(name.value), id);
+      auto [first, inserted] = r.joints.Insert(m.Intern(name.value), id);
       if (!inserted) {
         r.diags()
             .Report(DiagKind::DuplicateName, name.loc,
                     fmt::format("repeated joint name '{}'", name.value))
-            .Note(m[it->second].loc, "the first joint of that name is here");
+            .Note(m[first].loc, "the first joint of that name is here");
       }
     }
     // MJCF-024: armature waits for an actuator to become rotor inertia

@@ -74,7 +74,7 @@ std::optional<ModelId> Read(FileId file, FrontendContext& ctx) {
   // phase 3: the body tree, then what refers to it
   ReserveEntities(ctx.module, MjcfEntityRoom(r.document.documents));
   r.body_order.push_back(ir::kWorldBody);
-  r.bodies.emplace("world", ir::kWorldBody);
+  r.bodies.Insert(ctx.module.Intern("world"), ir::kWorldBody);
   for (const auto& e : top) {
     if (e.Name() == "worldbody") r.LowerWorldBody(e);
   }

@@ -196,10 +196,31 @@ struct MjcfReader {
 
   // Entities by their MJCF name, as elements refer to them. "world" is the
   // world body. Unnamed entities are not here. Flat tables (one is filled
-  // per body, joint, geom and site); never iterated, so their order, which
-  // varies from run to run, shows nowhere.
+  // per body, joint, geom and site) keyed by the name's symbol, which the
+  // entity's IR name interned already: a 4-byte key, where a string key
+  // was copied, hashed and compared per entity. Never iterated, so their
+  // order, which varies from run to run, shows nowhere.
   template <typename Id>
-  using ByName = absl::flat_hash_map<std::string, Id>;
+  class ByName {
+   public:
+    /// Adds name -> id unless the name is there; returns the id the name
+    /// has and whether it was added.
+    std::pair<Id, bool> Insert(Symbol name, Id id) {
+      auto [it, inserted] = ids_.emplace(name.value, id);
+      return {it->second, inserted};
+    }
+    /// The entity named `text`; nullopt when none is.
+    std::optional<Id> Find(const SymbolTable& symbols, std::string_view text) const {
+      const Symbol name = symbols.Find(text);
+      if (name.empty() && !text.empty()) return std::nullopt;  // never interned
+      auto it = ids_.find(name.value);
+      if (it == ids_.end()) return std::nullopt;
+      return it->second;
+    }
+
+   private:
+    absl::flat_hash_map<uint32_t, Id> ids_;
+  };
   ByName<BodyId> bodies;
   ByName<JointId> joints;
   ByName<GeometryId> geoms;  // the proximity registration when there is one
