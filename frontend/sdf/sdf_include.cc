@@ -15,7 +15,6 @@
 #include <unordered_map>
 
 #include "frontend/assets/package_map.h"
-#include "frontend/entity_capacity.h"
 #include "frontend/sdf/sdf_reader_detail.h"
 #include "frontend/xml/trim.h"
 #include "ir/load_report.h"
@@ -165,7 +164,7 @@ void SdfReader::ReadInclude(const xml::XmlElement& e, const SdfFile& file, Model
   std::shared_ptr<const xml::XmlDocument> doc = ParseXml(*file_id, ctx_);
   if (!doc) return;
   documents_.push_back(doc);
-  ReserveEntities(module(), SdfEntityRoom(*doc));
+  ReserveRoomFor(*doc);
   auto included = std::make_unique<SdfFile>();
   included->doc = doc.get();
   included->path = *path;

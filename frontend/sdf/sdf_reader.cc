@@ -150,11 +150,18 @@ void SdfReader::CheckChildren(const xml::XmlElement& e,
   }
 }
 
+void SdfReader::ReserveRoomFor(const xml::XmlDocument& doc) {
+  const EntityRoom room = SdfEntityRoom(doc);
+  ReserveEntities(module(), room);
+  // every node but the anchors of visuals, collisions and sensors has a name
+  defined_.reserve(defined_.size() + room.frame_nodes - room.geometries);
+}
+
 std::optional<ModelId> SdfReader::ReadRootFile(FileId file_id) {
   std::shared_ptr<const xml::XmlDocument> doc = ParseXml(file_id, ctx_);
   if (!doc) return std::nullopt;
   documents_.push_back(doc);
-  ReserveEntities(module(), SdfEntityRoom(*doc));
+  ReserveRoomFor(*doc);
   auto file = std::make_unique<SdfFile>();
   file->doc = doc.get();
   file->path = std::string(ctx_.sources.Path(file_id));

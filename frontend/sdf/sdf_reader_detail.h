@@ -87,6 +87,10 @@ class SdfReader {
   ir::NameRef RelativeTo(const xml::XmlElement& pose);
 
   // --- sdf_reader.cc: names and the frame graph ---
+  /// Room in the IR's tables and in the table of defined names for what
+  /// `doc` adds, before it is read: a world of 100,000 models otherwise
+  /// rehashed its names seventeen times as they came.
+  void ReserveRoomFor(const xml::XmlDocument& doc);
   /// Checks a name defined in a scope (SDF-034, COMMON-031): not empty, no
   /// "::", not reserved (world, __model__, __anything__). False after an error.
   bool CheckDefinedName(std::string_view name, Loc loc, std::string_view kind,
