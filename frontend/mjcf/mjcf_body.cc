@@ -284,7 +284,7 @@ void MjcfReader::LowerWorldBody(const xml::XmlElement& worldbody) {
     b.original = ReadOriginalName(e, b.body, ctx);
     body_order.push_back(b.body);
     if (name_attr.present()) {
-      auto [first, inserted] = bodies.Insert(m.Intern(b.name), b.body);
+      auto [first, inserted] = bodies.Insert(m[b.body].name, b.body);
       if (!inserted) {
         diags()
             .Report(DiagKind::DuplicateName, name_attr.loc,

@@ -279,7 +279,7 @@ bool LowerGeom(MjcfReader& r, const BodyItem& item, BodyId body, bool is_world,
   if (name_attr.present()) {
     const auto id = collision_id ? collision_id : visual_id;
     if (id) {
-      auto [first, inserted] = r.geoms.Insert(m.Intern(name), *id);
+      auto [first, inserted] = r.geoms.Insert(m[*id].name, *id);
       if (!inserted) {
         r.diags()
             .Report(DiagKind::DuplicateName, name_attr.loc, fmt::format("repeated geom name '{}'", name))
@@ -313,7 +313,7 @@ void LowerSite(MjcfReader& r, const BodyItem& item, BodyId body) {
   f.X_BF = item.X_BF * *X;
   const FrameId id = m.Add(std::move(f));
   ReadOriginalName(item.e, id, r.ctx);
-  auto [first, inserted] = r.sites.Insert(m.Intern(name.value), id);
+  auto [first, inserted] = r.sites.Insert(m.frames[id.index()].name, id);
   if (!inserted) {
     r.diags()
         .Report(DiagKind::DuplicateName, name.loc, fmt::format("repeated site name '{}'", name.value))

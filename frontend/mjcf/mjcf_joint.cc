@@ -294,7 +294,7 @@ void LowerJoints(MjcfReader& r, const BodyContext& b, std::span<const BodyItem> 
     ReadOriginalName(j.xml(), id, r.ctx);
     r.joint_order.push_back(id);
     if (name.present()) {
-      auto [first, inserted] = r.joints.Insert(m.Intern(name.value), id);
+      auto [first, inserted] = r.joints.Insert(m[id].name, id);
       if (!inserted) {
         r.diags()
             .Report(DiagKind::DuplicateName, name.loc,

@@ -196,10 +196,12 @@ struct MjcfReader {
 
   // Entities by their MJCF name, as elements refer to them. "world" is the
   // world body. Unnamed entities are not here. Flat tables (one is filled
-  // per body, joint, geom and site) keyed by the name's symbol, which the
-  // entity's IR name interned already: a 4-byte key, where a string key
-  // was copied, hashed and compared per entity. Never iterated, so their
-  // order, which varies from run to run, shows nowhere.
+  // per body, joint, geom and site) keyed by the name's symbol: a named
+  // entity's IR name is its MJCF name, interned as the entity was made (a
+  // free joint, named after its body, interns its own), so the key costs
+  // nothing more, where a string key was copied, hashed and compared per
+  // entity. Never iterated, so their order, which varies from run to run,
+  // shows nowhere.
   template <typename Id>
   class ByName {
    public:

@@ -86,6 +86,32 @@ TEST(MjcfReader, Mjcf001RepeatedAndMissingIncludesAreErrors) {
   EXPECT_NE(r.Find(DiagKind::FileNotFound, "nope.xml"), nullptr) << r.Messages();
 }
 
+// MJCF-020, MJCF-022, MJCF-040: a body, joint, geom or site name used twice
+// is an error at the second, with a note at the first; a reference by that
+// name (the motor's joint) finds the first.
+TEST(MjcfReader, Mjcf020RepeatedNamesAreLocatedErrorsAndReferencesFindTheFirst) {
+  LoweredMjcf r(Model(R"(<worldbody>
+  <body name="a"><joint name="j"/><geom name="g" size="1"/><site name="s"/>
+    <body name="a"><joint name="j"/><geom name="g" size="1"/><site name="s"/></body>
+  </body>
+</worldbody>
+<actuator><motor joint="j"/></actuator>)"));
+  EXPECT_FALSE(r.ok());
+  for (std::string_view what : {"body name 'a'", "joint name 'j'", "geom name 'g'",
+                                "site name 's'"}) {
+    const Diagnostic* d = r.Find(DiagKind::DuplicateName, fmt::format("repeated {}", what));
+    ASSERT_NE(d, nullptr) << what << "\n" << r.Messages();
+    EXPECT_EQ(d->severity, Severity::Error) << what;
+    EXPECT_EQ(d->loc.line, 4u) << what;  // the second, inner one
+    ASSERT_EQ(d->notes.size(), 1u) << what;
+    EXPECT_EQ(d->notes[0].loc.line, 3u) << what;  // the first
+  }
+  ASSERT_EQ(r.module.actuators.size(), 1u);
+  const JointId motor_joint = r.module.actuators[0].joint.id;
+  ASSERT_TRUE(motor_joint.valid());
+  EXPECT_EQ(r.module[motor_joint].loc.line, 3u);
+}
+
 TEST(MjcfReader, Mjcf011DefaultsInheritAndChildclassApplies) {
   LoweredMjcf r(Model(R"(
   <default><geom type="box" size="1 2 3"/>
