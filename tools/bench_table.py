@@ -194,6 +194,8 @@ def main():
     parser.add_argument("--no-instructions", dest="instructions", action="store_false",
                         help="skip the instruction counts (callgrind)")
     args = parser.parse_args()
+    if args.rounds < 1:
+        parser.error("--rounds must be at least 1: every number is a median over them")
 
     bench_dir = os.path.join(args.build, "tests", "bench")
     mdlc = os.path.join(args.build, "tools", "mdlc", "mdlc")
@@ -237,8 +239,8 @@ def main():
         small, large = sizes[0], sizes[-1]
         numbers = [family_numbers(times.get, family, floor, small, large)
                    for times in family_rounds[family]]
-        fs, fl, cs, cl, *row = (median([n[i] for n in numbers if n[i] is not None])
-                                for i in range(9))
+        fs, fl, cs, cl, *row = (median([v for v in column if v is not None])
+                                for column in zip(*numbers))
         summary[family] = row
         add(f"| {label}, N = {small} / {large} | {fmt_ms(fs)} / {fmt_ms(fl)} "
             f"| {fmt_ms(cs)} / {fmt_ms(cl)} | " + " | ".join(fmt_ratio(v) for v in row) + " |")
