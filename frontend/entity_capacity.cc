@@ -45,6 +45,7 @@ EntityRoom SdfEntityRoom(const xml::XmlDocument& doc) {
   room.frame_nodes = 1 + models + room.bodies + room.joints + room.frames + room.geometries +
                      doc.CountOf("sensor");
   room.frames += models;  // each model's own frame
+  room.models = models;
   return WithFloatingJoints(room, models);
 }
 
@@ -54,6 +55,7 @@ void ReserveEntities(ir::Module& module, const EntityRoom& room) {
   ReserveMore(module.joints, room.joints);
   ReserveMore(module.geometries, room.geometries);
   ReserveMore(module.frame_graph.nodes, room.frame_nodes);
+  module.ReserveModels(room.models);
 }
 
 }  // namespace mdlc::frontend

@@ -12,7 +12,7 @@ namespace mdlc::frontend {
 
 /// How many entities of each kind a document is expected to add.
 struct EntityRoom {
-  size_t bodies = 0, frames = 0, joints = 0, geometries = 0, frame_nodes = 0;
+  size_t bodies = 0, frames = 0, joints = 0, geometries = 0, frame_nodes = 0, models = 0;
 };
 
 /// What a URDF document adds, from its element counts: a body per <link>, a
@@ -21,9 +21,10 @@ struct EntityRoom {
 /// on, which the kinematic-tree pass adds.
 EntityRoom UrdfEntityRoom(const xml::XmlDocument& doc);
 /// What an SDFormat document adds itself (each file it includes reserves
-/// its own room when it is read): as URDF, with a floating joint per <model>,
-/// plus a frame per <model> (its model frame) and a frame-graph node for the
-/// world and per model, link, joint, frame, visual, collision and sensor.
+/// its own room when it is read): as URDF, with a model instance, a floating
+/// joint and a frame (its model frame) per <model>, and a frame-graph node
+/// for the world and per model, link, joint, frame, visual, collision and
+/// sensor.
 EntityRoom SdfEntityRoom(const xml::XmlDocument& doc);
 
 /// Reserves `room` past the entities the module already holds, so that

@@ -56,6 +56,15 @@ void Module::RenameModel(ModelId model, ModelId parent, Symbol local) {
   }
 }
 
+void Module::ReserveModels(size_t more) {
+  const size_t wanted = models.size() + more;
+  if (wanted <= models.capacity()) return;
+  // at least doubling, as the frontends' entity tables do
+  const size_t capacity = std::max(wanted, 2 * models.capacity());
+  models.reserve(capacity);
+  model_by_parent_.reserve(capacity);
+}
+
 void Module::RemoveLastModel() {
   const ModelId last(models.size() - 1);
   const ModelInstance& m = models.back();

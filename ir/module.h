@@ -9,8 +9,9 @@
 #include <optional>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
+
+#include <absl/container/flat_hash_map.h>
 
 #include "ir/entities.h"
 #include "ir/frame_graph.h"
@@ -108,10 +109,15 @@ struct Module {
   void RenameModel(ModelId model, ModelId parent, Symbol local);
   /// Removes the last model instance added (nothing may refer to it any more).
   void RemoveLastModel();
+  /// Room for `more` model instances past the current ones, in the table and
+  /// in the index by name.
+  void ReserveModels(size_t more);
 
  private:
-  // (parent, local name) -> the first instance added so; kept by Add
-  std::unordered_map<uint64_t, ModelId> model_by_parent_;
+  // (parent, local name) -> the first instance added so; kept by Add. Flat:
+  // a world of many models adds one entry per model, and a node-based map's
+  // allocation and pointer chase per entry grew with the world.
+  absl::flat_hash_map<uint64_t, ModelId> model_by_parent_;
   // the most "::" in a top-level instance's local name: FindModel tries that
   // many longer first components before walking down
   size_t max_top_level_separators_ = 0;

@@ -20,12 +20,13 @@ namespace {
 TEST(ReserveEntitiesTest, RoomPastTheEntitiesAlreadyThere) {
   ir::Module m;
   m.bodies.resize(5);
-  ReserveEntities(m, EntityRoom{100, 200, 300, 400, 500});
+  ReserveEntities(m, EntityRoom{100, 200, 300, 400, 500, 600});
   EXPECT_GE(m.bodies.capacity(), 105u);
   EXPECT_GE(m.frames.capacity(), m.frames.size() + 200);
   EXPECT_GE(m.joints.capacity(), m.joints.size() + 300);
   EXPECT_GE(m.geometries.capacity(), m.geometries.size() + 400);
   EXPECT_GE(m.frame_graph.nodes.capacity(), m.frame_graph.nodes.size() + 500);
+  EXPECT_GE(m.models.capacity(), m.models.size() + 600);
 }
 
 // A scene of 10,000 small files, each reserving before its entities are
@@ -71,14 +72,16 @@ EntityRoom Added(const ir::Module& before, const ir::Module& after) {
   return {after.bodies.size() - before.bodies.size(), after.frames.size() - before.frames.size(),
           after.joints.size() - before.joints.size(),
           after.geometries.size() - before.geometries.size(),
-          after.frame_graph.nodes.size() - before.frame_graph.nodes.size()};
+          after.frame_graph.nodes.size() - before.frame_graph.nodes.size(),
+          after.models.size() - before.models.size()};
 }
 
 // `floating`: the floating joints the kinematic-tree pass will add, which
-// the room holds beyond what the frontend adds.
+// the room holds beyond what the frontend adds; `unreserved_models`: model
+// instances the frontend adds without room (a URDF file's one robot).
 void ExpectRoomIsWhatTheLoweringAdds(Format format, const std::string& text,
                                      EntityRoom (*room_of)(const xml::XmlDocument&),
-                                     size_t floating) {
+                                     size_t floating, size_t unreserved_models) {
   SourceManager sources;
   DiagnosticEngine diags;
   ir::Module module;
@@ -96,6 +99,7 @@ void ExpectRoomIsWhatTheLoweringAdds(Format format, const std::string& text,
   EXPECT_EQ(room.joints, added.joints + floating);
   EXPECT_EQ(room.geometries, added.geometries);
   EXPECT_EQ(room.frame_nodes, added.frame_nodes);
+  EXPECT_EQ(room.models + unreserved_models, added.models);
 }
 
 TEST(UrdfEntityRoomTest, CountsWhatTheRobotAdds) {
@@ -110,7 +114,7 @@ TEST(UrdfEntityRoomTest, CountsWhatTheRobotAdds) {
     <axis xyz="0 0 1"/></drake:joint>
   <frame name="f" link="a" xyz="0 0 1" rpy="0 0 0"/>
 </robot>)",
-                                  UrdfEntityRoom, /*floating=*/1);
+                                  UrdfEntityRoom, /*floating=*/1, /*unreserved_models=*/1);
 }
 
 TEST(SdfEntityRoomTest, CountsWhatTheWorldAdds) {
@@ -127,7 +131,7 @@ TEST(SdfEntityRoomTest, CountsWhatTheWorldAdds) {
   </model>
   <model name="free"><link name="d"/></model>
 </world></sdf>)",
-                                  SdfEntityRoom, /*floating=*/3);
+                                  SdfEntityRoom, /*floating=*/3, /*unreserved_models=*/0);
 }
 
 // A file holding one model, not a world, still has the world's node.
@@ -140,7 +144,7 @@ TEST(SdfEntityRoomTest, CountsWhatAModelFileAdds) {
   <joint name="j" type="revolute"><parent>a</parent><child>b</child>
     <axis><xyz>0 0 1</xyz></axis></joint>
 </model></sdf>)",
-                                  SdfEntityRoom, /*floating=*/1);
+                                  SdfEntityRoom, /*floating=*/1, /*unreserved_models=*/0);
 }
 
 // The room counted from an MJCF document's element counts holds what its
