@@ -11,7 +11,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <map>
 
 #include "frontend/mjcf/mjcf_lowering.h"
 
@@ -212,13 +211,22 @@ void MjcfReader::LowerWorldBody(const xml::XmlElement& worldbody) {
   }
   LowerAttachments(*this, world, ir::kWorldBody, /*is_world=*/true, false);
 
-  // per body (index into m.bodies): what the inertiafromgeom=false check needs
+  // per body of this <worldbody>, by its index in m.bodies past `first`:
+  // what the inertiafromgeom=false check needs, kept only for that check
   struct Record {
     bool moves = false, has_inertial = false;
     std::vector<uint32_t> welded_children;
     Loc loc;
   };
-  std::map<uint32_t, Record> records;  // ordered: deterministic reports
+  const bool check_massless = compiler.inertia_from_geom == InertiaFromGeom::False;
+  const uint32_t first = static_cast<uint32_t>(m.bodies.size());
+  std::vector<Record> records;  // in body order: deterministic reports
+  // the joints' massless in-between bodies get no record of their own
+  auto record = [&](uint32_t body) -> Record& {
+    const size_t at = body - first;
+    if (at >= records.size()) records.resize(at + 1);
+    return records[at];
+  };
 
   struct Pending {
     BodyItem item;
@@ -310,11 +318,16 @@ void MjcfReader::LowerWorldBody(const xml::XmlElement& worldbody) {
     LowerJoints(*this, b, items.joints, mocap);
     LowerAttachments(*this, items, b.body, false, b.mass_from_geometry);
 
-    Record& rec = records[b.body.value];
-    rec.moves = !items.joints.empty();
-    rec.has_inertial = !items.inertials.empty();
-    rec.loc = e.GetLoc();
-    if (!rec.moves && !p.parent_is_world) records[p.parent.value].welded_children.push_back(b.body.value);
+    if (check_massless) {
+      const bool moves = !items.joints.empty();
+      if (!moves && !p.parent_is_world) {
+        record(p.parent.value).welded_children.push_back(b.body.value);
+      }
+      Record& rec = record(b.body.value);
+      rec.moves = moves;
+      rec.has_inertial = !items.inertials.empty();
+      rec.loc = e.GetLoc();
+    }
 
     for (auto it = items.bodies.rbegin(); it != items.bodies.rend(); ++it) {
       stack.push_back({*it, b.body, b.name, b.X_WB0, false,
@@ -325,13 +338,14 @@ void MjcfReader::LowerWorldBody(const xml::XmlElement& worldbody) {
   // MJCF-005: inertiafromgeom=false leaves a body without <inertial>
   // massless; MuJoCo rejects a moving body whose mass is zero, unless a
   // body welded to it (directly or through other welded bodies) has mass.
-  if (compiler.inertia_from_geom == InertiaFromGeom::False) {
-    for (auto& [index, rec] : records) {
+  if (check_massless) {
+    for (size_t index = 0; index < records.size(); ++index) {
+      const Record& rec = records[index];
       if (!rec.moves || rec.has_inertial) continue;
       bool found = false;
       std::vector<uint32_t> work = rec.welded_children;
       while (!work.empty() && !found) {
-        const Record& child = records[work.back()];
+        const Record& child = records[work.back() - first];
         work.pop_back();
         found = child.has_inertial;
         work.insert(work.end(), child.welded_children.begin(), child.welded_children.end());
@@ -340,7 +354,7 @@ void MjcfReader::LowerWorldBody(const xml::XmlElement& worldbody) {
         diags().Report(DiagKind::MissingElement, rec.loc,
                        fmt::format("body '{}' moves but has no <inertial> and "
                                    "inertiafromgeom=false: you must specify an inertia",
-                                   m.Text(m.bodies[index].name)));
+                                   m.Text(m.bodies[first + index].name)));
       }
     }
   }

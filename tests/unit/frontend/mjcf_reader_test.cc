@@ -361,10 +361,20 @@ TEST(MjcfReader, Mjcf005InertiaFromGeomFalseNeedsInertialOnMovingBodies) {
     <body name="static"><geom size="1"/></body>
     <body name="moving"><joint/><geom size="1"/></body>
     <body name="carried"><joint/><body><inertial pos="0 0 0" mass="1" diaginertia="1 1 1"/></body></body>
+    <body name="two_joints"><joint/><joint/><geom size="1"/></body>
+    <body name="deeply_carried"><joint/><body><geom size="1"/><body>
+      <inertial pos="0 0 0" mass="1" diaginertia="1 1 1"/></body></body></body>
   </worldbody>)"));
   EXPECT_NE(r.Find(DiagKind::MissingElement, "'moving'"), nullptr) << r.Messages();
   EXPECT_EQ(r.Find(DiagKind::MissingElement, "'static'"), nullptr);
   EXPECT_EQ(r.Find(DiagKind::MissingElement, "'carried'"), nullptr);
+  // a body with two joints (a massless body between them) still needs one
+  EXPECT_NE(r.Find(DiagKind::MissingElement, "'two_joints'"), nullptr);
+  // mass two welded bodies down carries the moving body
+  EXPECT_EQ(r.Find(DiagKind::MissingElement, "'deeply_carried'"), nullptr);
+  // reported in document order
+  const std::string messages = r.Messages();
+  EXPECT_LT(messages.find("'moving'"), messages.find("'two_joints'")) << messages;
 }
 
 TEST(MjcfReader, Mjcf030InertialDiagAndFull) {
