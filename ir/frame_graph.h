@@ -16,7 +16,10 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <vector>
+
+#include <absl/container/flat_hash_map.h>
 
 #include "ir/ids.h"
 #include "ir/location.h"
@@ -112,6 +115,28 @@ struct FrameGraph {
   const FrameNode& operator[](FrameNodeId id) const { return nodes[id.index()]; }
   FrameScopeId Add(FrameScope s) { scopes.push_back(std::move(s)); return FrameScopeId(scopes.size() - 1); }
   FrameNodeId Add(FrameNode n) { nodes.push_back(std::move(n)); return FrameNodeId(nodes.size() - 1); }
+
+  /// The scope whose names `scope`'s nodes share: itself, or the scope it
+  /// is merged into (SDF-032).
+  FrameScopeId Namespace(FrameScopeId scope) const {
+    while (scopes[scope.index()].merged_into.valid()) scope = scopes[scope.index()].merged_into;
+    return scope;
+  }
+  /// The key of `name` in namespace `ns` in `names`.
+  static uint64_t NameKey(FrameScopeId ns, Symbol name) {
+    return (uint64_t{ns.value} << 32) | name.value;
+  }
+
+  /// Every named node (all but anchors and the world's) by its namespace
+  /// and local name; the first node of a name keeps it. The SDFormat reader
+  /// fills it as it adds nodes, finding repeated names in it, and
+  /// resolve-frames looks references up in it: one table, built once, where
+  /// each kept its own (in a world of 100,000 models, the tables outgrow
+  /// the cache and every insert misses). `names_complete` says it holds every
+  /// node; a graph built any other way leaves it false, and resolve-frames
+  /// indexes the nodes itself.
+  absl::flat_hash_map<uint64_t, FrameNodeId> names;
+  bool names_complete = false;
 };
 
 }  // namespace mdlc::ir

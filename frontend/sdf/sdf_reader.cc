@@ -68,12 +68,15 @@ bool SdfReader::CheckDefinedName(std::string_view name, Loc loc, std::string_vie
 }
 
 FrameNodeId SdfReader::AddNode(const ModelScope& s, ir::FrameNode node) {
-  // merged models publish their names into the scope they merge into
-  FrameScopeId ns = s.scope;
-  while (graph()[ns].merged_into.valid()) ns = graph()[ns].merged_into;
-  auto [it, inserted] =
-      defined_.emplace(ScopedKey{ns.value, node.name.value}, Definition{node.loc, node.kind});
-  if (!inserted && it->second.kind != node.kind && s.file && s.file->version < 108) {
+  // merged models publish their names into the scope they merge into; the
+  // graph's name index is the table of names defined so far
+  ir::FrameGraph& g = graph();
+  const FrameScopeId ns = g.Namespace(s.scope);
+  const FrameNodeId id(g.nodes.size());
+  const auto [it, inserted] = g.names.emplace(ir::FrameGraph::NameKey(ns, node.name), id);
+  const ir::FrameNodeKind first_kind = inserted ? node.kind : g[it->second].kind;
+  const Loc first_loc = inserted ? node.loc : g[it->second].loc;
+  if (!inserted && first_kind != node.kind && s.file && s.file->version < 108) {
     // before SDFormat 1.8 a joint (say) could share its child link's name;
     // libsdformat renames the newcomer NAME_joint (NAME_frame, ...), and so do we
     static constexpr const char* kSuffix[] = {"world", "model", "link", "joint", "frame", ""};
@@ -85,7 +88,7 @@ FrameNodeId SdfReader::AddNode(const ModelScope& s, ir::FrameNode node) {
                             "for files older than SDFormat 1.8, this {} is renamed '{}'",
                             module().Text(node.name), kSuffix[static_cast<int>(node.kind)],
                             renamed))
-        .Note(it->second.loc, "first defined here");
+        .Note(first_loc, "first defined here");
     node.name = module().Intern(renamed);
     switch (node.target) {
       case ir::FrameTarget::Joint: module().joints[node.target_index].name = node.name; break;
@@ -93,17 +96,17 @@ FrameNodeId SdfReader::AddNode(const ModelScope& s, ir::FrameNode node) {
       case ir::FrameTarget::Body: module().bodies[node.target_index].name = node.name; break;
       default: break;
     }
-    defined_.emplace(ScopedKey{ns.value, node.name.value}, Definition{node.loc, node.kind});
+    g.names.emplace(ir::FrameGraph::NameKey(ns, node.name), id);
   } else if (!inserted) {
     diags()
         .Report(DiagKind::DuplicateName, node.loc,
                 fmt::format("the name '{}' is already used by a link, joint, frame or model "
                             "of this model",
                             module().Text(node.name)))
-        .Note(it->second.loc, "first defined here");
+        .Note(first_loc, "first defined here");
   }
   node.scope = s.scope;
-  return graph().Add(std::move(node));
+  return g.Add(std::move(node));
 }
 
 FrameNodeId SdfReader::AddAnchor(const ModelScope& s, const xml::XmlElement& pose_element,
@@ -154,7 +157,7 @@ void SdfReader::ReserveRoomFor(const xml::XmlDocument& doc) {
   const EntityRoom room = SdfEntityRoom(doc);
   ReserveEntities(module(), room);
   // every node but the anchors of visuals, collisions and sensors has a name
-  defined_.reserve(defined_.size() + room.frame_nodes - room.geometries);
+  graph().names.reserve(graph().names.size() + room.frame_nodes - room.geometries);
 }
 
 std::optional<ModelId> SdfReader::ReadRootFile(FileId file_id) {
@@ -188,6 +191,10 @@ std::optional<ModelId> SdfReader::ReadRootFile(FileId file_id) {
   }
   files_.back()->version = *version;
   attrs_.WarnUnknownAttributes(sdf, {"version", "xmlns:drake", "xmlns:xacro"});
+
+  // the graph's name index holds every node this reader adds; it holds
+  // them all if the graph starts here (other files' readers keep it too)
+  if (graph().nodes.empty()) graph().names_complete = true;
 
   // the world scope: its frame is the world body's
   ir::FrameScope world_scope;

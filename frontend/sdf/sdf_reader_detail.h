@@ -87,7 +87,7 @@ class SdfReader {
   ir::NameRef RelativeTo(const xml::XmlElement& pose);
 
   // --- sdf_reader.cc: names and the frame graph ---
-  /// Room in the IR's tables and in the table of defined names for what
+  /// Room in the IR's tables and in the frame graph's name index for what
   /// `doc` adds, before it is read: a world of 100,000 models otherwise
   /// rehashed its names seventeen times as they came.
   void ReserveRoomFor(const xml::XmlDocument& doc);
@@ -180,7 +180,7 @@ class SdfReader {
   };
   std::vector<PendingModel> pending_models_;
 
-  // per-scope names already defined: (scope, name) -> location
+  // (owner, name) keys of per-owner name tables
   struct ScopedKey {
     uint32_t scope, name;
     friend bool operator==(const ScopedKey&, const ScopedKey&) = default;
@@ -189,11 +189,6 @@ class SdfReader {
       return H::combine(std::move(h), k.scope, k.name);
     }
   };
-  struct Definition {
-    Loc loc;
-    ir::FrameNodeKind kind;
-  };
-  absl::flat_hash_map<ScopedKey, Definition> defined_;
   // the link being read's geometry names per role, for uniqueness checks in
   // sdf_geometry.cc (cleared for each link: sdf_link.cc)
   absl::flat_hash_map<ScopedKey, Loc> geometry_names_;

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "passes/pass.h"
+#include "passes/pass_registry.h"
 #include "tests/unit/sdf_test_util.h"
 #include "tests/unit/test_values.h"
 
@@ -206,6 +208,112 @@ TEST(ResolveFrames, MergedModelFrameNamesTheMergedModel) {  // SDF-032
   const ir::Frame& merged = FrameNamed(m, "top", "_merged__part__model__");
   EXPECT_EQ(m.Text(m[merged.body.id].name), "p");
   EXPECT_NEAR(merged.X_BF.p.z(), -0.5, kTol);
+}
+
+// The SDFormat reader keeps the graph's name index as it adds nodes, and the
+// pass looks references up in it (issue 16: one table, where the reader and
+// the pass each built their own). The index is every named node by
+// namespace and name, the first of a name keeping it; a graph built without
+// it makes the pass index the nodes itself, with the same results.
+TEST(ResolveFrames, TheReadersNameIndexServesThePass) {  // SDF-003, SDF-030, SDF-032
+  SdfCompileResult r(R"(
+  <model name='top'>
+    <link name='base'/>
+    <model name='inner'>
+      <pose relative_to='base'>0 0 1 0 0 0.5</pose>
+      <link name='L'><pose>1 0 0 0 0 0</pose>
+        <collision name='c'><pose>0 1 0 0 0 0</pose>
+          <geometry><sphere><radius>1</radius></sphere></geometry></collision></link>
+      <frame name='F' attached_to='L'><pose relative_to='__model__'>0 0 2 0 0 0</pose></frame>
+    </model>
+    <include merge='true'><uri>part.sdf</uri><pose relative_to='inner::F'>0 0 1 0 0 0</pose></include>
+    <joint name='j' type='revolute'><pose relative_to='inner::F'/>
+      <parent>base</parent><child>inner::L</child><axis><xyz>0 1 0</xyz></axis></joint>
+    <frame name='above'><pose relative_to='_merged__part__model__'>0 0 1 0 0 0</pose></frame>
+  </model>)",
+                     {{"part.sdf", R"(<?xml version='1.0'?><sdf version='1.9'>
+  <model name='part'><link name='p'><pose>0 0 0.5 0 0 0</pose></link></model></sdf>)"}});
+  ASSERT_TRUE(r.ok()) << r.Messages();
+  const ir::Module& m = r.compilation().module;
+  const ir::FrameGraph& g = m.frame_graph;
+  ASSERT_TRUE(g.names_complete);
+  absl::flat_hash_map<uint64_t, FrameNodeId> expected;
+  for (size_t i = 0; i < g.nodes.size(); ++i) {
+    const ir::FrameNode& node = g.nodes[i];
+    if (node.kind == ir::FrameNodeKind::Anchor || node.kind == ir::FrameNodeKind::World) continue;
+    expected.emplace(ir::FrameGraph::NameKey(g.Namespace(node.scope), node.name), FrameNodeId(i));
+  }
+  EXPECT_EQ(g.names, expected);
+  EXPECT_GT(expected.size(), 8u);  // top, base, inner, L, F, j, p, the merged frame, above
+
+  // the pass again on the compiled module, with the reader's index and
+  // without it
+  auto resolve_again = [&](bool with_index) {
+    ir::Module copy = m;
+    if (!with_index) {
+      copy.frame_graph.names.clear();
+      copy.frame_graph.names_complete = false;
+    }
+    DiagnosticEngine diags;
+    passes::PassContext ctx{copy, diags, r.compilation().sources};
+    EXPECT_TRUE(passes::CreateResolveFramesPass()->Run(ctx));
+    return copy;
+  };
+  const ir::Module indexed = resolve_again(true), unindexed = resolve_again(false);
+  auto same = [](const Transform& a, const Transform& b) { return a.R == b.R && a.p == b.p; };
+  ASSERT_EQ(indexed.frames.size(), unindexed.frames.size());
+  for (size_t i = 0; i < indexed.frames.size(); ++i) {
+    EXPECT_EQ(indexed.frames[i].body.id, unindexed.frames[i].body.id);
+    EXPECT_TRUE(same(indexed.frames[i].X_BF, unindexed.frames[i].X_BF)) << i;
+  }
+  for (size_t i = 0; i < indexed.geometries.size(); ++i) {
+    EXPECT_TRUE(same(indexed.geometries[i].X_BG, unindexed.geometries[i].X_BG)) << i;
+  }
+  for (size_t i = 1; i < indexed.bodies.size(); ++i) {
+    ASSERT_TRUE(indexed.bodies[i].default_pose && unindexed.bodies[i].default_pose);
+    EXPECT_TRUE(same(*indexed.bodies[i].default_pose, *unindexed.bodies[i].default_pose)) << i;
+  }
+  const ir::Joint& j = JointNamed(indexed, "j");
+  const ir::Joint& j_unindexed = JointNamed(unindexed, "j");
+  EXPECT_TRUE(same(j.X_PF, j_unindexed.X_PF));
+  EXPECT_TRUE(same(j.X_CM, j_unindexed.X_CM));
+  EXPECT_EQ(j.axis, j_unindexed.axis);
+  // and both as the compile left them
+  EXPECT_TRUE(same(j.X_PF, JointNamed(m, "j").X_PF));
+  EXPECT_NEAR(BodyNamed(indexed, "top", "p").default_pose->p.z(),
+              BodyNamed(m, "top", "p").default_pose->p.z(), 0);
+}
+
+// Before SDFormat 1.8 a joint could share its child link's name: the reader
+// renames the joint NAME_joint, as libsdformat does, and indexes it so; the
+// link keeps the name, and the joint's child is the link.
+TEST(ResolveFrames, OldFilesRenameAJointNamedAsItsLink) {  // SDF-001, SDF-011
+  SdfCompileResult r("<model name='top'><include><uri>old.sdf</uri></include></model>",
+                     {{"old.sdf", R"(<?xml version='1.0'?><sdf version='1.7'>
+  <model name='old'>
+    <link name='base'/>
+    <link name='arm'><pose>0 0 1 0 0 0</pose></link>
+    <joint name='arm' type='revolute'><parent>base</parent><child>arm</child>
+      <axis><xyz>0 0 1</xyz></axis></joint>
+  </model></sdf>)"}});
+  ASSERT_TRUE(r.ok()) << r.Messages();
+  r.ExpectDiagnostic(DiagKind::RenamedDuplicate, "this joint is renamed 'arm_joint'");
+  const ir::Module& m = r.compilation().module;
+  const ir::FrameGraph& g = m.frame_graph;
+  auto indexed = [&](std::string_view name) -> const ir::FrameNode* {
+    const Symbol symbol = m.symbols.Find(name);
+    for (const auto& [key, id] : g.names) {
+      if (static_cast<uint32_t>(key) == symbol.value && g[id].name == symbol) return &g[id];
+    }
+    return nullptr;
+  };
+  ASSERT_NE(indexed("arm"), nullptr);
+  EXPECT_EQ(indexed("arm")->kind, ir::FrameNodeKind::Link);
+  ASSERT_NE(indexed("arm_joint"), nullptr);
+  EXPECT_EQ(indexed("arm_joint")->kind, ir::FrameNodeKind::Joint);
+  const ir::Joint& joint = JointNamed(m, "arm_joint");
+  EXPECT_EQ(m.Text(m[joint.child.id].name), "arm");
+  EXPECT_NEAR(BodyNamed(m, "top::old", "arm").default_pose->p.z(), 1, kTol);
 }
 
 TEST(ResolveFrames, CyclesAndDanglingNamesAreLocatedErrors) {  // SDF-004
