@@ -32,6 +32,10 @@ const ir::Frame& FrameNamed(const ir::Module& m, std::string_view model, std::st
   ADD_FAILURE() << "no frame " << model << "::" << name;
   return m.frames[0];
 }
+// A model file to include: one link, p, half a meter up.
+const std::pair<std::string, std::string> kPartFile{"part.sdf", R"(<?xml version='1.0'?>
+<sdf version='1.9'><model name='part'><link name='p'><pose>0 0 0.5 0 0 0</pose></link></model></sdf>)"};
+
 const ir::Joint& JointNamed(const ir::Module& m, std::string_view name) {
   for (const ir::Joint& j : m.joints) {
     if (m.Text(j.name) == name) return j;
@@ -199,8 +203,7 @@ TEST(ResolveFrames, MergedModelFrameNamesTheMergedModel) {  // SDF-032
     </include>
     <frame name='above'><pose relative_to='_merged__part__model__'>0 0 1 0 0 0</pose></frame>
   </model>)",
-                     {{"part.sdf", R"(<?xml version='1.0'?><sdf version='1.9'>
-  <model name='part'><link name='p'><pose>0 0 0.5 0 0 0</pose></link></model></sdf>)"}});
+                     {kPartFile});
   ASSERT_TRUE(r.ok()) << r.Messages();
   const ir::Module& m = r.compilation().module;
   // merged links join the including instance
@@ -231,8 +234,7 @@ TEST(ResolveFrames, TheReadersNameIndexServesThePass) {  // SDF-003, SDF-030, SD
       <parent>base</parent><child>inner::L</child><axis><xyz>0 1 0</xyz></axis></joint>
     <frame name='above'><pose relative_to='_merged__part__model__'>0 0 1 0 0 0</pose></frame>
   </model>)",
-                     {{"part.sdf", R"(<?xml version='1.0'?><sdf version='1.9'>
-  <model name='part'><link name='p'><pose>0 0 0.5 0 0 0</pose></link></model></sdf>)"}});
+                     {kPartFile});
   ASSERT_TRUE(r.ok()) << r.Messages();
   const ir::Module& m = r.compilation().module;
   const ir::FrameGraph& g = m.frame_graph;
