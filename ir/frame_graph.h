@@ -134,9 +134,11 @@ struct FrameGraph {
   /// each kept its own (in a world of 100,000 models, the tables outgrow
   /// the cache and every insert misses). `names_complete` says it holds every
   /// node; a graph built any other way leaves it false, and resolve-frames
-  /// indexes the nodes itself.
+  /// calls IndexNames.
   absl::flat_hash_map<uint64_t, FrameNodeId> names;
   bool names_complete = false;
+  /// Builds `names` from the nodes, in order, and marks it complete.
+  void IndexNames();
 };
 
 }  // namespace mdlc::ir

@@ -71,10 +71,6 @@ class ResolveFramesPass : public Pass {
   ir::Module& m() const { return ctx_->module; }
 
   PassContext* ctx_ = nullptr;
-  // (namespace, symbol) -> the node: the graph's own index when the
-  // frontend kept it (FrameGraph::names_complete), else own_names_
-  const absl::flat_hash_map<uint64_t, FrameNodeId>* names_ = nullptr;
-  absl::flat_hash_map<uint64_t, FrameNodeId> own_names_;
   std::vector<uint32_t> depth_;                      // per scope
   std::vector<std::optional<FrameNodeId>> relative_to_, attached_to_, placement_;
   std::vector<std::optional<FrameNodeId>> joint_parents_;  // per JointFrameSpec
@@ -102,7 +98,7 @@ std::optional<FrameNodeId> ResolveFramesPass::Lookup(FrameScopeId scope, const i
   if (text == "world") return g().scopes[0].frame;
   if (text == "__model__") return g()[scope].frame;
   // SDFormat 1.7 names could hold "::" themselves (flattened models)
-  if (auto it = names_->find(Key(Namespace(scope), ref.name)); it != names_->end()) {
+  if (auto it = g().names.find(Key(Namespace(scope), ref.name)); it != g().names.end()) {
     return it->second;
   }
   auto split = SplitScopedName(text);
@@ -127,12 +123,12 @@ std::optional<FrameNodeId> ResolveFramesPass::Lookup(FrameScopeId scope, const i
     size_t sep = rest.find("::");
     std::string_view component = rest.substr(0, sep);
     Symbol sym = m().symbols.Find(component);
-    auto it = sym.empty() ? names_->end() : names_->find(Key(Namespace(s), sym));
+    auto it = sym.empty() ? g().names.end() : g().names.find(Key(Namespace(s), sym));
     if (sep == std::string_view::npos) {
-      if (it == names_->end()) return not_found(text, s);
+      if (it == g().names.end()) return not_found(text, s);
       return it->second;
     }
-    if (it == names_->end() || g()[it->second].kind != FrameNodeKind::Model ||
+    if (it == g().names.end() || g()[it->second].kind != FrameNodeKind::Model ||
         !g()[it->second].nested.valid()) {
       return not_found(component, s);
     }
@@ -398,19 +394,8 @@ bool ResolveFramesPass::Run(PassContext& ctx) {
     depth_[i] = s.parent.valid() ? depth_[s.parent.index()] + 1 : 0;
   }
   // names: first definition wins (duplicates were reported by the
-  // frontend, which indexed them as it went, when it did)
-  if (g().names_complete) {
-    names_ = &g().names;
-  } else {
-    own_names_.clear();
-    own_names_.reserve(n_nodes);
-    for (size_t i = 0; i < n_nodes; ++i) {
-      const FrameNode& node = g().nodes[i];
-      if (node.kind == FrameNodeKind::Anchor || node.kind == FrameNodeKind::World) continue;
-      own_names_.emplace(Key(Namespace(node.scope), node.name), FrameNodeId(i));
-    }
-    names_ = &own_names_;
-  }
+  // frontend, which indexes the names as it adds the nodes)
+  if (!g().names_complete) g().IndexNames();
 
   // every reference, looked up once
   relative_to_.assign(n_nodes, std::nullopt);
