@@ -17,6 +17,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <absl/container/flat_hash_map.h>
@@ -137,6 +138,13 @@ struct FrameGraph {
   /// calls IndexNames.
   absl::flat_hash_map<uint64_t, FrameNodeId> names;
   bool names_complete = false;
+  /// The node named `name` in the namespace of `scope`, if any.
+  std::optional<FrameNodeId> FindName(FrameScopeId scope, Symbol name) const {
+    if (name.empty()) return std::nullopt;
+    auto it = names.find(NameKey(Namespace(scope), name));
+    if (it == names.end()) return std::nullopt;
+    return it->second;
+  }
   /// Builds `names` from the nodes, in order, and marks it complete.
   void IndexNames();
 };

@@ -48,7 +48,6 @@ class ResolveFramesPass : public Pass {
 
  private:
   // --- names ---
-  FrameScopeId Namespace(FrameScopeId s) const { return g().Namespace(s); }
   std::optional<FrameNodeId> Lookup(FrameScopeId scope, const ir::NameRef& ref,
                                     std::string_view what);
   // --- graph evaluation ---
@@ -81,8 +80,6 @@ class ResolveFramesPass : public Pass {
   bool failed_ = false;
 };
 
-uint64_t Key(FrameScopeId s, Symbol name) { return ir::FrameGraph::NameKey(s, name); }
-
 std::string ResolveFramesPass::NodeName(FrameNodeId n) const {
   const FrameNode& node = g()[n];
   if (node.kind == FrameNodeKind::Anchor) return "(unnamed pose)";
@@ -98,9 +95,7 @@ std::optional<FrameNodeId> ResolveFramesPass::Lookup(FrameScopeId scope, const i
   if (text == "world") return g().scopes[0].frame;
   if (text == "__model__") return g()[scope].frame;
   // SDFormat 1.7 names could hold "::" themselves (flattened models)
-  if (auto it = g().names.find(Key(Namespace(scope), ref.name)); it != g().names.end()) {
-    return it->second;
-  }
+  if (auto found = g().FindName(scope, ref.name)) return found;
   auto split = SplitScopedName(text);
   if (!split) {
     ctx_->diags.Report(DiagKind::InvalidName, ref.loc,
@@ -122,17 +117,15 @@ std::optional<FrameNodeId> ResolveFramesPass::Lookup(FrameScopeId scope, const i
   while (true) {
     size_t sep = rest.find("::");
     std::string_view component = rest.substr(0, sep);
-    Symbol sym = m().symbols.Find(component);
-    auto it = sym.empty() ? g().names.end() : g().names.find(Key(Namespace(s), sym));
+    std::optional<FrameNodeId> found = g().FindName(s, m().symbols.Find(component));
     if (sep == std::string_view::npos) {
-      if (it == g().names.end()) return not_found(text, s);
-      return it->second;
+      if (!found) return not_found(text, s);
+      return found;
     }
-    if (it == g().names.end() || g()[it->second].kind != FrameNodeKind::Model ||
-        !g()[it->second].nested.valid()) {
+    if (!found || g()[*found].kind != FrameNodeKind::Model || !g()[*found].nested.valid()) {
       return not_found(component, s);
     }
-    s = g()[it->second].nested;
+    s = g()[*found].nested;
     rest = rest.substr(sep + 2);
   }
 }
