@@ -15,15 +15,36 @@
 
 namespace mdlc::xml {
 
-/// Name equality for lookups by name, which mostly meet names that differ:
-/// the length and the first and last bytes are compared inline, and memcmp
-/// is called only when all three match (a lookup among <ixx>, <iyy>, ...
-/// had called it for every sibling of the same length).
+/// Whether x and y hold the same Word at `offset` (unaligned loads).
+template <typename Word>
+inline bool SameWordAt(const char* x, const char* y, size_t offset) {
+  Word u, v;
+  std::memcpy(&u, x + offset, sizeof(Word));
+  std::memcpy(&v, y + offset, sizeof(Word));
+  return u == v;
+}
+
+/// Name equality for lookups by name. Names are short (`link`, `inertial`,
+/// `drake:proximity_properties`), and a lookup mostly meets names that
+/// differ, so the length is compared first and then the bytes as at most
+/// two overlapping machine words, inline: a call to memcmp for every name
+/// of the same length cost more than the comparison itself.
+/// Names longer than 16 bytes are rare and go to memcmp.
 inline bool SameName(std::string_view a, std::string_view b) {
   const size_t n = a.size();
   if (n != b.size()) return false;
+  const char* x = a.data();
+  const char* y = b.data();
+  // Two loads of a word of w bytes, [0, w) and [n - w, n), cover every byte
+  // once or twice when w <= n <= 2w.
+  if (n >= 8) {
+    if (n > 16) return std::memcmp(x, y, n) == 0;
+    return SameWordAt<uint64_t>(x, y, 0) && SameWordAt<uint64_t>(x, y, n - 8);
+  }
+  if (n >= 4) return SameWordAt<uint32_t>(x, y, 0) && SameWordAt<uint32_t>(x, y, n - 4);
   if (n == 0) return true;
-  return a[0] == b[0] && a[n - 1] == b[n - 1] && std::memcmp(a.data(), b.data(), n) == 0;
+  // 1 to 3 bytes: the first, the middle and the last (some are the same byte)
+  return x[0] == y[0] && x[n / 2] == y[n / 2] && x[n - 1] == y[n - 1];
 }
 
 }  // namespace mdlc::xml

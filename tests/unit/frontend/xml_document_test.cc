@@ -18,6 +18,29 @@ class XmlDocumentTest : public ::testing::Test {
   FileId file_;
 };
 
+// SameName compares by machine words; every length and every position of a
+// differing byte must give the answer string equality gives.
+TEST(XmlSameName, AgreesWithStringEqualityAtEveryLengthAndPosition) {
+  for (size_t n = 0; n <= 40; ++n) {
+    std::string a(n, 'a');
+    for (size_t i = 0; i < n; ++i) a[i] = static_cast<char>('a' + i % 26);
+    // equal contents at different addresses, and a differing length
+    const std::string same = a;
+    EXPECT_TRUE(SameName(a, same)) << n;
+    EXPECT_FALSE(SameName(a, a + "x")) << n;
+    for (size_t i = 0; i < n; ++i) {
+      std::string b = a;
+      b[i] = '#';
+      EXPECT_FALSE(SameName(a, b)) << "length " << n << ", byte " << i;
+      EXPECT_FALSE(SameName(b, a)) << "length " << n << ", byte " << i;
+    }
+  }
+  // names inside a larger buffer: the loads stay within each view
+  const std::string buffer = "xlinkylinkz";
+  EXPECT_TRUE(SameName(std::string_view(buffer).substr(1, 4), std::string_view(buffer).substr(6, 4)));
+  EXPECT_FALSE(SameName(std::string_view(buffer).substr(0, 5), std::string_view(buffer).substr(5, 5)));
+}
+
 TEST_F(XmlDocumentTest, ElementsAndAttributesHaveExactColumns) {
   auto doc = Parse("<robot name='r'>\n  <link\n      name=\"a\"/>  <link name='b'/>\n</robot>\n");
   ASSERT_TRUE(doc);
