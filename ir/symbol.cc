@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <functional>
 
 #include <absl/hash/hash.h>
 #include <absl/strings/string_view.h>
