@@ -74,36 +74,38 @@ FrameNodeId SdfReader::AddNode(const ModelScope& s, ir::FrameNode node) {
   const FrameScopeId ns = g.Namespace(s.scope);
   const FrameNodeId id(g.nodes.size());
   const auto [it, inserted] = g.names.emplace(ir::FrameGraph::NameKey(ns, node.name), id);
-  const ir::FrameNodeKind first_kind = inserted ? node.kind : g[it->second].kind;
-  const Loc first_loc = inserted ? node.loc : g[it->second].loc;
-  if (!inserted && first_kind != node.kind && s.file && s.file->version < 108) {
-    // before SDFormat 1.8 a joint (say) could share its child link's name;
-    // libsdformat renames the newcomer NAME_joint (NAME_frame, ...), and so do we
-    static constexpr const char* kSuffix[] = {"world", "model", "link", "joint", "frame", ""};
-    std::string renamed = fmt::format("{}_{}", module().Text(node.name),
-                                      kSuffix[static_cast<int>(node.kind)]);
-    diags()
-        .Report(DiagKind::RenamedDuplicate, node.loc,
-                fmt::format("the name '{}' is already used in this model; as libsdformat does "
-                            "for files older than SDFormat 1.8, this {} is renamed '{}'",
-                            module().Text(node.name), kSuffix[static_cast<int>(node.kind)],
-                            renamed))
-        .Note(first_loc, "first defined here");
-    node.name = module().Intern(renamed);
-    switch (node.target) {
-      case ir::FrameTarget::Joint: module().joints[node.target_index].name = node.name; break;
-      case ir::FrameTarget::Frame: module().frames[node.target_index].name = node.name; break;
-      case ir::FrameTarget::Body: module().bodies[node.target_index].name = node.name; break;
-      default: break;
+  if (!inserted) {
+    // the node that has the name; nodes do not move until this one is added
+    const ir::FrameNode& first = g[it->second];
+    if (first.kind != node.kind && s.file && s.file->version < 108) {
+      // before SDFormat 1.8 a joint (say) could share its child link's name;
+      // libsdformat renames the newcomer NAME_joint (NAME_frame, ...), and so do we
+      static constexpr const char* kSuffix[] = {"world", "model", "link", "joint", "frame", ""};
+      std::string renamed = fmt::format("{}_{}", module().Text(node.name),
+                                        kSuffix[static_cast<int>(node.kind)]);
+      diags()
+          .Report(DiagKind::RenamedDuplicate, node.loc,
+                  fmt::format("the name '{}' is already used in this model; as libsdformat does "
+                              "for files older than SDFormat 1.8, this {} is renamed '{}'",
+                              module().Text(node.name), kSuffix[static_cast<int>(node.kind)],
+                              renamed))
+          .Note(first.loc, "first defined here");
+      node.name = module().Intern(renamed);
+      switch (node.target) {
+        case ir::FrameTarget::Joint: module().joints[node.target_index].name = node.name; break;
+        case ir::FrameTarget::Frame: module().frames[node.target_index].name = node.name; break;
+        case ir::FrameTarget::Body: module().bodies[node.target_index].name = node.name; break;
+        default: break;
+      }
+      g.names.emplace(ir::FrameGraph::NameKey(ns, node.name), id);
+    } else {
+      diags()
+          .Report(DiagKind::DuplicateName, node.loc,
+                  fmt::format("the name '{}' is already used by a link, joint, frame or model "
+                              "of this model",
+                              module().Text(node.name)))
+          .Note(first.loc, "first defined here");
     }
-    g.names.emplace(ir::FrameGraph::NameKey(ns, node.name), id);
-  } else if (!inserted) {
-    diags()
-        .Report(DiagKind::DuplicateName, node.loc,
-                fmt::format("the name '{}' is already used by a link, joint, frame or model "
-                            "of this model",
-                            module().Text(node.name)))
-        .Note(first_loc, "first defined here");
   }
   node.scope = s.scope;
   return g.Add(std::move(node));
