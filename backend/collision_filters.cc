@@ -43,13 +43,18 @@ class PairCollector {
 
   /// Orders each pair and the list by scoped body name; drops duplicates.
   std::vector<std::pair<BodyId, BodyId>> Finish(const Plant& plant) {
-    // rank of each body that can be in a pair (one with proximity geometry)
-    // by scoped name, so the sort compares integers; names are built for
-    // those bodies only, as the plant keeps them unscoped (issue 16)
+    // a scene of free bodies filters nothing: no names to build and sort
+    if (pairs_.empty()) return {};
+    // rank of each body in a pair by scoped name, so the sort compares
+    // integers; names are built for those bodies only, as the plant keeps
+    // them unscoped (issue 16). Ranks among these bodies order the pairs as
+    // ranks among all bodies would.
+    std::vector<bool> in_pair(plant.bodies.size(), false);
+    for (const BodyPair& p : pairs_) in_pair[p.first] = in_pair[p.second] = true;
     std::vector<uint32_t> by_name;
     std::vector<std::string> names(plant.bodies.size());
     for (uint32_t b = 0; b < plant.bodies.size(); ++b) {
-      if (!has_proximity_[b]) continue;
+      if (!in_pair[b]) continue;
       by_name.push_back(b);
       names[b] = plant.ScopedName(plant.bodies[b]);
     }
@@ -86,6 +91,11 @@ void AddAdjacentPairs(const Plant& plant, PairCollector& pairs) {
 }
 
 void AddWeldedPairs(const Plant& plant, PairCollector& pairs) {
+  // without welds every body is a composite of its own, which makes no pair
+  const bool any_weld = std::any_of(plant.joints.begin(), plant.joints.end(), [](const auto& j) {
+    return j.type == ir::JointType::Weld;
+  });
+  if (!any_weld) return;
   DisjointSets sets(plant.bodies.size());
   for (const PlantJoint& joint : plant.joints) {
     if (joint.type == ir::JointType::Weld) sets.Union(joint.parent.value, joint.child.value);

@@ -51,6 +51,22 @@ TEST(BackendCollisionFilters, Common054AdjacentBodies) {
                                         {"robot::lower", "robot::upper"}}));
 }
 
+// COMMON-054: free bodies (a scene of many small models) filter nothing,
+// whatever geometry they carry; the pairs come only from joints and welds.
+TEST(BackendCollisionFilters, Common054FreeBodiesFilterNothing) {
+  ModelBuilder b;
+  b.AddGeometry("ground", ir::kWorldBody, ir::HalfSpace{}, ir::kProximityRole);
+  for (const char* name : {"c", "a", "b"}) {
+    const BodyId body = b.AddMasslessBody(name);
+    b.AddJoint(name, JointType::QuaternionFloating, ir::kWorldBody, body);
+    AddCollision(b, body);
+  }
+  auto model = test_util::InstantiateOk(b.module());
+  ASSERT_TRUE(model);
+  EXPECT_EQ(model->plant.bodies.size(), 4u);
+  EXPECT_TRUE(FilterNames(*model).empty());
+}
+
 // COMMON-054: bodies welded together into one composite filter each other,
 // the world's composite included.
 TEST(BackendCollisionFilters, Common054WeldedComposites) {
