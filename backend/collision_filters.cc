@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 
 #include "backend/ref_check.h"
 
@@ -91,20 +92,20 @@ void AddAdjacentPairs(const Plant& plant, PairCollector& pairs) {
 }
 
 void AddWeldedPairs(const Plant& plant, PairCollector& pairs) {
-  // without welds every body is a composite of its own, which makes no pair
-  const bool any_weld = std::any_of(plant.joints.begin(), plant.joints.end(), [](const auto& j) {
-    return j.type == ir::JointType::Weld;
-  });
-  if (!any_weld) return;
-  DisjointSets sets(plant.bodies.size());
+  // the sets are made at the first weld: without welds every body is a
+  // composite of its own, which makes no pair
+  std::optional<DisjointSets> sets;
   for (const PlantJoint& joint : plant.joints) {
-    if (joint.type == ir::JointType::Weld) sets.Union(joint.parent.value, joint.child.value);
+    if (joint.type != ir::JointType::Weld) continue;
+    if (!sets) sets.emplace(plant.bodies.size());
+    sets->Union(joint.parent.value, joint.child.value);
   }
+  if (!sets) return;
   // proximity bodies by composite (one list, not a list per body, as most
   // bodies are composites of their own), then every pair within each
   std::vector<BodyPair> by_composite;  // (composite, body)
   for (uint32_t b = 0; b < plant.bodies.size(); ++b) {
-    if (pairs.HasProximity(b)) by_composite.emplace_back(sets.Find(b), b);
+    if (pairs.HasProximity(b)) by_composite.emplace_back(sets->Find(b), b);
   }
   std::sort(by_composite.begin(), by_composite.end());
   for (size_t begin = 0, end = 0; begin < by_composite.size(); begin = end) {
