@@ -63,7 +63,7 @@ std::optional<std::string> FindBadFace(const aiScene& scene) {
 
 }  // namespace
 
-MeshOrError LoadMeshInProcess(const std::string& path, const Limits& limits) {
+MeshOrError ImportMesh(const std::string& path, const Limits& limits) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
     return {nullptr, fmt::format("cannot read mesh file '{}'", path)};

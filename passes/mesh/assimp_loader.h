@@ -10,9 +10,12 @@
 //
 // assimp has memory errors and hangs on malformed files that mdlc cannot
 // mend, so this runs in the process of the mesh reader program
-// (reader/mdlc_mesh_reader.cc), where a crash is contained (issue 16);
-// mdlc calls it in its own process only when asked to or when the program
-// is missing (mesh_loader.h).
+// (reader/mdlc_mesh_reader.cc), where a crash is contained (issue 16).
+// When mdlc reads meshes in its own process (asked to, or without the
+// program: mesh_loader.h) it runs in the import module
+// (reader/mdlc_mesh_import.cc), which mdlc opens on first use: neither mdlc
+// nor the libraries link assimp, whose loading and symbol binding were most
+// of the start-up time of every mdlc process.
 #pragma once
 
 #include <string>
@@ -22,9 +25,9 @@
 
 namespace mdlc::mesh {
 
-/// The mesh in `path`, read in this process; an error when the file cannot
+/// The mesh in `path`, read by assimp in this process; an error when the file cannot
 /// be read or parsed, holds no triangles, or is over the file-size or
 /// mesh-vertices limit.
-MeshOrError LoadMeshInProcess(const std::string& path, const Limits& limits = {});
+MeshOrError ImportMesh(const std::string& path, const Limits& limits = {});
 
 }  // namespace mdlc::mesh

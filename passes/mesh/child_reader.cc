@@ -141,11 +141,7 @@ MeshOrError LoadMeshInChild(const std::string& reader, const std::string& path,
                             const Limits& limits) {
   // mdlc-mesh-reader NAME=VALUE... -- PATH (reader/mdlc_mesh_reader.cc)
   std::vector<std::string> args{reader};
-  for (const LimitInfo& l : AllLimits()) {
-    args.push_back(fmt::format("{}={}", l.name, limits.*l.field));
-  }
-  args.push_back("--");
-  args.push_back(path);
+  for (std::string& a : EncodeMeshRequest(path, limits)) args.push_back(std::move(a));
 
   auto failed = [&](std::string what) { return MeshOrError{nullptr, std::move(what)}; };
   // close-on-exec: children other threads start at the same time must not

@@ -4,7 +4,7 @@
 #include <set>
 #include <thread>
 
-#include "passes/mesh/assimp_loader.h"
+#include "passes/mesh/in_process_reader.h"
 #include "passes/mesh/child_reader.h"
 #include "passes/mesh/reader_location.h"
 
@@ -13,7 +13,7 @@ namespace mdlc::mesh {
 MeshCache::MeshCache(const Limits& limits, MeshReading reading) {
   if (reading == MeshReading::kChildProcess) {
     MeshReaderLocation found = FindMeshReader();
-    reader_ = std::move(found.program);
+    reader_ = std::move(found.path);
     reader_missing_ = std::move(found.why_none);
   }
   if (reader_.empty()) {

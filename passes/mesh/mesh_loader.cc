@@ -1,6 +1,6 @@
 #include "passes/mesh/mesh_loader.h"
 
-#include "passes/mesh/assimp_loader.h"
+#include "passes/mesh/in_process_reader.h"
 #include "passes/mesh/child_reader.h"
 #include "passes/mesh/reader_location.h"
 
@@ -8,8 +8,8 @@ namespace mdlc::mesh {
 
 MeshOrError LoadMesh(const std::string& path, const Limits& limits) {
   const MeshReaderLocation reader = FindMeshReader();
-  return reader.program.empty() ? LoadMeshInProcess(path, limits)
-                                : LoadMeshInChild(reader.program, path, limits);
+  return reader.path.empty() ? LoadMeshInProcess(path, limits)
+                                : LoadMeshInChild(reader.path, path, limits);
 }
 
 }  // namespace mdlc::mesh

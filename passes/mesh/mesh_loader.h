@@ -3,10 +3,11 @@
 // assimp becomes an error about that file instead of taking down the
 // compiler or the program embedding it (issue 16).
 //
-// The child runs LoadMeshInProcess (assimp_loader.h) and sends the result
+// The child runs ImportMesh (assimp_loader.h) and sends the result
 // back (mesh_wire.h); child_reader.h spawns and watches it;
 // reader_location.h finds the program. Without the program the file is read
-// in this process, which gives the same mesh, without the protection.
+// in this process (in_process_reader.h), which gives the same mesh, without
+// the protection.
 #pragma once
 
 #include <string>
@@ -19,7 +20,7 @@ namespace mdlc::mesh {
 /// Where mesh files are read (`mdlc --mesh-reader=process|in-process`).
 enum class MeshReading { kChildProcess, kInProcess };
 
-/// The mesh in `path` (see LoadMeshInProcess for what is an error), read by
+/// The mesh in `path` (see ImportMesh for what is an error), read by
 /// the mesh reader program when one is found, else in this process.
 MeshOrError LoadMesh(const std::string& path, const Limits& limits = {});
 

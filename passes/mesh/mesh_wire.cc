@@ -49,6 +49,27 @@ std::optional<MeshOrError> Fail(std::string* problem, std::string message) {
 
 }  // namespace
 
+std::vector<std::string> EncodeMeshRequest(const std::string& path, const Limits& limits) {
+  std::vector<std::string> args;
+  for (const LimitInfo& l : AllLimits()) {
+    args.push_back(fmt::format("{}={}", l.name, limits.*l.field));
+  }
+  args.push_back("--");
+  args.push_back(path);
+  return args;
+}
+
+std::optional<std::string> DecodeMeshRequest(const std::vector<std::string_view>& args,
+                                             std::string* path, Limits* limits) {
+  size_t i = 0;
+  for (; i < args.size() && args[i] != "--"; ++i) {
+    if (auto problem = SetLimit(*limits, args[i])) return problem;
+  }
+  if (i + 2 != args.size()) return "expected one mesh file after '--'";
+  *path = std::string(args[i + 1]);
+  return std::nullopt;
+}
+
 std::string EncodeMeshReply(const MeshOrError& result) {
   std::string out(kMagic);
   Put(out, kMeshWireVersion);

@@ -1,5 +1,9 @@
-// mesh_wire.h - the reply the mesh reader program (reader/) sends its parent
-// on standard output: one loaded mesh, or why there is none (issue 16).
+// mesh_wire.h - what mdlc asks the mesh reader (reader/) and what the reader
+// answers: one loaded mesh, or why there is none (issue 16). The program
+// takes the request on its command line and answers on standard output; the
+// import module takes the same request and answers through a callback.
+//
+// Request: NAME=VALUE for every limit (ir/limits.h), "--", the file's path.
 //
 // The child runs assimp on an untrusted file and may have been corrupted by
 // it, so the parent decodes the reply as untrusted bytes too: every count is
@@ -8,7 +12,7 @@
 // machine, so numbers are in the machine's own byte order; the version
 // guards against a reader from another build.
 //
-// Layout: "MDLCMESH", u32 version, u8 kind, then
+// Reply: "MDLCMESH", u32 version, u8 kind, then
 //   kind 0 (mesh):  u64 vertex count V, u64 triangle count T,
 //                   3V float64 coordinates, 3T int32 vertex indices
 //   kind 1 (error): u8 over_limit, u64 length, the message's bytes
@@ -18,12 +22,23 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "ir/limits.h"
 
 #include "passes/mesh/triangle_mesh.h"
 
 namespace mdlc::mesh {
 
 inline constexpr uint32_t kMeshWireVersion = 1;
+
+/// The request to read `path` within `limits`.
+std::vector<std::string> EncodeMeshRequest(const std::string& path, const Limits& limits);
+
+/// The file and limits `args` (a request) ask for; a message saying what is
+/// wrong when they are not a request.
+std::optional<std::string> DecodeMeshRequest(const std::vector<std::string_view>& args,
+                                             std::string* path, Limits* limits);
 
 /// `result` as the reader sends it.
 std::string EncodeMeshReply(const MeshOrError& result);

@@ -489,4 +489,51 @@ TEST_F(CliTest, MeshReaderFlag) {  // issue 16
   EXPECT_EQ(Mdlc("compile --mesh-reader=thread " + model).status, 2);
 }
 
+// The import module (issue 16): mdlc does not load assimp until a mesh is
+// read in its own process, and then through the module, found next to mdlc
+// or named by MDLC_MESH_MODULE. A module that is missing, is no shared
+// object, or is of another version is an error at each mesh that needed it,
+// not a crash; the reader program does not need the module at all.
+TEST_F(CliTest, MdlcStartsWithoutAssimp) {  // issue 16
+  // the loader lists what the program needs and exits (what ldd does)
+  const Outcome needs = Mdlc("--version", "LD_TRACE_LOADED_OBJECTS=1");
+  ASSERT_EQ(needs.status, 0) << needs.err;
+  EXPECT_NE(needs.out.find("libxml2"), std::string::npos) << needs.out;
+  EXPECT_EQ(needs.out.find("libassimp"), std::string::npos) << needs.out;
+}
+
+TEST_F(CliTest, MeshImportModule) {  // issue 16
+  const std::string model = std::string(MDLC_TEST_MODELS) + "/mjcf/oracle/mesh_geoms.xml";
+  const std::string in_process = "compile --no-cache --emit=none --mesh-reader=in-process ";
+  const Outcome found = Mdlc(in_process + "--time-passes " + model);
+  ASSERT_EQ(found.status, 0) << found.err;
+  EXPECT_NE(found.err.find("mesh reader: in this process (asked for), with /"), std::string::npos)
+      << found.err;
+  EXPECT_NE(found.err.find("/mdlc-mesh-import.so\n"), std::string::npos) << found.err;
+
+  const std::string missing = (dir_ / "missing.so").string();
+  const std::string not_elf = Write("not_elf.so", "not a shared object\n").string();
+  const std::string other_version = MDLC_OLD_IMPORT_MODULE;
+  const std::pair<std::string, std::string> broken[] = {
+      {missing, fmt::format("MDLC_MESH_MODULE names '{}', which is not a readable file", missing)},
+      {not_elf, fmt::format("cannot open the mesh import module: {}: ", not_elf)},
+      {other_version, fmt::format("'{}' is not a mesh import module of this mdlc (it has no "
+                                  "mdlc_mesh_import_v1)",
+                                  other_version)}};
+  for (const auto& [module, why] : broken) {
+    const Outcome r = Mdlc(in_process + model, "MDLC_MESH_MODULE=" + module);
+    EXPECT_EQ(r.status, 1) << module;
+    EXPECT_NE(r.err.find(fmt::format("mesh_geoms.xml:10:11: error: cannot read '{}/mjcf/oracle/"
+                                     "meshes/wedge.obj' in this process: {}",
+                                     MDLC_TEST_MODELS, why)),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("3 errors generated"), std::string::npos) << r.err;
+    // the reader program reads the same meshes without the module
+    const Outcome child =
+        Mdlc("compile --no-cache --emit=none " + model, "MDLC_MESH_MODULE=" + module);
+    EXPECT_EQ(child.status, 0) << child.err;
+  }
+}
+
 }  // namespace

@@ -1,8 +1,8 @@
 # embed_installed.cmake - installs mdlc into a fresh prefix and builds
 # examples/embed_cmake against it, as a user of the installed library would,
 # with CMake (find_package) and with pkg-config; then runs the program.
-#   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -P embed_installed.cmake
-foreach(var BUILD_DIR SOURCE_DIR WORK_DIR)
+#   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DLIBDIR=lib -P embed_installed.cmake
+foreach(var BUILD_DIR SOURCE_DIR WORK_DIR LIBDIR)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "embed_installed.cmake needs -D${var}=...")
   endif()
@@ -20,7 +20,8 @@ file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
 run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
 foreach(installed include/mdlc/mdlc.h include/mdlc/version.h include/mdlc/ir/module.h
-                  include/mdlc/backend/plant.h bin/mdlc libexec/mdlc/mdlc-mesh-reader)
+                  include/mdlc/backend/plant.h bin/mdlc libexec/mdlc/mdlc-mesh-reader
+                  ${LIBDIR}/mdlc/mdlc-mesh-import.so)
   if(NOT EXISTS ${prefix}/${installed})
     message(FATAL_ERROR "not installed: ${installed}")
   endif()
@@ -46,6 +47,17 @@ if(NOT rc EQUAL 0 OR at EQUAL -1)
   message(FATAL_ERROR "the installed mdlc does not use ${installed_reader} (${rc}):\n${timing}")
 endif()
 message(STATUS "installed mdlc reads meshes with ${installed_reader}")
+# and, reading them in its own process, with the installed import module
+file(REAL_PATH ${prefix}/${LIBDIR}/mdlc/mdlc-mesh-import.so installed_module)
+execute_process(COMMAND ${prefix}/bin/mdlc compile --emit=none --time-passes --no-cache
+                        --mesh-reader=in-process
+                        ${SOURCE_DIR}/tests/models/mjcf/oracle/mesh_geoms.xml
+                ERROR_VARIABLE timing RESULT_VARIABLE rc)
+string(FIND "${timing}" ", with ${installed_module}\n" at)
+if(NOT rc EQUAL 0 OR at EQUAL -1)
+  message(FATAL_ERROR "the installed mdlc does not use ${installed_module} (${rc}):\n${timing}")
+endif()
+message(STATUS "installed mdlc reads meshes in its own process with ${installed_module}")
 
 # CMake: find_package(mdlc) from the prefix only
 run("configure examples/embed_cmake" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/embed_cmake

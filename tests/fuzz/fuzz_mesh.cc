@@ -27,11 +27,11 @@ namespace {
 const std::string& Reader() {
   static const std::string reader = [] {
     const mdlc::mesh::MeshReaderLocation found = mdlc::mesh::FindMeshReader();
-    if (found.program.empty()) {
+    if (found.path.empty()) {
       std::fprintf(stderr, "fuzz_mesh: %s\n", found.why_none.c_str());
       std::abort();
     }
-    return found.program;
+    return found.path;
   }();
   return reader;
 }

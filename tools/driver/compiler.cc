@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "passes/mesh/reader_location.h"
 #include "passes/pass_registry.h"
 
 namespace mdlc {
@@ -70,9 +71,12 @@ bool Compilation::RunPasses() {
     if (!meshes->reader().empty()) {
       timing_report_ += fmt::format("  mesh reader: {}\n", meshes->reader());
     } else {
-      timing_report_ += meshes->reader_missing().empty()
-                            ? "  mesh reader: in this process (asked for)\n"
-                            : "  mesh reader: none, meshes read in this process\n";
+      const mesh::MeshReaderLocation module = mesh::FindMeshImportModule();
+      timing_report_ += fmt::format(
+          "  mesh reader: {}, with {}\n",
+          meshes->reader_missing().empty() ? "in this process (asked for)"
+                                           : "none, meshes read in this process",
+          module.path.empty() ? module.why_none : module.path);
     }
   }
   return ok && !diags.has_errors();

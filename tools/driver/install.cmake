@@ -1,5 +1,6 @@
 # `cmake --install`: the libraries, the public headers under include/mdlc/,
-# the mdlc command, the mesh reader program (libexec/mdlc/), and what finds
+# the mdlc command, the mesh reader program (libexec/mdlc/) and module
+# (<libdir>/mdlc/), and what finds
 # them: mdlcConfig.cmake (CMake) and mdlc.pc (pkg-config). Internal headers
 # (frontends, passes) are not installed; the public header reaches only the
 # IR's and the backend's.
@@ -22,6 +23,7 @@ install(TARGETS ${MDLC_LIBRARIES} EXPORT mdlcTargets
 # the mesh reader program, where the installed library looks for it
 # (passes/mesh/reader_location.h)
 install(TARGETS mdlc_mesh_reader RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/mdlc)
+install(TARGETS mdlc_mesh_import_module LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/mdlc)
 install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/include/mdlc ${PROJECT_BINARY_DIR}/include/mdlc
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 # the layers' headers keep their paths ("ir/module.h") under include/mdlc/

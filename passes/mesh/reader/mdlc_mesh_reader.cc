@@ -1,5 +1,6 @@
 // mdlc-mesh-reader - reads one mesh file with assimp and writes the result
-// to standard output as a mesh reply (passes/mesh/mesh_wire.h).
+// to standard output as a mesh reply (passes/mesh/mesh_wire.h). Its
+// in-process twin is the import module (mdlc_mesh_import.cc).
 //
 // mdlc runs it in a child process for each mesh file (child_reader.h), so
 // that assimp's memory errors, hangs and leaks on malformed files stay in
@@ -16,8 +17,9 @@
 
 #include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "ir/limits.h"
 #include "passes/mesh/assimp_loader.h"
@@ -48,14 +50,11 @@ bool WriteAll(int fd, const std::string& bytes) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const std::vector<std::string_view> request(argv + 1, argv + argc);
   mdlc::Limits limits;
-  int i = 1;
-  for (; i < argc && std::strcmp(argv[i], "--") != 0; ++i) {
-    if (auto problem = mdlc::SetLimit(limits, argv[i])) Usage(*problem);
-  }
-  if (i + 2 != argc) Usage("expected one mesh file after '--'");
-  const std::string reply =
-      mdlc::mesh::EncodeMeshReply(mdlc::mesh::LoadMeshInProcess(argv[i + 1], limits));
+  std::string path;
+  if (auto problem = mdlc::mesh::DecodeMeshRequest(request, &path, &limits)) Usage(*problem);
+  const std::string reply = mdlc::mesh::EncodeMeshReply(mdlc::mesh::ImportMesh(path, limits));
   // _exit: no destructors, no exit handlers. Whatever assimp leaked or
   // damaged goes with the process, and a leak checker built into the
   // program does not report assimp's leaks as ours.

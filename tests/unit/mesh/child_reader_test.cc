@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "passes/mesh/assimp_loader.h"
+#include "passes/mesh/in_process_reader.h"
 #include "passes/mesh/mesh_loader.h"
 #include "passes/mesh/reader_location.h"
 #include "tests/unit/mesh/mesh_test_util.h"
@@ -46,8 +46,8 @@ class ChildReaderTest : public ::testing::Test {
 
 std::string RealReader() {
   const mesh::MeshReaderLocation found = mesh::FindMeshReader();
-  EXPECT_FALSE(found.program.empty()) << found.why_none;
-  return found.program;
+  EXPECT_FALSE(found.path.empty()) << found.why_none;
+  return found.path;
 }
 
 /// The two results are the same: the same mesh, or the same error.
@@ -66,6 +66,22 @@ TEST_F(ChildReaderTest, TheBuildsReaderIsFound) {  // issue 16
   const std::string reader = RealReader();
   EXPECT_EQ(fs::path(reader).filename(), "mdlc-mesh-reader");
   EXPECT_EQ(::access(reader.c_str(), X_OK), 0) << reader;
+}
+
+// The module that reads meshes in this process is found next to the reader,
+// and the environment overrides the search (in_process_reader.h).
+TEST_F(ChildReaderTest, TheBuildsImportModuleIsFound) {  // issue 16
+  ::unsetenv(mesh::kMeshModuleVariable);
+  const mesh::MeshReaderLocation built = mesh::FindMeshImportModule();
+  EXPECT_EQ(fs::path(built.path).filename(), "mdlc-mesh-import.so") << built.why_none;
+  EXPECT_EQ(fs::path(built.path).parent_path(), fs::path(RealReader()).parent_path());
+  ::setenv(mesh::kMeshModuleVariable, (dir_ / "nothing.so").c_str(), 1);
+  const mesh::MeshReaderLocation none = mesh::FindMeshImportModule();
+  EXPECT_TRUE(none.path.empty());
+  EXPECT_EQ(none.why_none, fmt::format("MDLC_MESH_MODULE names '{}', which is not a readable file",
+                                       (dir_ / "nothing.so").string()));
+  ::unsetenv(mesh::kMeshModuleVariable);
+  EXPECT_EQ(mesh::FindMeshImportModule().path, built.path);
 }
 
 TEST_F(ChildReaderTest, ChildAndInProcessReadTheTestMeshesAlike) {  // issue 16
@@ -144,12 +160,12 @@ TEST_F(ChildReaderTest, AMissingProgramIsAnError) {  // issue 16
 TEST_F(ChildReaderTest, TheEnvironmentNamesTheReader) {  // issue 16
   const std::string stand_in = StandIn("exit 7");
   ::setenv(mesh::kMeshReaderVariable, stand_in.c_str(), 1);
-  EXPECT_EQ(mesh::FindMeshReader().program, stand_in);
+  EXPECT_EQ(mesh::FindMeshReader().path, stand_in);
   EXPECT_NE(mesh::LoadMesh(MeshPath("box.obj")).error.find("exit status 7"), std::string::npos);
   // a name that is no program: none is found, and the reason says why
   ::setenv(mesh::kMeshReaderVariable, (dir_ / "nothing").c_str(), 1);
   const mesh::MeshReaderLocation none = mesh::FindMeshReader();
-  EXPECT_TRUE(none.program.empty());
+  EXPECT_TRUE(none.path.empty());
   EXPECT_NE(none.why_none.find("not an executable file"), std::string::npos) << none.why_none;
   EXPECT_TRUE(mesh::LoadMesh(MeshPath("box.obj")).ok());  // read in this process
   ::unsetenv(mesh::kMeshReaderVariable);

@@ -1,0 +1,22 @@
+// import_entry.h - the one function the import module (mdlc_mesh_import.cc)
+// exports, as the opener (in_process_reader.cc) and the module both see it.
+#pragma once
+
+#include <cstddef>
+
+/// Receives the answer: a mesh reply (mesh_wire.h) when the function returns
+/// 0, a message saying what was wrong with the request when it returns 2.
+/// The bytes are valid only during the call.
+typedef void (*MdlcMeshImportSink)(void* context, const char* bytes, size_t size);
+
+/// The exported name; a new version of the request or of the reply's
+/// calling convention gets a new name, so that a module of another build is
+/// refused when it is opened rather than misread.
+#define MDLC_MESH_IMPORT_ENTRY mdlc_mesh_import_v1
+#define MDLC_MESH_IMPORT_ENTRY_NAME "mdlc_mesh_import_v1"
+
+/// int MDLC_MESH_IMPORT_ENTRY(int argc, const char* const* argv,
+///                            MdlcMeshImportSink sink, void* context):
+/// answers the request argv[0..argc) (mesh_wire.h) through `sink`.
+typedef int (*MdlcMeshImportFunction)(int argc, const char* const* argv,
+                                      MdlcMeshImportSink sink, void* context);

@@ -1,0 +1,31 @@
+// mdlc-mesh-import.so - the mesh reader as a module that mdlc opens in its
+// own process (passes/mesh/in_process_reader.h): the same request and the
+// same reply as the program mdlc-mesh-reader (mdlc_mesh_reader.cc), passed
+// as strings and bytes through one C function, so that nothing of the
+// module's own copy of mdlc's code or of assimp's types crosses into mdlc.
+//
+// mdlc opens it only when meshes are read in its process. That keeps
+// assimp, and the libraries assimp needs, out of every other mdlc process:
+// loading them and binding their symbols was most of mdlc's start-up time.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ir/limits.h"
+#include "passes/mesh/assimp_loader.h"
+#include "passes/mesh/mesh_wire.h"
+#include "passes/mesh/reader/import_entry.h"
+
+extern "C" __attribute__((visibility("default"))) int MDLC_MESH_IMPORT_ENTRY(
+    int argc, const char* const* argv, MdlcMeshImportSink sink, void* context) {
+  const std::vector<std::string_view> request(argv, argv + argc);
+  mdlc::Limits limits;
+  std::string path;
+  if (auto problem = mdlc::mesh::DecodeMeshRequest(request, &path, &limits)) {
+    sink(context, problem->data(), problem->size());
+    return 2;
+  }
+  const std::string reply = mdlc::mesh::EncodeMeshReply(mdlc::mesh::ImportMesh(path, limits));
+  sink(context, reply.data(), reply.size());
+  return 0;
+}
