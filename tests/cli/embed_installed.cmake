@@ -36,28 +36,25 @@ if(NOT run_output MATCHES "^mdlc [0-9]+\\.[0-9]+\\.[0-9]+")
   message(FATAL_ERROR "unexpected mdlc --version output: ${run_output}")
 endif()
 
-# the installed command reads meshes with the installed reader (issue 16),
-# found next to it, not with the build tree's
+# The installed command reads meshes with the installed reader (issue 16),
+# found next to it, not with the build tree's: the program in a child
+# process, and the import module in its own. `used` is what --time-passes
+# must print when compiling a model with meshes with the extra flags ARGN.
+function(expect_mesh_reader used)
+  execute_process(COMMAND ${prefix}/bin/mdlc compile --emit=none --time-passes --no-cache ${ARGN}
+                          ${SOURCE_DIR}/tests/models/mjcf/oracle/mesh_geoms.xml
+                  ERROR_VARIABLE timing RESULT_VARIABLE rc)
+  string(FIND "${timing}" "${used}" at)
+  if(NOT rc EQUAL 0 OR at EQUAL -1)
+    message(FATAL_ERROR "the installed mdlc did not print '${used}' (${rc}):\n${timing}")
+  endif()
+  message(STATUS "installed mdlc ${ARGN}: ${used}")
+endfunction()
 file(REAL_PATH ${prefix}/libexec/mdlc/mdlc-mesh-reader installed_reader)
-execute_process(COMMAND ${prefix}/bin/mdlc compile --emit=none --time-passes --no-cache
-                        ${SOURCE_DIR}/tests/models/mjcf/oracle/mesh_geoms.xml
-                ERROR_VARIABLE timing RESULT_VARIABLE rc)
-string(FIND "${timing}" "mesh reader: ${installed_reader}\n" at)
-if(NOT rc EQUAL 0 OR at EQUAL -1)
-  message(FATAL_ERROR "the installed mdlc does not use ${installed_reader} (${rc}):\n${timing}")
-endif()
-message(STATUS "installed mdlc reads meshes with ${installed_reader}")
-# and, reading them in its own process, with the installed import module
+expect_mesh_reader("mesh reader: ${installed_reader}\n")
 file(REAL_PATH ${prefix}/${LIBDIR}/mdlc/mdlc-mesh-import.so installed_module)
-execute_process(COMMAND ${prefix}/bin/mdlc compile --emit=none --time-passes --no-cache
-                        --mesh-reader=in-process
-                        ${SOURCE_DIR}/tests/models/mjcf/oracle/mesh_geoms.xml
-                ERROR_VARIABLE timing RESULT_VARIABLE rc)
-string(FIND "${timing}" ", with ${installed_module}\n" at)
-if(NOT rc EQUAL 0 OR at EQUAL -1)
-  message(FATAL_ERROR "the installed mdlc does not use ${installed_module} (${rc}):\n${timing}")
-endif()
-message(STATUS "installed mdlc reads meshes in its own process with ${installed_module}")
+expect_mesh_reader("mesh reader: in this process (asked for), with ${installed_module}\n"
+                   --mesh-reader=in-process)
 
 # CMake: find_package(mdlc) from the prefix only
 run("configure examples/embed_cmake" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/embed_cmake
