@@ -25,9 +25,9 @@
 
 namespace mdlc::mesh {
 
-/// The mesh in `path`, read by assimp in this process; an error when the file cannot
-/// be read or parsed, holds no triangles, or is over the file-size or
-/// mesh-vertices limit.
+/// The mesh in `path`, read by assimp in this process; an error when the
+/// file cannot be read or parsed, holds no triangles, or is over the
+/// file-size or mesh-vertices limit.
 MeshOrError ImportMesh(const std::string& path, const Limits& limits = {});
 
 }  // namespace mdlc::mesh

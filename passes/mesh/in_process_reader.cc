@@ -63,7 +63,7 @@ MeshOrError LoadMeshInProcess(const std::string& path, const Limits& limits) {
       },
       &answer);
   if (rc != 0) {
-    return failed(fmt::format("the mesh import module refused to read '{}': {}", path, answer));
+    return failed(fmt::format("the mesh import module failed reading '{}': {}", path, answer));
   }
   std::string problem;
   std::optional<MeshOrError> result = DecodeMeshReply(answer, &problem);

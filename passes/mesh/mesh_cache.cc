@@ -4,8 +4,8 @@
 #include <set>
 #include <thread>
 
-#include "passes/mesh/in_process_reader.h"
 #include "passes/mesh/child_reader.h"
+#include "passes/mesh/in_process_reader.h"
 #include "passes/mesh/reader_location.h"
 
 namespace mdlc::mesh {

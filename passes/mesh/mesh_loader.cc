@@ -1,7 +1,7 @@
 #include "passes/mesh/mesh_loader.h"
 
-#include "passes/mesh/in_process_reader.h"
 #include "passes/mesh/child_reader.h"
+#include "passes/mesh/in_process_reader.h"
 #include "passes/mesh/reader_location.h"
 
 namespace mdlc::mesh {
@@ -9,7 +9,7 @@ namespace mdlc::mesh {
 MeshOrError LoadMesh(const std::string& path, const Limits& limits) {
   const MeshReaderLocation reader = FindMeshReader();
   return reader.path.empty() ? LoadMeshInProcess(path, limits)
-                                : LoadMeshInChild(reader.path, path, limits);
+                             : LoadMeshInChild(reader.path, path, limits);
 }
 
 }  // namespace mdlc::mesh

@@ -25,7 +25,6 @@
 #include <vector>
 
 #include "ir/limits.h"
-
 #include "passes/mesh/triangle_mesh.h"
 
 namespace mdlc::mesh {

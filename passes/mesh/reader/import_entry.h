@@ -5,8 +5,9 @@
 #include <cstddef>
 
 /// Receives the answer: a mesh reply (mesh_wire.h) when the function returns
-/// 0, a message saying what was wrong with the request when it returns 2.
-/// The bytes are valid only during the call.
+/// 0; otherwise a message saying what went wrong, with 2 when the request
+/// was malformed and 3 when reading threw (out of memory). The bytes are
+/// valid only during the call.
 typedef void (*MdlcMeshImportSink)(void* context, const char* bytes, size_t size);
 
 /// The exported name; a new version of the request or of the reply's

@@ -7,6 +7,7 @@
 // mdlc opens it only when meshes are read in its process. That keeps
 // assimp, and the libraries assimp needs, out of every other mdlc process:
 // loading them and binding their symbols was most of mdlc's start-up time.
+#include <exception>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,7 +26,14 @@ extern "C" __attribute__((visibility("default"))) int MDLC_MESH_IMPORT_ENTRY(
     sink(context, problem->data(), problem->size());
     return 2;
   }
-  const std::string reply = mdlc::mesh::EncodeMeshReply(mdlc::mesh::ImportMesh(path, limits));
-  sink(context, reply.data(), reply.size());
-  return 0;
+  // the entry point has a C signature: no exception may leave it
+  try {
+    const std::string reply = mdlc::mesh::EncodeMeshReply(mdlc::mesh::ImportMesh(path, limits));
+    sink(context, reply.data(), reply.size());
+    return 0;
+  } catch (const std::exception& e) {
+    const std::string_view what = e.what();
+    sink(context, what.data(), what.size());
+    return 3;
+  }
 }

@@ -1,5 +1,6 @@
-// The mesh reader's reply (issue 16, passes/mesh/mesh_wire.h): what the
-// reader encodes the parent decodes to the same result, and the parent
+// The mesh reader's request and reply (issue 16, passes/mesh/mesh_wire.h):
+// the reader reads the file and limits mdlc asked for, what the reader
+// encodes the parent decodes to the same result, and the parent
 // rejects every reply that is not well formed, since the child that wrote
 // it may have been corrupted by the file it read.
 #include "passes/mesh/mesh_wire.h"
@@ -111,6 +112,34 @@ TEST(MeshWireTest, AMeshWithoutTrianglesOrAnEmptyErrorIsRejected) {  // issue 16
   std::string problem;
   EXPECT_FALSE(Decode(EncodeMeshReply({empty, {}}), &problem));
   EXPECT_FALSE(Decode(EncodeMeshReply({nullptr, "", false}), &problem));
+}
+
+std::vector<std::string_view> Views(const std::vector<std::string>& args) {
+  return {args.begin(), args.end()};
+}
+
+TEST(MeshWireTest, ARequestCarriesThePathAndEveryLimit) {  // issue 16
+  Limits sent;
+  sent.mesh_vertices = 3;
+  sent.file_size = 12345;
+  const std::vector<std::string> request = EncodeMeshRequest("dir/a mesh.obj", sent);
+  Limits got;
+  std::string path;
+  EXPECT_EQ(DecodeMeshRequest(Views(request), &path, &got), std::nullopt);
+  EXPECT_EQ(path, "dir/a mesh.obj");
+  for (const LimitInfo& l : AllLimits()) EXPECT_EQ(got.*l.field, sent.*l.field) << l.name;
+}
+
+TEST(MeshWireTest, AMalformedRequestIsRefused) {  // issue 16
+  const std::vector<std::vector<std::string>> bad = {
+      {"a.obj"}, {"--"}, {"--", "a.obj", "b.obj"}, {"no-such-limit=1", "--", "a.obj"}};
+  for (const std::vector<std::string>& request : bad) {
+    Limits limits;
+    std::string path;
+    const std::optional<std::string> problem = DecodeMeshRequest(Views(request), &path, &limits);
+    ASSERT_TRUE(problem) << request.front();
+    EXPECT_FALSE(problem->empty());
+  }
 }
 
 }  // namespace
