@@ -55,6 +55,24 @@ expect_mesh_reader("mesh reader: ${installed_reader}\n")
 file(REAL_PATH ${prefix}/${LIBDIR}/mdlc/mdlc-mesh-import.so installed_module)
 expect_mesh_reader("mesh reader: in this process (asked for), with ${installed_module}\n"
                    --mesh-reader=in-process)
+# the installed Python package (when the build has one) finds the same
+# module from where it is installed
+if(PYTHON AND EXISTS ${prefix}/${PYTHON_DIR}/mdlc)
+  string(CONCAT program "import mdlc\n"
+         "mdlc.compile('${SOURCE_DIR}/tests/models/mjcf/oracle/mesh_geoms.xml',"
+         " mesh_reader='in-process')\n"
+         "print(*sorted({l.split()[-1] for l in open('/proc/self/maps')"
+         " if 'mdlc-mesh-import' in l}))")
+  execute_process(
+    COMMAND ${CMAKE_COMMAND} -E env PYTHONPATH=${prefix}/${PYTHON_DIR} ${PYTHON} -c "${program}"
+    OUTPUT_VARIABLE opened OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_VARIABLE err RESULT_VARIABLE rc)
+  file(REAL_PATH "${opened}" opened_real)
+  if(NOT rc EQUAL 0 OR NOT opened_real STREQUAL installed_module)
+    message(FATAL_ERROR "the installed Python package opened '${opened}', not ${installed_module} "
+                        "(${rc}):\n${err}")
+  endif()
+  message(STATUS "the installed Python package reads meshes in its process with ${opened}")
+endif()
 
 # CMake: find_package(mdlc) from the prefix only
 run("configure examples/embed_cmake" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/embed_cmake
