@@ -45,7 +45,8 @@ constexpr ReaderForm kModule{kMeshModuleVariable, MDLC_MESH_MODULE_INSTALL_PATH,
 
 bool IsUsable(const fs::path& file, const ReaderForm& form) {
   std::error_code ec;
-  return fs::is_regular_file(file, ec) && ::access(file.c_str(), form.executable ? X_OK : R_OK) == 0;
+  const int mode = form.executable ? X_OK : R_OK;
+  return fs::is_regular_file(file, ec) && ::access(file.c_str(), mode) == 0;
 }
 
 /// The reader of the install prefix above `binary`: the binary may sit in
@@ -88,8 +89,9 @@ std::optional<MeshReaderLocation> Named(const ReaderForm& form) {
   const char* named = std::getenv(form.variable);
   if (!named || !*named) return std::nullopt;
   if (IsUsable(named, form)) return MeshReaderLocation{named, {}};
-  return MeshReaderLocation{{}, fmt::format("{} names '{}', which is not {} file", form.variable,
-                                            named, form.executable ? "an executable" : "a readable")};
+  const char* kind = form.executable ? "an executable" : "a readable";
+  return MeshReaderLocation{
+      {}, fmt::format("{} names '{}', which is not {} file", form.variable, named, kind)};
 }
 
 }  // namespace

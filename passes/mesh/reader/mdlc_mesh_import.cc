@@ -10,6 +10,7 @@
 #include <exception>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "ir/limits.h"
@@ -37,3 +38,6 @@ extern "C" __attribute__((visibility("default"))) int MDLC_MESH_IMPORT_ENTRY(
     return 3;
   }
 }
+
+// the opener calls it through MdlcMeshImportFunction: the two must not drift
+static_assert(std::is_same_v<decltype(&MDLC_MESH_IMPORT_ENTRY), MdlcMeshImportFunction>);
