@@ -46,6 +46,7 @@ EntityRoom SdfEntityRoom(const xml::XmlDocument& doc) {
                      doc.CountOf("sensor");
   room.frames += models;  // each model's own frame
   room.models = models;
+  room.frame_scopes = 1 + models;
   return WithFloatingJoints(room, models);
 }
 
@@ -55,6 +56,7 @@ void ReserveEntities(ir::Module& module, const EntityRoom& room) {
   ReserveMore(module.joints, room.joints);
   ReserveMore(module.geometries, room.geometries);
   ReserveMore(module.frame_graph.nodes, room.frame_nodes);
+  ReserveMore(module.frame_graph.scopes, room.frame_scopes);
   module.ReserveModels(room.models);
 }
 

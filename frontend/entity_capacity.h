@@ -13,6 +13,7 @@ namespace mdlc::frontend {
 /// How many entities of each kind a document is expected to add.
 struct EntityRoom {
   size_t bodies = 0, frames = 0, joints = 0, geometries = 0, frame_nodes = 0, models = 0;
+  size_t frame_scopes = 0;  // SDFormat's name scopes: the world's and one per model
 };
 
 /// What a URDF document adds, from its element counts: a body per <link>, a
@@ -24,7 +25,7 @@ EntityRoom UrdfEntityRoom(const xml::XmlDocument& doc);
 /// its own room when it is read): as URDF, with a model instance, a floating
 /// joint and a frame (its model frame) per <model>, and a frame-graph node
 /// for the world and per model, link, joint, frame, visual, collision and
-/// sensor.
+/// sensor, and a name scope for the world and per model.
 EntityRoom SdfEntityRoom(const xml::XmlDocument& doc);
 
 /// Reserves `room` past the entities the module already holds, so that

@@ -20,13 +20,14 @@ namespace {
 TEST(ReserveEntitiesTest, RoomPastTheEntitiesAlreadyThere) {
   ir::Module m;
   m.bodies.resize(5);
-  ReserveEntities(m, EntityRoom{100, 200, 300, 400, 500, 600});
+  ReserveEntities(m, EntityRoom{100, 200, 300, 400, 500, 600, 700});
   EXPECT_GE(m.bodies.capacity(), 105u);
   EXPECT_GE(m.frames.capacity(), m.frames.size() + 200);
   EXPECT_GE(m.joints.capacity(), m.joints.size() + 300);
   EXPECT_GE(m.geometries.capacity(), m.geometries.size() + 400);
   EXPECT_GE(m.frame_graph.nodes.capacity(), m.frame_graph.nodes.size() + 500);
   EXPECT_GE(m.models.capacity(), m.models.size() + 600);
+  EXPECT_GE(m.frame_graph.scopes.capacity(), m.frame_graph.scopes.size() + 700);
 }
 
 // A scene of 10,000 small files, each reserving before its entities are
@@ -73,7 +74,8 @@ EntityRoom Added(const ir::Module& before, const ir::Module& after) {
           after.joints.size() - before.joints.size(),
           after.geometries.size() - before.geometries.size(),
           after.frame_graph.nodes.size() - before.frame_graph.nodes.size(),
-          after.models.size() - before.models.size()};
+          after.models.size() - before.models.size(),
+          after.frame_graph.scopes.size() - before.frame_graph.scopes.size()};
 }
 
 // `floating`: the floating joints the kinematic-tree pass will add, which
@@ -99,6 +101,7 @@ void ExpectRoomIsWhatTheLoweringAdds(Format format, const std::string& text,
   EXPECT_EQ(room.joints, added.joints + floating);
   EXPECT_EQ(room.geometries, added.geometries);
   EXPECT_EQ(room.frame_nodes, added.frame_nodes);
+  EXPECT_EQ(room.frame_scopes, added.frame_scopes);
   EXPECT_EQ(room.models + unreserved_models, added.models);
 }
 
