@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <atomic>
 #include <optional>
 #include <vector>
 
@@ -16,41 +17,54 @@ namespace {
 
 struct OpenedModule {
   MdlcMeshImportFunction entry = nullptr;
-  std::string why_none;  // when there is no entry
+  MeshReaderLocation location;  // the module's path, or why there is none
 };
 
 OpenedModule Open() {
   const MeshReaderLocation found = FindMeshImportModule();
-  if (found.path.empty()) return {nullptr, found.why_none};
+  if (found.path.empty()) return {nullptr, found};
   // RTLD_NOW: a module that cannot be bound fails here, not at its first
   // call. RTLD_LOCAL: assimp's symbols, and the module's own copy of mdlc's
   // code, stay out of the process's global scope.
   void* handle = ::dlopen(found.path.c_str(), RTLD_NOW | RTLD_LOCAL);
-  if (!handle) return {nullptr, fmt::format("cannot open the mesh import module: {}", ::dlerror())};
+  if (!handle) {
+    return {nullptr, {{}, fmt::format("cannot open the mesh import module: {}", ::dlerror())}};
+  }
   auto entry =
       reinterpret_cast<MdlcMeshImportFunction>(::dlsym(handle, MDLC_MESH_IMPORT_ENTRY_NAME));
   if (!entry) {
     ::dlclose(handle);
-    return {nullptr, fmt::format("'{}' is not a mesh import module of this mdlc (it has no {})",
-                                 found.path, MDLC_MESH_IMPORT_ENTRY_NAME)};
+    return {nullptr,
+            {{}, fmt::format("'{}' is not a mesh import module of this mdlc (it has no {})",
+                             found.path, MDLC_MESH_IMPORT_ENTRY_NAME)}};
   }
   // never closed: meshes it read are freed by mdlc, but assimp may keep
   // state of its own, and closing buys nothing in a process that read one
-  return {entry, {}};
+  return {entry, found};
 }
 
+std::atomic<bool> module_opened{false};
+
 const OpenedModule& Module() {
-  static const OpenedModule opened = Open();  // thread-safe, once per process
-  return opened;
+  static const OpenedModule module = Open();  // thread-safe, once per process
+  module_opened.store(true, std::memory_order_release);
+  return module;
 }
 
 }  // namespace
+
+MeshReaderLocation ImportModuleLocation() {
+  // the module opened, once one is: the search may since have found another
+  return module_opened.load(std::memory_order_acquire) ? Module().location
+                                                       : FindMeshImportModule();
+}
 
 MeshOrError LoadMeshInProcess(const std::string& path, const Limits& limits) {
   auto failed = [](std::string what) { return MeshOrError{nullptr, std::move(what)}; };
   const OpenedModule& module = Module();
   if (!module.entry) {
-    return failed(fmt::format("cannot read '{}' in this process: {}", path, module.why_none));
+    return failed(
+        fmt::format("cannot read '{}' in this process: {}", path, module.location.why_none));
   }
   const std::vector<std::string> request = EncodeMeshRequest(path, limits);
   std::vector<const char*> argv;

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "ir/limits.h"
+#include "passes/mesh/reader_location.h"
 #include "passes/mesh/triangle_mesh.h"
 
 namespace mdlc::mesh {
@@ -22,5 +23,10 @@ namespace mdlc::mesh {
 /// mesh-vertices limit, and when the import module cannot be opened (it is
 /// looked for once per process: reader_location.h). Thread-safe.
 MeshOrError LoadMeshInProcess(const std::string& path, const Limits& limits = {});
+
+/// The import module this process reads meshes with: the one opened, once
+/// a mesh was read here, else the one the search finds now (the path empty,
+/// and the reason, when none); for `--time-passes`. Opens nothing.
+MeshReaderLocation ImportModuleLocation();
 
 }  // namespace mdlc::mesh

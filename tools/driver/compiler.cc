@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "passes/mesh/reader_location.h"
+#include "passes/mesh/in_process_reader.h"
 #include "passes/pass_registry.h"
 
 namespace mdlc {
@@ -71,7 +71,7 @@ bool Compilation::RunPasses() {
     if (!meshes->reader().empty()) {
       timing_report_ += fmt::format("  mesh reader: {}\n", meshes->reader());
     } else {
-      const mesh::MeshReaderLocation module = mesh::FindMeshImportModule();
+      const mesh::MeshReaderLocation module = mesh::ImportModuleLocation();
       timing_report_ += fmt::format(
           "  mesh reader: {}, with {}\n",
           meshes->reader_missing().empty() ? "in this process (asked for)"

@@ -84,6 +84,18 @@ TEST_F(ChildReaderTest, TheBuildsImportModuleIsFound) {  // issue 16
   EXPECT_EQ(mesh::FindMeshImportModule().path, built.path);
 }
 
+// What --time-passes names is the module meshes were read with, even when
+// the environment names another afterwards (in_process_reader.h).
+TEST_F(ChildReaderTest, TheOpenedImportModuleIsTheOneReported) {  // issue 16
+  ::unsetenv(mesh::kMeshModuleVariable);
+  const std::string built = mesh::FindMeshImportModule().path;
+  ASSERT_TRUE(mesh::LoadMeshInProcess(MeshPath("box.obj")).ok());
+  ::setenv(mesh::kMeshModuleVariable, (dir_ / "nothing.so").c_str(), 1);
+  EXPECT_TRUE(mesh::FindMeshImportModule().path.empty());
+  EXPECT_EQ(mesh::ImportModuleLocation().path, built);
+  ::unsetenv(mesh::kMeshModuleVariable);
+}
+
 TEST_F(ChildReaderTest, ChildAndInProcessReadTheTestMeshesAlike) {  // issue 16
   ::unsetenv(mesh::kMeshReaderVariable);
   const std::string reader = RealReader();
