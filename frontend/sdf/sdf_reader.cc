@@ -131,28 +131,35 @@ void SdfReader::CheckChildren(const xml::XmlElement& e,
                               std::initializer_list<std::string_view> known,
                               std::initializer_list<std::string_view> unsupported) {
   for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
-    std::string_view tag = child.Name();
-    auto listed = [tag](std::initializer_list<std::string_view> names) {
-      for (std::string_view name : names) {
-        if (xml::SameName(name, tag)) return true;
-      }
-      return false;
-    };
-    if (listed(known)) continue;
-    if (listed(unsupported)) {
-      diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
-                     fmt::format("tag '{}' found as a child of '{}' is currently unsupported and "
-                                 "will be ignored",
-                                 tag, e.Name()));
-    } else if (tag.starts_with("drake:")) {
-      diags().Report(DiagKind::UnknownElement, child.GetLoc(),
-                     fmt::format("unsupported element <{}> in <{}> is ignored", tag, e.Name()));
-    } else if (tag.find(':') == std::string_view::npos) {
-      diags().Report(DiagKind::UnknownSdfElement, child.GetLoc(),
-                     fmt::format("<{}> is not an SDFormat element of <{}>", tag, e.Name()));
-    }
-    // other namespaces (gazebo:, ignition:, ...) belong to other tools (SDF-001)
+    CheckChild(e, child, {known.begin(), known.size()},
+               {unsupported.begin(), unsupported.size()});
   }
+}
+
+void SdfReader::CheckChild(const xml::XmlElement& e, const xml::XmlElement& child,
+                           std::span<const std::string_view> known,
+                           std::span<const std::string_view> unsupported) {
+  std::string_view tag = child.Name();
+  auto listed = [tag](std::span<const std::string_view> names) {
+    for (std::string_view name : names) {
+      if (xml::SameName(name, tag)) return true;
+    }
+    return false;
+  };
+  if (listed(known)) return;
+  if (listed(unsupported)) {
+    diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
+                   fmt::format("tag '{}' found as a child of '{}' is currently unsupported and "
+                               "will be ignored",
+                               tag, e.Name()));
+  } else if (tag.starts_with("drake:")) {
+    diags().Report(DiagKind::UnknownElement, child.GetLoc(),
+                   fmt::format("unsupported element <{}> in <{}> is ignored", tag, e.Name()));
+  } else if (tag.find(':') == std::string_view::npos) {
+    diags().Report(DiagKind::UnknownSdfElement, child.GetLoc(),
+                   fmt::format("<{}> is not an SDFormat element of <{}>", tag, e.Name()));
+  }
+  // other namespaces (gazebo:, ignition:, ...) belong to other tools (SDF-001)
 }
 
 void SdfReader::ReserveRoomFor(const xml::XmlDocument& doc) {
@@ -286,15 +293,16 @@ std::optional<ModelId> SdfReader::ReadRootFile(FileId file_id) {
 std::optional<ModelId> SdfReader::ReadWorld(const xml::XmlElement& e, const SdfFile& file) {
   auto name = attrs_.String(e, "name", xml::Need::Required);
   if (!name) return std::nullopt;
-  CheckChildren(e,
-                {"model", "include", "frame", "joint", "audio", "wind", "gravity",
-                 "magnetic_field", "atmosphere", "gui", "physics", "scene", "plugin",
-                 "road", "spherical_coordinates", "state", "population", "light", "actor"},
-                {});
+  static constexpr std::string_view kWorldChildren[] = {
+      "model", "include", "frame", "joint", "audio", "wind", "gravity",
+      "magnetic_field", "atmosphere", "gui", "physics", "scene", "plugin",
+      "road", "spherical_coordinates", "state", "population", "light", "actor"};
   const FrameScopeId world_id{uint32_t{0}};
   ModelScope world{world_id, ir::kWorldModel, &file, false, module().Intern("world")};
   std::vector<xml::XmlElement> joints;
   for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
+    if (xml::XmlElement next = child.NextSibling()) next.PrefetchSubtree();
+    CheckChild(e, child, kWorldChildren, {});
     std::string_view tag = child.Name();
     if (tag == "model") {
       ReadModelTree(child, file, world, nullptr);
@@ -429,15 +437,17 @@ FrameScopeId SdfReader::OpenScope(const xml::XmlElement& e, const ModelScope& pa
 }
 
 void SdfReader::ReadModelBody(const xml::XmlElement& e, ModelScope& s) {
-  CheckChildren(e,
-                {"static", "self_collide", "allow_auto_disable", "include", "model",
-                 "enable_wind", "frame", "pose", "link", "joint", "plugin", "drake:joint",
-                 "drake:collision_filter_group", "drake:linear_bushing_rpy",
-                 "drake:linear_spring_damper", "drake:ball_constraint",
-                 "drake:distance_constraint", "drake:tendon_constraint"},
-                {"gripper"});
+  static constexpr std::string_view kModelChildren[] = {
+      "static", "self_collide", "allow_auto_disable", "include", "model",
+      "enable_wind", "frame", "pose", "link", "joint", "plugin", "drake:joint",
+      "drake:collision_filter_group", "drake:linear_bushing_rpy",
+      "drake:linear_spring_damper", "drake:ball_constraint",
+      "drake:distance_constraint", "drake:tendon_constraint"};
+  static constexpr std::string_view kModelUnsupported[] = {"gripper"};
   std::vector<xml::XmlElement> joints, drake_elements, nested;
   for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
+    if (xml::XmlElement next = child.NextSibling()) next.PrefetchSubtree();
+    CheckChild(e, child, kModelChildren, kModelUnsupported);
     std::string_view tag = child.Name();
     if (tag == "link") {
       ReadLink(child, s);
@@ -462,7 +472,10 @@ void SdfReader::ReadModelBody(const xml::XmlElement& e, ModelScope& s) {
   }
   // joints after every link, as Drake adds them; their frames may be in
   // nested models not read yet, which is fine: the resolve-frames pass binds them
-  for (const xml::XmlElement& j : joints) ReadJoint(j, s);
+  for (size_t i = 0; i < joints.size(); ++i) {
+    if (i + 1 < joints.size()) joints[i + 1].PrefetchSubtree();
+    ReadJoint(joints[i], s);
+  }
   for (const xml::XmlElement& d : drake_elements) ReadDrakeModelElement(d, s);
   // nested models go on the work list, last first, so they are read in document order
   for (auto it = nested.rbegin(); it != nested.rend(); ++it) {

@@ -192,6 +192,7 @@ void TreeBuilder::StartElement(void* parser, const unsigned char* local,
   } else {
     Open& parent = open_.back();
     element->parent = parent.element;
+    parent.element->child_name_bits |= XmlElement::NameBit(element->name);
     if (parent.last_child) {
       parent.last_child->next_sibling = element;
     } else {

@@ -171,6 +171,7 @@ XmlElement XmlDocument::Root() const { return XmlElement(this, root_); }
 Loc XmlElement::GetLoc() const { return Loc{doc_->file(), node_->line, node_->column}; }
 
 XmlElement XmlElement::Child(std::string_view name) const {
+  if (!(node_->child_name_bits & NameBit(name))) return {};
   for (const detail::ElementNode* c = node_->first_child; c; c = c->next_sibling) {
     if (SameName(c->name, name)) return XmlElement(doc_, c);
   }

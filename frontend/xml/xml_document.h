@@ -53,9 +53,21 @@ class XmlElement {
   /// First child element, next sibling element (null element at the end).
   XmlElement FirstChild() const { return XmlElement(doc_, node_->first_child); }
   XmlElement NextSibling() const { return XmlElement(doc_, node_->next_sibling); }
-  /// First child element named `name`.
+  /// First child element named `name`. A name no child has is answered
+  /// from the children's name summary, without walking them: a model of
+  /// 10,000 links asked for its <pose> or <static> steps over none of them.
   XmlElement Child(std::string_view name) const;
   XmlElement Parent() const { return XmlElement(doc_, node_->parent); }
+  /// Asks the cache for the memory holding this element's subtree, ahead of
+  /// reading it. The tree is built in document order into one arena, so an
+  /// element's descendants follow it; a reader stepping through many large
+  /// siblings (a model's links, a world's models) hints the next one while
+  /// it reads the current one, instead of waiting on each first touch.
+  void PrefetchSubtree() const {
+    constexpr size_t kBytes = 2048;  // a typical link's subtree; 1 and 4 KB measured alike
+    const char* at = reinterpret_cast<const char*>(node_);
+    for (size_t offset = 0; offset < kBytes; offset += 64) __builtin_prefetch(at + offset);
+  }
 
   /// The attribute `name`; `present()` is false when absent.
   XmlAttribute Attribute(std::string_view name) const;

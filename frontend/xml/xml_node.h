@@ -79,6 +79,8 @@ struct ElementNode {
   uint32_t column = 0;
   // XmlElement::NameBit of every attribute name, or'ed
   uint64_t attribute_name_bits = 0;
+  // the same for the names of the element children
+  uint64_t child_name_bits = 0;
 };
 
 }  // namespace mdlc::xml::detail

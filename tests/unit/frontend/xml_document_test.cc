@@ -111,6 +111,31 @@ TEST_F(XmlDocumentTest, AttributeNameBitsNeverMissAPresentAttribute) {
   EXPECT_EQ(e.NextSibling().AttributeNameBits(), 0u);
 }
 
+// Child() answers an absent name from the children's name bits without a
+// walk; names that share a bit with a present child still need the walk and
+// must come back absent, and only direct children count.
+TEST_F(XmlDocumentTest, ChildFindsTheFirstOfItsNameAndNothingElse) {
+  auto doc = Parse(
+      "<r xmlns:d='http://drake.mit.edu'>"
+      "<model><pose n='1'/><link n='a'/><link n='b'/><d:joint/><x/>"
+      "<nested><static/></nested></model><empty/></r>");
+  ASSERT_TRUE(doc);
+  const XmlElement model = doc->Root().FirstChild();
+  for (const char* name : {"pose", "link", "d:joint", "x", "nested"}) {
+    const XmlElement c = model.Child(name);
+    ASSERT_TRUE(c) << name;
+    EXPECT_EQ(c.Name(), name);
+  }
+  EXPECT_EQ(model.Child("link").Attribute("n").value, "a");
+  // "position" and "po" share "pose"'s bit, "linker" "link"'s: the walk says no
+  EXPECT_EQ(XmlElement::NameBit("position"), XmlElement::NameBit("pose"));
+  for (const char* name : {"position", "po", "linker", "static", "joint", "d:joints", "", "y"}) {
+    EXPECT_FALSE(model.Child(name)) << name;
+  }
+  EXPECT_TRUE(model.Child("nested").Child("static"));
+  EXPECT_FALSE(model.NextSibling().Child("link"));  // no children at all
+}
+
 TEST_F(XmlDocumentTest, MalformedXmlReportsLineAndColumn) {  // COMMON-004
   EXPECT_FALSE(Parse("<robot name='r'>\n  <link>\n</robot>\n"));
   ASSERT_GE(diags_.diagnostics().size(), 1u);
