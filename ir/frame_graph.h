@@ -66,6 +66,10 @@ struct FrameNode {
   /// What fixes the node to a body: a frame's attached_to, a joint's child,
   /// an anchor's link, a model's canonical link (empty: the scope's default).
   NameRef attached_to;
+  /// The node attached_to names, when the frontend knows it as it writes the
+  /// node (an anchor's own link): resolve-frames then looks no name up, which
+  /// in a scene of many models is a cache miss per visual and collision.
+  FrameNodeId attached_node;
   FrameTarget target = FrameTarget::None;
   uint32_t target_index = UINT32_MAX;
   FrameScopeId nested;  // kind Model: the scope this node is the frame of

@@ -435,6 +435,8 @@ bool ResolveFramesPass::Run(PassContext& ctx) {
             Lookup(node.nested, s.placement_frame, "placement_frame");
         lookups_ok &= placement_[node.nested.index()].has_value();
       }
+    } else if (node.attached_node.valid()) {
+      attached_to_[i] = node.attached_node;
     } else if (!node.attached_to.empty() && node.kind != FrameNodeKind::Link) {
       attached_to_[i] = Lookup(node.scope, node.attached_to,
                                node.kind == FrameNodeKind::Joint ? "child frame" : "attached_to name");

@@ -538,7 +538,7 @@ std::optional<int> PixelsOr(SdfReader& r, const xml::XmlElement& parent, std::st
 }  // namespace
 
 void SdfReader::ReadVisual(const xml::XmlElement& e, ModelScope& s, BodyId body,
-                           Symbol link_name) {
+                           Symbol link_name, FrameNodeId link_node) {
   const Spelling sp{e.Name() == "drake:visual"};
   auto name = attrs_.String(e, "name", xml::Need::Required);
   if (!name) return;
@@ -625,13 +625,13 @@ void SdfReader::ReadVisual(const xml::XmlElement& e, ModelScope& s, BodyId body,
   }
   g.shape = std::move(shape->shape);
   const GeometryId id = module().Add(std::move(g));
-  const FrameNodeId node = AddAnchor(s, e.Child(sp("pose")), link_name, e.GetLoc(),
+  const FrameNodeId node = AddAnchor(s, e.Child(sp("pose")), link_name, link_node, e.GetLoc(),
                                      ir::FrameTarget::Geometry, id.value);
   if (!shape->X_GC.IsIdentity()) graph()[node].X_RN = graph()[node].X_RN * shape->X_GC;
 }
 
 void SdfReader::ReadCollision(const xml::XmlElement& e, ModelScope& s, BodyId body,
-                              Symbol link_name) {
+                              Symbol link_name, FrameNodeId link_node) {
   auto name = attrs_.String(e, "name", xml::Need::Required);
   if (!name) return;
   attrs_.WarnUnknownAttributes(e, {"name"});
@@ -692,13 +692,13 @@ void SdfReader::ReadCollision(const xml::XmlElement& e, ModelScope& s, BodyId bo
     }
   }
   const GeometryId id = module().Add(std::move(g));
-  const FrameNodeId node = AddAnchor(s, e.Child("pose"), link_name, e.GetLoc(),
+  const FrameNodeId node = AddAnchor(s, e.Child("pose"), link_name, link_node, e.GetLoc(),
                                      ir::FrameTarget::Geometry, id.value);
   if (!shape->X_GC.IsIdentity()) graph()[node].X_RN = graph()[node].X_RN * shape->X_GC;
 }
 
 void SdfReader::ReadSensor(const xml::XmlElement& e, ModelScope& s, BodyId body,
-                           Symbol link_name) {
+                           Symbol link_name, FrameNodeId link_node) {
   auto name = attrs_.String(e, "name", xml::Need::Required);
   auto type = attrs_.String(e, "type", xml::Need::Required);
   if (!name || !type) return;
@@ -766,7 +766,7 @@ void SdfReader::ReadSensor(const xml::XmlElement& e, ModelScope& s, BodyId body,
   camera.fov_y = 2 * std::atan(std::tan(hfov / 2) * height / width);
   const CameraId id = module().Add(std::move(camera));
   const FrameNodeId node =
-      AddAnchor(s, e.Child("pose"), link_name, e.GetLoc(), ir::FrameTarget::Camera, id.value);
+      AddAnchor(s, e.Child("pose"), link_name, link_node, e.GetLoc(), ir::FrameTarget::Camera, id.value);
   if (!X_SC.IsIdentity()) graph()[node].X_RN = graph()[node].X_RN * X_SC;
 }
 

@@ -56,11 +56,11 @@ void SdfReader::ReadLink(const xml::XmlElement& e, ModelScope& s) {
   for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
     std::string_view tag = child.Name();
     if (tag == "visual" || tag == "drake:visual") {
-      ReadVisual(child, s, body_id, link_name);
+      ReadVisual(child, s, body_id, link_name, node_id);
     } else if (tag == "collision") {
-      ReadCollision(child, s, body_id, link_name);
+      ReadCollision(child, s, body_id, link_name, node_id);
     } else if (tag == "sensor") {
-      ReadSensor(child, s, body_id, link_name);
+      ReadSensor(child, s, body_id, link_name, node_id);
     } else if (tag == "frame") {
       // SDFormat 1.5/1.6 allowed frames inside links; they attach to the link
       ReadFrame(child, s);

@@ -112,8 +112,8 @@ FrameNodeId SdfReader::AddNode(const ModelScope& s, ir::FrameNode node) {
 }
 
 FrameNodeId SdfReader::AddAnchor(const ModelScope& s, const xml::XmlElement& pose_element,
-                                 Symbol link_name, Loc loc, ir::FrameTarget target,
-                                 uint32_t index) {
+                                 Symbol link_name, FrameNodeId link_node, Loc loc,
+                                 ir::FrameTarget target, uint32_t index) {
   ir::FrameNode node;
   node.kind = ir::FrameNodeKind::Anchor;
   node.scope = s.scope;
@@ -122,6 +122,7 @@ FrameNodeId SdfReader::AddAnchor(const ModelScope& s, const xml::XmlElement& pos
   if (node.relative_to.empty()) node.relative_to = {link_name, loc};
   node.X_RN = ReadPoseValue(pose_element);
   node.attached_to = {link_name, loc};
+  node.attached_node = link_node;
   node.target = target;
   node.target_index = index;
   return graph().Add(std::move(node));

@@ -104,8 +104,10 @@ class SdfReader {
   FrameNodeId AddNode(const ModelScope& s, ir::FrameNode node);
   /// Adds an unnamed anchor node: the pose of `pose_element` relative to its
   /// relative_to, defaulting to `link_name` (visuals, collisions, sensors).
+  /// It is attached to its link's node, `link_node`, with no name lookup.
   FrameNodeId AddAnchor(const ModelScope& s, const xml::XmlElement& pose_element,
-                        Symbol link_name, Loc loc, ir::FrameTarget target, uint32_t index);
+                        Symbol link_name, FrameNodeId link_node, Loc loc,
+                        ir::FrameTarget target, uint32_t index);
   /// Reports unknown children of an SDF element (SDF-001): drake: ones warn,
   /// other namespaced ones are skipped silently, plain ones are errors.
   void CheckChildren(const xml::XmlElement& e, std::initializer_list<std::string_view> known,
@@ -126,9 +128,12 @@ class SdfReader {
   void ReadJoint(const xml::XmlElement& e, ModelScope& s);
 
   // --- sdf_geometry.cc: children of a link ---
-  void ReadVisual(const xml::XmlElement& e, ModelScope& s, BodyId body, Symbol link_name);
-  void ReadCollision(const xml::XmlElement& e, ModelScope& s, BodyId body, Symbol link_name);
-  void ReadSensor(const xml::XmlElement& e, ModelScope& s, BodyId body, Symbol link_name);
+  void ReadVisual(const xml::XmlElement& e, ModelScope& s, BodyId body, Symbol link_name,
+                  FrameNodeId link_node);
+  void ReadCollision(const xml::XmlElement& e, ModelScope& s, BodyId body, Symbol link_name,
+                     FrameNodeId link_node);
+  void ReadSensor(const xml::XmlElement& e, ModelScope& s, BodyId body, Symbol link_name,
+                  FrameNodeId link_node);
 
   // --- sdf_drake_elements.cc: model-level drake: elements, read after every
   // link, joint and nested model of the model (EXT-001, EXT-040, EXT-050..054)

@@ -315,6 +315,35 @@ TEST(ResolveFrames, OldFilesRenameAJointNamedAsItsLink) {  // SDF-001, SDF-011
   EXPECT_NEAR(BodyNamed(m, "top::old", "arm").default_pose->p.z(), 1, kTol);
 }
 
+// A visual or collision sits on its own link, not on whatever its link's
+// name finds: before SDFormat 1.8 a <frame> may take the name first, and
+// the link is renamed NAME_link; the geometry still rides on that link,
+// posed from its frame (SDF-001, SDF-003).
+TEST(ResolveFrames, GeometryStaysOnItsLinkWhenAnOldFileRenamesTheLink) {
+  SdfCompileResult r("<model name='top'><include><uri>old.sdf</uri></include></model>",
+                     {{"old.sdf", R"(<?xml version='1.0'?><sdf version='1.7'>
+  <model name='old'>
+    <link name='base'/>
+    <frame name='arm'><pose>0 0 5 0 0 0</pose></frame>
+    <link name='arm'><pose>0 0 1 0 0 0</pose>
+      <collision name='c'><pose>0.25 0 0 0 0 0</pose><geometry><sphere><radius>0.1</radius></sphere></geometry></collision>
+      <visual name='v'><geometry><sphere><radius>0.1</radius></sphere></geometry></visual>
+    </link>
+  </model></sdf>)"}});
+  ASSERT_TRUE(r.ok()) << r.Messages();
+  r.ExpectDiagnostic(DiagKind::RenamedDuplicate, "this link is renamed 'arm_link'");
+  const ir::Module& m = r.compilation().module;
+  const ir::Body& arm = BodyNamed(m, "top::old", "arm_link");
+  EXPECT_NEAR(arm.default_pose->p.z(), 1, kTol);
+  ASSERT_EQ(m.geometries.size(), 2u);
+  for (const ir::Geometry& geom : m.geometries) {
+    EXPECT_EQ(m.Text(m[geom.body.id].name), "arm_link") << m.Text(geom.name);
+  }
+  EXPECT_NEAR(m.geometries[0].X_BG.p.x(), 0.25, kTol);
+  EXPECT_NEAR(m.geometries[0].X_BG.p.z(), 0, kTol);
+  EXPECT_TRUE(m.geometries[1].X_BG.p.isZero(kTol));
+}
+
 TEST(ResolveFrames, CyclesAndDanglingNamesAreLocatedErrors) {  // SDF-004
   SdfCompileResult cycle(R"(
   <model name='m'>
