@@ -765,8 +765,8 @@ void SdfReader::ReadSensor(const xml::XmlElement& e, ModelScope& s, BodyId body,
   camera.height = height;
   camera.fov_y = 2 * std::atan(std::tan(hfov / 2) * height / width);
   const CameraId id = module().Add(std::move(camera));
-  const FrameNodeId node =
-      AddAnchor(s, e.Child("pose"), link_name, link_node, e.GetLoc(), ir::FrameTarget::Camera, id.value);
+  const FrameNodeId node = AddAnchor(s, e.Child("pose"), link_name, link_node, e.GetLoc(),
+                                     ir::FrameTarget::Camera, id.value);
   if (!X_SC.IsIdentity()) graph()[node].X_RN = graph()[node].X_RN * X_SC;
 }
 

@@ -137,18 +137,10 @@ void SdfReader::CheckChildren(const xml::XmlElement& e,
   }
 }
 
-void SdfReader::CheckChild(const xml::XmlElement& e, const xml::XmlElement& child,
-                           std::span<const std::string_view> known,
-                           std::span<const std::string_view> unsupported) {
+void SdfReader::ReportUnknownChild(const xml::XmlElement& e, const xml::XmlElement& child,
+                                   std::span<const std::string_view> unsupported) {
   std::string_view tag = child.Name();
-  auto listed = [tag](std::span<const std::string_view> names) {
-    for (std::string_view name : names) {
-      if (xml::SameName(name, tag)) return true;
-    }
-    return false;
-  };
-  if (listed(known)) return;
-  if (listed(unsupported)) {
+  if (Listed(unsupported, tag)) {
     diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
                    fmt::format("tag '{}' found as a child of '{}' is currently unsupported and "
                                "will be ignored",

@@ -115,9 +115,21 @@ class SdfReader {
   /// CheckChildren for one child, for a reader that walks the children
   /// anyway: a model's or world's may be many thousand, and one walk over
   /// them is much cheaper than two once they no longer fit in the cache.
+  /// Inline, as it runs for every child of most elements: only a child that
+  /// is not `known` leaves it.
   void CheckChild(const xml::XmlElement& e, const xml::XmlElement& child,
                   std::span<const std::string_view> known,
-                  std::span<const std::string_view> unsupported);
+                  std::span<const std::string_view> unsupported) {
+    if (!Listed(known, child.Name())) ReportUnknownChild(e, child, unsupported);
+  }
+  static bool Listed(std::span<const std::string_view> names, std::string_view tag) {
+    for (std::string_view name : names) {
+      if (xml::SameName(name, tag)) return true;
+    }
+    return false;
+  }
+  void ReportUnknownChild(const xml::XmlElement& e, const xml::XmlElement& child,
+                          std::span<const std::string_view> unsupported);
 
   // --- sdf_link.cc ---
   void ReadLink(const xml::XmlElement& e, ModelScope& s);
