@@ -280,7 +280,7 @@ void SdfReader::ReadJoint(const xml::XmlElement& e, ModelScope& s) {
   node.target_index = joint_id.value;
   spec.node = AddNode(s, std::move(node));
   spec.joint = joint_id;
-  const Symbol final_name = module()[joint_id].name;  // AddNode may rename (before 1.8)
+  const Symbol final_name = module()[joint_id].name;  // AddNode may rename (before 1.7)
   graph().joints.push_back(spec);
 
   // the actuator every actuable SDFormat joint gets unless its effort is 0 (SDF-020)

@@ -67,47 +67,76 @@ bool SdfReader::CheckDefinedName(std::string_view name, Loc loc, std::string_vie
   return true;
 }
 
+namespace {
+// The order in which libsdformat loads a model's or world's entities, for
+// its renaming of names shared across kinds: a kind loaded later yields the
+// name to one loaded earlier (-1: a kind that never takes part).
+int LoadRank(ir::FrameNodeKind kind) {
+  switch (kind) {
+    case ir::FrameNodeKind::Link:
+    case ir::FrameNodeKind::Model: return 0;
+    case ir::FrameNodeKind::Joint: return 1;
+    case ir::FrameNodeKind::Frame: return 2;
+    default: return -1;
+  }
+}
+}  // namespace
+
 FrameNodeId SdfReader::AddNode(const ModelScope& s, ir::FrameNode node) {
   // merged models publish their names into the scope they merge into; the
   // graph's name index is the table of names defined so far
   ir::FrameGraph& g = graph();
   const FrameScopeId ns = g.Namespace(s.scope);
   const FrameNodeId id(g.nodes.size());
-  const auto [it, inserted] = g.names.emplace(ir::FrameGraph::NameKey(ns, node.name), id);
-  if (!inserted) {
-    // the node that has the name; nodes do not move until this one is added
-    const ir::FrameNode& first = g[it->second];
-    if (first.kind != node.kind && s.file && s.file->version < 108) {
-      // before SDFormat 1.8 a joint (say) could share its child link's name;
-      // libsdformat renames the newcomer NAME_joint (NAME_frame, ...), and so do we
-      static constexpr const char* kSuffix[] = {"world", "model", "link", "joint", "frame", ""};
-      std::string renamed = fmt::format("{}_{}", module().Text(node.name),
-                                        kSuffix[static_cast<int>(node.kind)]);
-      diags()
-          .Report(DiagKind::RenamedDuplicate, node.loc,
-                  fmt::format("the name '{}' is already used in this model; as libsdformat does "
-                              "for files older than SDFormat 1.8, this {} is renamed '{}'",
-                              module().Text(node.name), kSuffix[static_cast<int>(node.kind)],
-                              renamed))
-          .Note(first.loc, "first defined here");
-      node.name = module().Intern(renamed);
-      switch (node.target) {
-        case ir::FrameTarget::Joint: module().joints[node.target_index].name = node.name; break;
-        case ir::FrameTarget::Frame: module().frames[node.target_index].name = node.name; break;
-        case ir::FrameTarget::Body: module().bodies[node.target_index].name = node.name; break;
-        default: break;
-      }
-      g.names.emplace(ir::FrameGraph::NameKey(ns, node.name), id);
-    } else {
-      diags()
-          .Report(DiagKind::DuplicateName, node.loc,
-                  fmt::format("the name '{}' is already used by a link, joint, frame or model "
-                              "of this model",
-                              module().Text(node.name)))
-          .Note(first.loc, "first defined here");
-    }
-  }
   node.scope = s.scope;
+  const auto [it, inserted] = g.names.emplace(ir::FrameGraph::NameKey(ns, node.name), id);
+  if (inserted) return g.Add(std::move(node));
+
+  // the node that has the name; nodes do not move until this one is added
+  ir::FrameNode& first = g[it->second];
+  const int first_rank = LoadRank(first.kind), node_rank = LoadRank(node.kind);
+  // libsdformat loads links and nested models, then joints, then frames,
+  // and renames a later kind that shares an earlier one's name NAME_joint
+  // or NAME_frame, wherever it stands in the file: in a model before
+  // SDFormat 1.7 (an error from 1.7 on), in a world always. So do we.
+  const bool in_world = g[s.scope].is_world;
+  if ((in_world || (s.file && s.file->version < 107)) && first_rank >= 0 && node_rank >= 0 &&
+      first_rank != node_rank) {
+    const bool rename_first = first_rank > node_rank;
+    const FrameNodeId renamed_id = rename_first ? it->second : id;
+    ir::FrameNode& renamed = rename_first ? first : node;
+    const ir::FrameNode& keeper = rename_first ? node : first;
+    const char* kind = renamed.kind == ir::FrameNodeKind::Joint ? "joint" : "frame";
+    const char* keeper_kind = keeper.kind == ir::FrameNodeKind::Link    ? "link"
+                              : keeper.kind == ir::FrameNodeKind::Joint ? "joint"
+                              : in_world                                ? "model"
+                                                                        : "nested model";
+    const std::string new_name = fmt::format("{}_{}", module().Text(renamed.name), kind);
+    diags()
+        .Report(DiagKind::RenamedDuplicate, renamed.loc,
+                fmt::format("the name '{}' is also given to a {} of this {}; as libsdformat "
+                            "does {}, this {} is renamed '{}'",
+                            module().Text(renamed.name), keeper_kind,
+                            in_world ? "world" : "model",
+                            in_world ? "in a world" : "for files older than SDFormat 1.7", kind,
+                            new_name))
+        .Note(keeper.loc, fmt::format("the {} that keeps the name is here", keeper_kind));
+    renamed.name = module().Intern(new_name);
+    switch (renamed.target) {
+      case ir::FrameTarget::Joint: module().joints[renamed.target_index].name = renamed.name; break;
+      case ir::FrameTarget::Frame: module().frames[renamed.target_index].name = renamed.name; break;
+      default: break;
+    }
+    if (rename_first) it->second = id;  // the newcomer takes the name over
+    g.names.emplace(ir::FrameGraph::NameKey(ns, renamed.name), renamed_id);
+  } else {
+    diags()
+        .Report(DiagKind::DuplicateName, node.loc,
+                fmt::format("the name '{}' is already used by a link, joint, frame or model "
+                            "of this model",
+                            module().Text(node.name)))
+        .Note(first.loc, "first defined here");
+  }
   return g.Add(std::move(node));
 }
 

@@ -283,12 +283,13 @@ TEST(ResolveFrames, TheReadersNameIndexServesThePass) {  // SDF-003, SDF-030, SD
               BodyNamed(m, "top", "p").default_pose->p.z(), 0);
 }
 
-// Before SDFormat 1.8 a joint could share its child link's name: the reader
+// Before SDFormat 1.7 a joint could share its child link's name: the reader
 // renames the joint NAME_joint, as libsdformat does, and indexes it so; the
-// link keeps the name, and the joint's child is the link.
+// link keeps the name, and the joint's child is the link. From 1.7 on the
+// same file is an error, as libsdformat 12 makes it.
 TEST(ResolveFrames, OldFilesRenameAJointNamedAsItsLink) {  // SDF-001, SDF-011
   SdfCompileResult r("<model name='top'><include><uri>old.sdf</uri></include></model>",
-                     {{"old.sdf", R"(<?xml version='1.0'?><sdf version='1.7'>
+                     {{"old.sdf", R"(<?xml version='1.0'?><sdf version='1.6'>
   <model name='old'>
     <link name='base'/>
     <link name='arm'><pose>0 0 1 0 0 0</pose></link>
@@ -313,35 +314,75 @@ TEST(ResolveFrames, OldFilesRenameAJointNamedAsItsLink) {  // SDF-001, SDF-011
   const ir::Joint& joint = JointNamed(m, "arm_joint");
   EXPECT_EQ(m.Text(m[joint.child.id].name), "arm");
   EXPECT_NEAR(BodyNamed(m, "top::old", "arm").default_pose->p.z(), 1, kTol);
+
+  SdfCompileResult v17("<model name='top'><include><uri>old17.sdf</uri></include></model>",
+                       {{"old17.sdf", R"(<?xml version='1.0'?><sdf version='1.7'>
+  <model name='old'>
+    <link name='base'/>
+    <link name='arm'/>
+    <joint name='arm' type='revolute'><parent>base</parent><child>arm</child>
+      <axis><xyz>0 0 1</xyz></axis></joint>
+  </model></sdf>)"}});
+  EXPECT_FALSE(v17.ok());
+  v17.ExpectDiagnostic(DiagKind::DuplicateName, "the name 'arm' is already used");
 }
 
-// A visual or collision sits on its own link, not on whatever its link's
-// name finds: before SDFormat 1.8 a <frame> may take the name first, and
-// the link is renamed NAME_link; the geometry still rides on that link,
-// posed from its frame (SDF-001, SDF-003).
-TEST(ResolveFrames, GeometryStaysOnItsLinkWhenAnOldFileRenamesTheLink) {
+// libsdformat loads a model's links before its frames, so in a file older
+// than SDFormat 1.7 a <frame> that takes a link's name first is the one
+// renamed (NAME_frame), wherever it stands; the link keeps the name, its
+// geometry stays on it, and a reference to the name means the link.
+TEST(ResolveFrames, OldFilesRenameAFrameNamedAsALinkWhereverItStands) {  // SDF-001, SDF-003
   SdfCompileResult r("<model name='top'><include><uri>old.sdf</uri></include></model>",
-                     {{"old.sdf", R"(<?xml version='1.0'?><sdf version='1.7'>
+                     {{"old.sdf", R"(<?xml version='1.0'?><sdf version='1.6'>
   <model name='old'>
     <link name='base'/>
     <frame name='arm'><pose>0 0 5 0 0 0</pose></frame>
+    <frame name='tip' attached_to='arm'><pose relative_to='arm'>0 0 0.5 0 0 0</pose></frame>
     <link name='arm'><pose>0 0 1 0 0 0</pose>
       <collision name='c'><pose>0.25 0 0 0 0 0</pose><geometry><sphere><radius>0.1</radius></sphere></geometry></collision>
       <visual name='v'><geometry><sphere><radius>0.1</radius></sphere></geometry></visual>
     </link>
   </model></sdf>)"}});
   ASSERT_TRUE(r.ok()) << r.Messages();
-  r.ExpectDiagnostic(DiagKind::RenamedDuplicate, "this link is renamed 'arm_link'");
+  r.ExpectDiagnostic(DiagKind::RenamedDuplicate, "this frame is renamed 'arm_frame'");
   const ir::Module& m = r.compilation().module;
-  const ir::Body& arm = BodyNamed(m, "top::old", "arm_link");
+  const ir::Body& arm = BodyNamed(m, "top::old", "arm");
   EXPECT_NEAR(arm.default_pose->p.z(), 1, kTol);
   ASSERT_EQ(m.geometries.size(), 2u);
   for (const ir::Geometry& geom : m.geometries) {
-    EXPECT_EQ(m.Text(m[geom.body.id].name), "arm_link") << m.Text(geom.name);
+    EXPECT_EQ(m.Text(m[geom.body.id].name), "arm") << m.Text(geom.name);
   }
   EXPECT_NEAR(m.geometries[0].X_BG.p.x(), 0.25, kTol);
-  EXPECT_NEAR(m.geometries[0].X_BG.p.z(), 0, kTol);
   EXPECT_TRUE(m.geometries[1].X_BG.p.isZero(kTol));
+  // 'tip' names the link, not the renamed frame 5 m up
+  const ir::Frame& tip = FrameNamed(m, "top::old", "tip");
+  EXPECT_EQ(m.Text(m[tip.body.id].name), "arm");
+  EXPECT_NEAR(tip.X_BF.p.z(), 0.5, kTol);
+  const ir::Frame& renamed = FrameNamed(m, "top::old", "arm_frame");
+  EXPECT_EQ(m.Text(m[renamed.body.id].name), "base");  // the model frame's canonical link
+  EXPECT_NEAR(renamed.X_BF.p.z(), 5, kTol);
+}
+
+// In a world libsdformat renames a <frame> that shares a model's name in
+// every version (NAME_frame); the model keeps the name, and a reference to
+// it means the model.
+TEST(ResolveFrames, AWorldFrameNamedAsAModelIsRenamedInEveryVersion) {  // SDF-001, SDF-003
+  SdfCompileResult r(R"(
+  <world name='w'>
+    <frame name='ground'><pose>0 0 3 0 0 0</pose></frame>
+    <model name='ground'><pose>0 2 0 0 0 0</pose><link name='L'/></model>
+    <frame name='above' attached_to='ground'><pose relative_to='ground'>0 0 1 0 0 0</pose></frame>
+  </world>)");
+  ASSERT_TRUE(r.ok()) << r.Messages();
+  r.ExpectDiagnostic(DiagKind::RenamedDuplicate,
+                     "the name 'ground' is also given to a model of this world; as libsdformat "
+                     "does in a world, this frame is renamed 'ground_frame'");
+  const ir::Module& m = r.compilation().module;
+  const ir::Frame& renamed = FrameNamed(m, "WorldModelInstance", "ground_frame");
+  EXPECT_NEAR(renamed.X_BF.p.z(), 3, kTol);
+  const ir::Frame& above = FrameNamed(m, "WorldModelInstance", "above");
+  EXPECT_EQ(m.Text(m[above.body.id].name), "L");
+  EXPECT_NEAR(above.X_BF.p.z(), 1, kTol);
 }
 
 TEST(ResolveFrames, CyclesAndDanglingNamesAreLocatedErrors) {  // SDF-004
