@@ -123,7 +123,7 @@ FrameNodeId SdfReader::AddNode(const ModelScope& s, ir::FrameNode node) {
         .Note(keeper.loc, fmt::format("the {} that keeps the name is here", keeper_kind));
     renamed.name = module().Intern(new_name);
     switch (renamed.target) {
-      case ir::FrameTarget::Joint: module().joints[renamed.target_index].name = renamed.name; break;
+      case ir::FrameTarget::Joint: RenameJoint(JointId(renamed.target_index), renamed.name); break;
       case ir::FrameTarget::Frame: module().frames[renamed.target_index].name = renamed.name; break;
       default: break;
     }
@@ -138,6 +138,15 @@ FrameNodeId SdfReader::AddNode(const ModelScope& s, ir::FrameNode node) {
         .Note(first.loc, "first defined here");
   }
   return g.Add(std::move(node));
+}
+
+void SdfReader::RenameJoint(JointId joint, Symbol name) {
+  module()[joint].name = name;
+  // a joint renamed after it was read (a nested model read later took its
+  // name) takes along the actuator made for it and named after it
+  for (ir::Actuator& a : module().actuators) {
+    if (a.unnamed && a.joint.id == joint) a.name = a.joint.name = name;
+  }
 }
 
 FrameNodeId SdfReader::AddAnchor(const ModelScope& s, const xml::XmlElement& pose_element,

@@ -102,6 +102,8 @@ class SdfReader {
   /// Before SDFormat 1.8 a link and a joint (say) could share a name: then
   /// it is a warning and the first definition keeps the name.
   FrameNodeId AddNode(const ModelScope& s, ir::FrameNode node);
+  /// Renames a joint AddNode renamed, and the actuator made for it.
+  void RenameJoint(JointId joint, Symbol name);
   /// Adds an unnamed anchor node: the pose of `pose_element` relative to its
   /// relative_to, defaulting to `link_name` (visuals, collisions, sensors).
   /// It is attached to its link's node, `link_node`, with no name lookup.

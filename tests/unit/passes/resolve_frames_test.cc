@@ -363,6 +363,31 @@ TEST(ResolveFrames, OldFilesRenameAFrameNamedAsALinkWhereverItStands) {  // SDF-
   EXPECT_NEAR(renamed.X_BF.p.z(), 5, kTol);
 }
 
+// A nested model is read after its parent's joints but keeps a name it
+// shares with one of them (SDFormat 1.6): the joint already read is renamed
+// after the fact, and the actuator made for it and named after it follows.
+TEST(ResolveFrames, AJointRenamedForANestedModelTakesItsActuatorAlong) {  // SDF-001, SDF-020
+  SdfCompileResult r("<model name='top'><include><uri>old.sdf</uri></include></model>",
+                     {{"old.sdf", R"(<?xml version='1.0'?><sdf version='1.6'>
+  <model name='old'>
+    <link name='base'/>
+    <joint name='sub' type='revolute'><parent>base</parent><child>sub::l</child>
+      <axis><xyz>0 0 1</xyz><limit><effort>5</effort></limit></axis></joint>
+    <model name='sub'><link name='l'/></model>
+  </model></sdf>)"}});
+  ASSERT_TRUE(r.ok()) << r.Messages();
+  r.ExpectDiagnostic(DiagKind::RenamedDuplicate,
+                     "the name 'sub' is also given to a nested model of this model; as "
+                     "libsdformat does for files older than SDFormat 1.7, this joint is renamed "
+                     "'sub_joint'");
+  const ir::Module& m = r.compilation().module;
+  const ir::Joint& joint = JointNamed(m, "sub_joint");
+  EXPECT_EQ(m.Text(m[joint.child.id].name), "l");
+  ASSERT_EQ(m.actuators.size(), 1u);
+  EXPECT_EQ(m.Text(m.actuators[0].name), "sub_joint");
+  EXPECT_EQ(m.Text(m.actuators[0].joint.name), "sub_joint");
+}
+
 // In a world libsdformat renames a <frame> that shares a model's name in
 // every version (NAME_frame); the model keeps the name, and a reference to
 // it means the model.
