@@ -51,11 +51,15 @@ std::optional<ModelId> UrdfReader::Read() {
   if (!model) return std::nullopt;
   model_ = *model;
 
-  // materials first: links may use a material defined later in the file
-  for (auto e = robot.FirstChild(); e; e = e.NextSibling()) {
+  // materials first: links may use a material defined later in the file.
+  // The walk starts at the first one, and a robot without any (as most
+  // are) is not walked twice: each child's first touch is a cache miss
+  // once the tree outgrows the cache
+  for (auto e = robot.Child("material"); e; e = e.NextSibling()) {
     if (e.Name() == "material") ReadRobotMaterial(e);
   }
   for (auto e = robot.FirstChild(); e; e = e.NextSibling()) {
+    if (xml::XmlElement next = e.NextSibling()) next.PrefetchSubtree();
     std::string_view tag = e.Name();
     if (tag == "link") {
       if (!Ignored(e)) ReadLink(e);
