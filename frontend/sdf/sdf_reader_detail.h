@@ -99,8 +99,10 @@ class SdfReader {
                         int version = 109);
   /// Adds a named frame node to scope `s`, reporting a sibling of the same
   /// name (SDF names of links, joints, frames and models share one namespace).
-  /// Before SDFormat 1.8 a link and a joint (say) could share a name: then
-  /// it is a warning and the first definition keeps the name.
+  /// As libsdformat does, a name shared across kinds in a model older than
+  /// SDFormat 1.7, or in a world, is a warning: the kind loaded earlier
+  /// (links and models, then joints, then frames) keeps it, and the other
+  /// is renamed NAME_joint or NAME_frame, wherever each stands in the file.
   FrameNodeId AddNode(const ModelScope& s, ir::FrameNode node);
   /// Renames a joint AddNode renamed, and the actuator made for it.
   void RenameJoint(JointId joint, Symbol name);
