@@ -38,7 +38,7 @@ struct PlantBody {
   std::optional<Eigen::Vector3d> surface_velocity_axis;  // unit, in B (EXT-060)
   /// A deformable link (EXT-070): outside the rigid plant's dynamics; it is
   /// kept as a massless body so its geometry and properties stay reachable.
-  std::optional<ir::DeformableProperties> deformable;
+  OptionalBox<ir::DeformableProperties> deformable;
   bool unnamed = false;  // named by the compiler
   // topology: the joint whose child this body is, its parent body and its
   // depth in the tree (world: invalid ids, level 0)

@@ -20,6 +20,7 @@
 #include "ir/curvilinear_path.h"
 #include "ir/dof_values.h"
 #include "ir/ids.h"
+#include "ir/optional_box.h"
 #include "ir/location.h"
 #include "ir/symbol.h"
 #include "ir/transform.h"
@@ -111,7 +112,7 @@ struct Body {
   /// simulated by FEM outside the rigid plant. It has no mass and no joint
   /// in the rigid plant; its one collision (and optional visual) geometry
   /// stays registered on it.
-  std::optional<DeformableProperties> deformable;
+  OptionalBox<DeformableProperties> deformable;  // boxed: rare, and 136 bytes
   /// SDFormat <inertial auto="true"> (SDF-007): the mass properties are
   /// computed from the body's collision geometry at this density (kg/m^3)
   std::optional<double> inertia_from_collisions;
@@ -265,7 +266,7 @@ struct Geometry {
   /// A geom registered twice (illustration and proximity) carries it once.
   std::optional<MassContribution> mass_contribution;
   /// MJCF: a primitive sized from a mesh (BEYOND-002).
-  std::optional<MeshFit> fit_to_mesh;
+  OptionalBox<MeshFit> fit_to_mesh;  // boxed: rare, and 144 bytes
   bool unnamed = false;  // named by the compiler
 };
 
