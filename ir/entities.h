@@ -20,8 +20,8 @@
 #include "ir/curvilinear_path.h"
 #include "ir/dof_values.h"
 #include "ir/ids.h"
-#include "ir/optional_box.h"
 #include "ir/location.h"
+#include "ir/optional_box.h"
 #include "ir/symbol.h"
 #include "ir/transform.h"
 
