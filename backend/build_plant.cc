@@ -228,9 +228,13 @@ class PlantBuilder {
                                 plant_.ScopedName(joint), src.default_positions.size(), joint.nq));
       Fail();
     }
-    ir::DofValues q(static_cast<size_t>(joint.nq), 0.0);
-    if (src.type == ir::JointType::QuaternionFloating) q[0] = 1;  // identity [w x y z]
-    return q;
+    // zero, or the identity quaternion [w x y z] first; built whole, so the
+    // list is recognized as a shared constant rather than copied and edited
+    double q[ir::DofValues::kCapacity] = {};
+    if (src.type == ir::JointType::QuaternionFloating) q[0] = 1;
+    ir::DofValues positions;
+    positions.assign(q, q + joint.nq);
+    return positions;
   }
 
   void AddActuator(const ir::Actuator& src) {

@@ -164,8 +164,8 @@ bool ReadCurvilinear(SdfReader& reader, const xml::XmlElement& e, DrakeChildRead
   joint.curvilinear_path = std::move(path);
   // Drake's curvilinear joint limits an open path to its ends
   if (!joint.curvilinear_path.periodic) {
-    joint.limits.lower[0] = 0;
-    joint.limits.upper[0] = joint.curvilinear_path.TotalLength();
+    joint.limits.lower.set(0, 0);
+    joint.limits.upper.set(0, joint.curvilinear_path.TotalLength());
   }
   return true;
 }

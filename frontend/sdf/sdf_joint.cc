@@ -239,14 +239,14 @@ void SdfReader::ReadJoint(const xml::XmlElement& e, ModelScope& s) {
   if (one_dof) {
     const AxisValues& v = values[0];
     if (type != "continuous" && joint.type != ir::JointType::Screw) {
-      joint.limits.lower[0] = v.lower;
-      joint.limits.upper[0] = v.upper;
+      joint.limits.lower.set(0, v.lower);
+      joint.limits.upper.set(0, v.upper);
     }
-    joint.limits.velocity_lower[0] = -v.velocity;
-    joint.limits.velocity_upper[0] = v.velocity;
-    joint.limits.acceleration_lower[0] = -v.acceleration;
-    joint.limits.acceleration_upper[0] = v.acceleration;
-    joint.limits.effort[0] = v.effort;
+    joint.limits.velocity_lower.set(0, -v.velocity);
+    joint.limits.velocity_upper.set(0, v.velocity);
+    joint.limits.acceleration_lower.set(0, -v.acceleration);
+    joint.limits.acceleration_upper.set(0, v.acceleration);
+    joint.limits.effort.set(0, v.effort);
   }
   if (joint.type == ir::JointType::Screw) {
     // meters per revolution; SDFormat before 1.10 wrote radians per meter

@@ -192,8 +192,8 @@ void UrdfReader::ReadAnyJoint(const xml::XmlElement& e, bool drake_element) {
   } else if (joint.type == ir::JointType::Curvilinear) {
     // Drake's curvilinear joint limits an open path to its ends
     if (ReadCurvilinearPath(e, joint) && !joint.curvilinear_path.periodic) {
-      joint.limits.lower[0] = 0;
-      joint.limits.upper[0] = joint.curvilinear_path.TotalLength();
+      joint.limits.lower.set(0, 0);
+      joint.limits.upper.set(0, joint.curvilinear_path.TotalLength());
     }
   }
 
@@ -301,8 +301,8 @@ void UrdfReader::ReadLimits(const xml::XmlElement& e, ir::Joint& joint, bool con
                                  module().Text(joint.name), lo, hi));
       return;
     }
-    joint.limits.lower[0] = lo;
-    joint.limits.upper[0] = hi;
+    joint.limits.lower.set(0, lo);
+    joint.limits.upper.set(0, hi);
   }
   for (auto [value, what] : {std::pair{&velocity, "velocity"}, {&effort, "effort"},
                              {&accel, "drake:acceleration"}}) {
@@ -314,13 +314,13 @@ void UrdfReader::ReadLimits(const xml::XmlElement& e, ir::Joint& joint, bool con
     }
   }
   if (velocity) {
-    joint.limits.velocity_lower[0] = -*velocity;
-    joint.limits.velocity_upper[0] = *velocity;
+    joint.limits.velocity_lower.set(0, -*velocity);
+    joint.limits.velocity_upper.set(0, *velocity);
   }
-  if (effort) joint.limits.effort[0] = *effort;
+  if (effort) joint.limits.effort.set(0, *effort);
   if (accel) {
-    joint.limits.acceleration_lower[0] = -*accel;
-    joint.limits.acceleration_upper[0] = *accel;
+    joint.limits.acceleration_lower.set(0, -*accel);
+    joint.limits.acceleration_upper.set(0, *accel);
   }
 }
 

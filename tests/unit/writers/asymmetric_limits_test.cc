@@ -51,9 +51,9 @@ class AsymmetricLimitsTest : public ::testing::TestWithParam<Format> {
 };
 
 TEST_P(AsymmetricLimitsTest, EachAsymmetricLimitIsALossyWarning) {
-  shoulder_->velocity_lower[0] = -1;  // upper stays 2
-  shoulder_->acceleration_lower[0] = -3;
-  shoulder_->acceleration_upper[0] = 4;
+  shoulder_->velocity_lower.set(0, -1);  // upper stays 2
+  shoulder_->acceleration_lower.set(0, -3);
+  shoulder_->acceleration_upper.set(0, 4);
   const std::vector<Diagnostic> diagnostics = Write();
   const std::string format = GetParam() == Format::Urdf ? "URDF" : "SDFormat";
   std::vector<std::string> lossy;
