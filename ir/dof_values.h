@@ -97,18 +97,6 @@ class DofValues {
     storage_ = table ? Storage::kShared : Storage::kInline;
   }
   void assign(const double* first, const double* last);
-  template <typename It>
-  void assign(It first, It last) {
-    double values[kCapacity];
-    size_t count = 0;
-    for (; first != last; ++first) {
-      CheckFits(count + 1);
-      values[count++] = *first;
-    }
-    const double* copied = values;
-    assign(copied, copied + count);
-  }
-
   std::vector<double> ToVector() const { return {begin(), end()}; }
 
   /// Whether the list points at a shared constant table (for tests).
