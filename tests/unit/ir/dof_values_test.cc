@@ -10,8 +10,8 @@
 #include <limits>
 #include <span>
 #include <sstream>
-#include <utility>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "ir/entities.h"
