@@ -36,6 +36,13 @@ const double* FindTable(const double* values, size_t count) {
   return nullptr;
 }
 
+// An owned copy of `count` values.
+double* HeapCopy(const double* values, size_t count) {
+  double* copy = new double[count];
+  std::copy(values, values + count, copy);
+  return copy;
+}
+
 }  // namespace
 
 void DofValues::ThrowTooMany() {
@@ -50,9 +57,13 @@ const double* DofValues::FillTable(double value) {
 }
 
 void DofValues::AssignFill(size_t count, double value) {
-  double values[kCapacity];
+  // not a shared table's fill (FillTable said so): the list owns its values
+  double* values = new double[count];
   std::fill_n(values, count, value);
-  assign(values, values + count);
+  Release();
+  slot_.values = values;
+  size_ = static_cast<uint8_t>(count);
+  storage_ = Storage::kHeap;
 }
 
 void DofValues::assign(const double* first, const double* last) {
@@ -68,8 +79,7 @@ void DofValues::assign(const double* first, const double* last) {
     slot.values = const_cast<double*>(table);
     storage = Storage::kShared;
   } else {
-    slot.values = new double[count];
-    std::copy(first, last, slot.values);
+    slot.values = HeapCopy(first, count);
     storage = Storage::kHeap;
   }
   Release();
@@ -79,14 +89,11 @@ void DofValues::assign(const double* first, const double* last) {
 }
 
 void DofValues::CopyHeap(const DofValues& other) {
-  slot_.values = new double[size_];
-  std::copy(other.slot_.values, other.slot_.values + size_, slot_.values);
+  slot_.values = HeapCopy(other.slot_.values, size_);
 }
 
 void DofValues::Unshare() {
-  double* heap = new double[size_];
-  std::copy(slot_.values, slot_.values + size_, heap);
-  slot_.values = heap;
+  slot_.values = HeapCopy(slot_.values, size_);
   storage_ = Storage::kHeap;
 }
 
