@@ -57,11 +57,23 @@ class ResolveFramesPass : public Pass {
   /// Pose of node x in the frame of scope C (every dependency evaluated).
   Transform PoseInScope(FrameNodeId x, FrameScopeId c) const;
   void EvaluateLocalPose(FrameNodeId n);
-  std::optional<FrameNodeId> AttachmentOf(FrameNodeId n);
+  /// The frame a model with no canonical_link is attached to.
+  std::optional<FrameNodeId> DefaultAttachment(const FrameScope& s) const;
+  /// The node n is fixed to: none for links, the world and a model without a
+  /// scope; else as looked up before the attachments are evaluated.
+  std::optional<FrameNodeId> AttachmentOf(const FrameNode& node, FrameNodeId n) const {
+    if (node.kind == FrameNodeKind::World || node.kind == FrameNodeKind::Link) return std::nullopt;
+    if (node.kind == FrameNodeKind::Model && !node.nested.valid()) return std::nullopt;
+    return attached_to_[n.index()];
+  }
   template <typename Deps, typename Eval>
   bool Evaluate(std::string_view graph_name, Deps&& deps, Eval&& eval);
   void ReportCycle(std::string_view graph_name, const std::vector<FrameNodeId>& cycle);
   // --- results ---
+  static bool HasResult(const FrameNode& node) {
+    return node.target != ir::FrameTarget::None && node.target != ir::FrameTarget::Body;
+  }
+  void WriteResult(FrameNodeId n);
   void WriteJoint(const ir::JointFrameSpec& spec);
   void WeldStaticLinks();
   std::string NodeName(FrameNodeId n) const;
@@ -191,24 +203,11 @@ void ResolveFramesPass::EvaluateLocalPose(FrameNodeId n) {
   local_[n.index()] = X;
 }
 
-std::optional<FrameNodeId> ResolveFramesPass::AttachmentOf(FrameNodeId n) {
-  const FrameNode& node = g()[n];
-  switch (node.kind) {
-    case FrameNodeKind::World:
-    case FrameNodeKind::Link:
-      return std::nullopt;
-    case FrameNodeKind::Model: {
-      if (!node.nested.valid()) return std::nullopt;
-      const FrameScope& s = g()[node.nested];
-      if (!s.canonical_link.empty()) return attached_to_[n.index()];
-      if (!s.links.empty()) return s.links.front();
-      for (FrameScopeId c : s.children) return g()[c].frame;
-      // a static model may have no link at all: its frame is fixed in the world
-      return g().scopes[0].frame;
-    }
-    default:
-      return attached_to_[n.index()];
-  }
+std::optional<FrameNodeId> ResolveFramesPass::DefaultAttachment(const FrameScope& s) const {
+  if (!s.links.empty()) return s.links.front();
+  for (FrameScopeId c : s.children) return g()[c].frame;
+  // a static model may have no link at all: its frame is fixed in the world
+  return g().scopes[0].frame;
 }
 
 void ResolveFramesPass::ReportCycle(std::string_view graph_name,
@@ -277,6 +276,41 @@ bool ResolveFramesPass::Evaluate(std::string_view graph_name, Deps&& deps, Eval&
     }
   }
   return ok;
+}
+
+// The pose of node n in its body's frame, written to the frame, geometry or
+// camera the node stands for.
+void ResolveFramesPass::WriteResult(FrameNodeId n) {
+  const FrameNode& node = g()[n];
+  const BodyId b = body_[n.index()];
+  const Transform X_BN = body_pose_[b.index()].inverse() * world_[n.index()];
+  const ir::Body& body = m()[b];
+  switch (node.target) {
+    case ir::FrameTarget::Frame: {
+      ir::Frame& f = m().frames[node.target_index];
+      f.body = {body.name, node.attached_to.loc.valid() ? node.attached_to.loc : node.loc, b};
+      f.X_BF = X_BN;
+      break;
+    }
+    case ir::FrameTarget::Geometry: {
+      ir::Geometry& geom = m().geometries[node.target_index];
+      geom.body = {body.name, node.loc, b};
+      geom.X_BG = X_BN;
+      break;
+    }
+    case ir::FrameTarget::Camera: {
+      // SDFormat sensors look along +x with +z up; Drake's camera frame
+      // looks along +z with +y down: C = (-Sy, -Sz, Sx)
+      Eigen::Matrix3d R_SC;
+      R_SC << 0, 0, 1, -1, 0, 0, 0, -1, 0;
+      ir::Camera& cam = m().cameras[node.target_index];
+      cam.body = {body.name, node.loc, b};
+      cam.X_BC = X_BN * Transform::FromRotation(R_SC);
+      break;
+    }
+    default:
+      break;
+  }
 }
 
 void ResolveFramesPass::WriteJoint(const ir::JointFrameSpec& spec) {
@@ -429,6 +463,8 @@ bool ResolveFramesPass::Run(PassContext& ctx) {
                                      "canonical link",
                                      m().Text(s.name)));
         lookups_ok = false;
+      } else {
+        attached_to_[i] = DefaultAttachment(s);
       }
       if (!s.placement_frame.empty()) {
         placement_[node.nested.index()] =
@@ -476,7 +512,7 @@ bool ResolveFramesPass::Run(PassContext& ctx) {
       "attached_to",
       [&](FrameNodeId n) {
         FrameDeps deps;
-        if (auto a = AttachmentOf(n)) deps.push_back(*a);
+        if (auto a = AttachmentOf(g()[n], n)) deps.push_back(*a);
         return deps;
       },
       [&](FrameNodeId n) {
@@ -485,7 +521,7 @@ bool ResolveFramesPass::Run(PassContext& ctx) {
           body_[n.index()] = ir::kWorldBody;
         } else if (node.kind == FrameNodeKind::Link) {
           body_[n.index()] = BodyId(node.target_index);
-        } else if (auto a = AttachmentOf(n)) {
+        } else if (auto a = AttachmentOf(node, n)) {
           body_[n.index()] = body_[a->index()];
         }
       });
@@ -504,56 +540,33 @@ bool ResolveFramesPass::Run(PassContext& ctx) {
     const FrameNodeId f = s.frame;
     world_[f.index()] = world_[g()[s.parent].frame.index()] * local_[f.index()];
   }
+  // then every other node, and the results (a model's too: its __model__
+  // frame), in one sweep over the nodes
+  // (in a scene of many models the nodes outgrow the cache, and each sweep
+  // reads them from memory again). A node's result needs its body's pose: a
+  // node written before its link in the file waits for the end.
+  body_pose_.assign(m().bodies.size(), Transform::Identity());
+  std::vector<bool> body_posed(m().bodies.size(), false);
+  body_posed[ir::kWorldBody.index()] = true;
+  std::vector<FrameNodeId> waiting;
   for (size_t i = 0; i < n_nodes; ++i) {
     const FrameNode& node = g().nodes[i];
     if (node.kind == FrameNodeKind::World) continue;
-    if (node.kind == FrameNodeKind::Model && node.nested.valid()) continue;  // done above
-    world_[i] = world_[g()[node.scope].frame.index()] * local_[i];
-  }
-
-  // results
-  body_pose_.assign(m().bodies.size(), Transform::Identity());
-  for (size_t i = 0; i < n_nodes; ++i) {
-    const FrameNode& node = g().nodes[i];
+    const bool scope_frame = node.kind == FrameNodeKind::Model && node.nested.valid();
+    if (!scope_frame) world_[i] = world_[g()[node.scope].frame.index()] * local_[i];
     if (node.kind == FrameNodeKind::Link) {
       body_pose_[node.target_index] = world_[i];
+      body_posed[node.target_index] = true;
       m().bodies[node.target_index].default_pose = world_[i];
+    } else if (const BodyId b = body_[i]; b.valid() && HasResult(node)) {
+      if (body_posed[b.index()]) {
+        WriteResult(FrameNodeId(i));
+      } else {
+        waiting.push_back(FrameNodeId(i));
+      }
     }
   }
-  for (size_t i = 0; i < n_nodes; ++i) {
-    const FrameNode& node = g().nodes[i];
-    const BodyId b = body_[i];
-    if (node.target == ir::FrameTarget::None || node.target == ir::FrameTarget::Body) continue;
-    if (!b.valid()) continue;
-    const Transform X_BN = body_pose_[b.index()].inverse() * world_[i];
-    const ir::Body& body = m()[b];
-    switch (node.target) {
-      case ir::FrameTarget::Frame: {
-        ir::Frame& f = m().frames[node.target_index];
-        f.body = {body.name, node.attached_to.loc.valid() ? node.attached_to.loc : node.loc, b};
-        f.X_BF = X_BN;
-        break;
-      }
-      case ir::FrameTarget::Geometry: {
-        ir::Geometry& geom = m().geometries[node.target_index];
-        geom.body = {body.name, node.loc, b};
-        geom.X_BG = X_BN;
-        break;
-      }
-      case ir::FrameTarget::Camera: {
-        // SDFormat sensors look along +x with +z up; Drake's camera frame
-        // looks along +z with +y down: C = (-Sy, -Sz, Sx)
-        Eigen::Matrix3d R_SC;
-        R_SC << 0, 0, 1, -1, 0, 0, 0, -1, 0;
-        ir::Camera& cam = m().cameras[node.target_index];
-        cam.body = {body.name, node.loc, b};
-        cam.X_BC = X_BN * Transform::FromRotation(R_SC);
-        break;
-      }
-      default:
-        break;
-    }
-  }
+  for (FrameNodeId n : waiting) WriteResult(n);
   for (const ir::JointFrameSpec& spec : g().joints) WriteJoint(spec);
   WeldStaticLinks();
   return !failed_ && !ctx.diags.has_errors();
