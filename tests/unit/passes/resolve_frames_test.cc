@@ -68,6 +68,27 @@ TEST(ResolveFrames, RelativeToChainThroughNestedModels) {  // SDF-003, SDF-030, 
   EXPECT_NEAR(((X_WB * F.X_BF).p - Eigen::Vector3d(1, 3, 1)).norm(), 0, kTol);
 }
 
+TEST(ResolveFrames, AFrameWrittenBeforeItsLinkIsPlacedOnIt) {  // SDF-003, SDF-004
+  // the pass writes a node's body-fixed pose as it reaches the node; a frame
+  // that names a link written further down waits until that link is placed
+  SdfCompileResult r(R"(
+  <model name='top'>
+    <frame name='early' attached_to='late'><pose relative_to='late'>0 0 2 0 0 0</pose></frame>
+    <link name='first'/>
+    <link name='late'><pose>1 0 0 0 0 1.5707963267948966</pose></link>
+  </model>)");
+  ASSERT_TRUE(r.ok()) << r.Messages();
+  const ir::Module& m = r.compilation().module;
+  const ir::Frame& early = FrameNamed(m, "top", "early");
+  EXPECT_EQ(m.Text(m[early.body.id].name), "late");
+  EXPECT_NEAR((early.X_BF.p - Eigen::Vector3d(0, 0, 2)).norm(), 0, kTol);
+  EXPECT_TRUE(early.X_BF.R.isApprox(Eigen::Matrix3d::Identity(), kTol));
+  // in the world, 2 above the link
+  const Transform X_WL = *BodyNamed(m, "top", "late").default_pose;
+  EXPECT_NEAR((X_WL.p - Eigen::Vector3d(1, 0, 0)).norm(), 0, kTol);
+  EXPECT_NEAR(((X_WL * early.X_BF).p - Eigen::Vector3d(1, 0, 2)).norm(), 0, kTol);
+}
+
 TEST(ResolveFrames, PlacementFramePutsTheNamedFrameAtThePose) {  // SDF-005
   SdfCompileResult r(R"(
   <model name='top'>
