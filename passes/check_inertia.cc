@@ -14,6 +14,7 @@
 #include <limits>
 #include <numbers>
 
+#include "passes/mesh/mass_properties.h"
 #include "passes/pass_registry.h"
 
 namespace mdlc::passes {
@@ -46,19 +47,6 @@ Eigen::Vector3d PrincipalMoments(const Eigen::Matrix3d& I) {
   return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I, Eigen::EigenvaluesOnly).eigenvalues();
 }
 
-/// True when the 3x3 symmetric `A` is positive definite by a margin that
-/// round-off cannot fake: its leading principal minors exceed 1e-10 times the
-/// matching power of `scale` (Sylvester's criterion), far above the error of
-/// computing them (a few machine epsilons times scale^k).
-bool ClearlyPositiveDefinite(const Eigen::Matrix3d& A, double scale) {
-  constexpr double kMargin = 1e-10;
-  const double m1 = A(0, 0);
-  const double m2 = A(0, 0) * A(1, 1) - A(0, 1) * A(0, 1);
-  const double m3 = A.determinant();
-  return m1 > kMargin * scale && m2 > kMargin * scale * scale &&
-         m3 > kMargin * scale * scale * scale;
-}
-
 /// Why a central inertia is not physical, or empty when it could be: the
 /// test of Drake's RotationalInertia::CouldBePhysicallyValid (which
 /// SpatialInertia::IsPhysicallyValid applies about the center of mass).
@@ -75,8 +63,8 @@ std::string Violation(const ir::Inertial& in) {
   // two (trace/2 - I positive definite: its eigenvalues are
   // (p_i + p_j - p_k) / 2), clearly enough that the test below would pass.
   const double trace = I.trace();
-  if (trace > 0 && ClearlyPositiveDefinite(I, trace) &&
-      ClearlyPositiveDefinite(0.5 * trace * Eigen::Matrix3d::Identity() - I, trace)) {
+  if (trace > 0 && mesh::ClearlyPositiveDefinite(I, trace) &&
+      mesh::ClearlyPositiveDefinite(0.5 * trace * Eigen::Matrix3d::Identity() - I, trace)) {
     return {};
   }
   const Eigen::Vector3d d = PrincipalMoments(I);

@@ -89,6 +89,15 @@ void PrincipalAxes(const Eigen::Matrix3d& inertia, Eigen::Vector3d* moments,
   if (axes->determinant() < 0) axes->col(2) *= -1;
 }
 
+bool ClearlyPositiveDefinite(const Eigen::Matrix3d& A, double scale) {
+  constexpr double kMargin = 1e-10;
+  const double m1 = A(0, 0);
+  const double m2 = A(0, 0) * A(1, 1) - A(0, 1) * A(0, 1);
+  const double m3 = A.determinant();
+  return m1 > kMargin * scale && m2 > kMargin * scale * scale &&
+         m3 > kMargin * scale * scale * scale;
+}
+
 namespace {
 
 constexpr double kMinVal = 1e-15;  // MuJoCo's mjMINVAL

@@ -75,4 +75,12 @@ std::optional<MujocoMeshProperties> MujocoMeshMassProperties(const TriangleMesh&
 void PrincipalAxes(const Eigen::Matrix3d& inertia, Eigen::Vector3d* moments,
                    Eigen::Matrix3d* axes);
 
+/// True when the 3x3 symmetric `A` is positive definite by a margin that
+/// round-off cannot fake: its leading principal minors exceed 1e-10 times the
+/// matching power of `scale` (Sylvester's criterion), far above the error of
+/// computing them (a few machine epsilons times scale^k). Then every
+/// eigenvalue an eigen-decomposition of A finds is positive too, so callers
+/// that only act on a non-positive one can skip the decomposition.
+bool ClearlyPositiveDefinite(const Eigen::Matrix3d& A, double scale);
+
 }  // namespace mdlc::mesh

@@ -272,5 +272,30 @@ TEST(MassAdjustmentsTest, SetTotalMassScalesEverythingLast) {  // BEYOND-006
   EXPECT_NEAR(total, 10, 1e-9);
 }
 
+TEST(MassAdjustmentsTest, DefaultBoundsLeaveAPhysicalInertiaUntouched) {  // BEYOND-006
+  // MuJoCo's defaults (no bounds, no balancing) only raise a principal moment
+  // below zero: a positive definite inertia keeps every bit, products and all,
+  // whether or not the pass decomposes it to find that out
+  MassFixture f;
+  f.module[f.model].mass_adjustments = ir::MassAdjustments{};
+  const BodyId full = f.AddBody("full", /*from_geometry=*/false);
+  ir::Inertial in;
+  in.mass = 1.25;
+  in.ixx = 0.0117757, in.iyy = 0.0175193, in.izz = 0.0216737;
+  in.ixy = 0.00307337, in.ixz = -0.00135823, in.iyz = -0.00365907;
+  f.module[full].inertial = in;
+  // a flat plate: one principal moment is zero, not clearly positive definite
+  const BodyId flat = f.AddBody("flat", /*from_geometry=*/false);
+  ir::Inertial plate;
+  plate.mass = 1;
+  plate.ixx = 0.5, plate.iyy = 0.5, plate.izz = 0;
+  f.module[flat].inertial = plate;
+  ASSERT_TRUE(f.RunMassPipeline()) << f.Messages();
+  const ir::Inertial& out = *f.module[full].inertial;
+  EXPECT_EQ(out.mass, in.mass);
+  EXPECT_EQ(f.InertiaB(full), Sym(in.ixx, in.iyy, in.izz, in.ixy, in.ixz, in.iyz));
+  EXPECT_EQ(f.InertiaB(flat), Sym(0.5, 0.5, 0, 0, 0, 0));
+}
+
 }  // namespace
 }  // namespace mdlc::testing
