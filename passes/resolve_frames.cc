@@ -540,11 +540,11 @@ bool ResolveFramesPass::Run(PassContext& ctx) {
     const FrameNodeId f = s.frame;
     world_[f.index()] = world_[g()[s.parent].frame.index()] * local_[f.index()];
   }
-  // then every other node, and the results (a model's too: its __model__
-  // frame), in one sweep over the nodes
-  // (in a scene of many models the nodes outgrow the cache, and each sweep
-  // reads them from memory again). A node's result needs its body's pose: a
-  // node written before its link in the file waits for the end.
+  // then every other node, writing each node's result (a model's too: its
+  // __model__ frame) in the same sweep: in a scene of many models the nodes
+  // outgrow the cache, and each sweep reads them from memory again. A result
+  // needs its body's pose, so a node written before its link in the file
+  // waits for the end.
   body_pose_.assign(m().bodies.size(), Transform::Identity());
   std::vector<bool> body_posed(m().bodies.size(), false);
   body_posed[ir::kWorldBody.index()] = true;
