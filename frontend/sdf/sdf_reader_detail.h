@@ -70,6 +70,9 @@ class SdfReader {
                                        xml::Need need = xml::Need::Optional);
   std::optional<double> TextDouble(const xml::XmlElement& e,
                                    xml::Finite finite = xml::Finite::Required);
+  /// TextDouble's slow path, for text that is not one number: its leading
+  /// number with a warning, or an error and nullopt when it has none.
+  std::optional<double> LeadingNumber(const xml::XmlElement& e, std::string_view text);
   std::optional<double> ChildDouble(const xml::XmlElement& parent, std::string_view name,
                                     xml::Need need = xml::Need::Optional,
                                     xml::Finite finite = xml::Finite::Required);

@@ -27,35 +27,39 @@ std::optional<std::string> SdfReader::ChildText(const xml::XmlElement& parent,
   return std::string(xml::Trim(child.TextView(storage)));
 }
 
+std::optional<double> SdfReader::LeadingNumber(const xml::XmlElement& e, std::string_view text) {
+  // libsdformat reads the leading number and drops the rest; real models
+  // rely on it ("2.35"" with a stray quote), so take the number, and warn
+  std::string_view trimmed = xml::Trim(text);
+  std::string copy(trimmed);
+  char* end = nullptr;
+  const double prefix = copy.empty() ? 0 : std::strtod(copy.c_str(), &end);
+  if (end && end != copy.c_str()) {
+    diags().Report(DiagKind::TrailingText, e.GetLoc(),
+                   fmt::format("<{}> holds '{}': the text after the number {} is ignored",
+                               e.Name(), trimmed, std::string_view(copy.c_str(), end - copy.c_str())));
+    return prefix;
+  }
+  diags().Report(DiagKind::BadValue, e.GetLoc(),
+                 fmt::format("<{}> must hold a number, found '{}'", e.Name(), trimmed));
+  return std::nullopt;
+}
+
 std::optional<double> SdfReader::TextDouble(const xml::XmlElement& e, xml::Finite finite) {
   std::string storage;
   const std::string_view text = e.TextView(storage);
-  auto v = xml::ParseDouble(text);
-  if (!v) {
-    // libsdformat reads the leading number and drops the rest; real models
-    // rely on it ("2.35"" with a stray quote), so take the number, and warn
-    std::string_view trimmed = xml::Trim(text);
-    std::string copy(trimmed);
-    char* end = nullptr;
-    const double prefix = copy.empty() ? 0 : std::strtod(copy.c_str(), &end);
-    if (end && end != copy.c_str()) {
-      diags().Report(DiagKind::TrailingText, e.GetLoc(),
-                     fmt::format("<{}> holds '{}': the text after the number {} is ignored",
-                                 e.Name(), trimmed, std::string_view(copy.c_str(), end - copy.c_str())));
-      v = prefix;
-    }
-  }
-  if (!v) {
-    diags().Report(DiagKind::BadValue, e.GetLoc(),
-                   fmt::format("<{}> must hold a number, found '{}'", e.Name(), xml::Trim(text)));
-    return std::nullopt;
-  }
-  if (finite == xml::Finite::Required && !std::isfinite(*v)) {
+  std::optional<double> parsed = xml::ParseDouble(text);
+  if (!parsed) parsed = LeadingNumber(e, text);
+  if (!parsed) return std::nullopt;
+  // returned as a plain double: an optional kept in memory and copied out
+  // whole is written in two parts and read in one, which stalls the load
+  const double value = *parsed;
+  if (finite == xml::Finite::Required && !std::isfinite(value)) {
     diags().Report(DiagKind::NonFinite, e.GetLoc(),
                    fmt::format("<{}> must be finite, found '{}'", e.Name(), xml::Trim(text)));
     return std::nullopt;
   }
-  return v;
+  return value;
 }
 
 std::optional<double> SdfReader::ChildDouble(const xml::XmlElement& parent, std::string_view name,
