@@ -177,11 +177,12 @@ void MassFromGeometryPass::Adjust(PassContext& ctx, ModelId model) {
     ir::Inertial& in = *b.inertial;
     in.mass = std::max(in.mass, adj.bound_mass);
     const Eigen::Matrix3d I = InertiaMatrix(in);
+    const double trace = I.trace();
     // no bound above zero and no balancing: only a moment below zero would
     // change, and a clearly positive definite inertia has none (the common
     // case, found without an eigen-decomposition per body)
-    if (adj.bound_inertia <= 0 && !adj.balance_inertia && I.trace() > 0 &&
-        mesh::ClearlyPositiveDefinite(I, I.trace())) {
+    if (adj.bound_inertia <= 0 && !adj.balance_inertia && trace > 0 &&
+        mesh::ClearlyPositiveDefinite(I, trace)) {
       continue;
     }
     Eigen::Vector3d moments;
