@@ -61,7 +61,7 @@ TreeBuilder::TreeBuilder(FileId file, const SourceManager& sources,
       arena_(arena),
       diags_(diags),
       limits_(sources.limits()),
-      locator_(sources.Contents(file), file, sources) {}
+      locator_(sources.Contents(file)) {}
 
 void TreeBuilder::Install(_xmlSAXHandler& sax) {
   // no libxml2 DOM at all: with these unset it makes no document, DTD or

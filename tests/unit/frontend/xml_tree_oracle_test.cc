@@ -187,6 +187,20 @@ TEST(XmlTreeOracleTest, EdgeCasesMatchLibxml2sDom) {
                           "</a><b>" + std::string(1000, ' ') + "</b>" + std::string(50, '\n') +
                           "<c/></r>";
   compared += CompareDocument(long_text, "long text");
+  // the scans read 16 bytes at a time: put tags, newlines, comments and
+  // values holding newlines at every offset within those blocks
+  std::string shifted = "<r>";
+  for (int blanks = 0; blanks < 40; ++blanks) {
+    for (int newlines = 0; newlines < 4; ++newlines) {
+      shifted += std::string(blanks, ' ') + std::string(newlines, '\n');
+      shifted += "<a k='" + std::string(blanks % 20, 'v') + std::string(newlines, '\n') + "w'" +
+                 std::string(newlines, '\n') + " m='1'>" + std::string(blanks % 7, '\n');
+      if (newlines == 2) shifted += "<!--" + std::string(blanks, '\n') + "<x>-->";
+      shifted += "<b/></a>";
+    }
+  }
+  shifted += "</r>";
+  compared += CompareDocument(shifted, "tags at every offset of a block");
   EXPECT_GE(compared, 20);
 }
 
