@@ -2,6 +2,9 @@
 // <frame> (SDF-007, SDF-008, SDF-042, SDF-043).
 #include <fmt/format.h>
 
+#include <iterator>
+#include <optional>
+
 #include "frontend/sdf/sdf_reader_detail.h"
 
 namespace mdlc::frontend::sdf {
@@ -102,11 +105,30 @@ void SdfReader::ReadLink(const xml::XmlElement& e, ModelScope& s) {
 }
 
 void SdfReader::ReadInertial(const xml::XmlElement& e, ir::Body& body) {
-  CheckChildren(e, {"mass", "pose", "inertia", "fluid_added_mass", "density", "auto"});
+  // one walk over the children finds the first of each known one and
+  // reports the others, instead of a search per name (every link has one)
+  static constexpr std::string_view kInertialChildren[] = {
+      "mass", "pose", "inertia", "fluid_added_mass", "density", "auto"};
+  xml::XmlElement mass, pose, inertia, fluid;
+  for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
+    const std::string_view tag = child.Name();
+    if (xml::SameName(tag, "mass")) {
+      if (!mass) mass = child;
+    } else if (xml::SameName(tag, "pose")) {
+      if (!pose) pose = child;
+    } else if (xml::SameName(tag, "inertia")) {
+      if (!inertia) inertia = child;
+    } else if (xml::SameName(tag, "fluid_added_mass")) {
+      if (!fluid) fluid = child;
+    } else {
+      CheckChild(e, child, kInertialChildren, {});
+    }
+  }
   ir::Inertial inertial;
   inertial.loc = e.GetLoc();
   inertial.mass = 1;  // libsdformat's default
   inertial.ixx = inertial.iyy = inertial.izz = 1;
+  const std::optional<double> mass_value = mass ? TextDouble(mass) : std::nullopt;
   if (auto a = attrs_.Bool(e, "auto"); a && *a) {
     // the inertia-from-collisions pass computes it once the collisions are placed
     double density = 1000;
@@ -119,10 +141,10 @@ void SdfReader::ReadInertial(const xml::XmlElement& e, ir::Body& body) {
       }
     }
     body.inertia_from_collisions = density;
-    if (auto mass = ChildDouble(e, "mass")) body.inertia_from_collisions_mass = *mass;
+    if (mass_value) body.inertia_from_collisions_mass = *mass_value;
   }
-  if (auto mass = ChildDouble(e, "mass")) inertial.mass = *mass;
-  if (xml::XmlElement pose = e.Child("pose")) {
+  if (mass_value) inertial.mass = *mass_value;
+  if (pose) {
     if (ir::NameRef r = RelativeTo(pose); !r.empty()) {
       diags().Report(DiagKind::UnsupportedAttribute, r.loc,
                      "relative_to on an <inertial> pose is not supported: the pose is relative "
@@ -130,21 +152,31 @@ void SdfReader::ReadInertial(const xml::XmlElement& e, ir::Body& body) {
     }
     inertial.X_BI = ReadPoseValue(pose);
   }
-  if (xml::XmlElement inertia = e.Child("inertia")) {
-    CheckChildren(inertia, {"ixx", "iyy", "izz", "ixy", "ixz", "iyz"});
-    if (auto v = ChildDouble(inertia, "ixx")) inertial.ixx = *v;
-    if (auto v = ChildDouble(inertia, "iyy")) inertial.iyy = *v;
-    if (auto v = ChildDouble(inertia, "izz")) inertial.izz = *v;
-    if (auto v = ChildDouble(inertia, "ixy")) inertial.ixy = *v;
-    if (auto v = ChildDouble(inertia, "ixz")) inertial.ixz = *v;
-    if (auto v = ChildDouble(inertia, "iyz")) inertial.iyz = *v;
-  }
-  if (auto fluid = e.Child("fluid_added_mass")) {
+  if (inertia) ReadMoments(inertia, inertial);
+  if (fluid) {
     diags().Report(DiagKind::UnsupportedElement, fluid.GetLoc(),
                    "tag 'fluid_added_mass' found as a child of 'inertial' is currently "
                    "unsupported and will be ignored");
   }
   body.inertial = inertial;
+}
+
+void SdfReader::ReadMoments(const xml::XmlElement& inertia, ir::Inertial& inertial) {
+  static constexpr std::string_view kMoments[] = {"ixx", "iyy", "izz", "ixy", "ixz", "iyz"};
+  double* const slots[] = {&inertial.ixx, &inertial.iyy, &inertial.izz,
+                           &inertial.ixy, &inertial.ixz, &inertial.iyz};
+  bool read[std::size(kMoments)] = {};
+  for (auto child = inertia.FirstChild(); child; child = child.NextSibling()) {
+    const std::string_view tag = child.Name();
+    size_t k = 0;
+    while (k < std::size(kMoments) && !xml::SameName(tag, kMoments[k])) ++k;
+    if (k == std::size(kMoments)) {
+      ReportUnknownChild(inertia, child, {});
+    } else if (!read[k]) {  // the first of each name counts, as a search would find
+      read[k] = true;
+      if (auto v = TextDouble(child)) *slots[k] = *v;
+    }
+  }
 }
 
 void SdfReader::ReadFrame(const xml::XmlElement& e, ModelScope& s) {

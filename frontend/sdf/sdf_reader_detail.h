@@ -141,6 +141,8 @@ class SdfReader {
   // --- sdf_link.cc ---
   void ReadLink(const xml::XmlElement& e, ModelScope& s);
   void ReadInertial(const xml::XmlElement& e, ir::Body& body);
+  /// The six moments of <inertia>, each the first element of its name.
+  void ReadMoments(const xml::XmlElement& inertia, ir::Inertial& inertial);
   void ReadFrame(const xml::XmlElement& e, ModelScope& s);
 
   // --- sdf_joint.cc ---
