@@ -106,9 +106,11 @@ bool StartTagLocator::Place(detail::ElementNode& element) {
     return true;
   }
   // "<name attr='v' ...>": libxml2 reports the attributes in the order
-  // written, so the next unplaced one is almost always the one met next;
-  // the list is searched only when it is not (namespace declarations are
-  // written like attributes but are not among them)
+  // written, so the next unplaced one is almost always the one met next,
+  // and its name is compared whole where the tag's next name starts, with
+  // no walk of it a byte at a time; the list is searched only when it is
+  // not (namespace declarations are written like attributes but are not
+  // among them)
   detail::AttributeNode* attributes = element.attributes;
   uint32_t next_unplaced = 0;
   const char* p = begin + start + 1;
@@ -121,26 +123,35 @@ bool StartTagLocator::Place(detail::ElementNode& element) {
     const char* const name_start = p;
     const uint32_t name_line = lines_.line;
     const uint32_t name_column = lines_.ColumnOf(name_start);
-    while (p < end && IsNameChar(*p)) ++p;
+    uint32_t found = count;
+    if (next_unplaced < count && attributes[next_unplaced].line == 0) {
+      const std::string_view expected = attributes[next_unplaced].name;
+      if (static_cast<size_t>(end - p) > expected.size() &&
+          SameName({p, expected.size()}, expected) && !IsNameChar(p[expected.size()])) {
+        found = next_unplaced;
+        p += expected.size();
+      }
+    }
+    if (found == count) {
+      while (p < end && IsNameChar(*p)) ++p;
+    }
     const std::string_view name(name_start, static_cast<size_t>(p - name_start));
-    for (; p < end && *p != '"' && *p != '\''; ++p) {
-      if (*p == '\n') lines_.PassNewlineAt(p);
+    if (p + 1 < end && *p == '=' && (p[1] == '"' || p[1] == '\'')) {
+      ++p;  // name="value", as nearly every attribute is written
+    } else {
+      for (; p < end && *p != '"' && *p != '\''; ++p) {
+        if (*p == '\n') lines_.PassNewlineAt(p);
+      }
     }
     if (p >= end) break;
     // a value holds no '<' and its own quote only as a reference, so the
     // next such quote closes it
     const char* const close = ScanTo(p + 1, end, *p, lines_);
     p = close < end ? close + 1 : end;
-    auto unplaced_named = [&](uint32_t k) {
-      return attributes[k].line == 0 && SameName(attributes[k].name, name);
-    };
-    uint32_t found = count;
-    if (next_unplaced < count && unplaced_named(next_unplaced)) {
-      found = next_unplaced;
-    } else {
-      for (uint32_t k = 0; k < count && found == count; ++k) {
-        if (unplaced_named(k)) found = k;
-      }
+    // any other name (a namespace declaration, or attributes libxml2
+    // reported in another order) is searched for among the unplaced
+    for (uint32_t k = 0; k < count && found == count; ++k) {
+      if (attributes[k].line == 0 && SameName(attributes[k].name, name)) found = k;
     }
     if (found == count) continue;
     attributes[found].line = name_line;
