@@ -40,7 +40,8 @@ inline uint32_t MatchMask(__m128i block, char c) {
 }
 #endif
 
-// Counts into `lines` the newlines that `mask` marks among the bytes at `p`.
+// Counts into `lines` the newlines that `mask` marks among the bytes at `p`
+// (16 or 32 of them).
 // A block holds one newline or none nearly always, so they are counted one
 // by one (std::popcount is a library call where the processor's own
 // instruction is not assumed).
@@ -51,6 +52,21 @@ inline void PassNewlines(uint32_t mask, const char* p, LineCursor& lines) {
 }
 
 }  // namespace detail
+
+#if defined(__SSE2__)
+/// The 32 bytes at `p` (all readable) equal to `c`, and those that are
+/// newlines, as bit masks (bit i: p[i]).
+struct WindowMasks {
+  uint32_t hits;
+  uint32_t newlines;
+};
+inline WindowMasks MatchWindow(const char* p, char c) {
+  const __m128i low = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
+  const __m128i high = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + 16));
+  return {detail::MatchMask(low, c) | detail::MatchMask(high, c) << 16,
+          detail::MatchMask(low, '\n') | detail::MatchMask(high, '\n') << 16};
+}
+#endif
 
 /// The first `target` in [p, end), or `end` when there is none; the
 /// newlines before it are counted into `lines`.

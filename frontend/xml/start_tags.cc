@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 
 #include "frontend/xml/trim.h"
 
@@ -66,6 +67,33 @@ size_t FindStartTag(std::string_view text, size_t pos, std::optional<size_t>* en
   const char* const end = begin + text.size();
   LineCursor at = lines;  // kept in registers through the loop
   const char* p = begin + pos;
+#if defined(__SSE2__)
+  // 32 bytes at a time while the text has more: the next '<' is nearly
+  // always among them, and after an end tag's '<' the next one's mostly is
+  // too, so a window is read once for both
+  while (end - p > 32) {  // more than 32: a '<' found has a byte after it
+    const WindowMasks window = MatchWindow(p, '<');
+    const char* resume = nullptr;
+    for (uint32_t lt = window.hits; lt != 0; lt &= lt - 1) {
+      const int i = std::countr_zero(lt);
+      const char* const tag = p + i;
+      if (tag[1] == '/') continue;  // an end tag holds no other '<'
+      detail::PassNewlines(window.newlines & ((1u << i) - 1), p, at);
+      if (tag[1] != '!' && tag[1] != '?') {
+        lines = at;
+        return static_cast<size_t>(tag - begin);
+      }
+      resume = SkipMarkup(text, tag, entity_decl, at);
+      break;
+    }
+    if (resume) {
+      p = resume;
+    } else {
+      detail::PassNewlines(window.newlines, p, at);
+      p += 32;
+    }
+  }
+#endif
   while (true) {
     p = ScanTo(p, end, '<', at);
     if (end - p < 2) {
