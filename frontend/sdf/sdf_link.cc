@@ -128,7 +128,13 @@ void SdfReader::ReadInertial(const xml::XmlElement& e, ir::Body& body) {
   inertial.loc = e.GetLoc();
   inertial.mass = 1;  // libsdformat's default
   inertial.ixx = inertial.iyy = inertial.izz = 1;
-  const std::optional<double> mass_value = mass ? TextDouble(mass) : std::nullopt;
+  bool mass_given = false;
+  if (mass) {
+    if (auto v = TextDouble(mass)) {
+      inertial.mass = *v;
+      mass_given = true;
+    }
+  }
   if (auto a = attrs_.Bool(e, "auto"); a && *a) {
     // the inertia-from-collisions pass computes it once the collisions are placed
     double density = 1000;
@@ -141,9 +147,8 @@ void SdfReader::ReadInertial(const xml::XmlElement& e, ir::Body& body) {
       }
     }
     body.inertia_from_collisions = density;
-    if (mass_value) body.inertia_from_collisions_mass = *mass_value;
+    if (mass_given) body.inertia_from_collisions_mass = inertial.mass;
   }
-  if (mass_value) inertial.mass = *mass_value;
   if (pose) {
     if (ir::NameRef r = RelativeTo(pose); !r.empty()) {
       diags().Report(DiagKind::UnsupportedAttribute, r.loc,
