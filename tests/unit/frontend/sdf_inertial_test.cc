@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 
 #include "tests/unit/sdf_test_util.h"
 
@@ -18,6 +19,13 @@ const ir::Inertial& OnlyInertial(const SdfFrontendResult& r) {
   return *r.module.bodies.back().inertial;
 }
 
+/// Mass and moments, in the order ixx, iyy, izz, ixy, ixz, iyz.
+void ExpectMassAndMoments(const ir::Inertial& i, double mass, std::array<double, 6> moments) {
+  EXPECT_EQ(i.mass, mass);
+  const std::array<double, 6> read = {i.ixx, i.iyy, i.izz, i.ixy, i.ixz, i.iyz};
+  EXPECT_EQ(read, moments);
+}
+
 TEST(SdfInertial, EveryChildIsReadInAnyOrder) {  // SDF-007
   SdfFrontendResult r;
   ASSERT_TRUE(r.Read(SdfLink(R"(<inertial>
@@ -27,13 +35,7 @@ TEST(SdfInertial, EveryChildIsReadInAnyOrder) {  // SDF-007
       <mass>2.5</mass></inertial>)")))
       << r.Messages();
   const ir::Inertial& i = OnlyInertial(r);
-  EXPECT_EQ(i.mass, 2.5);
-  EXPECT_EQ(i.ixx, 0.1);
-  EXPECT_EQ(i.iyy, 0.2);
-  EXPECT_EQ(i.izz, 0.3);
-  EXPECT_EQ(i.ixy, 0.04);
-  EXPECT_EQ(i.ixz, 0.05);
-  EXPECT_EQ(i.iyz, 0.06);
+  ExpectMassAndMoments(i, 2.5, {0.1, 0.2, 0.3, 0.04, 0.05, 0.06});
   EXPECT_EQ(i.X_BI.p, Eigen::Vector3d(1, 2, 3));
 }
 
@@ -41,14 +43,7 @@ TEST(SdfInertial, AbsentChildrenTakeLibsdformatDefaults) {  // SDF-007
   SdfFrontendResult r;
   ASSERT_TRUE(r.Read(SdfLink("<inertial><inertia><ixy>0.5</ixy></inertia></inertial>")))
       << r.Messages();
-  const ir::Inertial& i = OnlyInertial(r);
-  EXPECT_EQ(i.mass, 1);
-  EXPECT_EQ(i.ixx, 1);
-  EXPECT_EQ(i.iyy, 1);
-  EXPECT_EQ(i.izz, 1);
-  EXPECT_EQ(i.ixy, 0.5);
-  EXPECT_EQ(i.ixz, 0);
-  EXPECT_EQ(i.iyz, 0);
+  ExpectMassAndMoments(OnlyInertial(r), 1, {1, 1, 1, 0.5, 0, 0});
 }
 
 TEST(SdfInertial, TheFirstOfARepeatedChildCounts) {  // SDF-007
