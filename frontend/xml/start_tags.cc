@@ -32,7 +32,7 @@ bool IsNameChar(char c) { return kNameChar[static_cast<unsigned char>(c)]; }
     return found == std::string_view::npos ? text.size() : found + terminator.size();
   };
   const std::string_view rest = text.substr(pos);
-  size_t next = pos + 1;  // a lone "<!" or "<?" that is none of these: step over it
+  size_t next = pos + 1;  // a guard: every "<!" and "<?" is one of the cases below
   if (rest.starts_with("<!--")) {
     next = past("-->");
   } else if (rest.starts_with("<![CDATA[")) {
