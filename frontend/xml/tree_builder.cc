@@ -20,6 +20,17 @@ TreeBuilder& BuilderOf(void* ctx) {
 
 std::string_view View(const unsigned char* s) { return reinterpret_cast<const char*>(s); }
 
+// Entity lookups, the last guard against expansion. After a fatal error
+// libxml2 stops calling the handlers, OnEntityDeclaration among them, yet
+// still records an internal entity's declaration for itself and expands
+// references to it in attribute values; a lookup that knows only XML's five
+// predefined entities leaves every declared one undefined, whatever was
+// recorded.
+xmlEntityPtr PredefinedEntityOnly(void*, const xmlChar* name) {
+  return xmlGetPredefinedEntity(name);
+}
+xmlEntityPtr NoParameterEntity(void*, const xmlChar*) { return nullptr; }
+
 // XML's four blank characters only. Indentation is most of the text of a
 // deeply nested document, so runs of spaces are passed eight at a time.
 bool IsBlank(std::string_view text) {
@@ -83,6 +94,8 @@ void TreeBuilder::Install(_xmlSAXHandler& sax) {
   sax.comment = OnComment;
   sax.processingInstruction = OnProcessingInstruction;
   sax.entityDecl = OnEntityDeclaration;
+  sax.getEntity = PredefinedEntityOnly;
+  sax.getParameterEntity = NoParameterEntity;
 }
 
 // ---- callbacks ----------------------------------------------------------------

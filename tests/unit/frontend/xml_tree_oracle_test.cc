@@ -176,6 +176,9 @@ TEST(XmlTreeOracleTest, EdgeCasesMatchLibxml2sDom) {
       // holding a newline, '>' and '/', several tags on one line, no final newline
       "<r\r\n  a='1'\r\n\tb=\"2\"><c\n/><d e='x\ny' f='>' g=\"/\"/><e h='1'/><e h='2'/>\r\n</r>",
       "<r><a b='1'\n\n\n c='2'\n/>\n\n<d/></r>",
+      // "<!--->" opens a comment and does not close it: what follows, up to
+      // the next "-->", is the comment's
+      "<r><!--->\n<a/>\n--><b/>\n<?p?><c/></r>",
       // unclosed, and a duplicate attribute: refused by both
       "<r><a>",
       "<r a='1' a='2'/>",
