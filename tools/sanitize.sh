@@ -4,6 +4,7 @@
 #
 #   tools/sanitize.sh [SECONDS]   SECONDS per fuzzer (default 60)
 #   FUZZERS="urdf sdf"            only these fuzzers (default: all five)
+#   FUZZ_ONLY=1                   skip the test suite (a longer hunt)
 #
 # Builds with clang in BUILD_DIR (default: build-sanitize), every library
 # instrumented for the sanitizers and for coverage; runs the unit,
@@ -47,7 +48,6 @@ targets=(mdlc mdlc_unit_tests mdlc_cli_test mdlc_convert_test
          fuzz_urdf fuzz_sdf fuzz_mjcf fuzz_directives fuzz_mesh)
 cmake --build "$build_dir" -j "$jobs" --target "${targets[@]}"
 
-echo "==> the test suite under ASan and UBSan"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # leaks inside third-party libraries, each one explained in the file
@@ -55,8 +55,11 @@ export LSAN_OPTIONS=suppressions=$root/tests/fuzz/lsan_suppressions.txt
 # the targets built above discover their own tests; the script-driven ones
 # that need other targets (oracles, Python, the embed examples, corpus runs)
 # are left to the ordinary build
-(cd "$build_dir" && ctest --output-on-failure -j "$jobs" --timeout 900 \
-   -E 'oracle|Oracle|python|embed|corpus|Corpus|convert/|layers/|[Dd]eterminism|ReferenceRejects|view_in_browser|readme')
+if [ -z "${FUZZ_ONLY:-}" ]; then
+  echo "==> the test suite under ASan and UBSan"
+  (cd "$build_dir" && ctest --output-on-failure -j "$jobs" --timeout 900 \
+     -E 'oracle|Oracle|python|embed|corpus|Corpus|convert/|layers/|[Dd]eterminism|ReferenceRejects|view_in_browser|readme')
+fi
 
 echo "==> fuzzing, ${seconds}s per harness"
 fuzz_root="$build_dir/fuzz"
@@ -88,6 +91,28 @@ for fuzzer in ${FUZZERS:-urdf sdf mjcf directives mesh}; do
       [ -d "$dir" ] && find "$dir" -type f \( -name '*.urdf' -o -name '*.sdf' -o -name '*.xml' \
         -o -name '*.yaml' \) -size -64k -exec cp -t "$work/corpus" {} + 2>/dev/null || true
     done
+  fi
+  # the shared corpus, when present: real models of the fuzzer's format (by
+  # the manifest's format column) and real meshes, each small enough for
+  # -max_len
+  if [ -f "$shared/corpus/manifest.tsv" ]; then
+    case $fuzzer in
+      urdf) format=urdf ;; sdf) format=sdf ;; mjcf) format=mjcf ;;
+      directives) format=dmd ;; mesh) format=mesh ;;
+    esac
+    while IFS= read -r path; do
+      f="$shared/corpus/$path"
+      [ -f "$f" ] && [ "$(stat -L -c %s "$f")" -lt 65536 ] || continue
+      name="corpus_$(printf '%s' "$path" | tr '/' '_')"
+      if [ "$fuzzer" = mesh ]; then
+        case ${path,,} in
+          *.obj) i=0 ;; *.stl) i=1 ;; *.dae) i=2 ;; *.gltf) i=3 ;; *.ply) i=4 ;; *) continue ;;
+        esac
+        { printf "\\x$(printf %02x $i)"; cat "$f"; } > "$work/corpus/$name"
+      else
+        cp "$f" "$work/corpus/$name"
+      fi
+    done < <(awk -F'\t' -v format="$format" '$1 == format { print $2 }' "$shared/corpus/manifest.tsv")
   fi
   if [ -d "$root/tests/fuzz/regressions/$fuzzer" ]; then
     cp "$root/tests/fuzz/regressions/$fuzzer"/* "$work/corpus/" 2>/dev/null || true
