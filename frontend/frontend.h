@@ -32,6 +32,8 @@ struct FrontendOptions {
   bool single_model = false;
 };
 
+struct RenameSuffixes;  // model_naming.h
+
 /// Everything a frontend works with. Owns nothing.
 struct FrontendContext {
   SourceManager& sources;
@@ -43,6 +45,9 @@ struct FrontendContext {
   /// The compile's parsed XML files, so a file loaded many times is parsed
   /// once; null to parse every load.
   xml::DocumentCache* documents = nullptr;
+  /// The compile's auto-rename suffixes, so renaming many copies of one
+  /// name stays linear; null to search each rename from NAME_1.
+  RenameSuffixes* renames = nullptr;
 };
 
 /// Parses an XML buffer through ctx.documents, when there is one.

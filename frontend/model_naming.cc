@@ -26,9 +26,11 @@ std::optional<ModelId> AddModelInstance(std::string_view requested, Loc loc,
       if (first.valid()) diag.Note(first, "the first model instance of that name is defined here");
       return std::nullopt;
     }
-    for (int n = 1;; ++n) {
+    int* last = ctx.renames ? &ctx.renames->last[name] : nullptr;
+    for (int n = last ? *last + 1 : 1;; ++n) {
       std::string candidate = fmt::format("{}_{}", name, n);
       if (!FindModelInstance(ctx.module, candidate)) {
+        if (last) *last = n;
         name = std::move(candidate);
         break;
       }

@@ -2,11 +2,22 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <string_view>
+
+#include <absl/container/flat_hash_map.h>
 
 #include "frontend/frontend.h"
 
 namespace mdlc::frontend {
+
+/// The suffix auto-rename last gave each name. NAME_1, NAME_2, ... stay
+/// taken once taken (frontends never free a name), so the next rename of
+/// NAME starts past it and gets the first free suffix all the same; searched
+/// from NAME_1 every time, n copies of one model took n^2/2 lookups.
+struct RenameSuffixes {
+  absl::flat_hash_map<std::string, int> last;
+};
 
 /// The model instance whose full name is exactly `name`, if any.
 std::optional<ModelId> FindModelInstance(const ir::Module& module, std::string_view name);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "frontend/model_naming.h"
 #include "passes/mesh/in_process_reader.h"
 #include "passes/pass_registry.h"
 
@@ -32,7 +33,9 @@ bool Compilation::RunFrontends() {
   // document_cache.h); the trees go when the frontends are done, as the IR
   // holds copies of what it needs
   xml::DocumentCache documents;
-  frontend::FrontendContext ctx{sources, diags, module, options.frontend, packages, &documents};
+  frontend::RenameSuffixes renames;
+  frontend::FrontendContext ctx{sources, diags, module, options.frontend, packages, &documents,
+                                &renames};
   for (const Input& input : options.inputs) {
     // keep going: report the problems of every input in one run
     ReadInput(input, ctx);

@@ -187,6 +187,27 @@ TEST(CompileApi, NamingAndPipelineOptions) {
   EXPECT_FALSE(Compile(Input::Text(kPendulum, "p.urdf"), unknown_pass).ok());
 }
 
+// COMMON-022: auto-rename gives each copy the first free NAME_n. The
+// compile remembers the last n of each name, so many copies stay linear;
+// a suffix another model took is still skipped, and the names are those a
+// search from NAME_1 gives.
+TEST(CompileApi, AutoRenameTakesTheFirstFreeSuffixOfEachName) {
+  const std::string taken = std::string(kPendulum).replace(
+      std::string(kPendulum).find("\"pendulum\""), 10, "\"pendulum_2\"");
+  std::vector<Input> inputs = {Input::Text(taken, "taken.urdf")};
+  for (int i = 0; i < 4; ++i) inputs.push_back(Input::Text(kPendulum, "p.urdf"));
+  Options options;
+  options.auto_rename = true;
+  const Result r = Compile(inputs, options);
+  ASSERT_TRUE(r.ok());
+  std::vector<std::string> names;
+  for (const std::string& name : r.plant().model_instances) names.push_back(name);
+  const std::vector<std::string> expected = {"pendulum_2", "pendulum", "pendulum_1",
+                                             "pendulum_3", "pendulum_4"};
+  ASSERT_GE(names.size(), expected.size());
+  EXPECT_EQ(std::vector<std::string>(names.end() - expected.size(), names.end()), expected);
+}
+
 TEST(CompileApi, ResultsMoveAndOutliveTheirInputs) {
   Result r = [] {
     const std::string text = kPendulum;  // gone when the lambda returns
