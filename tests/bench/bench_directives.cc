@@ -7,6 +7,9 @@
 //   yaml_parse/dmd_chain/N  yaml-cpp's parse of the scene file alone (the floor)
 //   frontend/dmd_chain/N    the directives frontend, loading the N models
 //   compile/dmd_chain/N     the whole compile (frontends, passes, backend)
+//   frontend/auto_renamed/N N copies of the arm's URDF given as N inputs
+//                           under one name, auto-renamed arm, arm_1, ...
+//                           (COMMON-022): each rename starts past the last
 // Each reports a BigO fit over N. Files go to a temporary folder, made once.
 // The floor leaves out the arm's URDF, which every add_model loads: a
 // compile parses its text twice (frontend/xml/document_cache.h) and lowers
@@ -127,6 +130,19 @@ void BM_Compile(benchmark::State& state) {
   Finish(state);
 }
 
+void BM_AutoRenamed(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    state.PauseTiming();
+    auto c = std::make_unique<Compilation>();
+    c->options.inputs.assign(n, Input::Text(kArm, "arm.urdf"));
+    c->options.frontend.auto_rename = true;
+    state.ResumeTiming();
+    if (!c->RunFrontends()) state.SkipWithError("the copies did not load");
+  }
+  state.SetComplexityN(n);
+}
+
 void RegisterAll() {
   const std::pair<const char*, void (*)(benchmark::State&)> stages[] = {
       {"yaml_parse/dmd_chain", BM_YamlParse},
@@ -137,6 +153,9 @@ void RegisterAll() {
     for (int n : kSizes) b->Arg(n);
     b->Unit(benchmark::kMillisecond)->Complexity(benchmark::oN);
   }
+  auto* renamed = benchmark::RegisterBenchmark("frontend/auto_renamed", BM_AutoRenamed);
+  for (int n : kSizes) renamed->Arg(n);
+  renamed->Arg(10000)->Unit(benchmark::kMillisecond)->Complexity(benchmark::oN);
 }
 
 }  // namespace
