@@ -66,11 +66,15 @@ fuzz_root="$build_dir/fuzz"
 status=0
 for fuzzer in ${FUZZERS:-urdf sdf mjcf directives mesh}; do
   case $fuzzer in
-    urdf) seeds=("$root/tests/models/urdf" "$root/tests/diag/urdf" "$root/examples/urdf") ;;
-    sdf) seeds=("$root/tests/models/sdf" "$root/tests/diag/sdf" "$root/examples/sdf") ;;
-    mjcf) seeds=("$root/tests/models/mjcf" "$root/tests/diag/mjcf" "$root/examples/mjcf") ;;
-    directives) seeds=("$root/tests/models/dmd" "$root/tests/diag/dmd" "$root/examples/directives") ;;
-    mesh) seeds=() ;;
+    urdf) seeds=("$root/tests/models/urdf" "$root/tests/diag/urdf" "$root/examples/urdf")
+          format=urdf ;;
+    sdf) seeds=("$root/tests/models/sdf" "$root/tests/diag/sdf" "$root/examples/sdf")
+         format=sdf ;;
+    mjcf) seeds=("$root/tests/models/mjcf" "$root/tests/diag/mjcf" "$root/examples/mjcf")
+          format=mjcf ;;
+    directives) seeds=("$root/tests/models/dmd" "$root/tests/diag/dmd" "$root/examples/directives")
+                format=dmd ;;
+    mesh) seeds=() format=mesh ;;
   esac
   work="$fuzz_root/$fuzzer"
   rm -rf "$work/corpus"
@@ -92,14 +96,10 @@ for fuzzer in ${FUZZERS:-urdf sdf mjcf directives mesh}; do
         -o -name '*.yaml' \) -size -64k -exec cp -t "$work/corpus" {} + 2>/dev/null || true
     done
   fi
-  # the shared corpus, when present: real models of the fuzzer's format (by
-  # the manifest's format column) and real meshes, each small enough for
+  # the shared corpus, when present: real models of the fuzzer's format (the
+  # manifest's format column) and real meshes, each small enough for
   # -max_len
   if [ -f "$shared/corpus/manifest.tsv" ]; then
-    case $fuzzer in
-      urdf) format=urdf ;; sdf) format=sdf ;; mjcf) format=mjcf ;;
-      directives) format=dmd ;; mesh) format=mesh ;;
-    esac
     while IFS= read -r path; do
       f="$shared/corpus/$path"
       [ -f "$f" ] && [ "$(stat -L -c %s "$f")" -lt 65536 ] || continue

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <iterator>
+#include <utility>
 
 #include "frontend/xml/trim.h"
 
@@ -27,20 +29,18 @@ bool IsNameChar(char c) { return kNameChar[static_cast<unsigned char>(c)]; }
 [[gnu::noinline]] const char* SkipMarkup(std::string_view text, const char* at,
                                          std::optional<size_t>* entity_decl, LineCursor& lines) {
   const size_t pos = static_cast<size_t>(at - text.data());
-  // the terminator is looked for after the opener, as libxml2 does: "<!--->"
-  // opens a comment, it does not close one
-  auto past = [&](std::string_view opener, std::string_view terminator) {
-    const size_t found = text.find(terminator, pos + opener.size());
-    return found == std::string_view::npos ? text.size() : found + terminator.size();
-  };
+  // comments, CDATA sections and processing instructions end at their
+  // terminator, looked for after the opener as libxml2 does: "<!--->" opens
+  // a comment, it does not close one
+  static constexpr std::pair<std::string_view, std::string_view> kSpans[] = {
+      {"<!--", "-->"}, {"<![CDATA[", "]]>"}, {"<?", "?>"}};
   const std::string_view rest = text.substr(pos);
   size_t next = pos + 1;  // a guard: every "<!" and "<?" is one of the cases below
-  if (rest.starts_with("<!--")) {
-    next = past("<!--", "-->");
-  } else if (rest.starts_with("<![CDATA[")) {
-    next = past("<![CDATA[", "]]>");
-  } else if (rest.starts_with("<?")) {
-    next = past("<?", "?>");
+  const auto* span = std::find_if(std::begin(kSpans), std::end(kSpans),
+                                  [&](const auto& s) { return rest.starts_with(s.first); });
+  if (span != std::end(kSpans)) {
+    const size_t found = text.find(span->second, pos + span->first.size());
+    next = found == std::string_view::npos ? text.size() : found + span->second.size();
   } else if (rest.starts_with("<!")) {
     // DOCTYPE (with an optional [internal subset]) or another declaration;
     // a quoted ']' or '>' can end the DOCTYPE early here, so a declaration
