@@ -79,8 +79,7 @@ BodyItems Collect(MjcfReader& r, const xml::XmlElement& body, const std::string&
     if (tag == "frame") {
       r.CheckAttributes(e, "frame");
       // BEYOND-004: the frame's pose composes onto everything inside it
-      static const DefaultClasses kNoDefaults;
-      auto X = r.ReadPose(Element(e, "frame", "main", kNoDefaults));
+      auto X = r.ReadPose(Element(e, "frame"));
       std::string cls = s.childclass;
       if (auto cc = e.Attribute("childclass"); cc.present()) {
         if (r.defaults.Has(cc.value)) {
@@ -122,8 +121,7 @@ BodyItems Collect(MjcfReader& r, const xml::XmlElement& body, const std::string&
 /// MJCF-030: <inertial> -> ir::Inertial (nullopt after an error).
 std::optional<ir::Inertial> ReadInertial(MjcfReader& r, const xml::XmlElement& e) {
   r.CheckAttributes(e, "inertial");
-  static const DefaultClasses kNoDefaults;
-  const Element in(e, "inertial", "main", kNoDefaults);
+  const Element in(e, "inertial");
   ir::Inertial inertial;
   inertial.loc = e.GetLoc();
   if (!e.Attribute("mass").present()) {
@@ -265,8 +263,7 @@ void MjcfReader::LowerWorldBody(const xml::XmlElement& worldbody) {
                        fmt::format("unknown default childclass '{}'", cc.value));
       }
     }
-    static const DefaultClasses kNoDefaults;
-    b.X_PB0 = p.item.X_BF * ReadPose(Element(e, "body", "main", kNoDefaults)).value_or(Transform());
+    b.X_PB0 = p.item.X_BF * ReadPose(Element(e, "body")).value_or(Transform());
     b.X_WB0 = p.X_WP0 * b.X_PB0;
 
     BodyItems items = Collect(*this, e, childclass, false);
@@ -305,7 +302,7 @@ void MjcfReader::LowerWorldBody(const xml::XmlElement& worldbody) {
     }
 
     bool mocap = false;
-    if (auto mo = Boolean(Element(e, "body", "main", kNoDefaults), "mocap", false); mo && *mo) {
+    if (auto mo = Boolean(Element(e, "body"), "mocap", false); mo && *mo) {
       mocap = true;
       if (!p.parent_is_world || !items.joints.empty()) {
         diags().Report(DiagKind::BadValue, e.Attribute("mocap").loc,

@@ -1,15 +1,20 @@
-// mjcf_defaults.cc - <default> classes (MJCF-011, MJCF-012) and the
-// once-per-kind warnings of the frontend.
-//
-// MuJoCo copies a parent class into each nested class before reading the
-// nested class's own elements, so "the nearest class in the chain that writes
-// the attribute" is exactly what an element inherits. Element kinds are kept
-// apart: a <geom> default applies to geoms only.
+// mjcf_defaults.cc - <default> classes (MJCF-011, MJCF-012), the layers an
+// element inherits (mjcf_defaults.h), and the once-per-kind warnings of the
+// frontend.
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "frontend/mjcf/mjcf_reader_detail.h"
 
 namespace mdlc::frontend::mjcf {
+namespace {
+
+// The tables' string keys are looked up without a copy; the installed absl
+// hashes its own string_view type, not std::string_view.
+absl::string_view Key(std::string_view text) { return {text.data(), text.size()}; }
+
+}  // namespace
 
 void DefaultClasses::Read(const xml::XmlElement& top, DiagnosticEngine& diags,
                           const MjcfDocument* document) {
@@ -19,8 +24,11 @@ void DefaultClasses::Read(const xml::XmlElement& top, DiagnosticEngine& diags,
     for (auto c = e.FirstChild(); c; c = c.NextSibling()) out.push_back(c);
     return out;
   };
+  // layers are worked out from the classes as all <default>s leave them
+  layers_.clear();
+  for (ClassNode& node : classes_) node.layers.clear();
   if (classes_.empty()) {
-    classes_.push_back({"main", -1, {}});
+    classes_.push_back({"main", -1, {}, {}});
     by_name_.emplace("main", 0);
   }
   struct Work {
@@ -37,7 +45,7 @@ void DefaultClasses::Read(const xml::XmlElement& top, DiagnosticEngine& diags,
       // top level: class "main" (the name is optional there)
       if (cls.present() && cls.value != "main") {
         index = static_cast<int>(classes_.size());
-        classes_.push_back({std::string(cls.value), 0, {}});
+        classes_.push_back({std::string(cls.value), 0, {}, {}});
         by_name_.emplace(std::string(cls.value), index);
       }
     } else {
@@ -47,13 +55,13 @@ void DefaultClasses::Read(const xml::XmlElement& top, DiagnosticEngine& diags,
                      "default may omit it)");
         continue;
       }
-      if (by_name_.count(std::string(cls.value))) {
+      if (by_name_.contains(Key(cls.value))) {
         diags.Report(DiagKind::DuplicateName, cls.loc,
                      fmt::format("repeated default class name '{}'", cls.value));
         continue;
       }
       index = static_cast<int>(classes_.size());
-      classes_.push_back({std::string(cls.value), w.parent, {}});
+      classes_.push_back({std::string(cls.value), w.parent, {}, {}});
       by_name_.emplace(std::string(cls.value), index);
     }
     std::vector<Work> nested;
@@ -70,69 +78,144 @@ void DefaultClasses::Read(const xml::XmlElement& top, DiagnosticEngine& diags,
 }
 
 bool DefaultClasses::Has(std::string_view class_name) const {
-  return by_name_.count(std::string(class_name)) > 0 || class_name == "main";
+  return class_name == "main" || by_name_.contains(Key(class_name));
 }
 
-std::vector<xml::XmlElement> DefaultClasses::Chain(std::string_view class_name,
-                                                   std::string_view kind) const {
-  std::vector<xml::XmlElement> out;
-  auto it = by_name_.find(std::string(class_name));
-  int index = it == by_name_.end() ? (classes_.empty() ? -1 : 0) : it->second;
-  const std::string key(kind);
-  while (index >= 0) {
-    const ClassNode& node = classes_[index];
-    auto k = node.kinds.find(key);
-    if (k != node.kinds.end()) out.push_back(k->second);
-    index = node.parent;
+int DefaultClasses::IndexOf(std::string_view class_name) const {
+  auto it = by_name_.find(Key(class_name));
+  return it == by_name_.end() ? 0 : it->second;
+}
+
+const DefaultLayer* DefaultClasses::Layers(int class_index, std::string_view kind) const {
+  if (class_index < 0 || class_index >= static_cast<int>(classes_.size())) return nullptr;
+  // up to the nearest class that knows its answer; each class passed on the
+  // way gets its own, root side first, so each (class, kind) is worked once
+  std::vector<int> unknown;
+  const DefaultLayer* above = nullptr;
+  for (int c = class_index; c >= 0; c = classes_[c].parent) {
+    if (auto it = classes_[c].layers.find(Key(kind)); it != classes_[c].layers.end()) {
+      above = it->second;
+      break;
+    }
+    unknown.push_back(c);
   }
-  return out;
+  for (auto c = unknown.rbegin(); c != unknown.rend(); ++c) {
+    const ClassNode& node = classes_[*c];
+    if (auto k = node.kinds.find(Key(kind)); k != node.kinds.end()) {
+      above = &layers_.emplace_back(k->second, above);
+    }
+    node.layers.emplace(std::string(kind), above);
+  }
+  return above;
 }
 
-Attribute DefaultClasses::Lookup(std::string_view class_name, std::string_view kind,
-                                 std::string_view name) const {
-  for (const xml::XmlElement& e : Chain(class_name, kind)) {
-    xml::XmlAttribute a = e.Attribute(name);
-    if (a.present()) return a;
+Inherited DefaultLayer::Find(std::string_view name) const {
+  const uint64_t bit = xml::XmlElement::NameBit(name);
+  int up = 0;
+  for (const DefaultLayer* layer = this; layer; layer = layer->parent_, ++up) {
+    if (!(layer->chain_names_ & bit)) return {};
+    if (up == kShortWalk) {
+      Inherited far = layer->FindRemembered(name, bit);
+      far.level += up;
+      return far;
+    }
+    if (Attribute a = layer->e_.Attribute(name); a.present()) return {a, up};
   }
   return {};
 }
 
-const std::vector<xml::XmlElement>& Element::Chain() const {
-  if (!chain_) {
-    chain_ = defaults_->Chain(class_, kind_);
-    for (const xml::XmlElement& d : *chain_) chain_names_ |= d.AttributeNameBits();
+Inherited DefaultLayer::FindRemembered(std::string_view name, uint64_t bit) const {
+  // up to the layer that answers (writes the name, or remembers the
+  // answer), or past the last that could; the layers passed on the way
+  // remember the answer too
+  std::vector<const DefaultLayer*> passed;
+  Inherited answer;  // relative to the layer the walk stopped at
+  for (const DefaultLayer* layer = this; layer; layer = layer->parent_) {
+    if (!(layer->chain_names_ & bit)) break;
+    if (auto it = layer->found_.find(Key(name)); it != layer->found_.end()) {
+      answer = it->second;
+      break;
+    }
+    if (Attribute a = layer->e_.Attribute(name); a.present()) {
+      answer = {a, 0};
+      layer->found_.emplace(std::string(name), answer);
+      break;
+    }
+    passed.push_back(layer);
   }
-  return *chain_;
+  for (auto layer = passed.rbegin(); layer != passed.rend(); ++layer) {
+    if (answer.attribute.present()) ++answer.level;
+    (*layer)->found_.emplace(std::string(name), answer);
+  }
+  return answer;
+}
+
+const LayeredPrefix& DefaultLayer::Layered(std::string_view name, size_t n) const {
+  std::pair<std::string, size_t> key(name, n);
+  if (auto it = layered_.find(key); it != layered_.end()) return it->second;
+  // down from the nearest layer above that remembers its values (or the
+  // root), each layer on the way remembering what it leaves
+  std::vector<const DefaultLayer*> unknown{this};
+  LayeredPrefix values{std::vector<double>(n, 0.0), 0, true};
+  for (const DefaultLayer* layer = parent_; layer; layer = layer->parent_) {
+    if (auto it = layer->layered_.find(key); it != layer->layered_.end()) {
+      values = it->second;
+      break;
+    }
+    unknown.push_back(layer);
+  }
+  for (auto layer = unknown.rbegin(); layer != unknown.rend(); ++layer) {
+    const Attribute a = (*layer)->e_.Attribute(name);
+    if (a.present() && values.ok) {
+      const auto count = xml::ParseDoublesInto(a.value, values.values.data(), n);
+      if (count && *count <= n) {
+        values.written = std::max(values.written, *count);
+      } else {
+        values.ok = false;  // the reader walks the layers again to say where
+      }
+    }
+    (*layer)->layered_.emplace(key, values);
+  }
+  return layered_.at(key);
+}
+
+const DefaultLayer* Element::Layers() const {
+  if (!layers_known_) {
+    layers_ = defaults_ ? defaults_->Layers(class_index_, kind_) : nullptr;
+    layers_known_ = true;
+  }
+  return layers_;
 }
 
 Attribute Element::Own(std::string_view name) const {
-  if (!own_names_) own_names_ = e_.AttributeNameBits();
-  if (!(*own_names_ & xml::XmlElement::NameBit(name))) return {};
+  if (!own_names_known_) {
+    own_names_ = e_.AttributeNameBits();
+    own_names_known_ = true;
+  }
+  if (!(own_names_ & xml::XmlElement::NameBit(name))) return {};
   return e_.Attribute(name);
 }
 
-Attribute Element::Get(std::string_view name) const {
-  if (xml::XmlAttribute own = Own(name); own.present()) return own;
-  const std::vector<xml::XmlElement>& chain = Chain();
-  if (!(chain_names_ & xml::XmlElement::NameBit(name))) return {};
-  for (const xml::XmlElement& d : chain) {
-    xml::XmlAttribute inherited = d.Attribute(name);
-    if (inherited.present()) return inherited;
-  }
-  return {};
+Inherited Element::Find(std::string_view name) const {
+  if (Attribute own = Own(name); own.present()) return {own, 0};
+  const DefaultLayer* layers = Layers();
+  if (!layers) return {};
+  Inherited inherited = layers->Find(name);
+  ++inherited.level;
+  return inherited;
 }
 
-std::string MjcfReader::ClassFor(const xml::XmlElement& e, std::string_view childclass) {
+int MjcfReader::ClassFor(const xml::XmlElement& e, std::string_view childclass) {
   const xml::XmlAttribute cls = e.Attribute("class");
   if (cls.present()) {
     if (!defaults.Has(cls.value)) {
       diags().Report(DiagKind::UnknownReference, cls.loc,
                      fmt::format("unknown default class '{}'", cls.value));
-      return "main";
+      return defaults.IndexOf("main");
     }
-    return std::string(cls.value);
+    return defaults.IndexOf(cls.value);
   }
-  return childclass.empty() ? std::string("main") : std::string(childclass);
+  return defaults.IndexOf(childclass.empty() ? std::string_view("main") : childclass);
 }
 
 void MjcfReader::WarnOnce(Loc loc, DiagKind kind, std::string_view element, std::string_view name,

@@ -24,8 +24,6 @@
 namespace mdlc::frontend::mjcf {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 ir::Ref<BodyId> RefTo(const ir::Module& m, BodyId id) { return {m[id].name, m[id].loc, id}; }
 
 /// Attributes the plant cannot hold (MJCF-024), warned once each; the
@@ -117,8 +115,7 @@ void LowerJoints(MjcfReader& r, const BodyContext& b, std::span<const BodyItem> 
     if (item.e.Name() == "freejoint") {
       r.CheckAttributes(item.e, "freejoint");
       // MuJoCo: <freejoint> takes no defaults
-      static const DefaultClasses kNoDefaults;
-      joints.emplace_back(item.e, "freejoint", "main", kNoDefaults);
+      joints.emplace_back(item.e, "freejoint");
       free_index = k;
       continue;
     }

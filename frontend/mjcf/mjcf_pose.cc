@@ -9,6 +9,7 @@
 // element's own quat); else quat, own or inherited.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -113,10 +114,28 @@ bool MjcfReader::LayeredNumbers(const Element& e, std::string_view name,
                                        name, layer.Name(), a.value));
     return false;
   };
-  // from the root class to the element
-  const std::vector<xml::XmlElement>& classes = e.ClassLayers();
-  for (auto it = classes.rbegin(); it != classes.rend(); ++it) {
-    if (!apply(*it)) return false;
+  // from the root class to the element: the nearest layers are read here;
+  // a deeper chain starts from what its far part leaves, which that part
+  // works out once (DefaultLayer::Layered)
+  std::array<const DefaultLayer*, DefaultLayer::kShortWalk> near;
+  size_t num_near = 0;
+  const DefaultLayer* far = e.Layers();
+  for (; far && num_near < near.size(); far = far->parent()) near[num_near++] = far;
+  if (far) {
+    const LayeredPrefix& inherited = far->Layered(name, n);
+    if (!inherited.ok) {
+      // a far layer's text is bad: read them all again, to report it
+      std::vector<const DefaultLayer*> chain;
+      for (const DefaultLayer* layer = far; layer; layer = layer->parent()) chain.push_back(layer);
+      for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+        if (!apply((*it)->xml())) return false;
+      }
+      return false;
+    }
+    std::copy_n(inherited.values.begin(), inherited.written, values.begin());
+  }
+  for (size_t i = num_near; i-- > 0;) {
+    if (!apply(near[i]->xml())) return false;
   }
   return apply(e.xml());
 }
@@ -202,15 +221,15 @@ std::optional<Transform> MjcfReader::ReadPose(const Element& e) {
   for (const xml::XmlAttribute& a : own) {
     if (a.name != "quat") alt_name = a.name;
   }
-  for (const xml::XmlElement& layer : e.ClassLayers()) {
-    if (!alt_name.empty()) break;
+  if (alt_name.empty()) {
+    int nearest = std::numeric_limits<int>::max();
     for (std::string_view alt : kAlternatives) {
-      if (layer.Attribute(alt).present()) {
+      // strictly nearer: within one layer the first alternative listed wins
+      if (const Inherited found = e.Find(alt); found.attribute.present() && found.level < nearest) {
+        nearest = found.level;
         alt_name = alt;
-        break;
       }
     }
-    if (!alt_name.empty()) break;
   }
 
   RotationOrError R = Eigen::Matrix3d(Eigen::Matrix3d::Identity());

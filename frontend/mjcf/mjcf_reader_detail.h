@@ -15,7 +15,7 @@
 //      elements the plant cannot hold.
 //
 // Files: mjcf_reader.cc (entry, phases), mjcf_document.cc (includes),
-// mjcf_defaults.cc (classes, attribute lookup, warnings), mjcf_settings.cc
+// mjcf_defaults.{h,cc} (classes, attribute lookup, warnings), mjcf_settings.cc
 // (compiler, option, other top-level sections), mjcf_orientation.{h,cc}
 // (rotation conversions, pure), mjcf_pose.cc (pose attributes of elements),
 // mjcf_schema.cc (known attributes per element), mjcf_assets.cc,
@@ -38,6 +38,7 @@
 #include <absl/container/flat_hash_set.h>
 
 #include "frontend/frontend.h"
+#include "frontend/mjcf/mjcf_defaults.h"
 #include "frontend/xml/attribute_reader.h"
 #include "frontend/xml/xml_document.h"
 #include "ir/module.h"
@@ -64,87 +65,6 @@ struct CompilerSettings {
 
   /// Radians from a value in the compiler's angle unit.
   double Angle(double v) const;
-};
-
-struct MjcfDocument;
-
-// ---------------------------------------------------------------------------
-// Default classes (MJCF-011, MJCF-012)
-// ---------------------------------------------------------------------------
-
-/// An attribute as an element sees it after defaults: written on the element
-/// itself, or inherited from a default class (then `loc` is where the
-/// default class element wrote it, so diagnostics point at the real text).
-using Attribute = xml::XmlAttribute;
-
-/// The default-class tree: class name -> per element kind ("geom", "joint",
-/// "motor", ...), the default element of that kind in that class, with the
-/// parent chain for inheritance.
-class DefaultClasses {
- public:
-  /// Reads one top-level <default> tree (nested classes by a work list);
-  /// `document` expands includes inside it when given.
-  void Read(const xml::XmlElement& default_element, DiagnosticEngine& diags,
-            const MjcfDocument* document = nullptr);
-  bool Has(std::string_view class_name) const;
-  /// The attribute `name` for an element of `kind` in class `class_name`:
-  /// searched in the class's <kind> element, then its ancestors'. Not
-  /// present (`!present()`) when no class in the chain gives it.
-  Attribute Lookup(std::string_view class_name, std::string_view kind,
-                   std::string_view name) const;
-  /// The <kind> default elements of `class_name` and its ancestors, nearest
-  /// first (attributes that MuJoCo overwrites element-wise, like geom@size,
-  /// are layered from the back).
-  std::vector<xml::XmlElement> Chain(std::string_view class_name, std::string_view kind) const;
-
- private:
-  struct ClassNode {
-    std::string name;
-    int parent = -1;  // index into classes_, -1 for the root ("main")
-    std::unordered_map<std::string, xml::XmlElement> kinds;  // "geom" -> <geom ...>
-  };
-  std::vector<ClassNode> classes_;
-  std::unordered_map<std::string, int> by_name_;
-};
-
-/// An element with the default class it uses resolved once: `Get` returns
-/// the element's own attribute, else the class chain's. MuJoCo applies the
-/// class to elements of the same kind; actuator shortcuts (motor, position,
-/// ...) read their own kind.
-class Element {
- public:
-  Element(xml::XmlElement e, std::string_view kind, std::string class_name,
-          const DefaultClasses& defaults)
-      : e_(e), kind_(kind), class_(std::move(class_name)), defaults_(&defaults) {}
-
-  const xml::XmlElement& xml() const { return e_; }
-  Loc loc() const { return e_.GetLoc(); }
-  std::string_view class_name() const { return class_; }
-  Attribute Get(std::string_view name) const;
-  /// The attribute as the element itself writes it (not a default).
-  Attribute Own(std::string_view name) const;
-  /// True if the element itself writes the attribute (not a default).
-  bool HasOwn(std::string_view name) const { return Own(name).present(); }
-  /// The class chain's <kind> defaults (not the element), nearest first.
-  const std::vector<xml::XmlElement>& ClassLayers() const { return Chain(); }
-  std::string_view kind() const { return kind_; }
-
- private:
-  /// The class chain's <kind> defaults, looked up on the first attribute
-  /// the element does not write (elements read a dozen attributes each, and
-  /// most are absent: one chain lookup per element, not per attribute).
-  const std::vector<xml::XmlElement>& Chain() const;
-
-  xml::XmlElement e_;
-  std::string_view kind_;
-  std::string class_;
-  const DefaultClasses* defaults_;
-  mutable std::optional<std::vector<xml::XmlElement>> chain_;
-  // XmlElement::AttributeNameBits of the element and of its whole chain,
-  // filled on the first Get: most names asked for are absent everywhere,
-  // and a clear bit answers that without walking any attribute list
-  mutable std::optional<uint64_t> own_names_;
-  mutable uint64_t chain_names_ = 0;
 };
 
 // ---------------------------------------------------------------------------
@@ -243,7 +163,7 @@ struct MjcfReader {
   /// The default class an element uses: its own `class`, else the nearest
   /// enclosing childclass (passed by the caller), else "main". An unknown
   /// class is an error at the attribute.
-  std::string ClassFor(const xml::XmlElement& e, std::string_view childclass);
+  int ClassFor(const xml::XmlElement& e, std::string_view childclass);
   Element Resolve(const xml::XmlElement& e, std::string_view kind, std::string_view childclass) {
     return Element(e, kind, ClassFor(e, childclass), defaults);
   }

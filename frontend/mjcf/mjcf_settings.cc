@@ -18,8 +18,7 @@ constexpr std::string_view kWarnedOptions[] = {"wind",   "magnetic", "density",
 
 void MjcfReader::ReadCompiler(const xml::XmlElement& e) {
   CheckAttributes(e, "compiler");
-  static const DefaultClasses kNoDefaults;
-  const Element c(e, "compiler", "main", kNoDefaults);
+  const Element c(e, "compiler");
 
   if (auto v = Boolean(c, "autolimits", compiler.autolimits)) compiler.autolimits = *v;
   if (auto a = e.Attribute("angle"); a.present()) {
@@ -101,8 +100,7 @@ void MjcfReader::ReadCompiler(const xml::XmlElement& e) {
 
 void MjcfReader::ReadOption(const xml::XmlElement& e) {
   CheckAttributes(e, "option");
-  static const DefaultClasses kNoDefaults;
-  const Element o(e, "option", "main", kNoDefaults);
+  const Element o(e, "option");
   if (e.Attribute("gravity").present()) {
     if (auto g = Numbers(o, "gravity", 3)) module().gravity = Eigen::Vector3d((*g)[0], (*g)[1], (*g)[2]);
   }
