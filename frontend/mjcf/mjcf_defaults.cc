@@ -196,6 +196,12 @@ Attribute Element::Own(std::string_view name) const {
   return e_.Attribute(name);
 }
 
+Attribute Element::Get(std::string_view name) const {
+  if (Attribute own = Own(name); own.present()) return own;
+  const DefaultLayer* layers = Layers();
+  return layers ? layers->Find(name).attribute : Attribute{};
+}
+
 Inherited Element::Find(std::string_view name) const {
   if (Attribute own = Own(name); own.present()) return {own, 0};
   const DefaultLayer* layers = Layers();

@@ -131,7 +131,7 @@ class Element {
   const xml::XmlElement& xml() const { return e_; }
   Loc loc() const { return e_.GetLoc(); }
   std::string_view kind() const { return kind_; }
-  Attribute Get(std::string_view name) const { return Find(name).attribute; }
+  Attribute Get(std::string_view name) const;
   /// The attribute and its level: 0 written on the element, 1 its class's
   /// default, 2 the next class up with a default of this kind, ...
   Inherited Find(std::string_view name) const;

@@ -221,11 +221,12 @@ std::optional<Transform> MjcfReader::ReadPose(const Element& e) {
   for (const xml::XmlAttribute& a : own) {
     if (a.name != "quat") alt_name = a.name;
   }
-  if (alt_name.empty()) {
+  if (const DefaultLayer* classes = e.Layers(); alt_name.empty() && classes) {
     int nearest = std::numeric_limits<int>::max();
     for (std::string_view alt : kAlternatives) {
       // strictly nearer: within one layer the first alternative listed wins
-      if (const Inherited found = e.Find(alt); found.attribute.present() && found.level < nearest) {
+      if (const Inherited found = classes->Find(alt);
+          found.attribute.present() && found.level < nearest) {
         nearest = found.level;
         alt_name = alt;
       }

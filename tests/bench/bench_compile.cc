@@ -21,6 +21,12 @@
 //                     mj_loadXML + mj_deleteModel on the same text (from a
 //                     file written once, untimed), for comparison
 //
+// One more MJCF family, mjcf_nested_defaults (libxml2_parse and compile
+// only): N default classes nested in each other, each with a geom default,
+// and N geoms of the deepest class, for N = 100, 1000, 4000. An element
+// inherits from every class around its own (MJCF-012), and the fit shows
+// that costs no walk of the N classes per geom.
+//
 // Copying the text into a SourceManager is setup and not timed; tearing the
 // results down is timed in every stage, libxml2's included. Every joint's
 // friction draws an "unsupported" warning (as with gen_models.py's models);
@@ -219,6 +225,71 @@ void BM_MujocoLoad(benchmark::State& state, Family family) {
 }
 #endif
 
+// ------------------------------------------------ nested default classes
+
+std::string NestedDefaultsMjcf(int n) {
+  std::string xml = fmt::format(
+      "<mujoco model=\"nested_defaults_n{}\">\n<default>\n"
+      "<geom type=\"box\" size=\"0.1 0.2 0.3\" euler=\"0 0 10\" density=\"500\"/>\n",
+      n);
+  // every class overwrites the first size and its color, so each geom's
+  // size is layered through all of them
+  for (int k = 0; k < n; ++k) {
+    xml += fmt::format("<default class=\"c{}\"><geom size=\"{}\" rgba=\"0.5 0.5 {} 1\"/>\n", k,
+                       0.1 + 1e-6 * k, (k % 10) / 10.0);
+  }
+  for (int k = 0; k < n; ++k) xml += "</default>\n";
+  xml += "</default>\n<worldbody>\n<body name=\"b\" pos=\"0 0 1\">\n<freejoint/>\n";
+  for (int k = 0; k < n; ++k) {
+    xml += fmt::format("<geom class=\"c{}\" pos=\"{} 0 0\"/>\n", n - 1, 0.01 * k);
+  }
+  return xml + "</body>\n</worldbody>\n</mujoco>\n";
+}
+
+const std::string& NestedDefaultsModel(int n) {
+  static std::map<int, std::string> cache;
+  auto [it, inserted] = cache.try_emplace(n);
+  if (inserted) it->second = NestedDefaultsMjcf(n);
+  return it->second;
+}
+
+void FinishNestedDefaults(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  state.SetComplexityN(n);
+  state.SetBytesProcessed(static_cast<int64_t>(state.iterations()) *
+                          static_cast<int64_t>(NestedDefaultsModel(n).size()));
+}
+
+void BM_Libxml2ParseNestedDefaults(benchmark::State& state) {
+  const std::string& text = NestedDefaultsModel(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    xmlDocPtr doc = xmlReadMemory(text.data(), static_cast<int>(text.size()), "bench.xml",
+                                  nullptr, kFloorXmlOptions);
+    if (!doc) state.SkipWithError("libxml2 rejected the model");
+    benchmark::DoNotOptimize(doc);
+    xmlFreeDoc(doc);
+  }
+  FinishNestedDefaults(state);
+}
+
+void BM_CompileNestedDefaults(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    state.PauseTiming();
+    auto c = std::make_unique<Compilation>();
+    const FileId file =
+        c->sources.AddBuffer(fmt::format("nested_defaults_n{}.xml", n), NestedDefaultsModel(n));
+    state.ResumeTiming();
+    frontend::FrontendContext ctx{c->sources, c->diags, c->module, c->options.frontend};
+    if (!frontend::ReadModel(file, Format::Mjcf, ctx) || c->diags.has_errors() ||
+        !c->RunPasses() || !c->RunBackend()) {
+      state.SkipWithError("compile reported errors");
+    }
+    benchmark::DoNotOptimize(c->model);
+  }
+  FinishNestedDefaults(state);
+}
+
 void RegisterAll() {
   struct Stage {
     const char* name;
@@ -246,6 +317,17 @@ void RegisterAll() {
       for (int n : kSizes) b->Arg(n);
       b->Unit(benchmark::kMillisecond)->Complexity(benchmark::oN);
     }
+  }
+  struct NestedStage {
+    const char* name;
+    void (*fn)(benchmark::State&);
+  };
+  for (const NestedStage& stage : {NestedStage{"libxml2_parse", BM_Libxml2ParseNestedDefaults},
+                                   NestedStage{"compile", BM_CompileNestedDefaults}}) {
+    auto* b = benchmark::RegisterBenchmark(
+        fmt::format("{}/mjcf_nested_defaults", stage.name).c_str(), stage.fn);
+    for (int n : {100, 1000, 4000}) b->Arg(n);
+    b->Unit(benchmark::kMillisecond)->Complexity(benchmark::oN);
   }
 }
 
