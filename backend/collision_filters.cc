@@ -1,4 +1,5 @@
-// collision_filters.cc - adjacency, weld composites and filter groups -> pairs.
+// collision_filters.cc - adjacency, weld composites and filter groups -> the
+// declarations of CollisionFilters, and its queries.
 #include "backend/collision_filters.h"
 
 #include <algorithm>
@@ -31,67 +32,53 @@ class DisjointSets {
   std::vector<uint32_t> parent_;
 };
 
-/// Collects candidate pairs; keeps only pairs of distinct proximity bodies.
-class PairCollector {
+/// Makes the declarations, keeping only bodies with proximity geometry.
+class FilterBuilder {
  public:
-  explicit PairCollector(std::vector<bool> has_proximity)
+  explicit FilterBuilder(std::vector<bool> has_proximity)
       : has_proximity_(std::move(has_proximity)) {}
 
-  void Add(uint32_t a, uint32_t b) {
-    if (a != b && has_proximity_[a] && has_proximity_[b]) pairs_.emplace_back(a, b);
-  }
   bool HasProximity(uint32_t b) const { return has_proximity_[b]; }
+  void AddPair(uint32_t a, uint32_t b) {
+    if (a != b && has_proximity_[a] && has_proximity_[b]) filters_.AddPair(BodyId(a), BodyId(b));
+  }
+  /// Every pair within `bodies` (none repeated).
+  void AddSet(const std::vector<uint32_t>& bodies) {
+    std::vector<BodyId> kept = Kept(bodies);
+    if (kept.size() >= 2) filters_.AddSet(std::move(kept));
+  }
+  /// Every body of `a` with every body of `b`.
+  void AddSetPair(const std::vector<uint32_t>& a, const std::vector<uint32_t>& b) {
+    std::vector<BodyId> kept_a = Kept(a), kept_b = Kept(b);
+    if (!kept_a.empty() && !kept_b.empty()) filters_.AddSetPair(std::move(kept_a), std::move(kept_b));
+  }
+  CollisionFilters Finish() {
+    filters_.Seal();
+    return std::move(filters_);
+  }
 
-  /// Orders each pair and the list by scoped body name; drops duplicates.
-  std::vector<std::pair<BodyId, BodyId>> Finish(const Plant& plant) {
-    // a scene of free bodies filters nothing: no names to build and sort
-    if (pairs_.empty()) return {};
-    // rank of each body in a pair by scoped name, so the sort compares
-    // integers; names are built for those bodies only, as the plant keeps
-    // them unscoped (issue 16). Ranks among these bodies order the pairs as
-    // ranks among all bodies would.
-    std::vector<bool> in_pair(plant.bodies.size(), false);
-    for (const BodyPair& p : pairs_) in_pair[p.first] = in_pair[p.second] = true;
-    std::vector<uint32_t> by_name;
-    std::vector<std::string> names(plant.bodies.size());
-    for (uint32_t b = 0; b < plant.bodies.size(); ++b) {
-      if (!in_pair[b]) continue;
-      by_name.push_back(b);
-      names[b] = plant.ScopedName(plant.bodies[b]);
-    }
-    std::stable_sort(by_name.begin(), by_name.end(),
-                     [&](uint32_t a, uint32_t b) { return names[a] < names[b]; });
-    std::vector<uint32_t> rank(plant.bodies.size());
-    for (uint32_t r = 0; r < by_name.size(); ++r) rank[by_name[r]] = r;
-
-    for (BodyPair& p : pairs_) {
-      p = {std::min(rank[p.first], rank[p.second]), std::max(rank[p.first], rank[p.second])};
-    }
-    std::sort(pairs_.begin(), pairs_.end());
-    pairs_.erase(std::unique(pairs_.begin(), pairs_.end()), pairs_.end());
-
-    std::vector<std::pair<BodyId, BodyId>> out;
-    out.reserve(pairs_.size());
-    for (const BodyPair& p : pairs_) {
-      out.emplace_back(BodyId(by_name[p.first]), BodyId(by_name[p.second]));
+ private:
+  std::vector<BodyId> Kept(const std::vector<uint32_t>& bodies) const {
+    std::vector<BodyId> out;
+    for (uint32_t b : bodies) {
+      if (has_proximity_[b]) out.emplace_back(b);
     }
     return out;
   }
 
- private:
   std::vector<bool> has_proximity_;
-  std::vector<BodyPair> pairs_;
+  CollisionFilters filters_;
 };
 
-void AddAdjacentPairs(const Plant& plant, PairCollector& pairs) {
+void AddAdjacentPairs(const Plant& plant, FilterBuilder& filters) {
   for (const PlantJoint& joint : plant.joints) {
     if (plant.body(joint.parent).is_world) continue;
     if (joint.type == ir::JointType::QuaternionFloating) continue;
-    pairs.Add(joint.parent.value, joint.child.value);
+    filters.AddPair(joint.parent.value, joint.child.value);
   }
 }
 
-void AddWeldedPairs(const Plant& plant, PairCollector& pairs) {
+void AddWeldedSets(const Plant& plant, FilterBuilder& filters) {
   // the sets are made at the first weld: without welds every body is a
   // composite of its own, which makes no pair
   std::optional<DisjointSets> sets;
@@ -102,19 +89,19 @@ void AddWeldedPairs(const Plant& plant, PairCollector& pairs) {
   }
   if (!sets) return;
   // proximity bodies by composite (one list, not a list per body, as most
-  // bodies are composites of their own), then every pair within each
+  // bodies are composites of their own), then one set per composite
   std::vector<BodyPair> by_composite;  // (composite, body)
   for (uint32_t b = 0; b < plant.bodies.size(); ++b) {
-    if (pairs.HasProximity(b)) by_composite.emplace_back(sets->Find(b), b);
+    if (filters.HasProximity(b)) by_composite.emplace_back(sets->Find(b), b);
   }
   std::sort(by_composite.begin(), by_composite.end());
+  std::vector<uint32_t> composite;
   for (size_t begin = 0, end = 0; begin < by_composite.size(); begin = end) {
+    composite.clear();
     while (end < by_composite.size() && by_composite[end].first == by_composite[begin].first) {
-      ++end;
+      composite.push_back(by_composite[end++].second);
     }
-    for (size_t i = begin; i < end; ++i) {
-      for (size_t k = i + 1; k < end; ++k) pairs.Add(by_composite[i].second, by_composite[k].second);
-    }
+    filters.AddSet(composite);
   }
 }
 
@@ -163,12 +150,15 @@ std::vector<std::vector<uint32_t>> GroupBodies(const ir::Module& module) {
   return bodies;
 }
 
-void AddGroupPairs(const ir::Module& module, PairCollector& pairs) {
+void AddGroupDeclarations(const ir::Module& module, FilterBuilder& filters) {
   const std::vector<std::vector<uint32_t>> bodies = GroupBodies(module);
   for (size_t g = 0; g < module.filter_groups.size(); ++g) {
     for (const auto& ignored : module.filter_groups[g].ignored_groups) {
-      for (uint32_t a : bodies[g]) {
-        for (uint32_t b : bodies[ignored.id.index()]) pairs.Add(a, b);
+      const size_t h = ignored.id.index();
+      if (h == g) {
+        filters.AddSet(bodies[g]);
+      } else {
+        filters.AddSetPair(bodies[g], bodies[h]);
       }
     }
   }
@@ -176,7 +166,7 @@ void AddGroupPairs(const ir::Module& module, PairCollector& pairs) {
 
 }  // namespace
 
-std::optional<std::vector<std::pair<BodyId, BodyId>>> ComputeCollisionFilters(
+std::optional<CollisionFilters> ComputeCollisionFilters(
     const ir::Module& module, const Plant& plant, const std::vector<SceneGeometry>& geometries,
     DiagnosticEngine& diags) {
   if (!CheckGroups(module, diags)) return std::nullopt;
@@ -185,11 +175,102 @@ std::optional<std::vector<std::pair<BodyId, BodyId>>> ComputeCollisionFilters(
   for (const SceneGeometry& g : geometries) {
     if (g.roles & ir::kProximityRole) has_proximity[g.body.index()] = true;
   }
-  PairCollector pairs(std::move(has_proximity));
-  AddAdjacentPairs(plant, pairs);
-  AddWeldedPairs(plant, pairs);
-  AddGroupPairs(module, pairs);
-  return pairs.Finish(plant);
+  FilterBuilder filters(std::move(has_proximity));
+  AddAdjacentPairs(plant, filters);
+  AddWeldedSets(plant, filters);
+  AddGroupDeclarations(module, filters);
+  return filters.Finish();
+}
+
+// ------------------------------------------------------ CollisionFilters
+
+void CollisionFilters::AddPair(BodyId a, BodyId b) {
+  pairs_.emplace_back(std::min(a, b), std::max(a, b));
+}
+
+void CollisionFilters::AddSet(std::vector<BodyId> bodies) {
+  for (BodyId b : bodies) tags_.emplace_back(b.value, Tag(sets_.size(), 0));
+  sets_.push_back(std::move(bodies));
+}
+
+void CollisionFilters::AddSetPair(std::vector<BodyId> a, std::vector<BodyId> b) {
+  for (BodyId x : a) tags_.emplace_back(x.value, Tag(set_pairs_.size(), 1));
+  for (BodyId y : b) tags_.emplace_back(y.value, Tag(set_pairs_.size(), 2));
+  set_pairs_.emplace_back(std::move(a), std::move(b));
+}
+
+void CollisionFilters::Seal() {
+  std::sort(pairs_.begin(), pairs_.end());
+  pairs_.erase(std::unique(pairs_.begin(), pairs_.end()), pairs_.end());
+  std::sort(tags_.begin(), tags_.end());
+  tags_.erase(std::unique(tags_.begin(), tags_.end()), tags_.end());
+}
+
+bool CollisionFilters::HasTag(BodyId body, uint64_t tag) const {
+  return std::binary_search(tags_.begin(), tags_.end(), std::pair{body.value, tag});
+}
+
+bool CollisionFilters::Filtered(BodyId a, BodyId b) const {
+  if (a == b) return false;
+  if (std::binary_search(pairs_.begin(), pairs_.end(), std::pair{std::min(a, b), std::max(a, b)})) {
+    return true;
+  }
+  // each declaration `a` is part of, and the part `b` would need in it
+  auto it = std::lower_bound(tags_.begin(), tags_.end(), std::pair{a.value, uint64_t{0}});
+  for (; it != tags_.end() && it->first == a.value; ++it) {
+    const uint64_t tag = it->second;
+    const uint64_t kind = tag % 3;
+    const uint64_t wanted = kind == 0 ? tag : kind == 1 ? tag + 1 : tag - 1;
+    if (HasTag(b, wanted)) return true;
+  }
+  return false;
+}
+
+std::vector<std::pair<BodyId, BodyId>> CollisionFilters::Pairs(const Plant& plant) const {
+  std::vector<BodyPair> pairs;
+  for (const auto& [a, b] : pairs_) pairs.emplace_back(a.value, b.value);
+  for (const std::vector<BodyId>& set : sets_) {
+    for (size_t i = 0; i < set.size(); ++i) {
+      for (size_t k = i + 1; k < set.size(); ++k) pairs.emplace_back(set[i].value, set[k].value);
+    }
+  }
+  for (const auto& [side_a, side_b] : set_pairs_) {
+    for (BodyId a : side_a) {
+      for (BodyId b : side_b) {
+        if (a != b) pairs.emplace_back(a.value, b.value);
+      }
+    }
+  }
+  // a scene of free bodies filters nothing: no names to build and sort
+  if (pairs.empty()) return {};
+  // rank of each body in a pair by scoped name, so the sort compares
+  // integers; names are built for those bodies only, as the plant keeps
+  // them unscoped (issue 16). Ranks among these bodies order the pairs as
+  // ranks among all bodies would.
+  std::vector<bool> in_pair(plant.bodies.size(), false);
+  for (const BodyPair& p : pairs) in_pair[p.first] = in_pair[p.second] = true;
+  std::vector<uint32_t> by_name;
+  std::vector<std::string> names(plant.bodies.size());
+  for (uint32_t b = 0; b < plant.bodies.size(); ++b) {
+    if (!in_pair[b]) continue;
+    by_name.push_back(b);
+    names[b] = plant.ScopedName(plant.bodies[b]);
+  }
+  std::stable_sort(by_name.begin(), by_name.end(),
+                   [&](uint32_t a, uint32_t b) { return names[a] < names[b]; });
+  std::vector<uint32_t> rank(plant.bodies.size());
+  for (uint32_t r = 0; r < by_name.size(); ++r) rank[by_name[r]] = r;
+
+  for (BodyPair& p : pairs) {
+    p = {std::min(rank[p.first], rank[p.second]), std::max(rank[p.first], rank[p.second])};
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+
+  std::vector<std::pair<BodyId, BodyId>> out;
+  out.reserve(pairs.size());
+  for (const BodyPair& p : pairs) out.emplace_back(BodyId(by_name[p.first]), BodyId(by_name[p.second]));
+  return out;
 }
 
 }  // namespace mdlc::backend

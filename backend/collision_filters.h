@@ -9,9 +9,9 @@
 // - COMMON-051/052, collision filter groups: one body is in group G and the
 //   other in group H (possibly G itself) where G ignores H; a group's members
 //   include, transitively, those of its member groups (cycles merge).
-// Each pair is ordered by the bodies' scoped names and the list is sorted
-// and free of duplicates. Cost: linear in bodies and joints plus the number
-// of pairs produced.
+// The result keeps the declarations (CollisionFilters in scene_graph.h):
+// linear in bodies, joints and group members, however many pairs they
+// filter; CollisionFilters::Pairs lists the pairs for output.
 #pragma once
 
 #include <optional>
@@ -26,7 +26,7 @@
 namespace mdlc::backend {
 
 /// Reports unresolved group references as errors and returns nullopt then.
-std::optional<std::vector<std::pair<BodyId, BodyId>>> ComputeCollisionFilters(
+std::optional<CollisionFilters> ComputeCollisionFilters(
     const ir::Module& module, const Plant& plant, const std::vector<SceneGeometry>& geometries,
     DiagnosticEngine& diags);
 

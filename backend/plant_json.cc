@@ -46,7 +46,7 @@ class PlantJsonEmitter {
     List("frames", plant_.frames, [&](const PlantFrame& f) { Frame(f); });
     List("geometries", scene_.geometries, [&](const SceneGeometry& g) { Geometry(g); });
     List("actuators", plant_.actuators, [&](const PlantActuator& a) { Actuator(a); });
-    List("collision_filters", scene_.collision_filters, [&](const auto& pair) {
+    List("collision_filters", scene_.collision_filters.Pairs(plant_), [&](const auto& pair) {
       w_.BeginArray().String(BodyName(pair.first)).String(BodyName(pair.second)).EndArray();
     });
     List("constraints", plant_.constraints, [&](const PlantConstraint& c) { Constraint(c); });

@@ -4,8 +4,9 @@
 // anchored geometry), in IR order. `properties` is the final property map,
 // sorted by key with one entry per key; an illustration or perception
 // geometry's color appears as "phong/diffuse" [r, g, b, a] there. Collision
-// filters are unordered body pairs, each pair and the list sorted by the
-// bodies' scoped names (collision_filters.h says which pairs).
+// filters are kept as the declarations that make them (collision_filters.h
+// says which pairs); Pairs() lists the pairs, sorted by the bodies' scoped
+// names.
 #pragma once
 
 #include <cstdint>
@@ -18,6 +19,44 @@
 #include "ir/transform.h"
 
 namespace mdlc::backend {
+
+struct Plant;
+
+/// Which body pairs never collide, kept as the declarations that filter
+/// them: single pairs (a joint's two bodies), sets whose bodies all filter
+/// each other (a weld composite, a group that ignores itself) and pairs of
+/// sets whose bodies filter every body of the other (a group that ignores
+/// another). A welded composite of N bodies filters N(N-1)/2 pairs and is
+/// held in N numbers; only output that lists the pairs pays for them. Only
+/// bodies with proximity geometry are held.
+class CollisionFilters {
+ public:
+  bool empty() const { return pairs_.empty() && sets_.empty() && set_pairs_.empty(); }
+  /// True when `a` and `b` are two bodies whose collisions are filtered.
+  /// Logarithmic in the declarations a body is part of.
+  bool Filtered(BodyId a, BodyId b) const;
+  /// Every filtered pair, each pair and the list ordered by the bodies'
+  /// scoped names, without duplicates; time and memory in proportion to the
+  /// pairs (times a logarithm).
+  std::vector<std::pair<BodyId, BodyId>> Pairs(const Plant& plant) const;
+
+  // Building (ComputeCollisionFilters); Seal() makes Filtered usable.
+  void AddPair(BodyId a, BodyId b);
+  void AddSet(std::vector<BodyId> bodies);
+  void AddSetPair(std::vector<BodyId> a, std::vector<BodyId> b);
+  void Seal();
+
+ private:
+  // a body's part in a declaration: set s is tag 3s, the sides of set pair
+  // p are 3p + 1 and 3p + 2; (body, tag) sorted by Seal()
+  static uint64_t Tag(size_t index, uint64_t kind) { return 3 * uint64_t{index} + kind; }
+  bool HasTag(BodyId body, uint64_t tag) const;
+
+  std::vector<std::pair<BodyId, BodyId>> pairs_;  // each (smaller index, larger), sorted
+  std::vector<std::vector<BodyId>> sets_;
+  std::vector<std::pair<std::vector<BodyId>, std::vector<BodyId>>> set_pairs_;
+  std::vector<std::pair<uint32_t, uint64_t>> tags_;  // (body index, tag)
+};
 
 struct SceneGeometry {
   std::string name;
@@ -43,7 +82,7 @@ struct SceneCamera {
 struct SceneGraph {
   std::vector<SceneGeometry> geometries;
   /// Body pairs whose collisions are filtered out.
-  std::vector<std::pair<BodyId, BodyId>> collision_filters;
+  CollisionFilters collision_filters;
   std::vector<SceneCamera> cameras;
 };
 

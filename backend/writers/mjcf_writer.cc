@@ -683,7 +683,7 @@ class MjcfWriter : FlatWriterBase {
   // never collides a body with itself)
   void WriteContacts() {
     std::set<std::pair<size_t, size_t>> written;
-    for (const auto& [a, b] : scene_.collision_filters) {
+    for (const auto& [a, b] : scene_.collision_filters.Pairs(plant_)) {
       const BodyId x = Owner(a), y = Owner(b);
       if (x == y || !written.insert({std::min(x.index(), y.index()), std::max(x.index(), y.index())})
                          .second) {

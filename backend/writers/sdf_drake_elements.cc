@@ -136,7 +136,7 @@ void SdfWriter::BuildElements() {
         f);
   }
   int n = 0;
-  for (const auto& pair : scene_.collision_filters) {
+  for (const auto& pair : scene_.collision_filters.Pairs(plant_)) {
     const BodyId a = pair.first, b = pair.second;  // named copies: lambdas capture them
     if (a.index() == 0 || b.index() == 0) {
       const BodyId other = a.index() == 0 ? b : a;

@@ -610,7 +610,7 @@ class UrdfWriter : FlatWriterBase {
   // one group per filtered pair, ignoring itself: exactly the plant's filters
   void WriteCollisionFilters() {
     int n = 0;
-    for (const auto& [a, b] : scene_.collision_filters) {
+    for (const auto& [a, b] : scene_.collision_filters.Pairs(plant_)) {
       if (a.index() == 0 || b.index() == 0) {
         // a URDF filter group names links of its own robot; the world is none
         const BodyId other = a.index() == 0 ? b : a;

@@ -326,7 +326,7 @@ class Comparison {
     }
     // filters against the world cannot be written in URDF or SDFormat (reported)
     std::set<std::pair<size_t, size_t>> fa, fb;
-    for (const auto& [x, y] : sa.collision_filters) {
+    for (const auto& [x, y] : sa.collision_filters.Pairs(pa_)) {
       if (!to_.writes_world_filters && (x.index() == 0 || y.index() == 0)) {
         EXPECT_GT(CountLossy(a_, "and the world is dropped"), 0u);
         continue;
@@ -334,13 +334,13 @@ class Comparison {
       const size_t mx = body_map_[x.index()].index(), my = body_map_[y.index()].index();
       fa.insert({std::min(mx, my), std::max(mx, my)});
     }
-    for (const auto& [x, y] : sb.collision_filters) {
+    for (const auto& [x, y] : sb.collision_filters.Pairs(pb_)) {
       fb.insert({std::min(x.index(), y.index()), std::max(x.index(), y.index())});
     }
     if (to_.format == Format::Sdf) {
       // a filter group is a model's: a filtered pair across top-level models
       // that is not filtered by the joints between them is reported dropped
-      for (const auto& [x, y] : sa.collision_filters) {
+      for (const auto& [x, y] : sa.collision_filters.Pairs(pa_)) {
         if (x.index() == 0 || y.index() == 0 || TopInstance(x) == TopInstance(y)) continue;
         const size_t mx = body_map_[x.index()].index(), my = body_map_[y.index()].index();
         const std::pair<size_t, size_t> pair{std::min(mx, my), std::max(mx, my)};

@@ -321,7 +321,7 @@ TEST(PlantJson, TenThousandBodyChainInstantiates) {
   // speed is measured by the benchmarks (tests/bench), never asserted here:
   // a loaded machine must not fail a correctness test
   EXPECT_EQ(json.find("\"mass_matrix\""), std::string::npos);
-  EXPECT_EQ(model->scene.collision_filters.size(), 9999u);
+  EXPECT_EQ(model->scene.collision_filters.Pairs(model->plant).size(), 9999u);
 }
 
 }  // namespace

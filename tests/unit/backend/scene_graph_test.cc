@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "tests/unit/backend/backend_test_util.h"
 
 namespace mdlc::backend {
@@ -14,10 +16,22 @@ using ir::JointType;
 using test_util::ModelBuilder;
 using Pairs = std::vector<std::pair<std::string, std::string>>;
 
+// The filtered pairs by scoped name, after checking that the filters'
+// query answers for every two bodies what the list says.
 Pairs FilterNames(const CompiledModel& model) {
+  const backend::Plant& plant = model.plant;
+  const std::vector<std::pair<BodyId, BodyId>> pairs = model.scene.collision_filters.Pairs(plant);
+  std::set<std::pair<BodyId, BodyId>> listed;
+  for (const auto& [a, b] : pairs) listed.insert({std::min(a, b), std::max(a, b)});
+  for (size_t a = 0; a < plant.bodies.size(); ++a) {
+    for (size_t b = 0; b < plant.bodies.size(); ++b) {
+      const bool filtered = model.scene.collision_filters.Filtered(BodyId(a), BodyId(b));
+      EXPECT_EQ(filtered, listed.count({BodyId(std::min(a, b)), BodyId(std::max(a, b))}) > 0)
+          << plant.ScopedName(plant.bodies[a]) << " and " << plant.ScopedName(plant.bodies[b]);
+    }
+  }
   Pairs out;
-  for (const auto& [a, b] : model.scene.collision_filters) {
-    const backend::Plant& plant = model.plant;
+  for (const auto& [a, b] : pairs) {
     out.emplace_back(plant.ScopedName(plant.body(a)), plant.ScopedName(plant.body(b)));
   }
   return out;
@@ -125,6 +139,67 @@ TEST(BackendCollisionFilters, Common051FilterGroups) {
   EXPECT_EQ(FilterNames(*model), (Pairs{{"robot::b0", "robot::b1"},
                                         {"robot::b2", "robot::b3"},
                                         {"robot::b2", "robot::b4"}}));
+}
+
+// COMMON-051: a group that ignores a group sharing a member filters that
+// member against the others, and never against itself.
+TEST(BackendCollisionFilters, Common051OverlappingGroups) {
+  ModelBuilder b;
+  std::vector<BodyId> bodies;
+  for (const char* name : {"b0", "b1", "b2", "b3"}) {
+    bodies.push_back(b.AddMasslessBody(name));
+    b.AddJoint(name, JointType::QuaternionFloating, ir::kWorldBody, bodies.back());
+    if (bodies.size() < 4) AddCollision(b, bodies.back());  // b3: no proximity geometry
+  }
+  ir::Module& m = b.module();
+  const auto group = [&](std::string_view name, std::vector<BodyId> members) {
+    ir::CollisionFilterGroup g;
+    g.name = m.Intern(name);
+    g.model = b.model();
+    for (BodyId id : members) g.members.push_back(b.BodyRef(id));
+    return m.Add(g);
+  };
+  const FilterGroupId g = group("g", {bodies[0], bodies[1], bodies[3]});
+  const FilterGroupId h = group("h", {bodies[1], bodies[2], bodies[3]});
+  m.filter_groups[g.index()].ignored_groups.push_back(GroupRef(b, h));
+  auto model = test_util::InstantiateOk(m);
+  ASSERT_TRUE(model);
+  EXPECT_EQ(FilterNames(*model), (Pairs{{"robot::b0", "robot::b1"},
+                                        {"robot::b0", "robot::b2"},
+                                        {"robot::b1", "robot::b2"}}));
+}
+
+// COMMON-054, COMMON-051: 20,000 bodies welded into one composite, all in a
+// group that ignores itself, filter 200 million pairs, held as two
+// declarations of 20,000 bodies each (a list of the pairs would take
+// gigabytes); every pair answers filtered, a free body's pairs do not.
+TEST(BackendCollisionFilters, AWeldedCompositeIsHeldAsOneSet) {
+  ModelBuilder b;
+  constexpr int kBodies = 20000;
+  std::vector<BodyId> bodies;
+  ir::CollisionFilterGroup all;
+  all.name = b.module().Intern("all");
+  all.model = b.model();
+  for (int i = 0; i < kBodies; ++i) {
+    bodies.push_back(b.AddMasslessBody(fmt::format("b{}", i)));
+    b.AddJoint(fmt::format("j{}", i), i == 0 ? JointType::Revolute : JointType::Weld,
+               i == 0 ? ir::kWorldBody : bodies[i - 1], bodies.back());
+    AddCollision(b, bodies.back());
+    all.members.push_back(b.BodyRef(bodies.back()));
+  }
+  const BodyId free_body = b.AddMasslessBody("free");
+  b.AddJoint("free", JointType::QuaternionFloating, ir::kWorldBody, free_body);
+  AddCollision(b, free_body);
+  const FilterGroupId group = b.module().Add(all);
+  b.module().filter_groups[group.index()].ignored_groups.push_back(GroupRef(b, group));
+  auto model = test_util::InstantiateOk(b.module());
+  ASSERT_TRUE(model);
+  const CollisionFilters& filters = model->scene.collision_filters;
+  EXPECT_TRUE(filters.Filtered(bodies.front(), bodies.back()));
+  EXPECT_TRUE(filters.Filtered(bodies[kBodies / 2], bodies[7]));
+  EXPECT_FALSE(filters.Filtered(bodies[3], bodies[3]));
+  EXPECT_FALSE(filters.Filtered(bodies.back(), free_body));
+  EXPECT_FALSE(filters.Filtered(ir::kWorldBody, bodies.front()));
 }
 
 TEST(BackendCollisionFilters, UnresolvedGroupReferenceIsAnError) {
