@@ -107,6 +107,14 @@ TEST(BackendCollisionFilters, Common054WeldedComposites) {
 
 ir::Ref<FilterGroupId> GroupRef(ModelBuilder& b, FilterGroupId id) { return b.Ref(id, "group"); }
 
+FilterGroupId AddGroup(ModelBuilder& b, std::string_view name, const std::vector<BodyId>& members) {
+  ir::CollisionFilterGroup g;
+  g.name = b.module().Intern(name);
+  g.model = b.model();
+  for (BodyId id : members) g.members.push_back(b.BodyRef(id));
+  return b.module().Add(g);
+}
+
 // COMMON-051: (G, G) excludes pairs within G, (G, H) pairs across;
 // COMMON-052: member groups count transitively, and a cycle merges groups.
 TEST(BackendCollisionFilters, Common051FilterGroups) {
@@ -118,17 +126,10 @@ TEST(BackendCollisionFilters, Common051FilterGroups) {
     AddCollision(b, bodies.back());
   }
   ir::Module& m = b.module();
-  const auto group = [&](std::string_view name, std::vector<BodyId> members) {
-    ir::CollisionFilterGroup g;
-    g.name = m.Intern(name);
-    g.model = b.model();
-    for (BodyId id : members) g.members.push_back(b.BodyRef(id));
-    return m.Add(g);
-  };
-  const FilterGroupId self = group("self", {bodies[0], bodies[1]});
-  const FilterGroupId left = group("left", {bodies[2]});
-  const FilterGroupId right = group("right", {bodies[3]});
-  const FilterGroupId loop = group("loop", {bodies[4]});
+  const FilterGroupId self = AddGroup(b, "self", {bodies[0], bodies[1]});
+  const FilterGroupId left = AddGroup(b, "left", {bodies[2]});
+  const FilterGroupId right = AddGroup(b, "right", {bodies[3]});
+  const FilterGroupId loop = AddGroup(b, "loop", {bodies[4]});
   m.filter_groups[self.index()].ignored_groups.push_back(GroupRef(b, self));
   // right contains loop, loop contains right: both are {b3, b4}
   m.filter_groups[right.index()].member_groups.push_back(GroupRef(b, loop));
@@ -152,15 +153,8 @@ TEST(BackendCollisionFilters, Common051OverlappingGroups) {
     if (bodies.size() < 4) AddCollision(b, bodies.back());  // b3: no proximity geometry
   }
   ir::Module& m = b.module();
-  const auto group = [&](std::string_view name, std::vector<BodyId> members) {
-    ir::CollisionFilterGroup g;
-    g.name = m.Intern(name);
-    g.model = b.model();
-    for (BodyId id : members) g.members.push_back(b.BodyRef(id));
-    return m.Add(g);
-  };
-  const FilterGroupId g = group("g", {bodies[0], bodies[1], bodies[3]});
-  const FilterGroupId h = group("h", {bodies[1], bodies[2], bodies[3]});
+  const FilterGroupId g = AddGroup(b, "g", {bodies[0], bodies[1], bodies[3]});
+  const FilterGroupId h = AddGroup(b, "h", {bodies[1], bodies[2], bodies[3]});
   m.filter_groups[g.index()].ignored_groups.push_back(GroupRef(b, h));
   auto model = test_util::InstantiateOk(m);
   ASSERT_TRUE(model);
