@@ -31,9 +31,8 @@ struct Plant;
 /// bodies with proximity geometry are held.
 class CollisionFilters {
  public:
-  bool empty() const { return pairs_.empty() && sets_.empty() && set_pairs_.empty(); }
   /// True when `a` and `b` are two bodies whose collisions are filtered.
-  /// Logarithmic in the declarations a body is part of.
+  /// One binary search per declaration `a` is part of.
   bool Filtered(BodyId a, BodyId b) const;
   /// Every filtered pair, each pair and the list ordered by the bodies'
   /// scoped names, without duplicates; time and memory in proportion to the

@@ -202,15 +202,6 @@ Attribute Element::Get(std::string_view name) const {
   return layers ? layers->Find(name).attribute : Attribute{};
 }
 
-Inherited Element::Find(std::string_view name) const {
-  if (Attribute own = Own(name); own.present()) return {own, 0};
-  const DefaultLayer* layers = Layers();
-  if (!layers) return {};
-  Inherited inherited = layers->Find(name);
-  ++inherited.level;
-  return inherited;
-}
-
 int MjcfReader::ClassFor(const xml::XmlElement& e, std::string_view childclass) {
   const xml::XmlAttribute cls = e.Attribute("class");
   if (cls.present()) {

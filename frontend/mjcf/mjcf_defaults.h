@@ -34,9 +34,8 @@ struct MjcfDocument;
 /// default class element wrote it, so diagnostics point at the real text).
 using Attribute = xml::XmlAttribute;
 
-/// An attribute and the level that gives it: 0 for the first layer asked
-/// (the element itself, when an Element answers), 1 for the next, ...
-/// Absent (`!attribute.present()`) when no level gives it.
+/// An attribute and the layer that gives it: 0 for the layer asked, 1 for
+/// the next one up, ... Absent (`!attribute.present()`) when none gives it.
 struct Inherited {
   Attribute attribute;
   int level = 0;
@@ -132,9 +131,6 @@ class Element {
   Loc loc() const { return e_.GetLoc(); }
   std::string_view kind() const { return kind_; }
   Attribute Get(std::string_view name) const;
-  /// The attribute and its level: 0 written on the element, 1 its class's
-  /// default, 2 the next class up with a default of this kind, ...
-  Inherited Find(std::string_view name) const;
   /// The attribute as the element itself writes it (not a default).
   Attribute Own(std::string_view name) const;
   /// True if the element itself writes the attribute (not a default).

@@ -83,8 +83,8 @@ TEST_F(DeepDefaults, Mjcf012NearestWriterAtAnyDepth) {
   }
 }
 
-// MJCF-012: an element's own attribute is level 0, its class's layers count
-// from 1; a class without a default of the element's kind is skipped.
+// MJCF-012: an element's own attribute wins over its class's; a class
+// without a default of the element's kind is skipped.
 TEST_F(DeepDefaults, Mjcf012ElementLevelsSkipClassesWithoutTheKind) {
   Read(NestedDefaults([](int) { return std::string("rgba='1 1 1 1'"); },
                       [](int k) {
@@ -96,13 +96,14 @@ TEST_F(DeepDefaults, Mjcf012ElementLevelsSkipClassesWithoutTheKind) {
       sources_.AddBuffer("joint.xml", "<joint class='c29' range='0 1'/>"), sources_, diags_);
   ASSERT_NE(xml, nullptr);
   const Element joint(xml->Root(), "joint", defaults_.IndexOf("c29"), defaults_);
-  EXPECT_EQ(joint.Find("range").level, 0);
-  EXPECT_EQ(joint.Find("axis").attribute.value, "1 0 0");
-  EXPECT_EQ(joint.Find("axis").level, 1);  // c27's, the nearest joint default
-  EXPECT_EQ(joint.Find("damping").attribute.value, "0.5");
-  EXPECT_EQ(joint.Find("damping").level, 2);  // main's
+  EXPECT_EQ(joint.Get("range").value, "0 1");
+  EXPECT_EQ(joint.Get("axis").value, "1 0 0");  // c27's, the nearest joint default
+  EXPECT_EQ(joint.Get("damping").value, "0.5");  // main's
   // the layers of a kind: c27's joint, then main's, nothing else
   ASSERT_NE(joint.Layers(), nullptr);
+  EXPECT_EQ(joint.Layers()->Find("axis").level, 0);
+  EXPECT_EQ(joint.Layers()->Find("damping").level, 1);
+  EXPECT_FALSE(joint.Layers()->Find("range").attribute.present());
   ASSERT_NE(joint.Layers()->parent(), nullptr);
   EXPECT_EQ(joint.Layers()->parent()->parent(), nullptr);
   // no class writes a <site>: no layers; an unknown class reads main's
