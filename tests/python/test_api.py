@@ -134,6 +134,54 @@ class EvaluateThePlant(unittest.TestCase):
         np.testing.assert_array_equal(joint.lower, [-2])
 
 
+WELDED_IN_A_GROUP = """<?xml version="1.0"?>
+<robot name="r" xmlns:drake="http://drake.mit.edu">
+  <link name="base"><collision><geometry><box size="1 1 1"/></geometry></collision></link>
+  <link name="arm"><collision><geometry><box size="1 1 1"/></geometry></collision></link>
+  <link name="hand"><collision><geometry><box size="1 1 1"/></geometry></collision></link>
+  <link name="tool"><collision><geometry><box size="1 1 1"/></geometry></collision></link>
+  <link name="ghost"/>
+  <joint name="shoulder" type="revolute">
+    <parent link="base"/><child link="arm"/><axis xyz="0 0 1"/>
+    <limit lower="-1" upper="1" effort="1" velocity="1"/>
+  </joint>
+  <joint name="wrist" type="fixed"><parent link="arm"/><child link="hand"/></joint>
+  <joint name="mount" type="fixed"><parent link="hand"/><child link="ghost"/></joint>
+  <joint name="slide" type="prismatic">
+    <parent link="hand"/><child link="tool"/><axis xyz="1 0 0"/>
+    <limit lower="0" upper="1" effort="1" velocity="1"/>
+  </joint>
+  <drake:collision_filter_group name="ends">
+    <drake:member link="base"/><drake:member link="tool"/>
+    <drake:ignored_collision_filter_group name="ends"/>
+  </drake:collision_filter_group>
+</robot>
+"""
+
+
+class CollisionFilters(unittest.TestCase):  # issue 16, COMMON-051, COMMON-054
+    def test_filtered_pairs_by_name_and_by_index_agree_with_plant_json(self):
+        model = mdlc.compile(WELDED_IN_A_GROUP, format="urdf")
+        pairs = model.collision_filters()
+        listed = [tuple(p) for p in json.loads(model.to_json())["collision_filters"]]
+        self.assertEqual(pairs, listed)
+        # adjacent (base-arm, hand-tool), welded (arm-hand), the group (base-tool)
+        self.assertEqual(pairs, [("r::arm", "r::base"), ("r::arm", "r::hand"),
+                                 ("r::base", "r::tool"), ("r::hand", "r::tool")])
+        named = {frozenset(p) for p in pairs}
+        for a in model.bodies:
+            for b in model.bodies:
+                self.assertEqual(
+                    model.collision_filtered(a.index, b.index),
+                    frozenset((a.scoped_name, b.scoped_name)) in named and a.index != b.index,
+                    (a.scoped_name, b.scoped_name))
+
+    def test_a_body_index_out_of_range_is_an_index_error(self):
+        model = mdlc.compile(WELDED_IN_A_GROUP, format="urdf")
+        with self.assertRaises(IndexError):
+            model.collision_filtered(0, len(model.bodies))
+
+
 class Diagnostics(unittest.TestCase):
     def test_errors_raise_with_every_located_diagnostic(self):
         broken = PENDULUM.replace('<child link="arm"/>', '<child link="hand"/>')

@@ -338,6 +338,31 @@ void BindModel(py::module_& m) {
           },
           py::arg("q") = py::none(), "X_WB of every body at q, indexed like bodies")
       .def(
+          "collision_filtered",
+          [](const Model& m, size_t a, size_t b) {
+            const size_t n = m.bodies.size();
+            if (a >= n || b >= n) {
+              throw py::index_error("body index out of range: the model has " +
+                                    std::to_string(n) + " bodies");
+            }
+            return m.result->scene_graph().collision_filters.Filtered(BodyId(a), BodyId(b));
+          },
+          py::arg("a"), py::arg("b"),
+          "Whether the collisions of bodies a and b (indices into bodies) are filtered out")
+      .def(
+          "collision_filters",
+          [](const Model& m) {
+            std::vector<std::pair<std::string, std::string>> pairs;
+            for (const auto& [a, b] :
+                 m.result->scene_graph().collision_filters.Pairs(m.result->plant())) {
+              pairs.emplace_back(m.bodies[a.index()].scoped_name, m.bodies[b.index()].scoped_name);
+            }
+            return pairs;
+          },
+          "Every filtered body pair by scoped name, as plant-json lists them (as many as the "
+          "pairs: a welded composite of N bodies gives N(N-1)/2; collision_filtered answers "
+          "one pair)")
+      .def(
           "to_json",
           [](const Model& m, const std::optional<Eigen::VectorXd>& q, bool full_mass_matrix) {
             backend::PlantJsonOptions options;
