@@ -32,7 +32,7 @@ class DisjointSets {
   std::vector<uint32_t> parent_;
 };
 
-/// Makes the declarations, keeping only bodies with proximity geometry.
+/// Collects the declarations, keeping only bodies with proximity geometry.
 class FilterBuilder {
  public:
   explicit FilterBuilder(std::vector<bool> has_proximity)
@@ -40,21 +40,20 @@ class FilterBuilder {
 
   bool HasProximity(uint32_t b) const { return has_proximity_[b]; }
   void AddPair(uint32_t a, uint32_t b) {
-    if (a != b && has_proximity_[a] && has_proximity_[b]) filters_.AddPair(BodyId(a), BodyId(b));
+    if (a != b && has_proximity_[a] && has_proximity_[b]) pairs_.emplace_back(BodyId(a), BodyId(b));
   }
   /// Every pair within `bodies` (none repeated).
   void AddSet(const std::vector<uint32_t>& bodies) {
     std::vector<BodyId> kept = Kept(bodies);
-    if (kept.size() >= 2) filters_.AddSet(std::move(kept));
+    if (kept.size() >= 2) sets_.push_back(std::move(kept));
   }
   /// Every body of `a` with every body of `b`.
   void AddSetPair(const std::vector<uint32_t>& a, const std::vector<uint32_t>& b) {
     std::vector<BodyId> kept_a = Kept(a), kept_b = Kept(b);
-    if (!kept_a.empty() && !kept_b.empty()) filters_.AddSetPair(std::move(kept_a), std::move(kept_b));
+    if (!kept_a.empty() && !kept_b.empty()) set_pairs_.emplace_back(std::move(kept_a), std::move(kept_b));
   }
   CollisionFilters Finish() {
-    filters_.Seal();
-    return std::move(filters_);
+    return CollisionFilters(std::move(pairs_), std::move(sets_), std::move(set_pairs_));
   }
 
  private:
@@ -67,7 +66,9 @@ class FilterBuilder {
   }
 
   std::vector<bool> has_proximity_;
-  CollisionFilters filters_;
+  CollisionFilters::BodyPairs pairs_;
+  CollisionFilters::BodySets sets_;
+  CollisionFilters::BodySetPairs set_pairs_;
 };
 
 void AddAdjacentPairs(const Plant& plant, FilterBuilder& filters) {
@@ -184,24 +185,20 @@ std::optional<CollisionFilters> ComputeCollisionFilters(
 
 // ------------------------------------------------------ CollisionFilters
 
-void CollisionFilters::AddPair(BodyId a, BodyId b) {
-  pairs_.emplace_back(std::min(a, b), std::max(a, b));
-}
-
-void CollisionFilters::AddSet(std::vector<BodyId> bodies) {
-  for (BodyId b : bodies) tags_.emplace_back(b.value, Tag(sets_.size(), 0));
-  sets_.push_back(std::move(bodies));
-}
-
-void CollisionFilters::AddSetPair(std::vector<BodyId> a, std::vector<BodyId> b) {
-  for (BodyId x : a) tags_.emplace_back(x.value, Tag(set_pairs_.size(), 1));
-  for (BodyId y : b) tags_.emplace_back(y.value, Tag(set_pairs_.size(), 2));
-  set_pairs_.emplace_back(std::move(a), std::move(b));
-}
-
-void CollisionFilters::Seal() {
+CollisionFilters::CollisionFilters(BodyPairs pairs, BodySets sets, BodySetPairs set_pairs)
+    : pairs_(std::move(pairs)), sets_(std::move(sets)), set_pairs_(std::move(set_pairs)) {
+  for (auto& [a, b] : pairs_) {
+    if (b < a) std::swap(a, b);
+  }
   std::sort(pairs_.begin(), pairs_.end());
   pairs_.erase(std::unique(pairs_.begin(), pairs_.end()), pairs_.end());
+  for (size_t s = 0; s < sets_.size(); ++s) {
+    for (BodyId b : sets_[s]) tags_.emplace_back(b.value, Tag(s, 0));
+  }
+  for (size_t p = 0; p < set_pairs_.size(); ++p) {
+    for (BodyId a : set_pairs_[p].first) tags_.emplace_back(a.value, Tag(p, 1));
+    for (BodyId b : set_pairs_[p].second) tags_.emplace_back(b.value, Tag(p, 2));
+  }
   std::sort(tags_.begin(), tags_.end());
   tags_.erase(std::unique(tags_.begin(), tags_.end()), tags_.end());
 }
@@ -226,7 +223,7 @@ bool CollisionFilters::Filtered(BodyId a, BodyId b) const {
   return false;
 }
 
-std::vector<std::pair<BodyId, BodyId>> CollisionFilters::Pairs(const Plant& plant) const {
+CollisionFilters::BodyPairs CollisionFilters::Pairs(const Plant& plant) const {
   std::vector<BodyPair> pairs;
   for (const auto& [a, b] : pairs_) pairs.emplace_back(a.value, b.value);
   for (const std::vector<BodyId>& set : sets_) {

@@ -31,30 +31,34 @@ struct Plant;
 /// bodies with proximity geometry are held.
 class CollisionFilters {
  public:
+  using BodyPairs = std::vector<std::pair<BodyId, BodyId>>;
+  using BodySets = std::vector<std::vector<BodyId>>;
+  using BodySetPairs = std::vector<std::pair<std::vector<BodyId>, std::vector<BodyId>>>;
+
+  CollisionFilters() = default;
+  /// Filters `pairs`, every two bodies of each set, and every body of the
+  /// first of a set pair with every body of its second (a body never with
+  /// itself). ComputeCollisionFilters (collision_filters.h) makes them.
+  CollisionFilters(BodyPairs pairs, BodySets sets, BodySetPairs set_pairs);
+
   /// True when `a` and `b` are two bodies whose collisions are filtered.
   /// One binary search per declaration `a` is part of.
   bool Filtered(BodyId a, BodyId b) const;
   /// Every filtered pair, each pair and the list ordered by the bodies'
   /// scoped names, without duplicates; time and memory in proportion to the
   /// pairs (times a logarithm).
-  std::vector<std::pair<BodyId, BodyId>> Pairs(const Plant& plant) const;
-
-  // Building (ComputeCollisionFilters); Seal() makes Filtered usable.
-  void AddPair(BodyId a, BodyId b);
-  void AddSet(std::vector<BodyId> bodies);
-  void AddSetPair(std::vector<BodyId> a, std::vector<BodyId> b);
-  void Seal();
+  BodyPairs Pairs(const Plant& plant) const;
 
  private:
   // a body's part in a declaration: set s is tag 3s, the sides of set pair
-  // p are 3p + 1 and 3p + 2; (body, tag) sorted by Seal()
+  // p are 3p + 1 and 3p + 2
   static uint64_t Tag(size_t index, uint64_t kind) { return 3 * uint64_t{index} + kind; }
   bool HasTag(BodyId body, uint64_t tag) const;
 
-  std::vector<std::pair<BodyId, BodyId>> pairs_;  // each (smaller index, larger), sorted
-  std::vector<std::vector<BodyId>> sets_;
-  std::vector<std::pair<std::vector<BodyId>, std::vector<BodyId>>> set_pairs_;
-  std::vector<std::pair<uint32_t, uint64_t>> tags_;  // (body index, tag)
+  BodyPairs pairs_;  // each (smaller index, larger), sorted, unique
+  BodySets sets_;
+  BodySetPairs set_pairs_;
+  std::vector<std::pair<uint32_t, uint64_t>> tags_;  // (body index, tag), sorted, unique
 };
 
 struct SceneGeometry {

@@ -100,27 +100,39 @@ std::string FileName(Family family, int n) {
                      family.format == Format::Urdf ? "urdf" : "mjcf.xml");
 }
 
-// A Compilation holding the model's text; the copy is setup, not timed.
-std::unique_ptr<Compilation> Prepare(benchmark::State& state, Family family, FileId* file) {
+// A Compilation holding `text` as `name`; the copy is setup, not timed.
+std::unique_ptr<Compilation> PrepareText(benchmark::State& state, const std::string& name,
+                                         const std::string& text, FileId* file) {
   state.PauseTiming();
   auto c = std::make_unique<Compilation>();
-  const int n = static_cast<int>(state.range(0));
-  *file = c->sources.AddBuffer(FileName(family, n), Model(family, n));
+  *file = c->sources.AddBuffer(name, text);
   state.ResumeTiming();
   return c;
 }
 
-bool RunFrontend(Compilation& c, FileId file, Family family) {
+std::unique_ptr<Compilation> Prepare(benchmark::State& state, Family family, FileId* file) {
+  const int n = static_cast<int>(state.range(0));
+  return PrepareText(state, FileName(family, n), Model(family, n), file);
+}
+
+bool RunFrontend(Compilation& c, FileId file, Format format) {
   frontend::FrontendContext ctx{c.sources, c.diags, c.module, c.options.frontend};
-  return frontend::ReadModel(file, family.format, ctx).has_value() &&
-         !c.diags.has_errors();
+  return frontend::ReadModel(file, format, ctx).has_value() && !c.diags.has_errors();
+}
+
+bool RunFrontend(Compilation& c, FileId file, Family family) {
+  return RunFrontend(c, file, family.format);
+}
+
+// O(N) over the state's N, and the input's bytes per second
+void FinishText(benchmark::State& state, const std::string& text) {
+  state.SetComplexityN(state.range(0));
+  state.SetBytesProcessed(static_cast<int64_t>(state.iterations()) *
+                          static_cast<int64_t>(text.size()));
 }
 
 void Finish(benchmark::State& state, Family family) {
-  const int n = static_cast<int>(state.range(0));
-  state.SetComplexityN(n);
-  state.SetBytesProcessed(static_cast<int64_t>(state.iterations()) *
-                          static_cast<int64_t>(Model(family, n).size()));
+  FinishText(state, Model(family, static_cast<int>(state.range(0))));
 }
 
 // ---------------------------------------------------------------- stages
@@ -256,34 +268,24 @@ const std::string& NestedDefaultsModel(int n) {
   return it->second;
 }
 
-void FinishNestedDefaults(benchmark::State& state) {
-  const int n = static_cast<int>(state.range(0));
-  state.SetComplexityN(n);
-  state.SetBytesProcessed(static_cast<int64_t>(state.iterations()) *
-                          static_cast<int64_t>(NestedDefaultsModel(n).size()));
-}
-
 void BM_Libxml2ParseNestedDefaults(benchmark::State& state) {
-  ParseWithLibxml2(state, NestedDefaultsModel(static_cast<int>(state.range(0))), kFloorXmlOptions);
-  FinishNestedDefaults(state);
+  const std::string& text = NestedDefaultsModel(static_cast<int>(state.range(0)));
+  ParseWithLibxml2(state, text, kFloorXmlOptions);
+  FinishText(state, text);
 }
 
 void BM_CompileNestedDefaults(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
+  const std::string& text = NestedDefaultsModel(n);
   for (auto _ : state) {
-    state.PauseTiming();
-    auto c = std::make_unique<Compilation>();
-    const FileId file =
-        c->sources.AddBuffer(fmt::format("nested_defaults_n{}.xml", n), NestedDefaultsModel(n));
-    state.ResumeTiming();
-    frontend::FrontendContext ctx{c->sources, c->diags, c->module, c->options.frontend};
-    if (!frontend::ReadModel(file, Format::Mjcf, ctx) || c->diags.has_errors() ||
-        !c->RunPasses() || !c->RunBackend()) {
+    FileId file;
+    auto c = PrepareText(state, fmt::format("nested_defaults_n{}.xml", n), text, &file);
+    if (!RunFrontend(*c, file, Format::Mjcf) || !c->RunPasses() || !c->RunBackend()) {
       state.SkipWithError("compile reported errors");
     }
     benchmark::DoNotOptimize(c->model);
   }
-  FinishNestedDefaults(state);
+  FinishText(state, text);
 }
 
 void RegisterAll() {
