@@ -80,20 +80,17 @@ void AddAdjacentPairs(const Plant& plant, FilterBuilder& filters) {
 }
 
 void AddWeldedSets(const Plant& plant, FilterBuilder& filters) {
-  // the sets are made at the first weld: without welds every body is a
-  // composite of its own, which makes no pair
-  std::optional<DisjointSets> sets;
-  for (const PlantJoint& joint : plant.joints) {
-    if (joint.type != ir::JointType::Weld) continue;
-    if (!sets) sets.emplace(plant.bodies.size());
-    sets->Union(joint.parent.value, joint.child.value);
+  // without welds every body is a composite of its own, which makes no pair
+  if (std::none_of(plant.joints.begin(), plant.joints.end(),
+                   [](const PlantJoint& j) { return j.type == ir::JointType::Weld; })) {
+    return;
   }
-  if (!sets) return;
+  const std::vector<uint32_t> composite_of = WeldedComposites(plant);
   // proximity bodies by composite (one list, not a list per body, as most
   // bodies are composites of their own), then one set per composite
   std::vector<BodyPair> by_composite;  // (composite, body)
   for (uint32_t b = 0; b < plant.bodies.size(); ++b) {
-    if (filters.HasProximity(b)) by_composite.emplace_back(sets->Find(b), b);
+    if (filters.HasProximity(b)) by_composite.emplace_back(composite_of[b], b);
   }
   std::sort(by_composite.begin(), by_composite.end());
   std::vector<uint32_t> composite;
@@ -181,6 +178,16 @@ std::optional<CollisionFilters> ComputeCollisionFilters(
   AddWeldedSets(plant, filters);
   AddGroupDeclarations(module, filters);
   return filters.Finish();
+}
+
+std::vector<uint32_t> WeldedComposites(const Plant& plant) {
+  DisjointSets sets(plant.bodies.size());
+  for (const PlantJoint& joint : plant.joints) {
+    if (joint.type == ir::JointType::Weld) sets.Union(joint.parent.value, joint.child.value);
+  }
+  std::vector<uint32_t> composite(plant.bodies.size());
+  for (uint32_t b = 0; b < composite.size(); ++b) composite[b] = sets.Find(b);
+  return composite;
 }
 
 // ------------------------------------------------------ CollisionFilters

@@ -14,6 +14,7 @@
 // filter; CollisionFilters::Pairs lists the pairs for output.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -24,6 +25,10 @@
 #include "ir/module.h"
 
 namespace mdlc::backend {
+
+/// Each body's welded composite (COMMON-054), named by its smallest body
+/// index: bodies connected through weld joints share it.
+std::vector<uint32_t> WeldedComposites(const Plant& plant);
 
 /// Reports unresolved group references as errors and returns nullopt then.
 std::optional<CollisionFilters> ComputeCollisionFilters(

@@ -49,6 +49,13 @@ class CollisionFilters {
   /// pairs (times a logarithm).
   BodyPairs Pairs(const Plant& plant) const;
 
+  /// The declarations as made: single pairs (each smaller index first,
+  /// sorted, unique), sets and set pairs, in the order they were declared.
+  /// A writer writes them as filter groups, one per declaration.
+  const BodyPairs& pairs() const { return pairs_; }
+  const BodySets& sets() const { return sets_; }
+  const BodySetPairs& set_pairs() const { return set_pairs_; }
+
  private:
   // a body's part in a declaration: set s is tag 3s, the sides of set pair
   // p are 3p + 1 and 3p + 2

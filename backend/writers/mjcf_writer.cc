@@ -55,6 +55,7 @@
 #include <set>
 #include <variant>
 
+#include "backend/collision_filters.h"
 #include "backend/kinematics.h"
 #include "backend/writers/mjcf_layout.h"
 #include "backend/writers/names.h"
@@ -676,23 +677,44 @@ class MjcfWriter : FlatWriterBase {
     }
   }
 
-  // -- contact excludes: every filtered pair (the adjacent ones MuJoCo and
-  // mdlc filter anyway are harmless to repeat)
-
-  // (a pair of bodies fused into one is that body's own geometry: MuJoCo
-  // never collides a body with itself)
+  // -- contact excludes: MJCF names no groups, so each filtered pair is an
+  // <exclude>, but for two bodies of one welded composite. The composite is
+  // written as bodies without joints, one nested in another, which MuJoCo
+  // never collides with each other (one weld) and mdlc's reader welds again;
+  // a composite of N bodies would otherwise take N(N-1)/2 excludes. The
+  // adjacent pairs MuJoCo and mdlc filter anyway are harmless to repeat.
   void WriteContacts() {
-    std::set<std::pair<size_t, size_t>> written;
-    for (const auto& [a, b] : scene_.collision_filters.Pairs(plant_)) {
+    const std::vector<uint32_t> composite = backend::WeldedComposites(plant_);
+    auto one_composite = [&](BodyId a, BodyId b) {
+      return composite[a.index()] == composite[b.index()];
+    };
+    std::set<std::pair<size_t, size_t>> excluded;  // written bodies, by index
+    auto exclude = [&](BodyId a, BodyId b) {
+      if (one_composite(a, b)) return;
       const BodyId x = Owner(a), y = Owner(b);
-      if (x == y || !written.insert({std::min(x.index(), y.index()), std::max(x.index(), y.index())})
-                         .second) {
-        continue;
+      if (x != y) excluded.insert({std::min(x.index(), y.index()), std::max(x.index(), y.index())});
+    };
+    const backend::CollisionFilters& filters = scene_.collision_filters;
+    for (const auto& [a, b] : filters.pairs()) exclude(a, b);
+    for (const std::vector<BodyId>& set : filters.sets()) {
+      if (std::all_of(set.begin(), set.end(), [&](BodyId b) { return one_composite(set[0], b); })) {
+        continue;  // a welded composite, or a group within one
       }
-      if (written.size() == 1) out_.Open("contact");
-      out_.Open("exclude").Attr("body1", BodyName(x)).Attr("body2", BodyName(y)).Close();
+      for (size_t i = 0; i < set.size(); ++i) {
+        for (size_t k = i + 1; k < set.size(); ++k) exclude(set[i], set[k]);
+      }
     }
-    if (!written.empty()) out_.Close();
+    for (const auto& [side_a, side_b] : filters.set_pairs()) {
+      for (BodyId a : side_a) {
+        for (BodyId b : side_b) exclude(a, b);
+      }
+    }
+    if (excluded.empty()) return;
+    out_.Open("contact");
+    for (const auto& [x, y] : excluded) {
+      out_.Open("exclude").Attr("body1", BodyName(BodyId(x))).Attr("body2", BodyName(BodyId(y))).Close();
+    }
+    out_.Close();
   }
 
   // -- equality constraints

@@ -5,30 +5,35 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <map>
 #include <variant>
 
+#include "backend/writers/filter_declarations.h"
 #include "backend/writers/sdf_writer_detail.h"
 #include "ir/overloaded.h"
 
 namespace mdlc::writers::sdf {
 
+/// Queues `write` for the innermost model holding every one of `scopes`;
+/// reports `what` dropped when only the world could hold it.
+void SdfWriter::Place(const std::vector<std::string>& scopes, Loc loc, const std::string& what,
+                      std::function<void(const std::string&)> write) {
+  std::string scope = scopes.empty() ? "" : scopes[0];
+  for (const std::string& s : scopes) scope = CommonScope(scope, s);
+  if (scope.empty()) {
+    diags_.Report(DiagKind::Lossy, loc,
+                  fmt::format("{} is dropped: it names links of different top-level models "
+                              "(or the world), and SDFormat reads drake: elements only in "
+                              "a model",
+                              what));
+    return;
+  }
+  Scope(scope).elements.push_back([write, scope] { write(scope); });
+}
+
 /// Model-level drake: elements, each in the innermost model holding what
 /// it names; what only the world could hold is reported.
 void SdfWriter::BuildElements() {
-  auto place = [&](const std::vector<std::string>& scopes, Loc loc, const std::string& what,
-                   std::function<void(const std::string&)> write) {
-    std::string scope = scopes.empty() ? "" : scopes[0];
-    for (const std::string& s : scopes) scope = CommonScope(scope, s);
-    if (scope.empty()) {
-      diags_.Report(DiagKind::Lossy, loc,
-                    fmt::format("{} is dropped: it names links of different top-level models "
-                                "(or the world), and SDFormat reads drake: elements only in "
-                                "a model",
-                                what));
-      return;
-    }
-    Scope(scope).elements.push_back([write, scope] { write(scope); });
-  };
   for (size_t i = 0; i < plant_.constraints.size(); ++i) {
     const backend::PlantConstraint& c = plant_.constraints[i];
     const Loc loc = ConstraintLoc(i);
@@ -36,7 +41,7 @@ void SdfWriter::BuildElements() {
         ir::Overloaded{
             [&](const backend::CouplerConstraint&) {},  // the follower's <drake:mimic>
             [&](const backend::BallConstraint& k) {
-              place({BodyScope(k.body_A), BodyScope(k.body_B)}, loc, "a ball constraint",
+              Place({BodyScope(k.body_A), BodyScope(k.body_B)}, loc, "a ball constraint",
                     [this, k](const std::string& scope) {
                       out_.Open("drake:ball_constraint");
                       BodiesAndPoints(scope, "drake:ball_constraint", k.body_A, k.body_B,
@@ -45,7 +50,7 @@ void SdfWriter::BuildElements() {
                     });
             },
             [&](const backend::DistanceConstraint& k) {
-              place({BodyScope(k.body_A), BodyScope(k.body_B)}, loc, "a distance constraint",
+              Place({BodyScope(k.body_A), BodyScope(k.body_B)}, loc, "a distance constraint",
                     [this, k](const std::string& scope) {
                       const std::string p = "drake:distance_constraint";
                       out_.Open(p);
@@ -106,7 +111,7 @@ void SdfWriter::BuildElements() {
                 return;
               }
               const FrameRef fa = a->second, fc = c->second;
-              place({fa.scope, fc.scope}, Loc{}, "a linear bushing",
+              Place({fa.scope, fc.scope}, Loc{}, "a linear bushing",
                     [this, k, fa, fc](const std::string& scope) {
                       const std::string p = "drake:bushing_";
                       out_.Open("drake:linear_bushing_rpy");
@@ -120,7 +125,7 @@ void SdfWriter::BuildElements() {
                     });
             },
             [&](const backend::LinearSpringDamper& k) {
-              place({BodyScope(k.body_A), BodyScope(k.body_B)}, Loc{}, "a linear spring-damper",
+              Place({BodyScope(k.body_A), BodyScope(k.body_B)}, Loc{}, "a linear spring-damper",
                     [this, k](const std::string& scope) {
                       const std::string p = "drake:linear_spring_damper";
                       out_.Open(p);
@@ -135,29 +140,7 @@ void SdfWriter::BuildElements() {
         },
         f);
   }
-  int n = 0;
-  for (const auto& pair : scene_.collision_filters.Pairs(plant_)) {
-    const BodyId a = pair.first, b = pair.second;  // named copies: lambdas capture them
-    if (a.index() == 0 || b.index() == 0) {
-      const BodyId other = a.index() == 0 ? b : a;
-      diags_.Report(DiagKind::Lossy, BodyLoc(other),
-                    fmt::format("the collision filter between link '{}' and the world is "
-                                "dropped: a collision filter group cannot name the world",
-                                link_names_[other.index()]));
-      continue;
-    }
-    const std::string name = fmt::format("filter{}", n++);
-    place({BodyScope(a), BodyScope(b)}, BodyLoc(a),
-          fmt::format("the collision filter between links '{}' and '{}'",
-                      link_names_[a.index()], link_names_[b.index()]),
-          [this, a, b, name](const std::string& scope) {
-            out_.Open("drake:collision_filter_group").Attr("name", name);
-            Value("drake:member", LinkRef(scope, a));
-            Value("drake:member", LinkRef(scope, b));
-            Value("drake:ignored_collision_filter_group", name);
-            out_.Close();
-          });
-  }
+  BuildFilterGroups();
   for (size_t i = 0; i < scene_.geometries.size(); ++i) {
     const backend::SceneGeometry& g = scene_.geometries[i];
     if (g.body.index() != 0) continue;
@@ -182,6 +165,78 @@ void SdfWriter::BodiesAndPoints(const std::string& scope, const std::string& pre
   Value(prefix + "_p_AP", p_AP);
   Value(prefix + "_body_B", LinkRef(scope, B));
   Value(prefix + "_p_BQ", p_BQ);
+}
+
+/// One group per filter declaration (two for a group that ignores
+/// another), in the innermost model holding its links. A declaration whose
+/// links lie in several top-level models is split by model, as no group can
+/// reach past one; its pairs across models are reported dropped, once per
+/// declaration.
+void SdfWriter::BuildFilterGroups() {
+  const std::vector<FilterDeclaration> declarations = DeclarationsWithoutWorld(
+      scene_.collision_filters, [&](BodyId body) {
+        diags_.Report(DiagKind::Lossy, BodyLoc(body),
+                      fmt::format("the collision filter between link '{}' and the world is "
+                                  "dropped: a collision filter group cannot name the world",
+                                  link_names_[body.index()]));
+      });
+  auto top_model = [&](BodyId body) {
+    const std::string scope = BodyScope(body);
+    return scope.substr(0, scope.find("::"));
+  };
+  int n = 0;
+  for (const FilterDeclaration& d : declarations) {
+    // the declaration's members and ignored links by top-level model, in
+    // the order the models first appear
+    std::vector<std::string> tops;
+    std::map<std::string, size_t> top_index;
+    std::vector<FilterDeclaration> parts;
+    auto part_of = [&](BodyId body) -> FilterDeclaration& {
+      const auto [it, added] = top_index.try_emplace(top_model(body), tops.size());
+      if (added) {
+        tops.push_back(it->first);
+        parts.emplace_back();
+      }
+      return parts[it->second];
+    };
+    for (BodyId b : d.members) part_of(b).members.push_back(b);
+    for (BodyId b : d.ignored) part_of(b).ignored.push_back(b);
+    if (tops.size() > 1) {
+      const BodyId first = d.members.front();
+      diags_.Report(
+          DiagKind::Lossy, BodyLoc(first),
+          fmt::format("the collision filter of link '{}' between different top-level models "
+                      "('{}', '{}'{}) is dropped: a collision filter group holds the links of "
+                      "one model; it is kept within each model",
+                      link_names_[first.index()], tops[0], tops[1],
+                      tops.size() > 2 ? fmt::format(" and {} more", tops.size() - 2) : ""));
+    }
+    for (FilterDeclaration& part : parts) {
+      const bool filters = d.ignores_itself() ? part.members.size() >= 2
+                                              : !part.members.empty() && !part.ignored.empty();
+      if (!filters) continue;
+      std::vector<std::string> scopes;
+      for (BodyId b : part.members) scopes.push_back(BodyScope(b));
+      for (BodyId b : part.ignored) scopes.push_back(BodyScope(b));
+      const std::string name = fmt::format("filter{}", n++);
+      const std::string ignored = d.ignores_itself() ? name : fmt::format("filter{}", n++);
+      const BodyId first = part.members.front();  // before `part` moves into the writer
+      Place(scopes, BodyLoc(first),
+            fmt::format("the collision filter group of link '{}'", link_names_[first.index()]),
+            [this, part = std::move(part), name, ignored](const std::string& scope) {
+              WriteFilterGroup(scope, part.members, name, ignored);
+              if (!part.ignores_itself()) WriteFilterGroup(scope, part.ignored, ignored, "");
+            });
+    }
+  }
+}
+
+void SdfWriter::WriteFilterGroup(const std::string& scope, const std::vector<BodyId>& members,
+                                 const std::string& name, const std::string& ignored) {
+  out_.Open("drake:collision_filter_group").Attr("name", name);
+  for (BodyId b : members) Value("drake:member", LinkRef(scope, b));
+  if (!ignored.empty()) Value("drake:ignored_collision_filter_group", ignored);
+  out_.Close();
 }
 
 }  // namespace mdlc::writers::sdf

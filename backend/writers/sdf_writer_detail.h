@@ -109,7 +109,12 @@ class SdfWriter : WriterBase {
   void WritePlanar(JointId id, const std::string& scope);
 
   // sdf_drake_elements.cc
+  void Place(const std::vector<std::string>& scopes, Loc loc, const std::string& what,
+             std::function<void(const std::string&)> write);
   void BuildElements();
+  void BuildFilterGroups();
+  void WriteFilterGroup(const std::string& scope, const std::vector<BodyId>& members,
+                        const std::string& name, const std::string& ignored);
   void BodiesAndPoints(const std::string& scope, const std::string& prefix, BodyId A, BodyId B,
                        const Eigen::Vector3d& p_AP, const Eigen::Vector3d& p_BQ);
 

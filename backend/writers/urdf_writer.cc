@@ -33,6 +33,7 @@
 #include <variant>
 
 #include "backend/writers/drake_out.h"
+#include "backend/writers/filter_declarations.h"
 #include "backend/writers/names.h"
 #include "backend/writers/writer.h"
 #include "backend/writers/writer_base.h"
@@ -607,25 +608,35 @@ class UrdfWriter : FlatWriterBase {
     }
   }
 
-  // one group per filtered pair, ignoring itself: exactly the plant's filters
+  // one group per declaration (two for a group that ignores another):
+  // exactly the plant's filters, in proportion to the declarations
   void WriteCollisionFilters() {
+    const std::vector<FilterDeclaration> declarations = DeclarationsWithoutWorld(
+        scene_.collision_filters, [&](BodyId body) {
+          diags_.Report(DiagKind::Lossy, BodyLoc(body),
+                        fmt::format("the collision filter between link '{}' and the world is "
+                                    "dropped: a URDF collision filter group cannot name the world",
+                                    BodyName(body)));
+        });
     int n = 0;
-    for (const auto& [a, b] : scene_.collision_filters.Pairs(plant_)) {
-      if (a.index() == 0 || b.index() == 0) {
-        // a URDF filter group names links of its own robot; the world is none
-        const BodyId other = a.index() == 0 ? b : a;
-        diags_.Report(DiagKind::Lossy, BodyLoc(other),
-                      fmt::format("the collision filter between link '{}' and the world is "
-                                  "dropped: a URDF collision filter group cannot name the world",
-                                  BodyName(other)));
+    auto group = [&](const std::vector<BodyId>& members, const std::string& name,
+                     const std::string& ignored) {
+      out_.Open("drake:collision_filter_group").Attr("name", name);
+      for (BodyId b : members) out_.Open("drake:member").Attr("link", BodyName(b)).Close();
+      if (!ignored.empty()) {
+        out_.Open("drake:ignored_collision_filter_group").Attr("name", ignored).Close();
+      }
+      out_.Close();
+    };
+    for (const FilterDeclaration& d : declarations) {
+      const std::string name = fmt::format("filter{}", n++);
+      if (d.ignores_itself()) {
+        group(d.members, name, name);
         continue;
       }
-      const std::string name = fmt::format("filter{}", n++);
-      out_.Open("drake:collision_filter_group").Attr("name", name);
-      out_.Open("drake:member").Attr("link", BodyName(a)).Close();
-      out_.Open("drake:member").Attr("link", BodyName(b)).Close();
-      out_.Open("drake:ignored_collision_filter_group").Attr("name", name).Close();
-      out_.Close();
+      const std::string ignored = fmt::format("filter{}", n++);
+      group(d.members, name, ignored);
+      group(d.ignored, ignored, "");
     }
   }
 

@@ -45,6 +45,7 @@ class CompiledText : public ClaimsDiagnostics {
 
   bool ok() const { return ok_; }
   const ir::Module& module() const { return c_.module; }
+  const backend::CompiledModel& model() const { return *c_.model; }
   const std::filesystem::path& path() const { return path_; }
   const std::vector<Diagnostic>& diagnostics() const { return c_.diags.diagnostics(); }
 
