@@ -81,7 +81,9 @@ class MjcfWriter : FlatWriterBase {
   MjcfWriter(const backend::CompiledModel& model, const ir::Module& module,
              const WriteOptions& options, DiagnosticEngine& diags)
       : FlatWriterBase(model, module, options, diags),
-        layout_(PlanMjcfBodies(plant_, scene_, options.fuse_fixed)) {}
+        layout_(PlanMjcfBodies(plant_, scene_, options.fuse_fixed)),
+        bodies_by_owner_(plant_.bodies.size(), plant_.bodies.size(),
+                         [&](size_t b) { return layout_.owner[b].index(); }) {}
 
   std::string Write() {
     names_.ReportFlattening(m_, "MJCF model", diags_);
@@ -104,7 +106,7 @@ class MjcfWriter : FlatWriterBase {
       children_[Owner(layout_.parent[b.index()]).index()].push_back(b);
     }
     out_.Open("worldbody");
-    WriteBodyContents(ir::kWorldBody);
+    WriteBodyTree(ir::kWorldBody);
     out_.Close();
     WriteContacts();
     WriteEqualities();
@@ -218,11 +220,30 @@ class MjcfWriter : FlatWriterBase {
 
   // -- bodies
 
-  void WriteBodyContents(BodyId body) {
+  /// `root`'s contents and its written descendants, depth first. A loop,
+  /// not recursion: a chain of 10,000 links nests 10,000 bodies deep, past
+  /// what the stack holds of recursive calls.
+  void WriteBodyTree(BodyId root) {
+    WriteOwnContents(root);
+    std::vector<std::pair<BodyId, size_t>> open{{root, 0}};  // a body, its next child
+    while (!open.empty()) {
+      const BodyId body = open.back().first;
+      const std::vector<BodyId>& children = children_[body.index()];
+      if (open.back().second == children.size()) {
+        if (open.size() > 1) out_.Close();  // the root's element is its caller's
+        open.pop_back();
+        continue;
+      }
+      const BodyId child = children[open.back().second++];
+      OpenBody(child);
+      open.emplace_back(child, 0);
+    }
+  }
+
+  void WriteOwnContents(BodyId body) {
     WriteGeometries(body);
     WriteSites(body);
     WriteCameras(body);
-    for (BodyId child : children_[body.index()]) WriteBody(child);
   }
 
   /// The default positions of a joint as written (a ball's are dropped).
@@ -250,7 +271,8 @@ class MjcfWriter : FlatWriterBase {
     return q0;
   }
 
-  void WriteBody(BodyId body) {
+  /// Opens `body`'s <body> and writes what it holds but its child bodies.
+  void OpenBody(BodyId body) {
     const std::vector<JointId>& chain = layout_.joints[body.index()];
     const size_t n = chain.size();
     std::vector<Kind> kinds(n);
@@ -284,8 +306,7 @@ class MjcfWriter : FlatWriterBase {
       X_CkB = step[k] * X_CkB;
     }
     for (size_t k = 0; k < n; ++k) WriteJoint(chain[k], kinds[k], q0[k], body, X_BM[k]);
-    WriteBodyContents(body);
-    out_.Close();
+    WriteOwnContents(body);
   }
 
   /// What MJCF cannot hold of a body itself.
@@ -436,8 +457,7 @@ class MjcfWriter : FlatWriterBase {
                                 "none",
                                 j.name));
     }
-    const bool actuated = std::any_of(plant_.actuators.begin(), plant_.actuators.end(),
-                                      [&](const auto& a) { return a.joint == id; });
+    const bool actuated = !actuators_by_joint_[id.index()].empty();
     const bool effort =
         std::any_of(j.effort.begin(), j.effort.end(), [](double e) { return e != kInf; });
     if (effort && !actuated) {
@@ -452,8 +472,9 @@ class MjcfWriter : FlatWriterBase {
   // reads it back as armature / gear^2 for each actuator on the joint
   void Armature(JointId id, Loc loc) {
     std::optional<double> armature;
-    for (const backend::PlantActuator& a : plant_.actuators) {
-      if (a.joint != id || a.rotor_inertia == 0) continue;
+    for (uint32_t i : actuators_by_joint_[id.index()]) {
+      const backend::PlantActuator& a = plant_.actuators[i];
+      if (a.rotor_inertia == 0) continue;
       const double reflected = a.rotor_inertia * a.gear_ratio * a.gear_ratio;
       if (armature && *armature != reflected) {
         diags_.Report(DiagKind::Lossy, loc,
@@ -468,9 +489,8 @@ class MjcfWriter : FlatWriterBase {
   }
 
   void Spring(JointId id) {
-    for (const backend::ForceElement& f : plant_.force_elements) {
-      const auto* s = std::get_if<backend::JointSpring>(&f);
-      if (!s || s->joint != id) continue;
+    for (uint32_t i : springs_by_joint_[id.index()]) {
+      const auto* s = &std::get<backend::JointSpring>(plant_.force_elements[i]);
       out_.Attr("stiffness", s->stiffness);
       if (s->nominal != 0) out_.Attr("springref", s->nominal);
       written_springs_.insert(id.index());
@@ -510,10 +530,21 @@ class MjcfWriter : FlatWriterBase {
 
   // the geometry of written body `body` and of the bodies fused into it
   void WriteGeometries(BodyId body) {
-    for (size_t i = 0; i < scene_.geometries.size(); ++i) {
-      const backend::SceneGeometry& g = scene_.geometries[i];
-      if (Owner(g.body) == body) WriteGeometry(i, g, GeometryLoc(i));
+    for (uint32_t i : Owned(geometries_by_body_, body)) {
+      WriteGeometry(i, scene_.geometries[i], GeometryLoc(i));
     }
+  }
+
+  /// The entities of `index` on written body `body` or on a body whose
+  /// content it holds, in entity order.
+  std::vector<uint32_t> Owned(const EntityIndex& index, BodyId body) const {
+    std::vector<uint32_t> out;
+    for (uint32_t b : bodies_by_owner_[body.index()]) {
+      const auto on_b = index[b];
+      out.insert(out.end(), on_b.begin(), on_b.end());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
   }
 
   void WriteGeometry(size_t index, const backend::SceneGeometry& g, Loc loc) {
@@ -637,9 +668,9 @@ class MjcfWriter : FlatWriterBase {
   // the frames of written body `body` and of the bodies fused into it, the
   // fused bodies' own frames, and the constraints' points
   void WriteSites(BodyId body) {
-    for (size_t f = 0; f < plant_.frames.size(); ++f) {
+    for (uint32_t f : Owned(frames_by_body_, body)) {
       const backend::PlantFrame& frame = plant_.frames[f];
-      if (frame.unnamed || Owner(frame.body) != body) continue;
+      if (frame.unnamed) continue;
       const std::string name = Unique(site_names_, Named(frame.model, frame.name));
       out_.Open("site").Attr("name", name);
       Pose(InWrittenLink(frame.body, frame.X_BF));
@@ -659,9 +690,8 @@ class MjcfWriter : FlatWriterBase {
   }
 
   void WriteCameras(BodyId body) {
-    for (size_t i = 0; i < scene_.cameras.size(); ++i) {
+    for (uint32_t i : Owned(cameras_by_body_, body)) {
       const backend::SceneCamera& c = scene_.cameras[i];
-      if (Owner(c.body) != body) continue;
       // Drake's camera looks along +z with +y down; MuJoCo's along -z with
       // +y up: a half turn about x between the two
       const Eigen::Matrix3d flip = Eigen::Vector3d(1, -1, -1).asDiagonal();
@@ -931,6 +961,7 @@ class MjcfWriter : FlatWriterBase {
   }
 
   MjcfBodyLayout layout_;
+  EntityIndex bodies_by_owner_;  // each written body's plant bodies: itself, fused, merged
   std::map<size_t, std::string> fused_site_names_;
   std::vector<Transform> X_BL_;
   std::map<size_t, std::vector<BodyId>> children_;

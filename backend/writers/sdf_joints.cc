@@ -112,8 +112,8 @@ void SdfWriter::Axis(std::string_view tag, JointId id, const PlantJoint& j,
   const double damping = j.damping.empty() ? 0 : j.damping[0];
   if (k == 0 && !AllEqual(j.damping)) DampingLoss(j, loc);
   const backend::JointSpring* spring = nullptr;
-  for (const backend::ForceElement& f : plant_.force_elements) {
-    if (const auto* s = std::get_if<backend::JointSpring>(&f); s && s->joint == id) spring = s;
+  for (uint32_t i : springs_by_joint_[id.index()]) {
+    spring = &std::get<backend::JointSpring>(plant_.force_elements[i]);
   }
   if (damping != 0 || spring) {
     out_.Open("dynamics");
@@ -133,8 +133,8 @@ void SdfWriter::Axis(std::string_view tag, JointId id, const PlantJoint& j,
 double SdfWriter::EffortOf(JointId id, const PlantJoint& j, Loc loc) {
   const double joint_effort = j.effort.empty() ? kInf : j.effort[0];
   const backend::PlantActuator* actuator = nullptr;
-  for (const backend::PlantActuator& a : plant_.actuators) {
-    if (a.joint == id && !actuator) actuator = &a;
+  if (const auto actuators = actuators_by_joint_[id.index()]; !actuators.empty()) {
+    actuator = &plant_.actuators[actuators.front()];
   }
   if (!actuator) {
     if (joint_effort != 0) {
@@ -198,9 +198,8 @@ void SdfWriter::MultiDofLimits(const PlantJoint& j, Loc loc) {
 void SdfWriter::ActuatorParameters(JointId id) {
   const PlantJoint& j = plant_.joint(id);
   int count = 0;
-  for (size_t i = 0; i < plant_.actuators.size(); ++i) {
+  for (uint32_t i : actuators_by_joint_[id.index()]) {
     const backend::PlantActuator& a = plant_.actuators[i];
-    if (a.joint != id) continue;
     const Loc loc = ActuatorLoc(i);
     if (j.nv != 1 || j.type == ir::JointType::Planar) {
       diags_.Report(DiagKind::Lossy, loc,
@@ -237,9 +236,8 @@ void SdfWriter::ActuatorParameters(JointId id) {
 
 // a coupler whose follower is this joint becomes its <drake:mimic> (EXT-010)
 void SdfWriter::MimicElements(JointId id) {
-  for (size_t i = 0; i < plant_.constraints.size(); ++i) {
+  for (uint32_t i : couplers_by_follower_[id.index()]) {
     const auto* coupler = std::get_if<backend::CouplerConstraint>(&plant_.constraints[i].payload);
-    if (!coupler || coupler->joint0 != id) continue;
     const Loc loc = ConstraintLoc(i);
     if (mimic_written_.count(id.index())) {
       diags_.Report(DiagKind::Lossy, loc,
@@ -286,8 +284,7 @@ void SdfWriter::WritePlanar(JointId id, const std::string& scope) {
   Value("drake:damping", VectorText(Eigen::Map<const Eigen::VectorXd>(j.damping.data(), 3)));
   out_.Close();
   MultiDofLimits(j, loc);
-  for (size_t i = 0; i < plant_.actuators.size(); ++i) {
-    if (plant_.actuators[i].joint != id) continue;
+  for (uint32_t i : actuators_by_joint_[id.index()]) {
     diags_.Report(DiagKind::Lossy, ActuatorLoc(i),
                   fmt::format("actuator '{}' of planar joint '{}' is dropped: SDFormat makes "
                               "actuators for single-dof joints only",

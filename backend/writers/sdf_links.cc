@@ -45,8 +45,7 @@ void SdfWriter::WriteLink(BodyId body) {
 
 void SdfWriter::WriteGeometries(BodyId body) {
   std::set<std::string> visual_names, collision_names;
-  for (size_t i = 0; i < scene_.geometries.size(); ++i) {
-    if (scene_.geometries[i].body != body) continue;
+  for (uint32_t i : geometries_by_body_[body.index()]) {
     WriteGeometry(scene_.geometries[i], GeometryLoc(i), visual_names, collision_names);
   }
 }
@@ -196,8 +195,8 @@ void SdfWriter::Material(const backend::SceneGeometry& g, Loc loc) {
 
 void SdfWriter::WriteCameras(BodyId body) {
   std::set<std::string> names;
-  for (const backend::SceneCamera& c : scene_.cameras) {
-    if (c.body != body) continue;
+  for (uint32_t i : cameras_by_body_[body.index()]) {
+    const backend::SceneCamera& c = scene_.cameras[i];
     // the reader names a camera "model/sensor"
     std::string name = c.name;
     const std::string& inst = plant_.model_instances[c.model.index()];

@@ -132,8 +132,8 @@ void SdfWriter::AddModel(const std::string& scoped, Loc loc) {
   std::string path;
   for (size_t i = 0; i < parts.size(); ++i) {
     const std::string parent = path;
-    path = Join(parts, 0);
-    path = Join(std::vector<std::string>(parts.begin(), parts.begin() + i + 1));
+    if (i > 0) path += "::";
+    path += parts[i];
     if (models_.count(path)) continue;
     ModelNode node;
     node.scoped = path;
@@ -173,12 +173,11 @@ std::string SdfWriter::Claim(ModelNode& scope, const std::string& name, std::str
 }
 
 void SdfWriter::BuildModels() {
+  // a model instance is written when it has a body
+  std::vector<bool> has_body(plant_.model_instances.size(), false);
+  for (size_t b = 1; b < plant_.bodies.size(); ++b) has_body[plant_.bodies[b].model.index()] = true;
   for (size_t m = 1; m < plant_.model_instances.size(); ++m) {
-    bool used = false;
-    for (size_t b = 1; b < plant_.bodies.size(); ++b) {
-      used = used || plant_.bodies[b].model.index() == m;
-    }
-    if (used) AddModel(plant_.model_instances[m], ModelLoc(m));
+    if (has_body[m]) AddModel(plant_.model_instances[m], ModelLoc(m));
   }
   // links first: their names are what the other elements refer to
   link_names_.assign(plant_.bodies.size(), "world");

@@ -152,8 +152,8 @@ class UrdfWriter : FlatWriterBase {
       const Eigen::Vector3d axis = LinkInBody(body).R.transpose() * *b.surface_velocity_axis;
       out_.Open("drake:surface_velocity_axis").Attr("axis", axis).Close();
     }
-    for (size_t i = 0; i < scene_.geometries.size(); ++i) {
-      if (scene_.geometries[i].body == body) WriteGeometry(scene_.geometries[i], GeometryLoc(i));
+    for (uint32_t i : geometries_by_body_[body.index()]) {
+      WriteGeometry(scene_.geometries[i], GeometryLoc(i));
     }
     out_.Close();
   }
@@ -353,8 +353,9 @@ class UrdfWriter : FlatWriterBase {
   /// actuator's (Drake reads an actuator's effort from its joint's <limit>).
   double EffortOf(JointId id, const PlantJoint& j, Loc loc) {
     double effort = j.effort.empty() ? kInf : j.effort[0];
-    for (const backend::PlantActuator& a : plant_.actuators) {
-      if (a.joint != id || a.effort_limit == effort) continue;
+    for (uint32_t i : actuators_by_joint_[id.index()]) {
+      const backend::PlantActuator& a = plant_.actuators[i];
+      if (a.effort_limit == effort) continue;
       if (effort != kInf) {
         diags_.Report(DiagKind::Lossy, loc,
                       fmt::format("joint '{}' has effort limit {} and its actuator '{}' {}; "
@@ -418,9 +419,8 @@ class UrdfWriter : FlatWriterBase {
 
   // a coupler whose follower is this joint becomes its <mimic> (EXT-010)
   void Mimic(JointId id) {
-    for (const backend::PlantConstraint& c : plant_.constraints) {
-      const auto* coupler = std::get_if<backend::CouplerConstraint>(&c.payload);
-      if (!coupler || coupler->joint0 != id) continue;
+    for (uint32_t i : couplers_by_follower_[id.index()]) {
+      const auto* coupler = std::get_if<backend::CouplerConstraint>(&plant_.constraints[i].payload);
       if (!mimicked_.insert(id.index()).second) continue;  // a second one: see WriteConstraints
       out_.Open("mimic")
           .Attr("joint", JointName(coupler->joint1))

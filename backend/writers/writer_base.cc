@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <variant>
 
 namespace mdlc::writers {
 
@@ -13,7 +14,27 @@ WriterBase::WriterBase(const backend::CompiledModel& model, const ir::Module& mo
       scene_(model.scene),
       m_(module),
       diags_(diags),
-      assets_(options, diags) {
+      assets_(options, diags),
+      geometries_by_body_(plant_.bodies.size(), scene_.geometries.size(),
+                          [&](size_t i) { return scene_.geometries[i].body.index(); }),
+      cameras_by_body_(plant_.bodies.size(), scene_.cameras.size(),
+                       [&](size_t i) { return scene_.cameras[i].body.index(); }),
+      frames_by_body_(plant_.bodies.size(), plant_.frames.size(),
+                      [&](size_t i) { return plant_.frames[i].body.index(); }),
+      actuators_by_joint_(plant_.joints.size(), plant_.actuators.size(),
+                          [&](size_t i) { return plant_.actuators[i].joint.index(); }),
+      couplers_by_follower_(plant_.joints.size(), plant_.constraints.size(),
+                            [&](size_t i) -> int64_t {
+                              const auto* c = std::get_if<backend::CouplerConstraint>(
+                                  &plant_.constraints[i].payload);
+                              return c ? int64_t(c->joint0.index()) : EntityIndex::kNoKey;
+                            }),
+      springs_by_joint_(plant_.joints.size(), plant_.force_elements.size(),
+                        [&](size_t i) -> int64_t {
+                          const auto* s =
+                              std::get_if<backend::JointSpring>(&plant_.force_elements[i]);
+                          return s ? int64_t(s->joint.index()) : EntityIndex::kNoKey;
+                        }) {
   size_t ir_index = 0;
   geometry_locs_.reserve(scene_.geometries.size());
   for (size_t i = 0; i < scene_.geometries.size(); ++i) {

@@ -10,6 +10,7 @@
 
 #include "backend/compiled_model.h"
 #include "backend/writers/asset_paths.h"
+#include "backend/writers/entity_index.h"
 #include "backend/writers/names.h"
 #include "backend/writers/writer.h"
 #include "backend/writers/xml_out.h"
@@ -61,6 +62,12 @@ class WriterBase {
   DiagnosticEngine& diags_;
   AssetPaths assets_;
   XmlOut out_;
+  // what belongs to each body and joint, so that writing one costs only
+  // what it holds (entity_index.h)
+  const EntityIndex geometries_by_body_, cameras_by_body_, frames_by_body_;
+  const EntityIndex actuators_by_joint_;
+  const EntityIndex couplers_by_follower_;  // constraints: a coupler's joint0
+  const EntityIndex springs_by_joint_;      // force elements: joint springs
 
  private:
   template <typename Table>

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <libxml/xmlwriter.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -22,31 +23,40 @@ std::string VectorText(const Eigen::Ref<const Eigen::VectorXd>& values) {
 
 namespace {
 const xmlChar* X(const std::string& s) { return reinterpret_cast<const xmlChar*>(s.c_str()); }
+/// Elements deeper than this are indented as this deep.
+constexpr size_t kMaxIndentDepth = 32;
 }  // namespace
 
 struct XmlOut::State {
   xmlBufferPtr buffer = nullptr;
   xmlTextWriterPtr writer = nullptr;
-  /// Per open element, what it holds so far: libxml2 does not indent the
-  /// end tag of an element that holds only comments; Close does.
-  enum class Content { None, Comments, Other };
+  /// Per open element, whether it holds elements or comments so far (its
+  /// end tag then goes on a line of its own) or text (inline).
+  enum class Content { None, Lines, Text };
   std::vector<Content> content;
-  void Holds(Content c) {
-    if (content.empty()) return;
-    Content& top = content.back();
-    if (c == Content::Other || top == Content::None) top = c;
-  }
   void Check(int rc) {
     if (rc < 0) throw std::runtime_error("internal: the XML writer failed");
   }
+  /// A line break and the indentation of an element `depth` levels down,
+  /// capped: a chain of 10,000 bodies nested in MJCF would otherwise be
+  /// indented 10,000 deep, and the file grow as the square of the chain.
+  void NewLine(size_t depth) {
+    line.assign(1, '\n');
+    line.append(2 * std::min(depth, kMaxIndentDepth), ' ');
+    Check(xmlTextWriterWriteRaw(writer, X(line)));
+  }
+  /// What the element being opened is inside: it holds a line now.
+  void StartLine() {
+    if (!content.empty()) content.back() = Content::Lines;
+    NewLine(content.size());
+  }
+  std::string line;
 };
 
 XmlOut::XmlOut() : s_(std::make_unique<State>()) {
   s_->buffer = xmlBufferCreate();
   s_->writer = xmlNewTextWriterMemory(s_->buffer, 0);
   if (!s_->buffer || !s_->writer) throw std::runtime_error("internal: no memory for XML output");
-  xmlTextWriterSetIndent(s_->writer, 1);
-  xmlTextWriterSetIndentString(s_->writer, reinterpret_cast<const xmlChar*>("  "));
   s_->Check(xmlTextWriterStartDocument(s_->writer, "1.0", "UTF-8", nullptr));
 }
 
@@ -56,7 +66,8 @@ XmlOut::~XmlOut() {
 }
 
 XmlOut& XmlOut::Open(std::string_view tag) {
-  s_->Holds(State::Content::Other);
+  // the declaration ends its own line
+  if (!s_->content.empty()) s_->StartLine();
   s_->Check(xmlTextWriterStartElement(s_->writer, X(std::string(tag))));
   s_->content.push_back(State::Content::None);
   return *this;
@@ -69,18 +80,18 @@ XmlOut& XmlOut::Attr(std::string_view name, std::string_view value) {
 }
 
 XmlOut& XmlOut::Text(std::string_view text) {
-  s_->Holds(State::Content::Other);
+  if (!s_->content.empty() && s_->content.back() == State::Content::None) {
+    s_->content.back() = State::Content::Text;
+  }
   s_->Check(xmlTextWriterWriteString(s_->writer, X(std::string(text))));
   return *this;
 }
 
 XmlOut& XmlOut::Close() {
-  if (!s_->content.empty() && s_->content.back() == State::Content::Comments) {
-    // the comment ended its line: indent the end tag as its start tag
-    const std::string indent(2 * (s_->content.size() - 1), ' ');
-    s_->Check(xmlTextWriterWriteRaw(s_->writer, X(indent)));
+  if (!s_->content.empty()) {
+    if (s_->content.back() == State::Content::Lines) s_->NewLine(s_->content.size() - 1);
+    s_->content.pop_back();
   }
-  if (!s_->content.empty()) s_->content.pop_back();
   s_->Check(xmlTextWriterEndElement(s_->writer));
   return *this;
 }
@@ -89,12 +100,13 @@ XmlOut& XmlOut::Comment(std::string_view text) {
   // "--" may not appear inside a comment
   std::string safe(text);
   for (size_t at; (at = safe.find("--")) != std::string::npos;) safe.replace(at, 2, "- -");
-  s_->Holds(State::Content::Comments);
+  s_->StartLine();
   s_->Check(xmlTextWriterWriteComment(s_->writer, X(" " + safe + " ")));
   return *this;
 }
 
 std::string XmlOut::Finish() {
+  while (!s_->content.empty()) Close();
   s_->Check(xmlTextWriterEndDocument(s_->writer));
   xmlTextWriterFlush(s_->writer);
   return std::string(reinterpret_cast<const char*>(xmlBufferContent(s_->buffer)),

@@ -1,4 +1,5 @@
-// xml_out.h - indented XML output for the writers, on libxml2's text writer
+// xml_out.h - indented XML output for the writers (at most 32 levels of
+// indentation, so deep nesting stays linear in size), on libxml2's text writer
 // (which escapes attribute values and text). Numbers are written in their
 // shortest form that reads back to the same double, so a written model
 // compiles to the same values bit for bit.

@@ -14,6 +14,10 @@
 //   frontend          SDFormat -> IR (frontend::ReadModel), as the CLI calls it
 //   frontend_passes   ... + the default pass pipeline (resolve-frames included)
 //   compile           ... + backend::Instantiate (plant and scene graph)
+//   write_urdf, write_sdf, write_mjcf
+//                     what `mdlc convert` writes of the compiled model in
+//                     each format (writers::Write; the compile is setup, not
+//                     timed). N up to 10000 for the world.
 //   libsdformat_load  sdf::Root::LoadSdfString + ~Root (libsdformat 12; only
 //                     when the benchmark was built with it; N up to
 //                     --sdformat_max_n, default 1000, as it is slow;
@@ -41,6 +45,7 @@
 #include <span>
 #include <string>
 
+#include "backend/writers/writer.h"
 #include "tools/driver/compiler.h"
 #include "frontend/xml/xml_document.h"
 #include "model_gen_sdf.h"
@@ -172,6 +177,28 @@ void BM_Compile(benchmark::State& state, SdfFamily family) {
   Finish(state, family);
 }
 
+void BM_Write(benchmark::State& state, SdfFamily family, Format to) {
+  auto c = std::make_unique<Compilation>();
+  const int n = static_cast<int>(state.range(0));
+  const FileId file = c->sources.AddBuffer(FileName(family, n), Model(family, n));
+  if (!RunFrontend(*c, file) || !c->RunPasses() || !c->RunBackend()) {
+    ReportFirstError(state, *c, "compile");
+    return;
+  }
+  writers::WriteOptions options;
+  options.to = to;
+  for (auto _ : state) {
+    DiagnosticEngine diags;  // the lossy warnings a conversion draws
+    std::optional<std::string> text = writers::Write(*c->model, c->module, options, diags);
+    if (!text) state.SkipWithError("the writer failed");
+    benchmark::DoNotOptimize(text);
+  }
+  Finish(state, family);
+}
+void BM_WriteUrdf(benchmark::State& state, SdfFamily family) { BM_Write(state, family, Format::Urdf); }
+void BM_WriteSdf(benchmark::State& state, SdfFamily family) { BM_Write(state, family, Format::Sdf); }
+void BM_WriteMjcf(benchmark::State& state, SdfFamily family) { BM_Write(state, family, Format::Mjcf); }
+
 #ifdef MDLC_BENCH_HAVE_SDFORMAT
 void BM_LibsdformatLoad(benchmark::State& state, SdfFamily family) {
   const std::string& text = Model(family, static_cast<int>(state.range(0)));
@@ -203,6 +230,9 @@ void RegisterAll() {
       {"frontend", BM_Frontend, kWorldSizes[2]},
       {"frontend_passes", BM_FrontendPasses, kWorldSizes[2]},
       {"compile", BM_Compile, kWorldSizes[2]},
+      {"write_urdf", BM_WriteUrdf, kWorldSizes[1]},
+      {"write_sdf", BM_WriteSdf, kWorldSizes[1]},
+      {"write_mjcf", BM_WriteMjcf, kWorldSizes[1]},
 #ifdef MDLC_BENCH_HAVE_SDFORMAT
       {"libsdformat_load", BM_LibsdformatLoad, sdformat_max_n},
 #endif
