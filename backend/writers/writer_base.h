@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "backend/compiled_model.h"
+#include "backend/entity_index.h"
 #include "backend/writers/asset_paths.h"
-#include "backend/writers/entity_index.h"
 #include "backend/writers/names.h"
 #include "backend/writers/writer.h"
 #include "backend/writers/xml_out.h"
@@ -18,6 +18,8 @@
 #include "ir/module.h"
 
 namespace mdlc::writers {
+
+using backend::EntityIndex;
 
 class WriterBase {
  protected:

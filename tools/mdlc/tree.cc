@@ -9,12 +9,14 @@
 #include <map>
 #include <variant>
 
+#include "backend/entity_index.h"
 #include "backend/json_writer.h"
 #include "number_text.h"
 
 namespace mdlc::tools {
 namespace {
 
+using backend::EntityIndex;
 using backend::Plant;
 using backend::PlantJoint;
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -30,11 +32,10 @@ std::string Limits(const PlantJoint& j) {
 }
 
 /// The couplers that make joint `id` follow another: "mimics 'x' (2 q + 0.1)".
-std::string Couplers(const Plant& plant, JointId id) {
+std::string Couplers(const Plant& plant, const EntityIndex& couplers_by_follower, JointId id) {
   std::string out;
-  for (const auto& c : plant.constraints) {
-    const auto* k = std::get_if<backend::CouplerConstraint>(&c.payload);
-    if (!k || k->joint0 != id) continue;
+  for (uint32_t c : couplers_by_follower[id.index()]) {
+    const auto* k = std::get_if<backend::CouplerConstraint>(&plant.constraints[c].payload);
     out += fmt::format(", mimics '{}' ({} q {} {})", plant.ScopedName(plant.joint(k->joint1)),
                        Number(k->gear_ratio), k->offset < 0 ? "-" : "+",
                        Number(std::abs(k->offset)));
@@ -45,7 +46,25 @@ std::string Couplers(const Plant& plant, JointId id) {
 class TreePrinter {
  public:
   explicit TreePrinter(const backend::CompiledModel& model)
-      : plant_(model.plant), children_(plant_.bodies.size()) {
+      : plant_(model.plant),
+        children_(plant_.bodies.size()),
+        // what each model instance holds, indexed once: a world of N
+        // models would otherwise scan every body N times
+        bodies_by_model_(plant_.model_instances.size(), plant_.bodies.size(),
+                         [&](size_t b) -> int64_t {
+                           return b == 0 ? EntityIndex::kNoKey
+                                         : int64_t(plant_.bodies[b].model.index());
+                         }),
+        joints_by_model_(plant_.model_instances.size(), plant_.joints.size(),
+                         [&](size_t j) { return plant_.joints[j].model.index(); }),
+        frames_by_model_(plant_.model_instances.size(), plant_.frames.size(),
+                         [&](size_t f) { return plant_.frames[f].model.index(); }),
+        couplers_by_follower_(plant_.joints.size(), plant_.constraints.size(),
+                              [&](size_t c) -> int64_t {
+                                const auto* k = std::get_if<backend::CouplerConstraint>(
+                                    &plant_.constraints[c].payload);
+                                return k ? int64_t(k->joint0.index()) : EntityIndex::kNoKey;
+                              }) {
     for (size_t b = 1; b < plant_.bodies.size(); ++b) {
       const auto& body = plant_.bodies[b];
       if (body.parent.valid()) children_[body.parent.index()].push_back(BodyId(b));
@@ -57,15 +76,14 @@ class TreePrinter {
     for (size_t m = 0; m < plant_.model_instances.size(); ++m) {
       std::vector<BodyId> roots;  // this instance's bodies whose parent is elsewhere
       int bodies = 0, dofs = 0;
-      for (size_t b = 1; b < plant_.bodies.size(); ++b) {
+      for (uint32_t b : bodies_by_model_[m]) {
         const auto& body = plant_.bodies[b];
-        if (body.model.index() != m) continue;
         ++bodies;
         if (!body.parent.valid() || plant_.body(body.parent).model.index() != m) {
           roots.push_back(BodyId(b));
         }
       }
-      for (const auto& j : plant_.joints) dofs += j.model.index() == m ? j.nv : 0;
+      for (uint32_t j : joints_by_model_[m]) dofs += plant_.joints[j].nv;
       if (bodies == 0) continue;
       out += fmt::format("model instance '{}': {} bod{}, {} dof{}\n", plant_.model_instances[m],
                          bodies, bodies == 1 ? "y" : "ies", dofs, dofs == 1 ? "" : "s");
@@ -76,8 +94,9 @@ class TreePrinter {
         out += fmt::format("  {} (on {})\n", Describe(root), parent);
         Children(root, "  ", out);
       }
-      for (const auto& f : plant_.frames) {
-        if (f.model.index() != m || f.unnamed) continue;
+      for (uint32_t i : frames_by_model_[m]) {
+        const auto& f = plant_.frames[i];
+        if (f.unnamed) continue;
         out += fmt::format("  frame '{}' on {}\n", f.name, plant_.ScopedName(plant_.body(f.body)));
       }
     }
@@ -120,7 +139,7 @@ class TreePrinter {
                            Number(j.axis.z()));
     }
     if (const std::string limits = Limits(j); !limits.empty()) joint += ", limits " + limits;
-    joint += Couplers(plant_, body.inbound_joint);
+    joint += Couplers(plant_, couplers_by_follower_, body.inbound_joint);
     return fmt::format("{} <- {}", body.name, joint);
   }
 
@@ -160,6 +179,7 @@ class TreePrinter {
 
   const Plant& plant_;
   std::vector<std::vector<BodyId>> children_;
+  const EntityIndex bodies_by_model_, joints_by_model_, frames_by_model_, couplers_by_follower_;
 };
 
 }  // namespace

@@ -1,15 +1,16 @@
-// entity_index.h - a compiled model's entities grouped by the body or joint
-// they belong to, built in one pass. A writer asks for a body's geometries
-// or a joint's actuators here; scanning every entity for each body made
-// writing N bodies cost N² (issue 16: a world of 100,000 one-link models
-// took 78 s to write as URDF, 100 times its 10,000-model time).
+// entity_index.h - a compiled model's entities grouped by the body, joint
+// or model instance they belong to, built in one pass. The writers and the
+// inspection commands ask for a body's geometries or a joint's actuators
+// here; scanning every entity for each body made writing N bodies cost N²
+// (issue 16: a world of 100,000 one-link models took 78 s to write as URDF,
+// 100 times its 10,000-model time).
 #pragma once
 
 #include <cstdint>
 #include <span>
 #include <vector>
 
-namespace mdlc::writers {
+namespace mdlc::backend {
 
 /// Entity indices grouped by key, each group in entity order (compressed
 /// rows: one offset per key, one index per entity).
@@ -45,4 +46,4 @@ class EntityIndex {
   std::vector<uint32_t> begin_, items_;
 };
 
-}  // namespace mdlc::writers
+}  // namespace mdlc::backend
