@@ -10,6 +10,9 @@
 #include <span>
 #include <vector>
 
+#include "backend/plant.h"
+#include "backend/scene_graph.h"
+
 namespace mdlc::backend {
 
 /// Entity indices grouped by key, each group in entity order (compressed
@@ -45,5 +48,19 @@ class EntityIndex {
  private:
   std::vector<uint32_t> begin_, items_;
 };
+
+// The indices the writers and the inspection commands ask.
+EntityIndex GeometriesByBody(const Plant& plant, const SceneGraph& scene);
+EntityIndex CamerasByBody(const Plant& plant, const SceneGraph& scene);
+EntityIndex FramesByBody(const Plant& plant);
+EntityIndex ActuatorsByJoint(const Plant& plant);
+/// The coupler constraints by the joint that follows (joint0).
+EntityIndex CouplersByFollower(const Plant& plant);
+/// The joint springs among the force elements, by joint.
+EntityIndex SpringsByJoint(const Plant& plant);
+/// Bodies (the world's left out), joints and frames by model instance.
+EntityIndex BodiesByModel(const Plant& plant);
+EntityIndex JointsByModel(const Plant& plant);
+EntityIndex FramesByModel(const Plant& plant);
 
 }  // namespace mdlc::backend

@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <variant>
 
 namespace mdlc::writers {
 
@@ -15,26 +14,12 @@ WriterBase::WriterBase(const backend::CompiledModel& model, const ir::Module& mo
       m_(module),
       diags_(diags),
       assets_(options, diags),
-      geometries_by_body_(plant_.bodies.size(), scene_.geometries.size(),
-                          [&](size_t i) { return scene_.geometries[i].body.index(); }),
-      cameras_by_body_(plant_.bodies.size(), scene_.cameras.size(),
-                       [&](size_t i) { return scene_.cameras[i].body.index(); }),
-      frames_by_body_(plant_.bodies.size(), plant_.frames.size(),
-                      [&](size_t i) { return plant_.frames[i].body.index(); }),
-      actuators_by_joint_(plant_.joints.size(), plant_.actuators.size(),
-                          [&](size_t i) { return plant_.actuators[i].joint.index(); }),
-      couplers_by_follower_(plant_.joints.size(), plant_.constraints.size(),
-                            [&](size_t i) -> int64_t {
-                              const auto* c = std::get_if<backend::CouplerConstraint>(
-                                  &plant_.constraints[i].payload);
-                              return c ? int64_t(c->joint0.index()) : EntityIndex::kNoKey;
-                            }),
-      springs_by_joint_(plant_.joints.size(), plant_.force_elements.size(),
-                        [&](size_t i) -> int64_t {
-                          const auto* s =
-                              std::get_if<backend::JointSpring>(&plant_.force_elements[i]);
-                          return s ? int64_t(s->joint.index()) : EntityIndex::kNoKey;
-                        }) {
+      geometries_by_body_(backend::GeometriesByBody(plant_, scene_)),
+      cameras_by_body_(backend::CamerasByBody(plant_, scene_)),
+      frames_by_body_(backend::FramesByBody(plant_)),
+      actuators_by_joint_(backend::ActuatorsByJoint(plant_)),
+      couplers_by_follower_(backend::CouplersByFollower(plant_)),
+      springs_by_joint_(backend::SpringsByJoint(plant_)) {
   size_t ir_index = 0;
   geometry_locs_.reserve(scene_.geometries.size());
   for (size_t i = 0; i < scene_.geometries.size(); ++i) {

@@ -50,21 +50,10 @@ class TreePrinter {
         children_(plant_.bodies.size()),
         // what each model instance holds, indexed once: a world of N
         // models would otherwise scan every body N times
-        bodies_by_model_(plant_.model_instances.size(), plant_.bodies.size(),
-                         [&](size_t b) -> int64_t {
-                           return b == 0 ? EntityIndex::kNoKey
-                                         : int64_t(plant_.bodies[b].model.index());
-                         }),
-        joints_by_model_(plant_.model_instances.size(), plant_.joints.size(),
-                         [&](size_t j) { return plant_.joints[j].model.index(); }),
-        frames_by_model_(plant_.model_instances.size(), plant_.frames.size(),
-                         [&](size_t f) { return plant_.frames[f].model.index(); }),
-        couplers_by_follower_(plant_.joints.size(), plant_.constraints.size(),
-                              [&](size_t c) -> int64_t {
-                                const auto* k = std::get_if<backend::CouplerConstraint>(
-                                    &plant_.constraints[c].payload);
-                                return k ? int64_t(k->joint0.index()) : EntityIndex::kNoKey;
-                              }) {
+        bodies_by_model_(backend::BodiesByModel(plant_)),
+        joints_by_model_(backend::JointsByModel(plant_)),
+        frames_by_model_(backend::FramesByModel(plant_)),
+        couplers_by_follower_(backend::CouplersByFollower(plant_)) {
     for (size_t b = 1; b < plant_.bodies.size(); ++b) {
       const auto& body = plant_.bodies[b];
       if (body.parent.valid()) children_[body.parent.index()].push_back(BodyId(b));
