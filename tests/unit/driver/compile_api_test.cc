@@ -161,7 +161,7 @@ TEST(CompileApi, MassMatrixAndBodyPosesAreMethods) {
 
 TEST(CompileApi, NamingAndPipelineOptions) {
   Options options;
-  options.model_name = "renamed";
+  options.model_name.emplace("renamed");  // assigning it draws a false GCC 12 warning
   const Result r = Compile(Input::Text(kPendulum, "p.urdf"), options);
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(r.plant().model_instances.back(), "renamed");
