@@ -127,22 +127,30 @@ ModelNode& SdfWriter::Scope(const std::string& scoped) {
   return models_.at(scoped);
 }
 
+/// Adds model `scoped` and each enclosing model not added yet. Instances
+/// come parents first, so mostly one scope is looked up: looking up every
+/// enclosing scope of every model cost the cube of the nesting depth.
 void SdfWriter::AddModel(const std::string& scoped, Loc loc) {
-  const auto parts = Split(scoped);
-  std::string path;
-  for (size_t i = 0; i < parts.size(); ++i) {
-    const std::string parent = path;
-    if (i > 0) path += "::";
-    path += parts[i];
-    if (models_.count(path)) continue;
+  std::vector<std::string> missing;  // innermost first
+  for (std::string s = scoped; !s.empty() && !models_.count(s);) {
+    const size_t at = s.rfind("::");
+    std::string enclosing = at == std::string::npos ? "" : s.substr(0, at);
+    missing.push_back(std::move(s));
+    s = std::move(enclosing);
+  }
+  for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+    const std::string& path = *it;
+    const size_t at = path.rfind("::");
     ModelNode node;
     node.scoped = path;
-    node.name = parts[i];
+    node.name = at == std::string::npos ? path : path.substr(at + 2);
     node.loc = loc;
+    const std::string name = node.name;
     models_.emplace(path, std::move(node));
-    if (!parent.empty()) {
-      models_.at(parent).children.push_back(path);
-      models_.at(parent).names.insert(parts[i]);
+    if (at != std::string::npos) {
+      ModelNode& parent = models_.at(path.substr(0, at));
+      parent.children.push_back(path);
+      parent.names.insert(name);
     }
   }
 }
