@@ -490,9 +490,9 @@ class MjcfWriter : FlatWriterBase {
 
   void Spring(JointId id) {
     for (uint32_t i : springs_by_joint_[id.index()]) {
-      const auto* s = &std::get<backend::JointSpring>(plant_.force_elements[i]);
-      out_.Attr("stiffness", s->stiffness);
-      if (s->nominal != 0) out_.Attr("springref", s->nominal);
+      const auto& s = std::get<backend::JointSpring>(plant_.force_elements[i]);
+      out_.Attr("stiffness", s.stiffness);
+      if (s.nominal != 0) out_.Attr("springref", s.nominal);
       written_springs_.insert(id.index());
       return;
     }
@@ -742,7 +742,10 @@ class MjcfWriter : FlatWriterBase {
     if (excluded.empty()) return;
     out_.Open("contact");
     for (const auto& [x, y] : excluded) {
-      out_.Open("exclude").Attr("body1", BodyName(BodyId(x))).Attr("body2", BodyName(BodyId(y))).Close();
+      out_.Open("exclude")
+          .Attr("body1", BodyName(BodyId(x)))
+          .Attr("body2", BodyName(BodyId(y)))
+          .Close();
     }
     out_.Close();
   }

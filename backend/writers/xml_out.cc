@@ -45,7 +45,8 @@ struct XmlOut::State {
     line.append(2 * std::min(depth, kMaxIndentDepth), ' ');
     Check(xmlTextWriterWriteRaw(writer, X(line)));
   }
-  /// What the element being opened is inside: it holds a line now.
+  /// Starts the line of an element or comment: the element it is in then
+  /// ends on a line of its own.
   void StartLine() {
     if (!content.empty()) content.back() = Content::Lines;
     NewLine(content.size());

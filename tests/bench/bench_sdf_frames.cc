@@ -195,9 +195,15 @@ void BM_Write(benchmark::State& state, SdfFamily family, Format to) {
   }
   Finish(state, family);
 }
-void BM_WriteUrdf(benchmark::State& state, SdfFamily family) { BM_Write(state, family, Format::Urdf); }
-void BM_WriteSdf(benchmark::State& state, SdfFamily family) { BM_Write(state, family, Format::Sdf); }
-void BM_WriteMjcf(benchmark::State& state, SdfFamily family) { BM_Write(state, family, Format::Mjcf); }
+void BM_WriteUrdf(benchmark::State& state, SdfFamily family) {
+  BM_Write(state, family, Format::Urdf);
+}
+void BM_WriteSdf(benchmark::State& state, SdfFamily family) {
+  BM_Write(state, family, Format::Sdf);
+}
+void BM_WriteMjcf(benchmark::State& state, SdfFamily family) {
+  BM_Write(state, family, Format::Mjcf);
+}
 
 #ifdef MDLC_BENCH_HAVE_SDFORMAT
 void BM_LibsdformatLoad(benchmark::State& state, SdfFamily family) {

@@ -21,7 +21,8 @@ namespace {
 
 using testing::CompiledText;
 
-constexpr const char* kBox = "<collision><geometry><box size='0.1 0.1 0.1'/></geometry></collision>";
+constexpr const char* kBox =
+    "<collision><geometry><box size='0.1 0.1 0.1'/></geometry></collision>";
 
 /// `n` links welded in a chain, all in one group that ignores itself, and a
 /// hand on a revolute joint whose group ignores the first link's.
