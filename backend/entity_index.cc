@@ -5,24 +5,30 @@
 
 namespace mdlc::backend {
 
+namespace {
+
+/// `items` grouped by the id each holds in `field` (a body, joint or model).
+template <typename Item, typename Id>
+EntityIndex ByField(size_t num_keys, const std::vector<Item>& items, Id Item::*field) {
+  return EntityIndex(num_keys, items.size(), [&](size_t i) { return (items[i].*field).index(); });
+}
+
+}  // namespace
+
 EntityIndex GeometriesByBody(const Plant& plant, const SceneGraph& scene) {
-  return EntityIndex(plant.bodies.size(), scene.geometries.size(),
-                     [&](size_t i) { return scene.geometries[i].body.index(); });
+  return ByField(plant.bodies.size(), scene.geometries, &SceneGeometry::body);
 }
 
 EntityIndex CamerasByBody(const Plant& plant, const SceneGraph& scene) {
-  return EntityIndex(plant.bodies.size(), scene.cameras.size(),
-                     [&](size_t i) { return scene.cameras[i].body.index(); });
+  return ByField(plant.bodies.size(), scene.cameras, &SceneCamera::body);
 }
 
 EntityIndex FramesByBody(const Plant& plant) {
-  return EntityIndex(plant.bodies.size(), plant.frames.size(),
-                     [&](size_t i) { return plant.frames[i].body.index(); });
+  return ByField(plant.bodies.size(), plant.frames, &PlantFrame::body);
 }
 
 EntityIndex ActuatorsByJoint(const Plant& plant) {
-  return EntityIndex(plant.joints.size(), plant.actuators.size(),
-                     [&](size_t i) { return plant.actuators[i].joint.index(); });
+  return ByField(plant.joints.size(), plant.actuators, &PlantActuator::joint);
 }
 
 EntityIndex CouplersByFollower(const Plant& plant) {
@@ -46,13 +52,11 @@ EntityIndex BodiesByModel(const Plant& plant) {
 }
 
 EntityIndex JointsByModel(const Plant& plant) {
-  return EntityIndex(plant.model_instances.size(), plant.joints.size(),
-                     [&](size_t j) { return plant.joints[j].model.index(); });
+  return ByField(plant.model_instances.size(), plant.joints, &PlantJoint::model);
 }
 
 EntityIndex FramesByModel(const Plant& plant) {
-  return EntityIndex(plant.model_instances.size(), plant.frames.size(),
-                     [&](size_t f) { return plant.frames[f].model.index(); });
+  return ByField(plant.model_instances.size(), plant.frames, &PlantFrame::model);
 }
 
 }  // namespace mdlc::backend
