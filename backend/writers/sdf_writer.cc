@@ -115,11 +115,10 @@ std::string SdfWriter::Write() {
   return out_.Finish();
 }
 
-// by value: the plant builds instance names as they are asked for
 std::string SdfWriter::InstanceOf(BodyId body) const {
   if (body.index() == 0) return {};
   const size_t m = plant_.body(body).model.index();
-  return m == 0 ? std::string() : plant_.model_instances[m];
+  return instance_scope_[m];
 }
 
 ModelNode& SdfWriter::Scope(const std::string& scoped) {
@@ -130,27 +129,51 @@ ModelNode& SdfWriter::Scope(const std::string& scoped) {
 /// Adds model `scoped` and each enclosing model not added yet. Instances
 /// come parents first, so mostly one scope is looked up: looking up every
 /// enclosing scope of every model cost the cube of the nesting depth.
+/// Scopes split at each "::" from the left, as `Split` does.
 void SdfWriter::AddModel(const std::string& scoped, Loc loc) {
-  std::vector<std::string> missing;  // innermost first
-  for (std::string s = scoped; !s.empty() && !models_.count(s);) {
-    const size_t at = s.rfind("::");
-    std::string enclosing = at == std::string::npos ? "" : s.substr(0, at);
-    missing.push_back(std::move(s));
-    s = std::move(enclosing);
+  std::vector<size_t> ends;  // where each enclosing scope's name ends
+  for (size_t at = scoped.find("::"); at != std::string::npos; at = scoped.find("::", at + 2)) {
+    ends.push_back(at);
   }
-  for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
-    const std::string& path = *it;
-    const size_t at = path.rfind("::");
+  const auto prefix = [&](size_t level) {
+    return level == ends.size() ? scoped : scoped.substr(0, ends[level]);
+  };
+  size_t first_missing = ends.size() + 1;
+  while (first_missing > 0 && !models_.count(prefix(first_missing - 1))) --first_missing;
+  for (size_t level = first_missing; level <= ends.size(); ++level) {
+    const size_t begin = level == 0 ? 0 : ends[level - 1] + 2;
     ModelNode node;
-    node.scoped = path;
-    node.name = at == std::string::npos ? path : path.substr(at + 2);
+    node.scoped = prefix(level);
+    node.name = node.scoped.substr(begin);
     node.loc = loc;
     const std::string name = node.name;
+    const std::string path = node.scoped;
     models_.emplace(path, std::move(node));
-    if (at != std::string::npos) {
-      ModelNode& parent = models_.at(path.substr(0, at));
+    if (level > 0) {
+      ModelNode& parent = models_.at(prefix(level - 1));
       parent.children.push_back(path);
       parent.names.insert(name);
+    }
+  }
+}
+
+/// The scope each model instance is written in: its name, with an empty
+/// part ("::a", "a::::b") written as "model". The world's scope is the
+/// empty string, so an empty part cannot name a model.
+void SdfWriter::InstanceScopes() {
+  instance_scope_.assign(plant_.model_instances.size(), "");
+  for (size_t m = 1; m < plant_.model_instances.size(); ++m) {
+    const std::string& name = plant_.model_instances[m];
+    auto parts = Split(name);
+    for (std::string& part : parts) {
+      if (part.empty()) part = "model";
+    }
+    instance_scope_[m] = Join(parts);
+    if (instance_scope_[m] != name) {
+      diags_.Report(DiagKind::Lossy, ModelLoc(m),
+                    fmt::format("model instance '{}' has an empty name in its scope; it is "
+                                "written as '{}'",
+                                name, instance_scope_[m]));
     }
   }
 }
@@ -181,11 +204,12 @@ std::string SdfWriter::Claim(ModelNode& scope, const std::string& name, std::str
 }
 
 void SdfWriter::BuildModels() {
+  InstanceScopes();
   // a model instance is written when it has a body
   std::vector<bool> has_body(plant_.model_instances.size(), false);
   for (size_t b = 1; b < plant_.bodies.size(); ++b) has_body[plant_.bodies[b].model.index()] = true;
   for (size_t m = 1; m < plant_.model_instances.size(); ++m) {
-    if (has_body[m]) AddModel(plant_.model_instances[m], ModelLoc(m));
+    if (has_body[m]) AddModel(instance_scope_[m], ModelLoc(m));
   }
   // links first: their names are what the other elements refer to
   link_names_.assign(plant_.bodies.size(), "world");
@@ -225,9 +249,9 @@ void SdfWriter::BuildModels() {
     if (frame.unnamed) continue;
     const std::string scope = BodyScope(frame.body);
     if (frame.name == "__model__" && frame.model.index() > 0 && frame.body.index() != 0 &&
-        models_.count(plant_.model_instances[frame.model.index()]) &&
-        Within(plant_.model_instances[frame.model.index()], scope)) {
-      ModelNode& model = models_.at(plant_.model_instances[frame.model.index()]);
+        models_.count(instance_scope_[frame.model.index()]) &&
+        Within(instance_scope_[frame.model.index()], scope)) {
+      ModelNode& model = models_.at(instance_scope_[frame.model.index()]);
       if (!model.model_frame) {
         model.model_frame = f;
         continue;

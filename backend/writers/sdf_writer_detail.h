@@ -67,6 +67,7 @@ class SdfWriter : WriterBase {
   std::string InstanceOf(BodyId body) const;
   ModelNode& Scope(const std::string& scoped);
   void AddModel(const std::string& scoped, Loc loc);
+  void InstanceScopes();
   std::string Claim(ModelNode& scope, const std::string& name, std::string_view kind, Loc loc,
                     bool named = true);
   void BuildModels();
@@ -123,6 +124,7 @@ class SdfWriter : WriterBase {
   ModelNode world_;
   bool use_world_ = false;
   std::map<size_t, std::string> body_scope_;
+  std::vector<std::string> instance_scope_;  // by model instance; see InstanceScopes
   std::vector<std::string> link_names_, joint_names_, frame_names_, joint_scope_;
   struct FrameRef {
     std::string scope, name;
