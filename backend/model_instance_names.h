@@ -20,6 +20,13 @@ class ModelInstanceNames {
   void Add(std::string local, ModelId parent);
 
   size_t size() const { return entries_.size(); }
+  /// Instance `m`'s own name, below its parent.
+  const std::string& local(size_t m) const { return entries_[m].local; }
+  /// Instance `m`'s parent, or an invalid id at top level.
+  ModelId parent(size_t m) const {
+    const ModelId p = entries_[m].parent;
+    return p.valid() && p.index() < entries_.size() ? p : ModelId();
+  }
   bool empty() const { return entries_.empty(); }
   /// The full name of instance `m`, "a::b::c" (O(depth)).
   std::string operator[](size_t m) const;

@@ -16,11 +16,11 @@ namespace mdlc::writers::sdf {
 
 /// Queues `write` for the innermost model holding every one of `scopes`;
 /// reports `what` dropped when only the world could hold it.
-void SdfWriter::Place(const std::vector<std::string>& scopes, Loc loc, const std::string& what,
-                      std::function<void(const std::string&)> write) {
-  std::string scope = scopes.empty() ? "" : scopes[0];
-  for (const std::string& s : scopes) scope = CommonScope(scope, s);
-  if (scope.empty()) {
+void SdfWriter::Place(const std::vector<ScopeId>& scopes, Loc loc, const std::string& what,
+                      std::function<void(ScopeId)> write) {
+  ScopeId scope = scopes.empty() ? kWorldScope : scopes[0];
+  for (ScopeId s : scopes) scope = CommonScope(scope, s);
+  if (scope == kWorldScope) {
     diags_.Report(DiagKind::Lossy, loc,
                   fmt::format("{} is dropped: it names links of different top-level models "
                               "(or the world), and SDFormat reads drake: elements only in "
@@ -28,7 +28,7 @@ void SdfWriter::Place(const std::vector<std::string>& scopes, Loc loc, const std
                               what));
     return;
   }
-  Scope(scope).elements.push_back([write, scope] { write(scope); });
+  models_[scope].elements.push_back([write, scope] { write(scope); });
 }
 
 /// Model-level drake: elements, each in the innermost model holding what
@@ -42,7 +42,7 @@ void SdfWriter::BuildElements() {
             [&](const backend::CouplerConstraint&) {},  // the follower's <drake:mimic>
             [&](const backend::BallConstraint& k) {
               Place({BodyScope(k.body_A), BodyScope(k.body_B)}, loc, "a ball constraint",
-                    [this, k](const std::string& scope) {
+                    [this, k](ScopeId scope) {
                       out_.Open("drake:ball_constraint");
                       BodiesAndPoints(scope, "drake:ball_constraint", k.body_A, k.body_B,
                                       k.p_AP, k.p_BQ);
@@ -51,7 +51,7 @@ void SdfWriter::BuildElements() {
             },
             [&](const backend::DistanceConstraint& k) {
               Place({BodyScope(k.body_A), BodyScope(k.body_B)}, loc, "a distance constraint",
-                    [this, k](const std::string& scope) {
+                    [this, k](ScopeId scope) {
                       const std::string p = "drake:distance_constraint";
                       out_.Open(p);
                       BodiesAndPoints(scope, p, k.body_A, k.body_B, k.p_AP, k.p_BQ);
@@ -67,18 +67,18 @@ void SdfWriter::BuildElements() {
                             "dropped");
             },
             [&](const backend::TendonConstraint& k) {
-              std::vector<std::string> scopes;
+              std::vector<ScopeId> scopes;
               for (JointId j : k.joints) scopes.push_back(joint_scope_[j.index()]);
-              const std::string first = scopes.empty() ? "" : scopes[0];
+              const ScopeId first = scopes.empty() ? kWorldScope : scopes[0];
               if (!std::all_of(scopes.begin(), scopes.end(),
-                               [&](const std::string& s) { return s == first; }) ||
-                  first.empty()) {
+                               [&](ScopeId s) { return s == first; }) ||
+                  first == kWorldScope) {
                 diags_.Report(DiagKind::Lossy, loc,
                               "a tendon constraint is dropped: its joints are not all of one "
                               "model, which <drake:tendon_constraint> needs");
                 return;
               }
-              Scope(first).elements.push_back([this, k] {
+              models_[first].elements.push_back([this, k] {
                 const std::string p = "drake:tendon_constraint";
                 out_.Open(p);
                 for (size_t n = 0; n < k.joints.size(); ++n) {
@@ -112,7 +112,7 @@ void SdfWriter::BuildElements() {
               }
               const FrameRef fa = a->second, fc = c->second;
               Place({fa.scope, fc.scope}, Loc{}, "a linear bushing",
-                    [this, k, fa, fc](const std::string& scope) {
+                    [this, k, fa, fc](ScopeId scope) {
                       const std::string p = "drake:bushing_";
                       out_.Open("drake:linear_bushing_rpy");
                       Value(p + "frameA", Relative(scope, fa.scope, fa.name));
@@ -126,7 +126,7 @@ void SdfWriter::BuildElements() {
             },
             [&](const backend::LinearSpringDamper& k) {
               Place({BodyScope(k.body_A), BodyScope(k.body_B)}, Loc{}, "a linear spring-damper",
-                    [this, k](const std::string& scope) {
+                    [this, k](ScopeId scope) {
                       const std::string p = "drake:linear_spring_damper";
                       out_.Open(p);
                       BodiesAndPoints(scope, p, k.body_A, k.body_B, k.p_AP, k.p_BQ);
@@ -158,7 +158,7 @@ void SdfWriter::BuildElements() {
   }
 }
 
-void SdfWriter::BodiesAndPoints(const std::string& scope, const std::string& prefix, BodyId A,
+void SdfWriter::BodiesAndPoints(ScopeId scope, const std::string& prefix, BodyId A,
                                 BodyId B, const Eigen::Vector3d& p_AP,
                                 const Eigen::Vector3d& p_BQ) {
   Value(prefix + "_body_A", LinkRef(scope, A));
@@ -180,19 +180,15 @@ void SdfWriter::BuildFilterGroups() {
                                   "dropped: a collision filter group cannot name the world",
                                   link_names_[body.index()]));
       });
-  auto top_model = [&](BodyId body) {
-    const std::string scope = BodyScope(body);
-    return scope.substr(0, scope.find("::"));
-  };
   int n = 0;
   for (const FilterDeclaration& d : declarations) {
     // the declaration's members and ignored links by top-level model, in
     // the order the models first appear
-    std::vector<std::string> tops;
-    std::map<std::string, size_t> top_index;
+    std::vector<ScopeId> tops;
+    std::map<ScopeId, size_t> top_index;
     std::vector<FilterDeclaration> parts;
     auto part_of = [&](BodyId body) -> FilterDeclaration& {
-      const auto [it, added] = top_index.try_emplace(top_model(body), tops.size());
+      const auto [it, added] = top_index.try_emplace(TopLevelModel(BodyScope(body)), tops.size());
       if (added) {
         tops.push_back(it->first);
         parts.emplace_back();
@@ -208,14 +204,14 @@ void SdfWriter::BuildFilterGroups() {
           fmt::format("the collision filter of link '{}' between different top-level models "
                       "('{}', '{}'{}) is dropped: a collision filter group holds the links of "
                       "one model; it is kept within each model",
-                      link_names_[first.index()], tops[0], tops[1],
+                      link_names_[first.index()], models_[tops[0]].name, models_[tops[1]].name,
                       tops.size() > 2 ? fmt::format(" and {} more", tops.size() - 2) : ""));
     }
     for (FilterDeclaration& part : parts) {
       const bool filters = d.ignores_itself() ? part.members.size() >= 2
                                               : !part.members.empty() && !part.ignored.empty();
       if (!filters) continue;
-      std::vector<std::string> scopes;
+      std::vector<ScopeId> scopes;
       for (BodyId b : part.members) scopes.push_back(BodyScope(b));
       for (BodyId b : part.ignored) scopes.push_back(BodyScope(b));
       const std::string name = fmt::format("filter{}", n++);
@@ -223,7 +219,7 @@ void SdfWriter::BuildFilterGroups() {
       const BodyId first = part.members.front();  // before `part` moves into the writer
       Place(scopes, BodyLoc(first),
             fmt::format("the collision filter group of link '{}'", link_names_[first.index()]),
-            [this, part = std::move(part), name, ignored](const std::string& scope) {
+            [this, part = std::move(part), name, ignored](ScopeId scope) {
               WriteFilterGroup(scope, part.members, name, ignored);
               if (!part.ignores_itself()) WriteFilterGroup(scope, part.ignored, ignored, "");
             });
@@ -231,7 +227,7 @@ void SdfWriter::BuildFilterGroups() {
   }
 }
 
-void SdfWriter::WriteFilterGroup(const std::string& scope, const std::vector<BodyId>& members,
+void SdfWriter::WriteFilterGroup(ScopeId scope, const std::vector<BodyId>& members,
                                  const std::string& name, const std::string& ignored) {
   out_.Open("drake:collision_filter_group").Attr("name", name);
   for (BodyId b : members) Value("drake:member", LinkRef(scope, b));

@@ -16,7 +16,7 @@ namespace mdlc::writers::sdf {
 constexpr std::string_view kNoInitialPositions =
     "mdlc's SDFormat reader takes no initial positions";
 
-void SdfWriter::WriteJoint(JointId id, const std::string& scope) {
+void SdfWriter::WriteJoint(JointId id, ScopeId scope) {
   const PlantJoint& j = plant_.joint(id);
   const Loc loc = JointLoc(id);
   const std::string name = joint_names_[id.index()];
@@ -263,10 +263,10 @@ void SdfWriter::MimicElements(JointId id) {
 }
 
 // <drake:joint type="planar">: F and M are named frames (EXT-001)
-void SdfWriter::WritePlanar(JointId id, const std::string& scope) {
+void SdfWriter::WritePlanar(JointId id, ScopeId scope) {
   const PlantJoint& j = plant_.joint(id);
   const Loc loc = JointLoc(id);
-  ModelNode& node = Scope(scope);
+  ModelNode& node = models_[scope];
   auto frame_for = [&](BodyId body, const Transform& X, std::string_view suffix) {
     if (X.IsIdentity()) return LinkRef(scope, body);
     const std::string fname =

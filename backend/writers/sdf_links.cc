@@ -16,7 +16,7 @@ namespace mdlc::writers::sdf {
 void SdfWriter::WriteLink(BodyId body) {
   const PlantBody& b = plant_.body(body);
   out_.Open("link").Attr("name", link_names_[body.index()]);
-  Pose(models_.at(BodyScope(body)).X_WM.inverse() * X_WB_[body.index()]);
+  Pose(models_[BodyScope(body)].X_WM.inverse() * X_WB_[body.index()]);
   if (b.deformable) {
     diags_.Report(DiagKind::Lossy, BodyLoc(body),
                   fmt::format("link '{}' is deformable; its deformable properties are not "

@@ -32,6 +32,7 @@
 #include <algorithm>
 #include <limits>
 #include <span>
+#include <variant>
 
 #include "backend/kinematics.h"
 #include "backend/writers/sdf_writer_detail.h"
@@ -55,27 +56,6 @@ std::vector<std::string> Split(const std::string& scoped) {
   return out;
 }
 
-std::string Join(const std::vector<std::string>& parts, size_t from) {
-  std::string out;
-  for (size_t i = from; i < parts.size(); ++i) {
-    if (!out.empty()) out += "::";
-    out += parts[i];
-  }
-  return out;
-}
-
-/// The innermost scope holding both: "a::b" and "a::c" -> "a"; "" is the world.
-std::string CommonScope(const std::string& x, const std::string& y) {
-  const auto a = Split(x), b = Split(y);
-  std::vector<std::string> common;
-  for (size_t i = 0; i < a.size() && i < b.size() && a[i] == b[i]; ++i) common.push_back(a[i]);
-  return Join(common);
-}
-
-bool Within(const std::string& scope, const std::string& inner) {
-  return scope.empty() || inner == scope || inner.starts_with(scope + "::");
-}
-
 std::string SdfWriter::Write() {
   LinkPoses();
   BuildModels();
@@ -83,13 +63,14 @@ std::string SdfWriter::Write() {
   LinkFrameRefs();
   BuildElements();
   out_.Open("sdf").Attr("version", "1.9").Attr("xmlns:drake", "http://drake.mit.edu");
-  std::vector<std::string> tops;
-  for (const auto& [scoped, node] : models_) {
-    if (Split(scoped).size() == 1) tops.push_back(scoped);
-  }
+  // top-level models by name, as SDFormat readers list them
+  std::vector<ScopeId> tops = models_[kWorldScope].children;
+  std::sort(tops.begin(), tops.end(),
+            [&](ScopeId a, ScopeId b) { return models_[a].name < models_[b].name; });
   const bool gravity_default = plant_.gravity == Eigen::Vector3d(0, 0, -9.81);
-  use_world_ = tops.size() != 1 || !world_.joints.empty() || !world_.frames.empty() ||
-               !world_.elements.empty() || !gravity_default;
+  const ModelNode& world = models_[kWorldScope];
+  use_world_ = tops.size() != 1 || !world.joints.empty() || !world.frames.empty() ||
+               !world.elements.empty() || !gravity_default;
   if (use_world_) {
     out_.Open("world").Attr("name", "default");
     if (!gravity_default) out_.Open("gravity").Text(VectorText(plant_.gravity)).Close();
@@ -105,77 +86,98 @@ std::string SdfWriter::Write() {
     if (!use_world_) out_.Open("world").Attr("name", "default");
     use_world_ = true;
   }
-  for (const std::string& top : tops) WriteModel(models_.at(top));
+  for (ScopeId top : tops) WriteModel(top);
   if (use_world_) {
-    for (JointId j : world_.joints) WriteJoint(j, "");
-    for (size_t f : world_.frames) WriteFrame(f, "");
+    for (JointId j : world.joints) WriteJoint(j, kWorldScope);
+    for (size_t f : world.frames) WriteFrame(f, kWorldScope);
     out_.Close();
   }
   out_.Close();
   return out_.Finish();
 }
 
-std::string SdfWriter::InstanceOf(BodyId body) const {
-  if (body.index() == 0) return {};
-  const size_t m = plant_.body(body).model.index();
-  return instance_scope_[m];
+/// The model `name` in `parent`, made if it is not there yet.
+ScopeId SdfWriter::ChildScope(ScopeId parent, const std::string& name, Loc loc) {
+  const auto [it, added] = models_[parent].child_named.try_emplace(name, models_.size());
+  if (!added) return it->second;
+  ModelNode node;
+  node.name = name;
+  node.parent = parent;
+  node.depth = models_[parent].depth + 1;
+  node.loc = loc;
+  models_.push_back(std::move(node));
+  models_[parent].children.push_back(it->second);
+  // a top-level model's name is not the world's to keep free
+  if (parent != kWorldScope) models_[parent].names.insert(name);
+  return it->second;
 }
 
-ModelNode& SdfWriter::Scope(const std::string& scoped) {
-  if (scoped.empty()) return world_;
-  return models_.at(scoped);
-}
-
-/// Adds model `scoped` and each enclosing model not added yet. Instances
-/// come parents first, so mostly one scope is looked up: looking up every
-/// enclosing scope of every model cost the cube of the nesting depth.
-/// Scopes split at each "::" from the left, as `Split` does.
-void SdfWriter::AddModel(const std::string& scoped, Loc loc) {
-  std::vector<size_t> ends;  // where each enclosing scope's name ends
-  for (size_t at = scoped.find("::"); at != std::string::npos; at = scoped.find("::", at + 2)) {
-    ends.push_back(at);
+/// The model instance `m` is written as, made with the models enclosing it
+/// if they are not there yet: a model per "::" in its name, so a URDF robot
+/// named "a::b" is model b in model a. An empty part ("::a", "a::::b") is
+/// written as "model": the world has no name to stand for it.
+ScopeId SdfWriter::InstanceScope(size_t m) {
+  // the instance and its ancestors not made yet, innermost first (a loop:
+  // instances can nest thousands deep)
+  std::vector<size_t> chain;
+  for (size_t at = m; !instance_scope_[at];) {
+    chain.push_back(at);
+    const ModelId parent = plant_.model_instances.parent(at);
+    if (!parent.valid()) break;
+    at = parent.index();
   }
-  const auto prefix = [&](size_t level) {
-    return level == ends.size() ? scoped : scoped.substr(0, ends[level]);
-  };
-  size_t first_missing = ends.size() + 1;
-  while (first_missing > 0 && !models_.count(prefix(first_missing - 1))) --first_missing;
-  for (size_t level = first_missing; level <= ends.size(); ++level) {
-    const size_t begin = level == 0 ? 0 : ends[level - 1] + 2;
-    ModelNode node;
-    node.scoped = prefix(level);
-    node.name = node.scoped.substr(begin);
-    node.loc = loc;
-    const std::string name = node.name;
-    const std::string path = node.scoped;
-    models_.emplace(path, std::move(node));
-    if (level > 0) {
-      ModelNode& parent = models_.at(prefix(level - 1));
-      parent.children.push_back(path);
-      parent.names.insert(name);
+  for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+    const ModelId parent = plant_.model_instances.parent(*it);
+    ScopeId scope = parent.valid() ? *instance_scope_[parent.index()] : kWorldScope;
+    bool empty_part = false;
+    for (std::string part : Split(plant_.model_instances.local(*it))) {
+      empty_part |= part.empty();
+      scope = ChildScope(scope, part.empty() ? "model" : part, ModelLoc(*it));
     }
-  }
-}
-
-/// The scope each model instance is written in: its name, with an empty
-/// part ("::a", "a::::b") written as "model". The world's scope is the
-/// empty string, so an empty part cannot name a model.
-void SdfWriter::InstanceScopes() {
-  instance_scope_.assign(plant_.model_instances.size(), "");
-  for (size_t m = 1; m < plant_.model_instances.size(); ++m) {
-    const std::string& name = plant_.model_instances[m];
-    auto parts = Split(name);
-    for (std::string& part : parts) {
-      if (part.empty()) part = "model";
-    }
-    instance_scope_[m] = Join(parts);
-    if (instance_scope_[m] != name) {
-      diags_.Report(DiagKind::Lossy, ModelLoc(m),
+    if (empty_part) {
+      diags_.Report(DiagKind::Lossy, ModelLoc(*it),
                     fmt::format("model instance '{}' has an empty name in its scope; it is "
                                 "written as '{}'",
-                                name, instance_scope_[m]));
+                                plant_.model_instances[*it], ScopedName(scope)));
     }
+    instance_scope_[*it] = scope;
   }
+  return *instance_scope_[m];
+}
+
+/// "outer::inner", for messages: built on demand, as it is O(depth).
+std::string SdfWriter::ScopedName(ScopeId scope) const {
+  std::vector<ScopeId> chain;
+  for (ScopeId at = scope; at != kWorldScope; at = models_[at].parent) chain.push_back(at);
+  std::string out;
+  for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+    if (!out.empty()) out += "::";
+    out += models_[*it].name;
+  }
+  return out;
+}
+
+/// The innermost model holding both; the world holds every model.
+ScopeId SdfWriter::CommonScope(ScopeId a, ScopeId b) const {
+  while (models_[a].depth > models_[b].depth) a = models_[a].parent;
+  while (models_[b].depth > models_[a].depth) b = models_[b].parent;
+  while (a != b) {
+    a = models_[a].parent;
+    b = models_[b].parent;
+  }
+  return a;
+}
+
+/// Whether `inner` is `scope` or nested in it.
+bool SdfWriter::Within(ScopeId scope, ScopeId inner) const {
+  while (models_[inner].depth > models_[scope].depth) inner = models_[inner].parent;
+  return inner == scope;
+}
+
+/// The top-level model `scope` is in (the world for the world).
+ScopeId SdfWriter::TopLevelModel(ScopeId scope) const {
+  while (models_[scope].depth > 1) scope = models_[scope].parent;
+  return scope;
 }
 
 /// A name SDFormat accepts and that is free in `scope`: "::" and reserved
@@ -204,30 +206,36 @@ std::string SdfWriter::Claim(ModelNode& scope, const std::string& name, std::str
 }
 
 void SdfWriter::BuildModels() {
-  InstanceScopes();
+  // frames by their plant names, which bushings refer to: full names cost
+  // the square of the nesting depth, so they are made only for bushings
+  bushings_ = std::any_of(plant_.force_elements.begin(), plant_.force_elements.end(),
+                          [](const backend::ForceElement& f) {
+                            return std::holds_alternative<backend::LinearBushingRpy>(f);
+                          });
   // a model instance is written when it has a body
+  instance_scope_.assign(plant_.model_instances.size(), std::nullopt);
   std::vector<bool> has_body(plant_.model_instances.size(), false);
   for (size_t b = 1; b < plant_.bodies.size(); ++b) has_body[plant_.bodies[b].model.index()] = true;
   for (size_t m = 1; m < plant_.model_instances.size(); ++m) {
-    if (has_body[m]) AddModel(instance_scope_[m], ModelLoc(m));
+    if (has_body[m]) InstanceScope(m);
   }
   // links first: their names are what the other elements refer to
   link_names_.assign(plant_.bodies.size(), "world");
+  body_scope_.assign(plant_.bodies.size(), kWorldScope);
   for (size_t b = 1; b < plant_.bodies.size(); ++b) {
     const PlantBody& body = plant_.bodies[b];
-    const std::string inst = InstanceOf(BodyId(b));
-    if (inst.empty()) {
+    const size_t m = body.model.index();
+    if (m == 0) {
       // a body of the world instance: SDFormat has links only in models
-      AddModel("world_bodies", BodyLoc(BodyId(b)));
+      body_scope_[b] = ChildScope(kWorldScope, "world_bodies", BodyLoc(BodyId(b)));
       diags_.Report(DiagKind::Lossy, BodyLoc(BodyId(b)),
                     fmt::format("link '{}' belongs to no model; it is written in model "
                                 "'world_bodies'",
                                 body.name));
-      body_scope_[b] = "world_bodies";
     } else {
-      body_scope_[b] = inst;
+      body_scope_[b] = *instance_scope_[m];
     }
-    ModelNode& node = Scope(body_scope_[b]);
+    ModelNode& node = models_[body_scope_[b]];
     link_names_[b] = Claim(node, body.name, "link", BodyLoc(BodyId(b)));
     node.links.push_back(BodyId(b));
   }
@@ -235,11 +243,11 @@ void SdfWriter::BuildModels() {
   joint_scope_.resize(plant_.joints.size());
   for (size_t j = 0; j < plant_.joints.size(); ++j) {
     const PlantJoint& joint = plant_.joints[j];
-    std::string scope = CommonScope(BodyScope(joint.parent), BodyScope(joint.child));
+    ScopeId scope = CommonScope(BodyScope(joint.parent), BodyScope(joint.child));
     // a joint to the world is written in its child's model (parent "world")
     if (joint.parent.index() == 0) scope = BodyScope(joint.child);
     joint_scope_[j] = scope;
-    ModelNode& node = Scope(scope);
+    ModelNode& node = models_[scope];
     joint_names_[j] = Claim(node, joint.name, "joint", JointLoc(JointId(j)), !joint.unnamed);
     node.joints.push_back(JointId(j));
   }
@@ -247,43 +255,40 @@ void SdfWriter::BuildModels() {
   for (size_t f = 0; f < plant_.frames.size(); ++f) {
     const backend::PlantFrame& frame = plant_.frames[f];
     if (frame.unnamed) continue;
-    const std::string scope = BodyScope(frame.body);
+    const ScopeId scope = BodyScope(frame.body);
+    const std::optional<ScopeId> instance = instance_scope_[frame.model.index()];
     if (frame.name == "__model__" && frame.model.index() > 0 && frame.body.index() != 0 &&
-        models_.count(instance_scope_[frame.model.index()]) &&
-        Within(instance_scope_[frame.model.index()], scope)) {
-      ModelNode& model = models_.at(instance_scope_[frame.model.index()]);
+        instance && Within(*instance, scope)) {
+      ModelNode& model = models_[*instance];
       if (!model.model_frame) {
         model.model_frame = f;
         continue;
       }
     }
-    ModelNode& node = Scope(scope);
+    ModelNode& node = models_[scope];
     frame_names_[f] = Claim(node, frame.name, "frame", FrameLoc(f));
     node.frames.push_back(f);
-    const size_t m = frame.model.index();
-    const std::string inst = m == 0 ? "" : plant_.model_instances[m];
-    frame_refs_[inst.empty() ? frame.name : inst + "::" + frame.name] = {scope,
-                                                                        frame_names_[f]};
+    if (bushings_) {
+      const size_t m = frame.model.index();
+      frame_refs_[m == 0 ? frame.name : plant_.model_instances.Scoped(frame.model, frame.name)] =
+          {scope, frame_names_[f]};
+    }
   }
 }
 
 /// A bushing may name a link's own frame ("instance::link").
 void SdfWriter::LinkFrameRefs() {
+  if (!bushings_) return;
   for (size_t b = 1; b < plant_.bodies.size(); ++b) {
     frame_refs_.emplace(plant_.ScopedName(plant_.bodies[b]),
                         FrameRef{body_scope_.at(b), link_names_[b]});
   }
 }
 
-/// Model poses: a parent's comes first (a prefix sorts first).
+/// Model poses: a parent is made before the models nested in it.
 void SdfWriter::ModelPoses() {
-  for (auto& [scoped, node] : models_) {
-    const auto parts = Split(scoped);
-    const Transform X_WP =
-        parts.size() > 1
-            ? models_.at(Join(std::vector<std::string>(parts.begin(), parts.end() - 1))).X_WM
-            : Transform{};
-    node.X_WM = X_WP;
+  for (ModelNode& node : models_) {
+    node.X_WM = node.depth > 1 ? models_[node.parent].X_WM : Transform{};
     if (node.model_frame) {
       const backend::PlantFrame& frame = plant_.frames[*node.model_frame];
       node.X_WM = X_WB_[frame.body.index()] * frame.X_BF;
@@ -291,28 +296,31 @@ void SdfWriter::ModelPoses() {
   }
 }
 
-Transform SdfWriter::ParentModelPose(const std::string& scoped) const {
-  const auto parts = Split(scoped);
-  if (parts.size() <= 1) return {};
-  return models_.at(Join(std::vector<std::string>(parts.begin(), parts.end() - 1))).X_WM;
+Transform SdfWriter::ParentModelPose(ScopeId scope) const {
+  const ModelNode& node = models_[scope];
+  return node.depth > 1 ? models_[node.parent].X_WM : Transform{};
 }
 
-std::string SdfWriter::BodyScope(BodyId body) const {
-  if (body.index() == 0) return "";
-  return body_scope_.at(body.index());
+ScopeId SdfWriter::BodyScope(BodyId body) const {
+  return body.index() == 0 ? kWorldScope : body_scope_.at(body.index());
 }
 
 /// How an element written in `scope` names body `body`.
-std::string SdfWriter::LinkRef(const std::string& scope, BodyId body) const {
+std::string SdfWriter::LinkRef(ScopeId scope, BodyId body) const {
   if (body.index() == 0) return "world";
   return Relative(scope, BodyScope(body), link_names_[body.index()]);
 }
 
-std::string SdfWriter::Relative(const std::string& scope, const std::string& owner,
-                                const std::string& name) {
-  const auto a = Split(scope), b = Split(owner);
-  std::string prefix = Join(b, a.size());
-  return prefix.empty() ? name : prefix + "::" + name;
+/// How an element written in `scope` names `name` of model `owner`, nested
+/// in `scope`: "inner::name".
+std::string SdfWriter::Relative(ScopeId scope, ScopeId owner, const std::string& name) const {
+  std::vector<ScopeId> chain;
+  for (; models_[owner].depth > models_[scope].depth; owner = models_[owner].parent) {
+    chain.push_back(owner);
+  }
+  std::string out;
+  for (auto it = chain.rbegin(); it != chain.rend(); ++it) out += models_[*it].name + "::";
+  return out + name;
 }
 
 void SdfWriter::LinkPoses() {
@@ -349,22 +357,23 @@ void SdfWriter::Value(std::string_view tag, std::string_view text) {
   out_.Open(tag).Text(text).Close();
 }
 
-void SdfWriter::WriteModel(const ModelNode& node) {
+void SdfWriter::WriteModel(ScopeId scope) {
+  const ModelNode& node = models_[scope];
   out_.Open("model").Attr("name", node.name);
   if (node.model_frame) {
     const BodyId body = plant_.frames[*node.model_frame].body;
-    out_.Attr("canonical_link", Relative(node.scoped, BodyScope(body), link_names_[body.index()]));
+    out_.Attr("canonical_link", Relative(scope, BodyScope(body), link_names_[body.index()]));
   }
-  Pose(ParentModelPose(node.scoped).inverse() * node.X_WM);
+  Pose(ParentModelPose(scope).inverse() * node.X_WM);
   for (BodyId b : node.links) WriteLink(b);
-  for (JointId j : node.joints) WriteJoint(j, node.scoped);
-  for (size_t f : node.frames) WriteFrame(f, node.scoped);
-  for (const std::string& child : node.children) WriteModel(models_.at(child));
+  for (JointId j : node.joints) WriteJoint(j, scope);
+  for (size_t f : node.frames) WriteFrame(f, scope);
+  for (ScopeId child : node.children) WriteModel(child);
   for (const auto& element : node.elements) element();
   out_.Close();
 }
 
-void SdfWriter::WriteFrame(size_t f, const std::string& scope) {
+void SdfWriter::WriteFrame(size_t f, ScopeId scope) {
   const backend::PlantFrame& frame = plant_.frames[f];
   if (frame.body.index() == 0 && !use_world_) {
     diags_.Report(DiagKind::Lossy, FrameLoc(f),

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include <deque>
 #include <functional>
 #include <limits>
 #include <map>
@@ -32,22 +33,27 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 bool AllEqual(std::span<const double> values);
 /// "a::b::c" -> {"a", "b", "c"}; "" -> {}.
 std::vector<std::string> Split(const std::string& scoped);
-std::string Join(const std::vector<std::string>& parts, size_t from = 0);
-/// The innermost scope holding both: "a::b" and "a::c" -> "a"; "" is the world.
-std::string CommonScope(const std::string& x, const std::string& y);
-bool Within(const std::string& scope, const std::string& inner);
+
+/// A model the writer writes, by its index in SdfWriter::models_. Scopes
+/// are held as a parent and a local name, as the plant holds its model
+/// instances: spelling each scope out in full costs the square of the
+/// nesting depth in time and memory.
+using ScopeId = size_t;
+constexpr ScopeId kWorldScope = 0;
 
 /// A model: its links, joints, frames, nested models and drake: elements.
 struct ModelNode {
-  std::string scoped;  // "outer::inner"
-  std::string name;    // "inner"
+  std::string name;  // "inner" in "outer::inner"; empty for the world
+  ScopeId parent = kWorldScope;
+  size_t depth = 0;  // 0 the world, 1 a top-level model
   Loc loc;
   std::vector<BodyId> links;
   std::vector<JointId> joints;
   std::vector<size_t> frames;
-  std::vector<std::string> children;  // scoped names of nested models
+  std::vector<ScopeId> children;              // nested models, as made
+  std::map<std::string, ScopeId> child_named;  // the same, by name
   std::vector<std::function<void()>> elements;  // drake: elements, written last
-  std::set<std::string> names;        // the model's one namespace
+  std::set<std::string> names;                  // the model's one namespace
   /// The plant's frame for this model's `__model__`, when it is on one of
   /// the model's links: the model is posed there (X_WM, at q = 0) and its
   /// canonical link is that link, so the frame is SDFormat's own.
@@ -64,28 +70,29 @@ class SdfWriter : WriterBase {
 
  private:
   // sdf_writer.cc
-  std::string InstanceOf(BodyId body) const;
-  ModelNode& Scope(const std::string& scoped);
-  void AddModel(const std::string& scoped, Loc loc);
-  void InstanceScopes();
+  ScopeId ChildScope(ScopeId parent, const std::string& name, Loc loc);
+  ScopeId InstanceScope(size_t m);
+  std::string ScopedName(ScopeId scope) const;
+  ScopeId CommonScope(ScopeId a, ScopeId b) const;
+  bool Within(ScopeId scope, ScopeId inner) const;
+  ScopeId TopLevelModel(ScopeId scope) const;
   std::string Claim(ModelNode& scope, const std::string& name, std::string_view kind, Loc loc,
                     bool named = true);
   void BuildModels();
   void LinkFrameRefs();
   void ModelPoses();
-  Transform ParentModelPose(const std::string& scoped) const;
-  std::string BodyScope(BodyId body) const;
-  std::string LinkRef(const std::string& scope, BodyId body) const;
-  static std::string Relative(const std::string& scope, const std::string& owner,
-                              const std::string& name);
+  Transform ParentModelPose(ScopeId scope) const;
+  ScopeId BodyScope(BodyId body) const;
+  std::string LinkRef(ScopeId scope, BodyId body) const;
+  std::string Relative(ScopeId scope, ScopeId owner, const std::string& name) const;
   void LinkPoses();
   static bool IsFreeRoot(const PlantJoint& j);
   void Pose(const Transform& X, std::string_view relative_to = {});
   void Value(std::string_view tag, double v);
   void Value(std::string_view tag, const Eigen::Vector3d& v);
   void Value(std::string_view tag, std::string_view text);
-  void WriteModel(const ModelNode& node);
-  void WriteFrame(size_t f, const std::string& scope);
+  void WriteModel(ScopeId scope);
+  void WriteFrame(size_t f, ScopeId scope);
 
   // sdf_links.cc
   void WriteLink(BodyId body);
@@ -98,7 +105,7 @@ class SdfWriter : WriterBase {
   void WriteCameras(BodyId body);
 
   // sdf_joints.cc
-  void WriteJoint(JointId id, const std::string& scope);
+  void WriteJoint(JointId id, ScopeId scope);
   void DampingLoss(const PlantJoint& j, Loc loc);
   void Axis(std::string_view tag, JointId id, const PlantJoint& j, const Eigen::Vector3d& xyz,
             int k);
@@ -107,28 +114,29 @@ class SdfWriter : WriterBase {
   void MultiDofLimits(const PlantJoint& j, Loc loc);
   void ActuatorParameters(JointId id);
   void MimicElements(JointId id);
-  void WritePlanar(JointId id, const std::string& scope);
+  void WritePlanar(JointId id, ScopeId scope);
 
   // sdf_drake_elements.cc
-  void Place(const std::vector<std::string>& scopes, Loc loc, const std::string& what,
-             std::function<void(const std::string&)> write);
+  void Place(const std::vector<ScopeId>& scopes, Loc loc, const std::string& what,
+             std::function<void(ScopeId)> write);
   void BuildElements();
   void BuildFilterGroups();
-  void WriteFilterGroup(const std::string& scope, const std::vector<BodyId>& members,
+  void WriteFilterGroup(ScopeId scope, const std::vector<BodyId>& members,
                         const std::string& name, const std::string& ignored);
-  void BodiesAndPoints(const std::string& scope, const std::string& prefix, BodyId A, BodyId B,
+  void BodiesAndPoints(ScopeId scope, const std::string& prefix, BodyId A, BodyId B,
                        const Eigen::Vector3d& p_AP, const Eigen::Vector3d& p_BQ);
 
   std::vector<Transform> X_WB_;  // link poses (see the top)
-  std::map<std::string, ModelNode> models_;
-  ModelNode world_;
+  std::deque<ModelNode> models_{1};  // by ScopeId; [0] is the world
   bool use_world_ = false;
-  std::map<size_t, std::string> body_scope_;
-  std::vector<std::string> instance_scope_;  // by model instance; see InstanceScopes
-  std::vector<std::string> link_names_, joint_names_, frame_names_, joint_scope_;
+  std::vector<ScopeId> body_scope_, joint_scope_;
+  std::vector<std::optional<ScopeId>> instance_scope_;  // by model instance, once made
+  std::vector<std::string> link_names_, joint_names_, frame_names_;
   struct FrameRef {
-    std::string scope, name;
+    ScopeId scope;
+    std::string name;
   };
+  bool bushings_ = false;                        // whether frame_refs_ is needed
   std::map<std::string, FrameRef> frame_refs_;  // plant scoped frame name -> written
   std::set<size_t> mimic_written_;
 };
