@@ -59,6 +59,7 @@
 #include "backend/kinematics.h"
 #include "backend/writers/mjcf_layout.h"
 #include "backend/writers/names.h"
+#include "backend/writers/unique_names.h"
 #include "backend/writers/writer.h"
 #include "backend/writers/writer_base.h"
 #include "backend/writers/xml_out.h"
@@ -122,12 +123,8 @@ class MjcfWriter : FlatWriterBase {
 
   /// A name unique among the written elements of one kind (geoms, sites):
   /// MJCF gives each kind one namespace for the whole model.
-  std::string Unique(std::set<std::string>& taken, std::string name) {
-    if (taken.insert(name).second) return name;
-    std::string unique;
-    for (int n = 1; !taken.insert(unique = fmt::format("{}_{}", name, n)).second; ++n) {
-    }
-    return unique;
+  static std::string Unique(UniqueNames& taken, const std::string& name) {
+    return taken.TakeUnique(name);
   }
 
   // -- body frames: X_BL per body
@@ -969,7 +966,7 @@ class MjcfWriter : FlatWriterBase {
   std::vector<Transform> X_BL_;
   std::map<size_t, std::vector<BodyId>> children_;
   std::map<size_t, std::string> mesh_names_;
-  std::set<std::string> geom_names_, site_names_, camera_names_;
+  UniqueNames geom_names_, site_names_, camera_names_;
   std::map<size_t, std::vector<std::pair<std::string, Transform>>> extra_sites_;
   std::vector<std::pair<std::string, std::string>> constraint_sites_;
   std::set<size_t> written_springs_;

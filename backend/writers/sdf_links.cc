@@ -44,21 +44,19 @@ void SdfWriter::WriteLink(BodyId body) {
 }
 
 void SdfWriter::WriteGeometries(BodyId body) {
-  std::set<std::string> visual_names, collision_names;
+  UniqueNames visual_names, collision_names;
   for (uint32_t i : geometries_by_body_[body.index()]) {
     WriteGeometry(scene_.geometries[i], GeometryLoc(i), visual_names, collision_names);
   }
 }
 
-std::string SdfWriter::Unique(std::set<std::string>& names, const std::string& name) {
-  std::string out = name.empty() ? "geometry" : name;
-  for (int n = 1; !names.insert(out).second; ++n) out = fmt::format("{}_{}", name, n);
-  return out;
+std::string SdfWriter::Unique(UniqueNames& names, const std::string& name) {
+  if (names.Take(name.empty() ? "geometry" : name)) return name.empty() ? "geometry" : name;
+  return names.TakeSuffixed(name);
 }
 
-void SdfWriter::WriteGeometry(const backend::SceneGeometry& g, Loc loc,
-                              std::set<std::string>& visuals,
-                              std::set<std::string>& collisions) {
+void SdfWriter::WriteGeometry(const backend::SceneGeometry& g, Loc loc, UniqueNames& visuals,
+                              UniqueNames& collisions) {
   const bool illustration = g.roles & ir::kIllustrationRole;
   const bool perception = g.roles & ir::kPerceptionRole;
   if (illustration || perception) {
@@ -194,7 +192,7 @@ void SdfWriter::Material(const backend::SceneGeometry& g, Loc loc) {
 }
 
 void SdfWriter::WriteCameras(BodyId body) {
-  std::set<std::string> names;
+  UniqueNames names;
   for (uint32_t i : cameras_by_body_[body.index()]) {
     const backend::SceneCamera& c = scene_.cameras[i];
     // the reader names a camera "model/sensor"

@@ -63,7 +63,7 @@ std::string SdfWriter::Write() {
   LinkFrameRefs();
   BuildElements();
   out_.Open("sdf").Attr("version", "1.9").Attr("xmlns:drake", "http://drake.mit.edu");
-  // top-level models by name, as SDFormat readers list them
+  // top-level models in name order, as mdlc has always written them
   std::vector<ScopeId> tops = models_[kWorldScope].children;
   std::sort(tops.begin(), tops.end(),
             [&](ScopeId a, ScopeId b) { return models_[a].name < models_[b].name; });
@@ -108,7 +108,7 @@ ScopeId SdfWriter::ChildScope(ScopeId parent, const std::string& name, Loc loc) 
   models_.push_back(std::move(node));
   models_[parent].children.push_back(it->second);
   // a top-level model's name is not the world's to keep free
-  if (parent != kWorldScope) models_[parent].names.insert(name);
+  if (parent != kWorldScope) models_[parent].names.Take(name);
   return it->second;
 }
 
@@ -189,11 +189,7 @@ std::string SdfWriter::Claim(ModelNode& scope, const std::string& name, std::str
   for (size_t at; (at = out.find("::")) != std::string::npos;) out.replace(at, 2, "__");
   if (out.empty()) out = std::string(kind);
   if (out == "world" || out.starts_with("__")) out = fmt::format("{}_{}", kind, out);
-  if (scope.names.count(out)) {
-    const std::string base = fmt::format("{}_{}", out, kind);
-    out = base;
-    for (int n = 1; scope.names.count(out); ++n) out = fmt::format("{}_{}", base, n);
-  }
+  if (!scope.names.Take(out)) out = scope.names.TakeUnique(fmt::format("{}_{}", out, kind));
   if (out != name && named) {
     diags_.Report(DiagKind::Lossy, loc,
                   fmt::format("{} '{}' is written as '{}': SDFormat forbids '::' and reserved "
@@ -201,7 +197,6 @@ std::string SdfWriter::Claim(ModelNode& scope, const std::string& name, std::str
                               "share one namespace",
                               kind, name, out));
   }
-  scope.names.insert(out);
   return out;
 }
 

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "backend/writers/writer.h"
+#include "backend/writers/unique_names.h"
 #include "backend/writers/writer_base.h"
 #include "backend/writers/xml_out.h"
 
@@ -53,7 +54,7 @@ struct ModelNode {
   std::vector<ScopeId> children;              // nested models, as made
   std::map<std::string, ScopeId> child_named;  // the same, by name
   std::vector<std::function<void()>> elements;  // drake: elements, written last
-  std::set<std::string> names;                  // the model's one namespace
+  UniqueNames names;                            // the model's one namespace
   /// The plant's frame for this model's `__model__`, when it is on one of
   /// the model's links: the model is posed there (X_WM, at q = 0) and its
   /// canonical link is that link, so the frame is SDFormat's own.
@@ -97,9 +98,9 @@ class SdfWriter : WriterBase {
   // sdf_links.cc
   void WriteLink(BodyId body);
   void WriteGeometries(BodyId body);
-  static std::string Unique(std::set<std::string>& names, const std::string& name);
-  void WriteGeometry(const backend::SceneGeometry& g, Loc loc, std::set<std::string>& visuals,
-                     std::set<std::string>& collisions);
+  static std::string Unique(UniqueNames& names, const std::string& name);
+  void WriteGeometry(const backend::SceneGeometry& g, Loc loc, UniqueNames& visuals,
+                     UniqueNames& collisions);
   void Shape(const backend::SceneGeometry& g, Loc loc, bool collision);
   void Material(const backend::SceneGeometry& g, Loc loc);
   void WriteCameras(BodyId body);

@@ -35,6 +35,7 @@
 #include "backend/writers/drake_out.h"
 #include "backend/writers/filter_declarations.h"
 #include "backend/writers/names.h"
+#include "backend/writers/unique_names.h"
 #include "backend/writers/writer.h"
 #include "backend/writers/writer_base.h"
 #include "backend/writers/xml_out.h"
@@ -120,7 +121,7 @@ class UrdfWriter : FlatWriterBase {
 
   void WriteLink(BodyId body) {
     const PlantBody& b = plant_.body(body);
-    frame_names_.insert(BodyName(body));
+    frame_names_.Take(BodyName(body));
     out_.Open("link").Attr("name", BodyName(body));
     if (body.index() != 0) OriginalName(b.model, b.name, BodyName(body));
     if (b.deformable) {
@@ -555,13 +556,11 @@ class UrdfWriter : FlatWriterBase {
   /// instance's prefix, then a number (reported).
   std::string FrameName(const backend::PlantFrame& frame, Loc loc) {
     std::string name = Named(frame.model, frame.name);
-    if (frame_names_.insert(name).second) return name;
+    if (frame_names_.Take(name)) return name;
     std::string unique = frame.model.index() < plant_.model_instances.size()
                              ? Prefixed(plant_.model_instances[frame.model.index()], frame.name)
                              : name;
-    for (int n = 1; !frame_names_.insert(unique).second; ++n) {
-      unique = fmt::format("{}_{}", name, n);
-    }
+    if (!frame_names_.Take(unique)) unique = frame_names_.TakeSuffixed(name);
     diags_.Report(DiagKind::Lossy, loc,
                   fmt::format("frame '{}' is written as '{}': URDF frames share one namespace "
                               "with the robot's links and other frames",
@@ -649,7 +648,7 @@ class UrdfWriter : FlatWriterBase {
   }
 
   std::set<size_t> mimicked_, mimic_written_;
-  std::set<std::string> frame_names_;  // links' and frames' names
+  UniqueNames frame_names_;  // links' and frames' names
 };
 
 }  // namespace
