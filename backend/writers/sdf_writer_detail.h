@@ -20,8 +20,8 @@
 #include <string_view>
 #include <vector>
 
-#include "backend/writers/writer.h"
 #include "backend/writers/unique_names.h"
+#include "backend/writers/writer.h"
 #include "backend/writers/writer_base.h"
 #include "backend/writers/xml_out.h"
 

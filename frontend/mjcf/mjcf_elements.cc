@@ -92,8 +92,8 @@ std::optional<Limited> ElementsLowering::LimitedValue(const Attribute& a) {
   if (a.value == "true") return Limited::True;
   if (a.value == "false") return Limited::False;
   diags().Report(DiagKind::BadValue, a.loc,
-                 fmt::format("The '{}' attribute must be one of 'true', 'false', or 'auto'.",
-                             a.name));
+                 fmt::format("attribute '{}' must be 'true', 'false' or 'auto', not '{}'",
+                             a.name, a.value));
   return std::nullopt;
 }
 
@@ -111,8 +111,8 @@ bool ElementsLowering::IsLimited(const Attribute& limited, const Attribute& rang
     const std::string limited_name =
         std::string(range.name.substr(0, range.name.size() - 5)) + "limited";
     diags().Report(DiagKind::BadValue, range.loc,
-                   fmt::format("The '{}' attribute was specified but 'autolimits' is disabled "
-                               "(give '{}' explicitly)",
+                   fmt::format("attribute '{}' sets no limit while <compiler autolimits> is "
+                               "false; give '{}' as well",
                                range.name, limited_name));
     return false;
   }
@@ -188,8 +188,7 @@ void ElementsLowering::WarnAttribute(const Element& e, std::string_view kind,
   const Attribute a = e.Get(attr);
   if (!a.present()) return;
   WarnOnce(fmt::format("attr:{}/{}", kind, attr), DiagKind::UnsupportedAttribute, a.loc,
-           fmt::format("The attribute '{}' found in a '{}' tag is currently unsupported and "
-                       "will be ignored{}{}.",
+           fmt::format("attribute '{}' of <{}> is not supported and is ignored{}{}",
                        attr, e.xml().Name(), why.empty() ? "" : ": ", why));
 }
 

@@ -133,15 +133,14 @@ class ActuatorLowering {
       if (!a.present()) continue;
       L_.WarnOnce(fmt::format("actuator/transmission/{}", other), DiagKind::UnsupportedAttribute,
                   a.loc,
-                  fmt::format("The {} '{}' uses the '{}' transmission; only 'joint' is "
-                              "supported. This actuator will be ignored.",
+                  fmt::format("{} '{}' acts through '{}', which mdlc does not support (only "
+                              "'joint'); the actuator is ignored",
                               x_.Name(), name_, other));
       return std::nullopt;
     }
     L_.diags().Report(DiagKind::UnsupportedElement, e_.loc(),
-                      fmt::format("The {} '{}' does not use the 'joint' transmission "
-                                  "specification. Currently only the 'joint' attribute is "
-                                  "supported. This {} will be ignored.",
+                      fmt::format("{} '{}' names no joint to act on (mdlc supports only "
+                                  "'joint'); the {} is ignored",
                                   x_.Name(), name_, x_.Name()));
     return std::nullopt;
   }
@@ -156,8 +155,8 @@ class ActuatorLowering {
     }
     if (v->size() != 1 && v->size() != 6) {
       L_.diags().Report(DiagKind::ActuatorWarning, gear.loc,
-                        fmt::format("Expected either 1 value or 6 values for 'gear' attribute, "
-                                    "but got {}.",
+                        fmt::format("attribute 'gear' has 1 or 6 values, not '{}'; its first "
+                                    "is used",
                                     gear.value));
     }
     return (*v)[0];
@@ -338,18 +337,16 @@ class ActuatorLowering {
     const Loc loc = range.present() ? range.loc : e_.loc();
     if (values[0] > values[1]) {
       L_.diags().Report(DiagKind::ActuatorWarning, loc,
-                        fmt::format("The {} '{}' specified a {} attribute where lower limit > "
-                                    "upper limit; these limits will be ignored.",
+                        fmt::format("{} '{}' has a '{}' whose lower limit is above its upper "
+                                    "limit; the limits are ignored",
                                     x_.Name(), name_, range_attr));
       return std::nullopt;
     }
     const double limit = std::max(values[1], -values[0]);
     if (-values[0] != values[1]) {
       L_.diags().Report(DiagKind::ActuatorWarning, loc,
-                        fmt::format("The {} '{}' specified a {} attribute where lower limit != "
-                                    "-upper limit. Asymmetrical effort limits are not "
-                                    "supported yet, so the larger of the values {} will be "
-                                    "used.",
+                        fmt::format("{} '{}' has an asymmetric '{}', which a plant's effort "
+                                    "limit cannot hold; the larger magnitude, {}, is used",
                                     x_.Name(), name_, range_attr, limit));
     }
     return limit;

@@ -28,8 +28,7 @@ void LowerExclude(ElementsLowering& L, const Element& e, std::unordered_set<std:
   const Attribute b1 = e.Get("body1"), b2 = e.Get("body2");
   if (!b1.present() || !b2.present()) {
     L.diags().Report(DiagKind::UnsupportedElement, e.loc(),
-                     "contact exclude node does not have required body1 and/or body2 "
-                     "attributes, so will be ignored.");
+                     "<exclude> needs both 'body1' and 'body2'; it is ignored");
     return;
   }
   std::optional<BodyId> body1 = L.FindBody(b1, "exclude");
@@ -67,14 +66,14 @@ void LowerPair(ElementsLowering& L, const Element& e) {
   const Attribute g1 = e.Get("geom1"), g2 = e.Get("geom2");
   if (!g1.present() || !g2.present()) {
     L.diags().Report(DiagKind::UnsupportedElement, e.loc(),
-                     "contact pair node does not have required geom1 and/or geom2 attributes, "
-                     "so will be ignored.");
+                     "<pair> needs both 'geom1' and 'geom2'; it is ignored");
     return;
   }
   for (const Attribute* g : {&g1, &g2}) {
     if (L.r.geoms.Find(L.module().symbols, g->value)) continue;
     L.diags().Report(DiagKind::IgnoredReference, g->loc,
-                     fmt::format("contact pair specified unknown {} {} and will be ignored.",
+                     fmt::format("<pair> names {} '{}', which is no geom of the model; the "
+                                 "pair is ignored",
                                  g->name, g->value));
     return;
   }
@@ -94,9 +93,8 @@ void LowerPair(ElementsLowering& L, const Element& e) {
   if (body1 && body2 && Adjacent(L, *body1, *body2)) {
     L.diags().Report(
         DiagKind::UnsupportedValue, e.loc(),
-        fmt::format("This mjcf specified a contact pair with geom1 {} and geom2 {}, which are "
-                    "on adjacent bodies (connected by a joint). The plant filters collisions "
-                    "between adjacent bodies, so the pair has no effect.",
+        fmt::format("<pair> of geoms '{}' and '{}' has no effect: their bodies are joined by "
+                    "a joint, and the plant filters collisions between such bodies",
                     g1.value, g2.value));
   }
 }

@@ -46,15 +46,15 @@ void SdfReader::ReadDeformableProperties(const xml::XmlElement& link, ModelScope
   };
   const Param params[] = {
       {"drake:youngs_modulus", &d.youngs_modulus, [](double v) { return v > 0; },
-       "Young's modulus must be positive"},
+       "<drake:youngs_modulus> must be positive"},
       {"drake:poissons_ratio", &d.poissons_ratio, [](double v) { return v > -1 && v < 0.5; },
-       "Poisson's ratio must be in the range (-1, 0.5)"},
+       "<drake:poissons_ratio> must lie in (-1, 0.5)"},
       {"drake:mass_damping", &d.mass_damping, [](double v) { return v >= 0; },
-       "Mass damping must be non-negative"},
+       "<drake:mass_damping> must be non-negative"},
       {"drake:stiffness_damping", &d.stiffness_damping, [](double v) { return v >= 0; },
-       "Stiffness damping must be non-negative"},
+       "<drake:stiffness_damping> must be non-negative"},
       {"drake:mass_density", &d.mass_density, [](double v) { return v > 0; },
-       "Mass density must be positive"},
+       "<drake:mass_density> must be positive"},
   };
   for (const Param& p : params) {
     xml::XmlElement c = props.Child(p.tag);
@@ -76,8 +76,8 @@ void SdfReader::ReadDeformableProperties(const xml::XmlElement& link, ModelScope
       d.material_model = mm;
     } else {
       fail(DiagKind::BadValue, c.GetLoc(),
-           fmt::format("Invalid <drake:material_model> value '{}'. Must be 'linear', "
-                       "'linear_corotated', 'neohookean', or 'corotated'.",
+           fmt::format("<drake:material_model> '{}' is none of 'linear', 'linear_corotated', "
+                       "'neohookean' and 'corotated'",
                        mm));
     }
   }
@@ -91,8 +91,7 @@ void SdfReader::ReadDeformableProperties(const xml::XmlElement& link, ModelScope
     for (const char* t : {"drake:point_on_plane", "drake:outward_normal"}) {
       if (!c.Child(t)) {
         fail(DiagKind::MissingElement, c.GetLoc(),
-             fmt::format("<drake:wall_boundary_condition>: Unable to find the <{}> child tag.",
-                         t));
+             fmt::format("<drake:wall_boundary_condition> needs a <{}>", t));
       }
     }
     if (!point || !normal) {
@@ -101,7 +100,7 @@ void SdfReader::ReadDeformableProperties(const xml::XmlElement& link, ModelScope
     }
     if (!(normal->norm() > 1e-10)) {
       fail(DiagKind::ZeroAxis, c.Child("drake:outward_normal").GetLoc(),
-           "Outward normal vector cannot be zero in <drake:outward_normal>");
+           "<drake:outward_normal> must not be zero");
       continue;
     }
     d.wall_boundary_conditions.push_back({*point, normal->normalized()});
@@ -127,15 +126,15 @@ void SdfReader::ReadDeformableProperties(const xml::XmlElement& link, ModelScope
     } else if (t != "pose" && t != "drake:deformable_properties" &&
                t != "drake:wall_boundary_condition") {
       diags().Report(DiagKind::UnsupportedElement, c.GetLoc(),
-                     fmt::format("tag '{}' found as a child of deformable link '{}' is "
-                                 "unsupported and will be ignored",
+                     fmt::format("element <{}> of deformable link '{}' is not supported and "
+                                 "is ignored",
                                  t, link_name));
     }
   }
   if (collisions.size() != 1) {
     fail(DiagKind::BadValue, link.GetLoc(),
-         fmt::format("Each deformable <link> must have exactly one <collision> element; link "
-                     "'{}' has {}",
+         fmt::format("deformable link '{}' has {} <collision> elements; a deformable link "
+                     "has exactly one",
                      link_name, collisions.size()));
   } else {
     const xml::XmlElement collision = collisions.front();
@@ -149,13 +148,12 @@ void SdfReader::ReadDeformableProperties(const xml::XmlElement& link, ModelScope
     if (sphere) {
       if (!hint) {
         fail(DiagKind::MissingElement, geometry.GetLoc(),
-             "The <geometry> of a deformable <link>'s <collision> is a primitive shape, so it "
-             "must specify a positive <drake:mesh_resolution_hint> in its "
-             "<drake:proximity_properties> to control the resolution of the tetrahedral mesh "
-             "generated for it.");
+             "a deformable link's <sphere> needs a <drake:mesh_resolution_hint> in its "
+             "<drake:proximity_properties>: the hint sets the size of the tetrahedra it is "
+             "meshed into");
       } else if (!(*hint > 0)) {
         fail(DiagKind::BadValue, geometry.GetLoc(),
-             "drake:mesh_resolution_hint must be positive.");
+             "<drake:mesh_resolution_hint> must be positive");
       } else {
         d.resolution_hint = *hint;
       }
@@ -164,15 +162,14 @@ void SdfReader::ReadDeformableProperties(const xml::XmlElement& link, ModelScope
           xml::Trim(mesh.Child("uri") ? mesh.Child("uri").Text() : std::string()));
       if (!EndsWithVtk(uri)) {
         fail(DiagKind::BadValue, mesh.GetLoc(),
-             fmt::format("The <mesh> of a deformable <link>'s <collision> must name a .vtk file "
-                         "holding a tetrahedral mesh, found '{}'",
+             fmt::format("a deformable link's <mesh> names '{}'; it must name a .vtk file "
+                         "holding a tetrahedral mesh",
                          uri));
       }
       if (hint) {
         diags().Report(DiagKind::UnsupportedElement, geometry.GetLoc(),
-                       "A deformable <link>'s <collision> specified a "
-                       "<drake:mesh_resolution_hint>, but its <geometry> is a <mesh>; the hint "
-                       "is ignored because the mesh is used as given.");
+                       "<drake:mesh_resolution_hint> of a deformable link's <mesh> is ignored: "
+                       "the mesh is used as given");
       }
     } else {
       std::string found;
@@ -182,9 +179,8 @@ void SdfReader::ReadDeformableProperties(const xml::XmlElement& link, ModelScope
         }
       }
       fail(DiagKind::BadGeometry, geometry ? geometry.GetLoc() : collision.GetLoc(),
-           fmt::format("The <geometry> of a deformable <link>'s <collision> must be either a "
-                       "<mesh> (whose uri names a .vtk file containing a tetrahedral mesh) or a "
-                       "<sphere>; found {}.",
+           fmt::format("a deformable link's <geometry> holds {}; it must be a <sphere> or a "
+                       "<mesh> naming a .vtk tetrahedral mesh",
                        found.empty() ? "nothing" : found));
     }
   }

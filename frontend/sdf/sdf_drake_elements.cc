@@ -64,8 +64,7 @@ void SdfReader::ReadJointDrakeChildren(const xml::XmlElement& joint_element, Mod
       for (const char* attr : {"joint", "multiplier", "offset"}) {
         if (!child.Attribute(attr).present()) {
           diags().Report(DiagKind::MissingAttribute, child.GetLoc(),
-                         fmt::format("Joint '{}' drake:mimic element is missing the required "
-                                     "'{}' attribute",
+                         fmt::format("<drake:mimic> of joint '{}' needs attribute '{}'",
                                      joint_name, attr));
           ok = false;
         }
@@ -76,15 +75,14 @@ void SdfReader::ReadJointDrakeChildren(const xml::XmlElement& joint_element, Mod
       auto offset = attrs_.Double(child, "offset", xml::Need::Required);
       if (other.value.empty()) {
         diags().Report(DiagKind::MissingAttribute, other.loc,
-                       fmt::format("Joint '{}' drake:mimic element has an empty 'joint' "
-                                   "attribute",
+                       fmt::format("<drake:mimic> of joint '{}' has an empty 'joint'",
                                    joint_name));
         continue;
       }
       if (other.value == joint_name) {
         diags().Report(DiagKind::BadValue, other.loc,
-                       fmt::format("Joint '{}' drake:mimic element specifies joint '{}'. Joints "
-                                   "cannot mimic themselves.",
+                       fmt::format("<drake:mimic> of joint '{}' names joint '{}' itself; a "
+                                   "joint cannot follow itself",
                                    joint_name, other.value));
         continue;
       }
@@ -94,9 +92,8 @@ void SdfReader::ReadJointDrakeChildren(const xml::XmlElement& joint_element, Mod
       if (const int nv = ir::JointVelocityCount(joint.type);
           nv != 1 || joint.type == ir::JointType::Weld) {
         diags().Report(DiagKind::JointWarning, child.GetLoc(),
-                       fmt::format("Drake only supports the drake:mimic element for single-dof "
-                                   "joints; joint '{}' ({}) has {} dofs, so its drake:mimic is "
-                                   "ignored",
+                       fmt::format("<drake:mimic> of joint '{}' ({}, {} dofs) is ignored: a "
+                                   "coupler joins single-dof joints",
                                    joint_name, ir::JointTypeName(joint.type),
                                    joint.type == ir::JointType::Weld ? 0 : nv));
         continue;
@@ -145,8 +142,7 @@ void SdfReader::ReadJointDrakeChildren(const xml::XmlElement& joint_element, Mod
                       std::string_view what) -> std::optional<double> {
         if (!child.Attribute(attr).present()) {
           diags().Report(DiagKind::MissingAttribute, child.GetLoc(),
-                         fmt::format("<drake:controller_gains>: Unable to find the '{}' "
-                                     "attribute.",
+                         fmt::format("<drake:controller_gains> needs attribute '{}'",
                                      attr));
           return std::nullopt;
         }

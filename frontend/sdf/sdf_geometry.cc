@@ -74,8 +74,7 @@ void CheckVisualChildren(SdfReader& r, const xml::XmlElement& e, const Spelling&
     if (Contains(known, tag) || Contains(known, sp.Local(tag))) continue;
     if (Contains(unsupported, sp.Local(tag))) {
       r.diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
-                       fmt::format("tag '{}' found as a child of '{}' is currently unsupported "
-                                   "and will be ignored",
+                       fmt::format("element <{}> in <{}> is not supported and is ignored",
                                    tag, e.Name()));
     } else {
       r.diags().Report(DiagKind::UnknownElement, child.GetLoc(),
@@ -304,8 +303,8 @@ std::optional<ShapeResult> ReadShape(SdfReader& r, const xml::XmlElement& geomet
   } else {
     // heightmap, image, polyline, cone
     r.diags().Report(DiagKind::UnsupportedElement, e.GetLoc(),
-                     fmt::format("tag '{}' found as a child of '{}' is currently unsupported and "
-                                 "will be ignored; the {} has no geometry",
+                     fmt::format("element <{}> in <{}> is not supported and is ignored; the {} "
+                                 "has no geometry",
                                  e.Name(), geometry.Name(), geometry.Parent().Name()));
     return std::nullopt;
   }
@@ -647,8 +646,8 @@ void SdfReader::ReadCollision(const xml::XmlElement& e, ModelScope& s, BodyId bo
   if (xml::XmlElement retro = e.Child("laser_retro")) {
     if (auto v = TextDouble(retro); v && *v != 0) {
       diags().Report(DiagKind::UnsupportedValue, retro.GetLoc(),
-                     fmt::format("<laser_retro> of <collision> is currently unsupported; the "
-                                 "value {} is ignored",
+                     fmt::format("<laser_retro> of <collision> is not supported; the value "
+                                 "{} is ignored",
                                  *v));
     }
   }
@@ -709,8 +708,7 @@ void SdfReader::ReadSensor(const xml::XmlElement& e, ModelScope& s, BodyId body,
   if (!IsCameraType(*type)) {
     // SDF-043: only cameras are modelled
     diags().Report(DiagKind::UnsupportedElement, e.GetLoc(),
-                   fmt::format("sensor '{}' of type '{}' is currently unsupported and will be "
-                               "ignored",
+                   fmt::format("sensor '{}' of type '{}' is not supported and is ignored",
                                *name, *type));
     return;
   }

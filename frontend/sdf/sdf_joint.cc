@@ -301,8 +301,8 @@ void SdfReader::ReadJoint(const xml::XmlElement& e, ModelScope& s) {
              (j.type == ir::JointType::Ball && e.Child("axis") && values[0].effort != 0 &&
               values[0].has_limit)) {
     diags().Report(DiagKind::ActuatorWarning, e.GetLoc(),
-                   fmt::format("actuation (via non-zero effort limits) for {} joint '{}' is not "
-                               "implemented yet and will be ignored",
+                   fmt::format("the effort limits of {} joint '{}' make no actuator: mdlc "
+                               "actuates single-dof joints only",
                                type, *name));
   }
 

@@ -82,22 +82,19 @@ void SdfReader::ReadLink(const xml::XmlElement& e, ModelScope& s) {
       const bool default_value = tag == "gravity";
       if (auto v = TextBool(child); v && *v != default_value) {
         diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
-                       fmt::format("tag '{}' found as a child of 'link' is currently "
-                                   "unsupported and will be ignored",
+                       fmt::format("element <{}> in <link> is not supported and is ignored",
                                    tag));
       }
     } else if (tag == "velocity_decay") {
       // unsupported, but its numbers must still be numbers (COMMON-007)
       for (auto v = child.FirstChild(); v; v = v.NextSibling()) TextDouble(v);
       diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
-                     "tag 'velocity_decay' found as a child of 'link' is currently unsupported "
-                     "and will be ignored");
+                     "element <velocity_decay> in <link> is not supported and is ignored");
     } else if (tag == "must_be_base_link" || tag == "projector" ||
                tag == "audio_sink" || tag == "audio_source" || tag == "battery" ||
                tag == "light" || tag == "particle_emitter") {
       diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
-                     fmt::format("tag '{}' found as a child of 'link' is currently unsupported "
-                                 "and will be ignored",
+                     fmt::format("element <{}> in <link> is not supported and is ignored",
                                  tag));
     }
   }
@@ -147,8 +144,7 @@ void SdfReader::ReadInertial(const xml::XmlElement& e, ir::Body& body) {
   if (inertia) ReadMoments(inertia, inertial);
   if (fluid) {
     diags().Report(DiagKind::UnsupportedElement, fluid.GetLoc(),
-                   "tag 'fluid_added_mass' found as a child of 'inertial' is currently "
-                   "unsupported and will be ignored");
+                   "element <fluid_added_mass> in <inertial> is not supported and is ignored");
   }
   body.inertial = inertial;
 }

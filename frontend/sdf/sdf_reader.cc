@@ -180,8 +180,7 @@ void SdfReader::ReportUnknownChild(const xml::XmlElement& e, const xml::XmlEleme
   std::string_view tag = child.Name();
   if (Listed(unsupported, tag)) {
     diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
-                   fmt::format("tag '{}' found as a child of '{}' is currently unsupported and "
-                               "will be ignored",
+                   fmt::format("element <{}> in <{}> is not supported and is ignored",
                                tag, e.Name()));
   } else if (tag.starts_with("drake:")) {
     diags().Report(DiagKind::UnknownElement, child.GetLoc(),
@@ -274,8 +273,7 @@ std::optional<ModelId> SdfReader::ReadRootFile(FileId file_id) {
       world_element = child;
     } else if (tag == "light" || tag == "actor") {
       diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
-                     fmt::format("tag '{}' found as a child of 'sdf' is currently unsupported and "
-                                 "will be ignored",
+                     fmt::format("element <{}> in <sdf> is not supported and is ignored",
                                  tag));
     } else {
       CheckChildren(sdf, {"model", "world", "light", "actor"});
@@ -345,8 +343,7 @@ std::optional<ModelId> SdfReader::ReadWorld(const xml::XmlElement& e, const SdfF
       joints.push_back(child);  // world joints connect models, which may come later
     } else if (tag == "light" || tag == "actor") {
       diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
-                     fmt::format("tag '{}' found as a child of 'world' is currently unsupported "
-                                 "and will be ignored",
+                     fmt::format("element <{}> in <world> is not supported and is ignored",
                                  tag));
     } else if (tag == "gravity") {
       // the plant's gravity, as MJCF's <option gravity> gives it
@@ -495,8 +492,7 @@ void SdfReader::ReadModelBody(const xml::XmlElement& e, ModelScope& s) {
     } else if (tag == "self_collide" || tag == "enable_wind" || tag == "allow_auto_disable") {
       if (auto v = TextBool(child); v && *v) {
         diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
-                       fmt::format("tag '{}' found as a child of 'model' is currently "
-                                   "unsupported and will be ignored",
+                       fmt::format("element <{}> in <model> is not supported and is ignored",
                                    tag));
       }
     }

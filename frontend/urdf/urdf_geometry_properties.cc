@@ -61,8 +61,8 @@ void ReadDrakeCompliance(const xml::XmlElement& e, ir::Geometry& g, xml::Attribu
     const std::string_view tag = c.Name();
     if (tag == "youngs_modulus" || tag == "dissipation") {
       diags.Report(DiagKind::UnsupportedElement, c.GetLoc(),
-                   fmt::format("tag '{}' found as a child of 'drake_compliance' is currently "
-                               "unsupported and will be ignored",
+                   fmt::format("element <{}> in <drake_compliance> is not supported and is "
+                               "ignored",
                                tag));
       continue;
     }

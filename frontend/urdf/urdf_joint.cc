@@ -240,18 +240,17 @@ void UrdfReader::ReadAnyJoint(const xml::XmlElement& e, bool drake_element) {
       }
       if (auto f = attrs_.Double(c, "friction"); f && *f != 0) {
         diags().Report(DiagKind::UnsupportedAttribute, c.Attribute("friction").loc,
-                       "joint friction is currently unsupported and will be ignored");
+                       "joint friction is not supported and is ignored");
       }
       if (auto w = c.Attribute("coulomb_window"); w.present()) {
         diags().Report(DiagKind::UnsupportedAttribute, w.loc,
-                       "attribute 'coulomb_window' is currently unsupported and will be ignored");
+                       "attribute 'coulomb_window' is not supported and is ignored");
       }
     } else if (tag == "mimic") {
       ReadMimic(c, joint);
     } else if (tag == "calibration" || tag == "safety_controller") {
       diags().Report(DiagKind::UnsupportedElement, c.GetLoc(),
-                     fmt::format("tag '{}' found as a child of '{}' is currently unsupported "
-                                 "and will be ignored",
+                     fmt::format("element <{}> in <{}> is not supported and is ignored",
                                  tag, element));
     } else if (auto it = std::find_if(std::begin(kTypeSpecificChildren),
                                       std::end(kTypeSpecificChildren),

@@ -24,7 +24,7 @@ void UrdfReader::ReadLink(const xml::XmlElement& e) {
   if (!name) return;
   if (auto type = e.Attribute("type"); type.present()) {
     diags().Report(DiagKind::UnsupportedAttribute, type.loc,
-                   "attribute 'type' of <link> is currently unsupported and will be ignored");
+                   "attribute 'type' of <link> is not supported and is ignored");
   }
   attrs_.WarnUnknownAttributes(e, {"name", "type", "drake_ignore"});
   Symbol symbol = module().Intern(*name);
@@ -88,8 +88,7 @@ void UrdfReader::ReadLink(const xml::XmlElement& e) {
       }
     } else if (tag == "self_collision_checking" || tag == "gazebo") {
       diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
-                     fmt::format("tag '{}' found as a child of 'link' is currently unsupported "
-                                 "and will be ignored",
+                     fmt::format("element <{}> in <link> is not supported and is ignored",
                                  tag));
     } else {
       diags().Report(DiagKind::UnknownElement, child.GetLoc(),
@@ -144,8 +143,7 @@ void UrdfReader::ReadGeometryElement(const xml::XmlElement& e, BodyId body, Symb
   attrs_.WarnUnknownAttributes(e, {"name", "group"});
   if (auto group = e.Attribute("group"); group.present()) {
     diags().Report(DiagKind::UnsupportedAttribute, group.loc,
-                   fmt::format("attribute 'group' of <{}> is currently unsupported and will be "
-                               "ignored",
+                   fmt::format("attribute 'group' of <{}> is not supported and is ignored",
                                tag));
   }
   auto geometry = e.Child("geometry");
@@ -182,8 +180,7 @@ void UrdfReader::ReadGeometryElement(const xml::XmlElement& e, BodyId body, Symb
       g.rgba = ReadVisualMaterial(child, g);
     } else if (!is_visual && ctag == "verbose") {
       diags().Report(DiagKind::UnsupportedElement, child.GetLoc(),
-                     "tag 'verbose' found as a child of 'collision' is currently unsupported and "
-                     "will be ignored");
+                     "element <verbose> in <collision> is not supported and is ignored");
     } else if (is_visual ? ReadVisualExtension(child, g) : ReadCollisionExtension(child, g)) {
       // a drake: extension, read
     } else {

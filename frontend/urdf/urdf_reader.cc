@@ -44,7 +44,7 @@ std::optional<ModelId> UrdfReader::Read() {
   }
   if (auto version = robot.Attribute("version"); version.present()) {
     diags().Report(DiagKind::UnsupportedAttribute, version.loc,
-                   "attribute 'version' of <robot> is currently unsupported and will be ignored");
+                   "attribute 'version' of <robot> is not supported and is ignored");
   }
   attrs_.WarnUnknownAttributes(robot, {"name", "version", "xmlns:xacro"});
   auto model = AddModelInstance(name ? *name : "", robot.GetLoc(), ir::SourceFormat::Urdf, ctx_);

@@ -16,8 +16,7 @@ bool IsSilentlyIgnored(std::string_view tag) { return tag == "hardwareInterface"
 void UrdfReader::ReadTransmission(const xml::XmlElement& e) {
   auto warn_unsupported = [&](const xml::XmlElement& el, std::string_view parent) {
     diags().Report(DiagKind::UnsupportedElement, el.GetLoc(),
-                   fmt::format("tag '{}' found as a child of '{}' is currently unsupported and "
-                               "will be ignored",
+                   fmt::format("element <{}> in <{}> is not supported and is ignored",
                                el.Name(), parent));
   };
   auto check_reduction = [&](const xml::XmlElement& el) {
@@ -32,8 +31,7 @@ void UrdfReader::ReadTransmission(const xml::XmlElement& e) {
   };
   if (auto name = e.Attribute("name"); name.present()) {
     diags().Report(DiagKind::UnsupportedAttribute, name.loc,
-                   "attribute 'name' of <transmission> is currently unsupported and will be "
-                   "ignored");
+                   "attribute 'name' of <transmission> is not supported and is ignored");
   }
   // the type: a <type> child or the legacy attribute
   std::string type;

@@ -42,7 +42,7 @@ void OnXmlError(void* user, xmlErrorPtr error) {
   while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
   Loc loc{sink->file, static_cast<uint32_t>(error->line > 0 ? error->line : 0),
           static_cast<uint32_t>(error->int2 > 0 ? error->int2 : 0)};
-  sink->diags->Report(DiagKind::XmlSyntax, loc, "Failed to parse XML: " + message);
+  sink->diags->Report(DiagKind::XmlSyntax, loc, "malformed XML: " + message);
 }
 
 // The source buffer, handed to libxml2 a piece at a time.
@@ -107,7 +107,7 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
   InstallSecurityHooks();
   std::string_view text = sources.Contents(file);
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
-    diags.Report(DiagKind::EmptyFile, Loc{file, 1, 1}, "Failed to parse XML: the file is empty");
+    diags.Report(DiagKind::EmptyFile, Loc{file, 1, 1}, "the file is empty; an XML model needs a root element");
     return nullptr;
   }
   // refuse entity declarations before libxml2 ever sees them
@@ -120,7 +120,7 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
     return nullptr;
   }
   if (first_tag == std::string_view::npos) {
-    diags.Report(DiagKind::XmlSyntax, Loc{file, 1, 1}, "Failed to parse XML: no root element");
+    diags.Report(DiagKind::XmlSyntax, Loc{file, 1, 1}, "malformed XML: no root element");
     return nullptr;
   }
 
@@ -132,7 +132,7 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
   const ParseOutcome outcome = ParseInto(builder, text, sources.Path(file).c_str(), sink);
   document->names_ = outcome.names;
   if (outcome.stopped_at.line == 0) {
-    diags.Report(DiagKind::XmlSyntax, Loc{file, 1, 1}, "Failed to parse XML: out of memory");
+    diags.Report(DiagKind::XmlSyntax, Loc{file, 1, 1}, "the XML parser ran out of memory");
     return nullptr;
   }
   if (builder.declared_entity()) {
@@ -144,7 +144,7 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
   if (builder.over_limit()) return nullptr;  // reported where the limit was passed
   if (!outcome.well_formed || sink.reported > 0 || !builder.root() || !outcome.names) {
     if (sink.reported == 0) {
-      diags.Report(DiagKind::XmlSyntax, outcome.stopped_at, "Failed to parse XML");
+      diags.Report(DiagKind::XmlSyntax, outcome.stopped_at, "malformed XML");
     }
     return nullptr;
   }

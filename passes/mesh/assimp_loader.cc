@@ -7,6 +7,7 @@
 #include <assimp/Importer.hpp>
 #include <fmt/format.h>
 
+#include <cctype>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -61,6 +62,16 @@ std::optional<std::string> FindBadFace(const aiScene& scene) {
   return std::nullopt;
 }
 
+// assimp's reason for a failed read, as the tail of mdlc's message: its
+// own full stop and line breaks dropped
+std::string ImporterError(const Assimp::Importer& importer) {
+  std::string error = importer.GetErrorString();
+  while (!error.empty() && (error.back() == '.' || std::isspace(uint8_t(error.back())))) {
+    error.pop_back();
+  }
+  return error.empty() ? "assimp gave no reason" : error;
+}
+
 }  // namespace
 
 MeshOrError ImportMesh(const std::string& path, const Limits& limits) {
@@ -88,7 +99,7 @@ MeshOrError ImportMesh(const std::string& path, const Limits& limits) {
   const aiScene* scene = importer.ReadFile(path, 0);
   if (!scene || !scene->mRootNode) {
     return {nullptr,
-            fmt::format("cannot read mesh file '{}': {}", path, importer.GetErrorString())};
+            fmt::format("cannot read mesh file '{}': {}", path, ImporterError(importer))};
   }
   if (auto problem = FindBadFace(*scene)) {
     return {nullptr, fmt::format("cannot read mesh file '{}': {}", path, *problem)};
@@ -98,7 +109,7 @@ MeshOrError ImportMesh(const std::string& path, const Limits& limits) {
   scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType);
   if (!scene || !scene->mRootNode) {
     return {nullptr,
-            fmt::format("cannot read mesh file '{}': {}", path, importer.GetErrorString())};
+            fmt::format("cannot read mesh file '{}': {}", path, ImporterError(importer))};
   }
   uint64_t vertices = 0;
   for (unsigned i = 0; i < scene->mNumMeshes; ++i) vertices += scene->mMeshes[i]->mNumVertices;

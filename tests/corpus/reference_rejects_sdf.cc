@@ -21,10 +21,10 @@ namespace mdlc::corpus {
 
 // clang-format off
 constexpr Expectation kSdf[] = {
-  {"drake/examples/multibody/four_bar/dev/four_bar_loop.sdf", false, "Failed to parse XML",
+  {"drake/examples/multibody/four_bar/dev/four_bar_loop.sdf", false, "malformed XML",
    "COMMON-004: '--' inside a comment is not well-formed XML (libsdformat, on tinyxml2, got past"
    " it and rejected frame 'Wd' attached_to 'world', SDF-004)"},
-  {"drake/examples/multibody/four_bar/dev/four_bar_weld.sdf", false, "Failed to parse XML",
+  {"drake/examples/multibody/four_bar/dev/four_bar_weld.sdf", false, "malformed XML",
    "COMMON-004: '--' inside a comment is not well-formed XML (libsdformat, on tinyxml2, got past"
    " it and rejected frame 'Wd' attached_to 'world', SDF-004)"},
   {"drake/geometry/render_gltf_client/test/example_scene.sdf", false, "does not exist",
@@ -80,7 +80,7 @@ constexpr Expectation kSdf[] = {
    "COMMON-006: a Gazebo-era file with a <gazebo> root, not <sdf>"},
   {"gazebo_models/kinect/model-1_2.sdf", false, "<sdf> root element",
    "COMMON-006: a Gazebo-era file with a <gazebo> root, not <sdf>"},
-  {"gazebo_models/mpl_right_forearm/model.sdf", false, "Failed to parse XML",
+  {"gazebo_models/mpl_right_forearm/model.sdf", false, "malformed XML",
    "COMMON-004: an XML declaration in the middle of the document is not well-formed XML"},
   {"gazebo_models/pioneer2dx/model-1_2.sdf", false, "<sdf> root element",
    "COMMON-006: a Gazebo-era file with a <gazebo> root, not <sdf>"},
@@ -298,7 +298,7 @@ constexpr Expectation kSdf[] = {
   {"sdformat/test/sdf/inertial_invalid.sdf", true, "",
    "COMMON-041: a negative mass is a warning and the inertia is replaced, as Drake's own check "
    "does"},
-  {"sdformat/test/sdf/invalid_xml_syntax.sdf", false, "Failed to parse XML",
+  {"sdformat/test/sdf/invalid_xml_syntax.sdf", false, "malformed XML",
    "COMMON-004: mismatched tags, not well-formed XML"},
   {"sdformat/test/sdf/joint_axis_xyz_normalization.sdf", false, "must not be zero",
    "SDF-012: a zero <xyz> axis cannot be normalised"},
@@ -373,7 +373,7 @@ constexpr Expectation kSdf[] = {
    "SDF-003: the pose of a top-level model cannot be relative_to anything"},
   {"sdformat/test/sdf/model_without_links.sdf", false, "at least one link",
    "SDF-005: a model without links has no canonical link"},
-  {"sdformat/test/sdf/nested_multiple_elements_error_world.sdf", false, "Failed to parse XML",
+  {"sdformat/test/sdf/nested_multiple_elements_error_world.sdf", false, "malformed XML",
    "COMMON-004: a stray </sdf> after the root element, not well-formed XML"},
   {"sdformat/test/sdf/nested_without_links_invalid.sdf", false, "at least one link",
    "SDF-005: nested model without links has no canonical link"},

@@ -26,7 +26,7 @@ constexpr Expectation kUrdf[] = {
    "URDF-013: a revolute joint without <limit> is unbounded in Drake"},
   {"drake/multibody/parsing/test/links_with_visuals_and_collisions.urdf", true, "",
    "URDF-004: an <inertial> without <inertia> has zero moments in Drake"},
-  {"drake/multibody/parsing/test/sdf_parser_test/bad.urdf", false, "Failed to parse XML",
+  {"drake/multibody/parsing/test/sdf_parser_test/bad.urdf", false, "malformed XML",
    "COMMON-004: the file is not XML at all"},
   {"drake/multibody/parsing/test/sdf_parser_test/interface_api_test/arm.urdf", true, "",
    "URDF-013: revolute joints without <limit> are unbounded in Drake"},

@@ -361,7 +361,7 @@ TEST(MjcfActuator, MotorDefaultsNamesAndRotorInertia) {
   // asymmetric ctrlrange: the larger bound, then min with forcerange (W)
   EXPECT_EQ(a[1]["name"], "named");
   EXPECT_EQ(a[1]["effort_limit"], 1.5);
-  EXPECT_EQ(m.Count(DiagKind::ActuatorWarning, "Asymmetrical"), 1u) << m.Messages();
+  EXPECT_EQ(m.Count(DiagKind::ActuatorWarning, "asymmetric 'ctrlrange'"), 1u) << m.Messages();
   // the position comes last: motor2, kp 1 kd 0 (MuJoCo's defaults)
   EXPECT_EQ(a[2]["name"], "motor2");
   EXPECT_EQ(a[2]["kp"], 1);
@@ -425,12 +425,12 @@ TEST(MjcfActuator, UnsupportedKindsAndTransmissions) {
   ASSERT_TRUE(m.ok()) << m.Messages();
   EXPECT_EQ(m.Count(DiagKind::UnsupportedElement, "damper"), 1u) << m.Messages();
   EXPECT_EQ(m.Count(DiagKind::UnsupportedElement, "muscle"), 1u) << m.Messages();
-  EXPECT_EQ(m.Count(DiagKind::UnsupportedAttribute, "'tendon' transmission"), 1u)
+  EXPECT_EQ(m.Count(DiagKind::UnsupportedAttribute, "acts through 'tendon'"), 1u)
       << m.Messages();
   EXPECT_EQ(m.Count(DiagKind::UnsupportedAttribute, "'group'"), 1u) << m.Messages();
   // BEYOND-008: dampratio is supported (kd from the inertia at qpos0)
   EXPECT_EQ(m.Count(DiagKind::UnsupportedAttribute, "'dampratio'"), 0u) << m.Messages();
-  EXPECT_EQ(m.Count(DiagKind::ActuatorWarning, "Expected either 1 value or 6"), 1u)
+  EXPECT_EQ(m.Count(DiagKind::ActuatorWarning, "attribute 'gear' has 1 or 6 values"), 1u)
       << m.Messages();
   // motor, motor, motor (gear "1 2": first value), position
   EXPECT_EQ(m.module().actuators.size(), 4u);
@@ -446,8 +446,8 @@ TEST(MjcfActuator, UnknownJointAndAutolimitsOff) {
     Mjcf m(Doc(R"(<compiler autolimits="false"/>
  <actuator><motor joint="ja" ctrlrange="-1 1"/></actuator>)"));
     EXPECT_FALSE(m.ok());
-    EXPECT_EQ(m.Count(DiagKind::BadValue, "'ctrlrange' attribute was specified but "
-                                          "'autolimits' is disabled (give 'ctrllimited'"),
+    EXPECT_EQ(m.Count(DiagKind::BadValue, "attribute 'ctrlrange' sets no limit while <compiler "
+                                          "autolimits> is false; give 'ctrllimited'"),
               1u)
         << m.Messages();
     // with autolimits off, the ranged joints of Doc() are errors too
@@ -503,7 +503,7 @@ TEST(MjcfContact, PairWarnings) {
   <pair geom1="ga" geom2="nope"/>
  </contact></mujoco>)");
   ASSERT_TRUE(m.ok()) << m.Messages();
-  EXPECT_EQ(m.Count(DiagKind::UnsupportedValue, "adjacent"), 1u) << m.Messages();
+  EXPECT_EQ(m.Count(DiagKind::UnsupportedValue, "joined by a joint"), 1u) << m.Messages();
   EXPECT_EQ(m.Count(DiagKind::UnsupportedValue, "collision role"), 1u) << m.Messages();
   EXPECT_EQ(m.Count(DiagKind::UnsupportedAttribute, "condim"), 1u) << m.Messages();
   EXPECT_EQ(m.Count(DiagKind::IgnoredReference, "nope"), 1u) << m.Messages();

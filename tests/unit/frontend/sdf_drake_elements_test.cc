@@ -550,7 +550,7 @@ TEST(SdfJointDrakeChildrenTest, ActuatorParameterErrors) {  // EXT-012..014
                                                   "must be non-negative"));
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "<drake:gear_ratio> must hold a number"));
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::MissingAttribute,
-                              "<drake:controller_gains>: Unable to find the 'd' attribute"));
+                              "<drake:controller_gains> needs attribute 'd'"));
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "proportional gain 'p'"));
   const ir::Actuator& a = l.module.actuators[0];
   EXPECT_EQ(a.rotor_inertia, 0);
@@ -610,13 +610,13 @@ TEST(SdfJointDrakeChildrenTest, MimicErrors) {  // EXT-010
   };
   const Case cases[] = {
       {"<drake:mimic multiplier='1' offset='0'/>", DiagKind::MissingAttribute,
-       "missing the required 'joint' attribute"},
+       "needs attribute 'joint'"},
       {"<drake:mimic joint='j2' offset='0'/>", DiagKind::MissingAttribute,
-       "missing the required 'multiplier' attribute"},
+       "needs attribute 'multiplier'"},
       {"<drake:mimic joint='j2' multiplier='1'/>", DiagKind::MissingAttribute,
-       "missing the required 'offset' attribute"},
+       "needs attribute 'offset'"},
       {"<drake:mimic joint='j1' multiplier='1' offset='0'/>", DiagKind::BadValue,
-       "Joints cannot mimic themselves"},
+       "a joint cannot follow itself"},
   };
   for (const Case& c : cases) {
     LoweredSdf l;
@@ -707,8 +707,8 @@ TEST(SdfDeformableTest, SphereNeedsAPositiveResolutionHint) {  // EXT-070
 
   LoweredSdf missing;
   EXPECT_FALSE(missing.Read(DeformableModel(sphere(""))));
-  EXPECT_TRUE(missing.HasDiagnostic(DiagKind::MissingElement, "positive "
-                                                              "<drake:mesh_resolution_hint>"))
+  EXPECT_TRUE(missing.HasDiagnostic(DiagKind::MissingElement,
+                                    "<sphere> needs a <drake:mesh_resolution_hint>"))
       << missing.Messages();
   EXPECT_FALSE(missing.Body("body")->deformable.has_value());
 }
@@ -722,31 +722,31 @@ TEST(SdfDeformableTest, PropertyAndLinkErrors) {  // EXT-070
   const std::vector<Case> cases = {
       {coll + "<drake:deformable_properties><drake:youngs_modulus>0</drake:youngs_modulus>"
               "</drake:deformable_properties>",
-       "", "Young's modulus must be positive"},
+       "", "<drake:youngs_modulus> must be positive"},
       {coll + "<drake:deformable_properties><drake:poissons_ratio>0.5</drake:poissons_ratio>"
               "</drake:deformable_properties>",
-       "", "Poisson's ratio must be in the range (-1, 0.5)"},
+       "", "<drake:poissons_ratio> must lie in (-1, 0.5)"},
       {coll + "<drake:deformable_properties><drake:mass_damping>-1</drake:mass_damping>"
               "</drake:deformable_properties>",
-       "", "Mass damping must be non-negative"},
+       "", "<drake:mass_damping> must be non-negative"},
       {coll + "<drake:deformable_properties><drake:stiffness_damping>-1"
               "</drake:stiffness_damping></drake:deformable_properties>",
-       "", "Stiffness damping must be non-negative"},
+       "", "<drake:stiffness_damping> must be non-negative"},
       {coll + "<drake:deformable_properties><drake:mass_density>-1</drake:mass_density>"
               "</drake:deformable_properties>",
-       "", "Mass density must be positive"},
+       "", "<drake:mass_density> must be positive"},
       {coll + "<drake:deformable_properties><drake:material_model>jelly</drake:material_model>"
               "</drake:deformable_properties>",
-       "", "Invalid <drake:material_model> value 'jelly'"},
-      {props, "", "exactly one <collision>"},
-      {coll + coll + props, "", "exactly one <collision>"},
+       "", "<drake:material_model> 'jelly' is none of"},
+      {props, "", "has 0 <collision> elements; a deformable link has exactly one"},
+      {coll + coll + props, "", "has 2 <collision> elements"},
       {coll + "<visual name='v1'/><visual name='v2'/>" + props, "", "at most one <visual>"},
       {"<collision name='c'><geometry><box><size>1 1 1</size></box></geometry></collision>" +
            props,
-       "", "must be either a <mesh>"},
+       "", "it must be a <sphere> or a"},
       {"<collision name='c'><geometry><mesh><uri>x.obj</uri></mesh></geometry></collision>" +
            props,
-       "", "must name a .vtk file"},
+       "", "it must name a .vtk file"},
       {coll + "<inertial><mass>1</mass></inertial>" + props, "", "must not have an <inertial>"},
       {coll + props,
        "<joint name='j' type='fixed'><parent>rigid</parent><child>body</child></joint>",
@@ -756,11 +756,11 @@ TEST(SdfDeformableTest, PropertyAndLinkErrors) {  // EXT-070
       {coll + props +
            "<drake:wall_boundary_condition><drake:point_on_plane>1 2 3</drake:point_on_plane>"
            "</drake:wall_boundary_condition>",
-       "", "Unable to find the <drake:outward_normal> child tag"},
+       "", "<drake:wall_boundary_condition> needs a <drake:outward_normal>"},
       {coll + props +
            "<drake:wall_boundary_condition><drake:point_on_plane>1 2 3</drake:point_on_plane>"
            "<drake:outward_normal>0 0 0</drake:outward_normal></drake:wall_boundary_condition>",
-       "", "Outward normal vector cannot be zero"},
+       "", "<drake:outward_normal> must not be zero"},
   };
   for (const Case& c : cases) {
     LoweredSdf l;
@@ -792,7 +792,7 @@ TEST(SdfDeformableTest, MeshWithResolutionHintWarns) {  // EXT-070
       <drake:proximity_properties><drake:mesh_resolution_hint>0.1</drake:mesh_resolution_hint></drake:proximity_properties>
     </collision><drake:deformable_properties/>)")))
       << l.Messages();
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedElement, "the hint is ignored"));
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedElement, "<mesh> is ignored: the mesh is used as given"));
   EXPECT_FALSE(l.Body("body")->deformable->resolution_hint.has_value());
 }
 

@@ -61,7 +61,7 @@ TEST(UrdfTransmissionTest, GripperAndNamingPartsWarnHardwareInterfacesAreSilent)
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedAttribute, "'name' of <transmission>"));
   for (const char* tag : {"leftActuator", "rightActuator", "flexJoint", "rollJoint", "gap_joint",
                           "passive_joint", "use_simulated_gripper_joint"}) {
-    EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedElement, std::string("'") + tag + "'"))
+    EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedElement, std::string("<") + tag + ">"))
         << tag << "\n" << l.Messages();
   }
   // the name and the seven gripper tags; nothing for hardwareInterface or gazebo

@@ -143,7 +143,7 @@ TEST_F(XmlDocumentTest, MalformedXmlReportsLineAndColumn) {  // COMMON-004
   EXPECT_EQ(d.kind, DiagKind::XmlSyntax);
   EXPECT_EQ(d.loc.line, 3u);
   EXPECT_GT(d.loc.column, 0u);
-  EXPECT_NE(d.message.find("Failed to parse XML"), std::string::npos);
+  EXPECT_NE(d.message.find("malformed XML"), std::string::npos);
 }
 
 TEST_F(XmlDocumentTest, EmptyAndWhitespaceOnlyFilesAreErrors) {  // COMMON-004
