@@ -14,6 +14,9 @@
 // MuJoCo's pairs still collide), and condim/friction. Unknown geoms W.
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cstdint>
+#include <optional>
 #include <unordered_set>
 
 #include "frontend/mjcf/mjcf_elements.h"
@@ -50,16 +53,31 @@ void LowerExclude(ElementsLowering& L, const Element& e, std::unordered_set<std:
   L.module().Add(std::move(g));
 }
 
-bool Adjacent(ElementsLowering& L, BodyId a, BodyId b) {
-  for (const ir::Joint& j : L.module().joints) {
-    if (j.model != L.r.model) continue;
-    std::optional<BodyId> p = L.BodyOf(j.parent), c = L.BodyOf(j.child);
-    if (p && c && ((*p == a && *c == b) || (*p == b && *c == a))) return true;
+/// The body pairs a joint of the model connects, gathered on first use:
+/// looking through every joint for each <pair> cost pairs x joints.
+class JointedBodies {
+ public:
+  bool Contains(ElementsLowering& L, BodyId a, BodyId b) {
+    if (!pairs_) {
+      pairs_.emplace();
+      for (const ir::Joint& j : L.module().joints) {
+        if (j.model != L.r.model) continue;
+        std::optional<BodyId> p = L.BodyOf(j.parent), c = L.BodyOf(j.child);
+        if (p && c) pairs_->insert(Key(*p, *c));
+      }
+    }
+    return pairs_->count(Key(a, b)) != 0;
   }
-  return false;
-}
 
-void LowerPair(ElementsLowering& L, const Element& e) {
+ private:
+  static uint64_t Key(BodyId a, BodyId b) {
+    const auto [lo, hi] = std::minmax(a.value, b.value);
+    return (uint64_t{lo} << 32) | hi;
+  }
+  std::optional<std::unordered_set<uint64_t>> pairs_;
+};
+
+void LowerPair(ElementsLowering& L, const Element& e, JointedBodies& jointed) {
   const xml::XmlElement& x = e.xml();
   L.r.attrs.WarnUnknownAttributes(x, {"name", "class", "geom1", "geom2", "condim", "friction",
                                       "solref", "solreffriction", "solimp", "gap", "margin"});
@@ -90,7 +108,7 @@ void LowerPair(ElementsLowering& L, const Element& e) {
     return;
   }
   std::optional<BodyId> body1 = L.BodyOf(geom1.body), body2 = L.BodyOf(geom2.body);
-  if (body1 && body2 && Adjacent(L, *body1, *body2)) {
+  if (body1 && body2 && jointed.Contains(L, *body1, *body2)) {
     L.diags().Report(
         DiagKind::UnsupportedValue, e.loc(),
         fmt::format("<pair> of geoms '{}' and '{}' has no effect: their bodies are joined by "
@@ -103,6 +121,7 @@ void LowerPair(ElementsLowering& L, const Element& e) {
 
 void LowerContact(ElementsLowering& L, const xml::XmlElement& section) {
   std::unordered_set<std::string> names;
+  JointedBodies jointed;
   for (const ir::CollisionFilterGroup& g : L.module().filter_groups) {
     if (g.model == L.r.model) names.insert(std::string(L.module().Text(g.name)));
   }
@@ -111,7 +130,7 @@ void LowerContact(ElementsLowering& L, const xml::XmlElement& section) {
     if (tag == "exclude") {
       LowerExclude(L, L.r.Resolve(child, "exclude", ""), names);
     } else if (tag == "pair") {
-      LowerPair(L, L.r.Resolve(child, "pair", ""));
+      LowerPair(L, L.r.Resolve(child, "pair", ""), jointed);
     } else {
       L.WarnOnce(fmt::format("contact-unknown/{}", tag), DiagKind::UnknownElement,
                  child.GetLoc(), fmt::format("unknown element <{}> in <contact> is ignored", tag));
