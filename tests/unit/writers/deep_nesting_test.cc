@@ -14,13 +14,15 @@
 #include <sstream>
 #include <string>
 
-#include "backend/writers/writer.h"
 #include "tests/unit/compile_test_util.h"
+#include "tests/unit/writers/written.h"
 
 namespace mdlc {
 namespace {
 
 using testing::CompiledText;
+using testing::Count;
+using testing::Written;
 
 std::string ChainUrdf(int n) {
   std::string out = "<robot name='chain'>\n  <link name='l0'/>\n";
@@ -40,22 +42,18 @@ TEST(DeepNesting, A10000LinkChainWritesAsNestedMjcfAndReadsBack) {
   CompiledText chain("chain.urdf", ChainUrdf(kLinks));
   ASSERT_TRUE(chain.ok()) << chain.Messages();
   DiagnosticEngine diags;
-  writers::WriteOptions options;
-  options.to = Format::Mjcf;
-  const std::optional<std::string> text =
-      writers::Write(chain.model(), chain.module(), options, diags);
-  ASSERT_TRUE(text.has_value());
+  const std::string text = Written(chain, Format::Mjcf, diags);
   EXPECT_TRUE(diags.diagnostics().empty());
   // every line indented 32 levels at most: the size grows with the chain
   size_t widest = 0;
-  std::istringstream lines(*text);
+  std::istringstream lines(text);
   for (std::string line; std::getline(lines, line);) {
     widest = std::max(widest, line.find_first_not_of(' '));
   }
   EXPECT_EQ(widest, 2u * 32);
-  EXPECT_LT(text->size(), size_t{400} * kLinks);
+  EXPECT_LT(text.size(), size_t{400} * kLinks);
 
-  CompiledText reread("chain.xml", *text);
+  CompiledText reread("chain.xml", text);
   ASSERT_TRUE(reread.ok()) << reread.Messages();
   const nlohmann::json bodies = reread.Json()["bodies"];
   EXPECT_EQ(bodies.size(), chain.Json()["bodies"].size());
@@ -89,20 +87,14 @@ TEST(DeepNesting, Models1000DeepWriteAsNestedSdformatAndReadBack) {
   CompiledText nested("nested.sdf", NestedSdf(kDepth));
   ASSERT_TRUE(nested.ok()) << nested.Messages();
   DiagnosticEngine diags;
-  writers::WriteOptions options;
-  options.to = Format::Sdf;
-  const std::optional<std::string> text =
-      writers::Write(nested.model(), nested.module(), options, diags);
-  ASSERT_TRUE(text.has_value());
+  const std::string text = Written(nested, Format::Sdf, diags);
   EXPECT_TRUE(diags.diagnostics().empty());
   // a model a level, each naming its own link and its child model's
-  size_t models = 0;
-  for (size_t at = 0; (at = text->find("<model ", at)) != std::string::npos; ++at) ++models;
-  EXPECT_EQ(models, size_t{kDepth});
+  EXPECT_EQ(Count(text, "<model "), size_t{kDepth});
   // linear: local names, and indentation capped at 32 levels
-  EXPECT_LT(text->size(), size_t{2500} * kDepth);
+  EXPECT_LT(text.size(), size_t{2500} * kDepth);
 
-  CompiledText reread("nested.sdf", *text);
+  CompiledText reread("nested.sdf", text);
   ASSERT_TRUE(reread.ok()) << reread.Messages();
   const nlohmann::json before = nested.Json(), after = reread.Json();
   EXPECT_EQ(after["model_instances"], before["model_instances"]);

@@ -15,11 +15,14 @@
 #include "backend/writers/filter_declarations.h"
 #include "backend/writers/writer.h"
 #include "tests/unit/compile_test_util.h"
+#include "tests/unit/writers/written.h"
 
 namespace mdlc {
 namespace {
 
 using testing::CompiledText;
+using testing::Count;
+using testing::Written;
 
 constexpr const char* kBox =
     "<collision><geometry><box size='0.1 0.1 0.1'/></geometry></collision>";
@@ -50,21 +53,6 @@ std::string WeldedGroupUrdf(int n) {
   out += "  <drake:collision_filter_group name='tool'><drake:member link='hand'/>"
          "</drake:collision_filter_group>\n";
   return out + "</robot>\n";
-}
-
-/// `model` written in `to`, with the writer's diagnostics.
-std::string Written(const CompiledText& model, Format to, DiagnosticEngine& diags) {
-  writers::WriteOptions options;
-  options.to = to;
-  std::optional<std::string> text = writers::Write(model.model(), model.module(), options, diags);
-  EXPECT_TRUE(text.has_value());
-  return text.value_or("");
-}
-
-size_t Count(const std::string& text, std::string_view what) {
-  size_t n = 0;
-  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
 }
 
 TEST(WrittenFilterGroups, AWeldedGroupIsOneGroupAndReadsBackTheSamePairs) {

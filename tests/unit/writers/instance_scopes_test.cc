@@ -9,13 +9,14 @@
 #include <string>
 #include <vector>
 
-#include "backend/writers/writer.h"
 #include "tests/unit/compile_test_util.h"
+#include "tests/unit/writers/written.h"
 
 namespace mdlc {
 namespace {
 
 using testing::CompiledText;
+using testing::Written;
 
 struct Case {
   std::string robot;                 // the URDF robot's name
@@ -33,11 +34,7 @@ TEST_P(InstanceScopes, ARobotNamedWithScopesWritesAndReadsBack) {
                                           "iyz='0'/></inertial></link></robot>");
   ASSERT_TRUE(original.ok()) << original.Messages();
   DiagnosticEngine diags;
-  writers::WriteOptions options;
-  options.to = Format::Sdf;
-  const std::optional<std::string> text =
-      writers::Write(original.model(), original.module(), options, diags);
-  ASSERT_TRUE(text.has_value());
+  const std::string text = Written(original, Format::Sdf, diags);
   std::vector<std::string> messages;
   for (const Diagnostic& d : diags.diagnostics()) {
     EXPECT_EQ(d.kind, DiagKind::Lossy) << d.message;
@@ -46,8 +43,8 @@ TEST_P(InstanceScopes, ARobotNamedWithScopesWritesAndReadsBack) {
   }
   EXPECT_EQ(messages, c.warning);
 
-  CompiledText reread("robot.sdf", *text);
-  ASSERT_TRUE(reread.ok()) << reread.Messages() << "\n" << *text;
+  CompiledText reread("robot.sdf", text);
+  ASSERT_TRUE(reread.ok()) << reread.Messages() << "\n" << text;
   const nlohmann::json bodies = reread.Json()["bodies"];
   ASSERT_EQ(bodies.size(), 1u);
   EXPECT_EQ(bodies[0]["name"], "l");
