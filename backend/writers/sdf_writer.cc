@@ -282,8 +282,9 @@ void SdfWriter::LinkFrameRefs() {
 
 /// Model poses: a parent is made before the models nested in it.
 void SdfWriter::ModelPoses() {
-  for (ModelNode& node : models_) {
-    node.X_WM = node.depth > 1 ? models_[node.parent].X_WM : Transform{};
+  for (ScopeId scope = 0; scope < models_.size(); ++scope) {
+    ModelNode& node = models_[scope];
+    node.X_WM = ParentModelPose(scope);
     if (node.model_frame) {
       const backend::PlantFrame& frame = plant_.frames[*node.model_frame];
       node.X_WM = X_WB_[frame.body.index()] * frame.X_BF;
