@@ -121,12 +121,6 @@ class MjcfWriter : FlatWriterBase {
  private:
   // -- names (FlatWriterBase has the entities' own)
 
-  /// A name unique among the written elements of one kind (geoms, sites):
-  /// MJCF gives each kind one namespace for the whole model.
-  static std::string Unique(UniqueNames& taken, const std::string& name) {
-    return taken.TakeUnique(name);
-  }
-
   // -- body frames: X_BL per body
 
   /// How the joint is written: hinge, slide, ball, free, or nothing.
@@ -191,7 +185,7 @@ class MjcfWriter : FlatWriterBase {
                                     BodyName(owner)));
           break;
         case MjcfBodyLayout::Role::Fused:
-          fused_site_names_[b] = Unique(site_names_, BodyName(BodyId(b)));
+          fused_site_names_[b] = site_names_.TakeUnique(BodyName(BodyId(b)));
           diags_
               .Report(DiagKind::FusedBody, BodyLoc(BodyId(b)),
                       fmt::format("body '{}' is fused into body '{}' (--fuse-fixed): its fixed "
@@ -559,7 +553,7 @@ class MjcfWriter : FlatWriterBase {
     }
     out_.Open("geom");
     std::string name;
-    if (!g.unnamed) out_.Attr("name", name = Unique(geom_names_, Named(g.model, g.name)));
+    if (!g.unnamed) out_.Attr("name", name = geom_names_.TakeUnique(Named(g.model, g.name)));
     std::visit(ir::Overloaded{
                    [&](const ir::Box& s) {
                      out_.Attr("type", "box").Attr("size", Eigen::Vector3d(s.size / 2));
@@ -668,7 +662,7 @@ class MjcfWriter : FlatWriterBase {
     for (uint32_t f : Owned(frames_by_body_, body)) {
       const backend::PlantFrame& frame = plant_.frames[f];
       if (frame.unnamed) continue;
-      const std::string name = Unique(site_names_, Named(frame.model, frame.name));
+      const std::string name = site_names_.TakeUnique(Named(frame.model, frame.name));
       out_.Open("site").Attr("name", name);
       Pose(InWrittenLink(frame.body, frame.X_BF));
       OriginalName(frame.model, frame.name, name);
@@ -694,7 +688,7 @@ class MjcfWriter : FlatWriterBase {
       const Eigen::Matrix3d flip = Eigen::Vector3d(1, -1, -1).asDiagonal();
       out_.Open("camera");
       std::string name;
-      if (!c.unnamed) out_.Attr("name", name = Unique(camera_names_, Named(c.model, c.name)));
+      if (!c.unnamed) out_.Attr("name", name = camera_names_.TakeUnique(Named(c.model, c.name)));
       Pose(InWrittenLink(c.body, c.X_BC * Transform::FromRotation(flip)));
       out_.Attr("fovy", c.fov_y * 180.0 / M_PI);
       out_.Attr("resolution", fmt::format("{} {}", c.width, c.height));
@@ -762,8 +756,8 @@ class MjcfWriter : FlatWriterBase {
   /// weld name both points exactly (the body forms complete one at qpos0).
   std::pair<std::string, std::string> ConstraintSites(size_t i, BodyId A, const Transform& X_AP,
                                                       BodyId B, const Transform& X_BQ) {
-    const std::string a = Unique(site_names_, fmt::format("constraint{}_P", i));
-    const std::string b = Unique(site_names_, fmt::format("constraint{}_Q", i));
+    const std::string a = site_names_.TakeUnique(fmt::format("constraint{}_P", i));
+    const std::string b = site_names_.TakeUnique(fmt::format("constraint{}_Q", i));
     extra_sites_[Owner(A).index()].emplace_back(a, InWrittenLink(A, X_AP));
     extra_sites_[Owner(B).index()].emplace_back(b, InWrittenLink(B, X_BQ));
     return {a, b};
@@ -966,6 +960,7 @@ class MjcfWriter : FlatWriterBase {
   std::vector<Transform> X_BL_;
   std::map<size_t, std::vector<BodyId>> children_;
   std::map<size_t, std::string> mesh_names_;
+  // MJCF gives each kind of element one namespace for the whole model
   UniqueNames geom_names_, site_names_, camera_names_;
   std::map<size_t, std::vector<std::pair<std::string, Transform>>> extra_sites_;
   std::vector<std::pair<std::string, std::string>> constraint_sites_;

@@ -51,8 +51,8 @@ void SdfWriter::WriteGeometries(BodyId body) {
 }
 
 std::string SdfWriter::Unique(UniqueNames& names, const std::string& name) {
-  if (names.Take(name.empty() ? "geometry" : name)) return name.empty() ? "geometry" : name;
-  return names.TakeSuffixed(name);
+  const std::string first = name.empty() ? "geometry" : name;
+  return names.Take(first) ? first : names.TakeSuffixed(name);
 }
 
 void SdfWriter::WriteGeometry(const backend::SceneGeometry& g, Loc loc, UniqueNames& visuals,
