@@ -82,6 +82,41 @@ TEST_F(InspectTest, TreeOfADeepChainStaysReadable) {
   EXPECT_LT(widest, 200u);
 }
 
+// A model nested N deep, each level's link jointed to the one below: each
+// instance's tree stops where the next instance's begins, so every body is
+// described once and the lines grow with N, not N^2.
+TEST_F(InspectTest, TreeOfNestedInstancesDescribesEachBodyOnce) {
+  constexpr int kDepth = 60;
+  std::string inner;
+  for (int i = kDepth; i-- > 0;) {
+    const std::string below =
+        i + 1 < kDepth ? fmt::format("<joint name='j{}' type='revolute'><parent>link</parent>"
+                                     "<child>m{}::link</child><axis><xyz>0 0 1</xyz></axis>"
+                                     "</joint>",
+                                     i + 1, i + 1)
+                       : "";
+    inner = fmt::format("<model name='m{}'><link name='link'/>{}{}</model>", i, below, inner);
+  }
+  Outcome r = Mdlc("tree " + Write("nested.sdf", "<sdf version='1.9'>" + inner + "</sdf>").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  size_t lines = 0, described = 0, handed_on = 0;
+  std::istringstream text(r.out);
+  for (std::string line; std::getline(text, line);) {
+    ++lines;
+    if (line.find(" <- ") != std::string::npos) ++described;
+    if (line.find("└─ link of model instance '") != std::string::npos) ++handed_on;
+  }
+  EXPECT_EQ(described, static_cast<size_t>(kDepth));
+  EXPECT_EQ(handed_on, static_cast<size_t>(kDepth - 1));
+  // per instance: heading, its link, the next instance's link, its __model__ frame
+  EXPECT_EQ(lines, 4u * kDepth - 1);
+  EXPECT_NE(r.out.find("model instance 'm0::m1': 1 body, 1 dof\n"
+                       "  link <- revolute joint 'j1', axis [0 0 1] (on m0::link)\n"
+                       "  └─ link of model instance 'm0::m1::m2'\n"),
+            std::string::npos)
+      << r.out.substr(0, 600);
+}
+
 TEST_F(InspectTest, StatsAreThePlantsMassProperties) {
   Outcome stats = Mdlc("stats --json " + kArm);
   Outcome plant = Mdlc("compile --emit=plant-json " + kArm);

@@ -86,7 +86,11 @@ class TreePrinter {
       for (uint32_t i : frames_by_model_[m]) {
         const auto& f = plant_.frames[i];
         if (f.unnamed) continue;
-        out += fmt::format("  frame '{}' on {}\n", f.name, plant_.ScopedName(plant_.body(f.body)));
+        // a body of the frame's own instance by its local name (names that
+        // repeat the instance's full name grow with its nesting depth)
+        const auto& body = plant_.body(f.body);
+        out += fmt::format("  frame '{}' on {}\n", f.name,
+                           body.model.index() == m ? body.name : plant_.ScopedName(body));
       }
     }
     return out;
@@ -132,10 +136,22 @@ class TreePrinter {
     return fmt::format("{} <- {}", body.name, joint);
   }
 
+  /// A body of another instance, where this instance's tree reaches it: one
+  /// line naming it; its own instance's tree (printed on its own) goes on.
+  std::string DescribeElsewhere(BodyId id) const {
+    const auto& body = plant_.body(id);
+    return fmt::format("{} of model instance '{}'", body.name,
+                       plant_.model_instances[body.model.index()]);
+  }
+
   // depth-first, without recursion (a chain may be thousands deep); past
-  // kMaxDrawnDepth levels the branch lines give way to the depth in numbers
+  // kMaxDrawnDepth levels the branch lines give way to the depth in numbers.
+  // Only `root`'s own instance is expanded: each instance's tree would
+  // otherwise repeat every instance nested below it, and a model nested N
+  // deep would print N^2/2 lines.
   static constexpr size_t kMaxDrawnDepth = 32;
   void Children(BodyId root, const std::string& indent, std::string& out) {
+    const ModelId instance = plant_.body(root).model;
     struct Item {
       BodyId body;
       std::string prefix;  // the drawn branches above this body
@@ -153,12 +169,14 @@ class TreePrinter {
     while (!stack.empty()) {
       Item item = std::move(stack.back());
       stack.pop_back();
+      const bool elsewhere = plant_.body(item.body).model != instance;
+      const std::string line = elsewhere ? DescribeElsewhere(item.body) : Describe(item.body);
       if (item.depth <= kMaxDrawnDepth) {
-        out += fmt::format("{}{}{}\n", item.prefix, item.last ? "└─ " : "├─ ",
-                           Describe(item.body));
+        out += fmt::format("{}{}{}\n", item.prefix, item.last ? "└─ " : "├─ ", line);
       } else {
-        out += fmt::format("{}[depth {}] {}\n", item.prefix, item.depth, Describe(item.body));
+        out += fmt::format("{}[depth {}] {}\n", item.prefix, item.depth, line);
       }
+      if (elsewhere) continue;
       const std::string prefix = item.depth < kMaxDrawnDepth
                                      ? item.prefix + (item.last ? "   " : "│  ")
                                      : item.prefix;
