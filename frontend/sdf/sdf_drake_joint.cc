@@ -11,6 +11,7 @@
 // joint-frame semantics would place F wrongly.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -250,15 +251,17 @@ void SdfReader::ReadDrakeJoint(const xml::XmlElement& e, ModelScope& s) {
   joint.limits = ir::JointLimits::Unbounded(nv);
   joint.damping.assign(nv, 0.0);
   // a drake:joint shares the joint namespace of its model (COMMON-023)
-  for (const ir::Joint& other : module().joints) {
-    if (other.model == s.model && other.name == joint.name) {
-      diags()
-          .Report(DiagKind::DuplicateName, name_attr.loc,
-                  fmt::format("the joint name '{}' is already used by a joint of this model",
-                              name))
-          .Note(other.loc, "first defined here");
-      return;
-    }
+  if (JointNameTaken(s.model, joint.name)) {
+    // the first joint of the name, for the note: a scan, on an error only
+    const auto& joints = module().joints;
+    const auto first = std::find_if(joints.begin(), joints.end(), [&](const ir::Joint& other) {
+      return other.model == s.model && other.name == joint.name;
+    });
+    diags()
+        .Report(DiagKind::DuplicateName, name_attr.loc,
+                fmt::format("the joint name '{}' is already used by a joint of this model", name))
+        .Note(first->loc, "first defined here");
+    return;
   }
   const bool ok = joint_type == ir::JointType::Planar
                       ? ReadPlanar(*this, e, r, name, joint)

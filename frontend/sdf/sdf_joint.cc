@@ -295,6 +295,7 @@ void SdfReader::ReadJoint(const xml::XmlElement& e, ModelScope& s) {
     a.joint = {final_name, e.GetLoc(), joint_id};
     a.effort_limit = values[0].effort;
     actuator = module().Add(std::move(a));
+    joint_actuators_.emplace(joint_id.value, *actuator);
   } else if ((j.type == ir::JointType::Universal &&
               (values[0].effort != 0 || values[1].effort != 0) &&
               (values[0].has_limit || values[1].has_limit)) ||

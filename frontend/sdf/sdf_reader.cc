@@ -141,12 +141,28 @@ FrameNodeId SdfReader::AddNode(const ModelScope& s, ir::FrameNode node) {
 }
 
 void SdfReader::RenameJoint(JointId joint, Symbol name) {
-  module()[joint].name = name;
+  ir::Joint& j = module()[joint];
+  if (joint.index() < joint_names_counted_) {
+    --joint_name_counts_[ScopedKey{j.model.value, j.name.value}];
+    ++joint_name_counts_[ScopedKey{j.model.value, name.value}];
+  }
+  j.name = name;
   // a joint renamed after it was read (a nested model read later took its
   // name) takes along the actuator made for it and named after it
-  for (ir::Actuator& a : module().actuators) {
-    if (a.unnamed && a.joint.id == joint) a.name = a.joint.name = name;
+  if (auto it = joint_actuators_.find(joint.value); it != joint_actuators_.end()) {
+    ir::Actuator& a = module()[it->second];
+    a.name = a.joint.name = name;
   }
+}
+
+bool SdfReader::JointNameTaken(ModelId model, Symbol name) {
+  const auto& joints = module().joints;
+  for (; joint_names_counted_ < joints.size(); ++joint_names_counted_) {
+    const ir::Joint& j = joints[joint_names_counted_];
+    ++joint_name_counts_[ScopedKey{j.model.value, j.name.value}];
+  }
+  auto it = joint_name_counts_.find(ScopedKey{model.value, name.value});
+  return it != joint_name_counts_.end() && it->second > 0;
 }
 
 FrameNodeId SdfReader::AddAnchor(const ModelScope& s, const xml::XmlElement& pose_element,

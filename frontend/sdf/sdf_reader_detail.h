@@ -109,6 +109,10 @@ class SdfReader {
   FrameNodeId AddNode(const ModelScope& s, ir::FrameNode node);
   /// Renames a joint AddNode renamed, and the actuator made for it.
   void RenameJoint(JointId joint, Symbol name);
+  /// Whether a joint of `model` is named `name` (a <drake:joint> shares the
+  /// joint namespace of its model, COMMON-023). Counts names as joints come,
+  /// so N such joints cost N lookups, not N^2 comparisons.
+  bool JointNameTaken(ModelId model, Symbol name);
   /// Adds an unnamed anchor node: the pose of `pose_element` relative to its
   /// relative_to, defaulting to `link_name` (visuals, collisions, sensors).
   /// It is attached to its link's node, `link_node`, with no name lookup.
@@ -247,6 +251,13 @@ class SdfReader {
   // the link being read's geometry names per role, for uniqueness checks in
   // sdf_geometry.cc (cleared for each link: sdf_link.cc)
   absl::flat_hash_map<ScopedKey, Loc> geometry_names_;
+  // how many joints of a model hold a name: filled by JointNameTaken up to
+  // the joints it has seen, kept by RenameJoint
+  absl::flat_hash_map<ScopedKey, uint32_t> joint_name_counts_;
+  size_t joint_names_counted_ = 0;
+  // the actuator made for a joint and named after it (sdf_joint.cc), which a
+  // rename of the joint takes along
+  absl::flat_hash_map<uint32_t, ActuatorId> joint_actuators_;
   std::vector<std::shared_ptr<const xml::XmlDocument>> documents_;
   std::vector<std::unique_ptr<SdfFile>> files_;
   std::optional<ModelId> first_model_;

@@ -73,6 +73,41 @@ TEST(SdfDrakeJointTest, PlanarNeedsThreeNonNegativeDampings) {  // EXT-004
       << missing.Messages();
 }
 
+// A <drake:joint> shares its model's joint namespace (COMMON-023): a name an
+// SDFormat joint or an earlier <drake:joint> holds is an error, whose note
+// points at the first holder; a nested model's joints are its own.
+TEST(SdfDrakeJointTest, NameTakenByAJointOfTheModelIsAnError) {  // EXT-001, COMMON-023
+  auto planar = [](std::string_view name, std::string_view parent, std::string_view child) {
+    return fmt::format(
+        "<drake:joint name='{}' type='planar'><drake:parent>{}</drake:parent>"
+        "<drake:child>{}</drake:child><drake:damping>0 0 0</drake:damping></drake:joint>\n",
+        name, parent, child);
+  };
+  LoweredSdf l;
+  EXPECT_FALSE(l.Read(SdfModel(planar("rev", "c", "d") + planar("p", "b", "c") +
+                               planar("p", "c", "d") +
+                               "<model name='n'><link name='x'/><link name='y'/>" +
+                               planar("p", "x", "y") + "</model>")));
+  EXPECT_EQ(l.diags.error_count(), 2u) << l.Messages();
+  size_t notes = 0;
+  for (const Diagnostic& d : l.diags.diagnostics()) {
+    ASSERT_EQ(d.notes.size(), 1u) << d.message;
+    // the SDFormat joint 'rev' on line 5, the first <drake:joint> 'p' on line 9
+    const bool rev = d.message.find("'rev'") != std::string::npos;
+    EXPECT_EQ(d.notes[0].loc.line, rev ? 5u : 9u) << d.message;
+    EXPECT_EQ(d.loc.line, rev ? 8u : 10u) << d.message;
+    ++notes;
+  }
+  EXPECT_EQ(notes, 2u);
+  l.ExpectDiagnostic(DiagKind::DuplicateName,
+                     "the joint name 'rev' is already used by a joint of this model");
+  l.ExpectDiagnostic(DiagKind::DuplicateName,
+                     "the joint name 'p' is already used by a joint of this model");
+  size_t named_p = 0;
+  for (const ir::Joint& j : l.module.joints) named_p += l.module.Text(j.name) == "p";
+  EXPECT_EQ(named_p, 2u);  // model m's first, and nested model n's own
+}
+
 TEST(SdfDrakeJointTest, CurvilinearJointPath) {  // EXT-001, EXT-003
   LoweredSdf l;
   ASSERT_TRUE(l.Read(SdfModel(R"(<drake:joint name='cv' type='curvilinear'>
