@@ -52,9 +52,7 @@ class MassFromGeometryPass : public Pass {
   bool Run(PassContext& ctx) override {
     const size_t errors_before = ctx.diags.error_count();
     FromGeometry(ctx);
-    for (size_t i = 0; i < ctx.module.models.size(); ++i) {
-      if (ctx.module.models[i].mass_adjustments) Adjust(ctx, ModelId(i));
-    }
+    Adjust(ctx);
     return ctx.diags.error_count() == errors_before;
   }
 
@@ -66,7 +64,10 @@ class MassFromGeometryPass : public Pass {
   };
   std::optional<Part> PartOf(PassContext& ctx, const ir::Geometry& g);
   void FromGeometry(PassContext& ctx);
-  void Adjust(PassContext& ctx, ModelId model);
+  /// Every model's MassAdjustments, on the bodies they apply to.
+  void Adjust(PassContext& ctx);
+  /// boundmass, boundinertia and balanceinertia on one body.
+  static void Bound(ir::Body& b, const ir::MassAdjustments& adj);
 };
 
 std::optional<MassFromGeometryPass::Part> MassFromGeometryPass::PartOf(PassContext& ctx,
@@ -161,62 +162,73 @@ void MassFromGeometryPass::FromGeometry(PassContext& ctx) {
   }
 }
 
-void MassFromGeometryPass::Adjust(PassContext& ctx, ModelId model) {
+void MassFromGeometryPass::Adjust(PassContext& ctx) {
+  // every model's corrections in one walk over the bodies, and the scaling
+  // in a second: a walk per model made a scene of N MJCF models cost N^2
   ir::Module& m = ctx.module;
-  const ir::MassAdjustments& adj = *m[model].mass_adjustments;
-  auto adjusted = [&](const ir::Body& b) {
-    return b.model == model && !b.is_world && (b.inertial || b.mass_from_geometry);
+  auto adjustments = [&](const ir::Body& b) -> const ir::MassAdjustments* {
+    if (b.is_world || !(b.inertial || b.mass_from_geometry)) return nullptr;
+    const auto& adj = m[b.model].mass_adjustments;
+    return adj ? &*adj : nullptr;
   };
+  std::vector<double> total_mass(m.models.size(), 0.0);
+  bool any_total = false;
   for (ir::Body& b : m.bodies) {
-    if (!adjusted(b)) continue;
-    if (!b.inertial) {
-      if (adj.bound_mass <= 0 && adj.bound_inertia <= 0) continue;
-      b.inertial.emplace();  // massless until bounded, at the body origin
-      b.inertial->loc = b.loc;
+    const ir::MassAdjustments* adj = adjustments(b);
+    if (!adj) continue;
+    Bound(b, *adj);
+    if (adj->total_mass && *adj->total_mass > 0 && b.inertial) {
+      total_mass[b.model.index()] += b.inertial->mass;
+      any_total = true;
     }
+  }
+  if (!any_total) return;
+  for (ir::Body& b : m.bodies) {
+    const ir::MassAdjustments* adj = adjustments(b);
+    if (!adj || !adj->total_mass || *adj->total_mass <= 0 || !b.inertial) continue;
+    constexpr double kMinVal = 1e-15;  // MuJoCo's mjMINVAL: no division by zero
+    const double scale =
+        std::max(kMinVal, *adj->total_mass / std::max(kMinVal, total_mass[b.model.index()]));
     ir::Inertial& in = *b.inertial;
-    in.mass = std::max(in.mass, adj.bound_mass);
-    const Eigen::Matrix3d I = InertiaMatrix(in);
-    const double trace = I.trace();
-    // no bound above zero and no balancing: only a moment below zero would
-    // change, and a clearly positive definite inertia has none (the common
-    // case, found without an eigen-decomposition per body)
-    if (adj.bound_inertia <= 0 && !adj.balance_inertia && trace > 0 &&
-        mesh::ClearlyPositiveDefinite(I, trace)) {
-      continue;
-    }
-    Eigen::Vector3d moments;
-    Eigen::Matrix3d axes;
-    mesh::PrincipalAxes(I, &moments, &axes);
-    bool changed = false;
-    for (int k = 0; k < 3; ++k) {
-      if (moments[k] < adj.bound_inertia) {
-        moments[k] = adj.bound_inertia;
-        changed = true;
-      }
-    }
-    // MuJoCo's test is exact, no tolerance
-    const double a = moments[0], b2 = moments[1], c = moments[2];
-    if (adj.balance_inertia && (a + b2 < c || a + c < b2 || b2 + c < a)) {
-      moments.setConstant(moments.sum() / 3);
+    in.mass *= scale;
+    SetInertiaMatrix(in, InertiaMatrix(in) * scale);
+  }
+}
+
+void MassFromGeometryPass::Bound(ir::Body& b, const ir::MassAdjustments& adj) {
+  if (!b.inertial) {
+    if (adj.bound_mass <= 0 && adj.bound_inertia <= 0) return;
+    b.inertial.emplace();  // massless until bounded, at the body origin
+    b.inertial->loc = b.loc;
+  }
+  ir::Inertial& in = *b.inertial;
+  in.mass = std::max(in.mass, adj.bound_mass);
+  const Eigen::Matrix3d I = InertiaMatrix(in);
+  const double trace = I.trace();
+  // no bound above zero and no balancing: only a moment below zero would
+  // change, and a clearly positive definite inertia has none (the common
+  // case, found without an eigen-decomposition per body)
+  if (adj.bound_inertia <= 0 && !adj.balance_inertia && trace > 0 &&
+      mesh::ClearlyPositiveDefinite(I, trace)) {
+    return;
+  }
+  Eigen::Vector3d moments;
+  Eigen::Matrix3d axes;
+  mesh::PrincipalAxes(I, &moments, &axes);
+  bool changed = false;
+  for (int k = 0; k < 3; ++k) {
+    if (moments[k] < adj.bound_inertia) {
+      moments[k] = adj.bound_inertia;
       changed = true;
     }
-    if (changed) SetInertiaMatrix(in, axes * moments.asDiagonal() * axes.transpose());
   }
-  if (adj.total_mass && *adj.total_mass > 0) {
-    double total = 0;
-    for (const ir::Body& b : m.bodies) {
-      if (adjusted(b) && b.inertial) total += b.inertial->mass;
-    }
-    constexpr double kMinVal = 1e-15;  // MuJoCo's mjMINVAL: no division by zero
-    const double scale = std::max(kMinVal, *adj.total_mass / std::max(kMinVal, total));
-    for (ir::Body& b : m.bodies) {
-      if (!adjusted(b) || !b.inertial) continue;
-      ir::Inertial& in = *b.inertial;
-      in.mass *= scale;
-      SetInertiaMatrix(in, InertiaMatrix(in) * scale);
-    }
+  // MuJoCo's test is exact, no tolerance
+  const double a = moments[0], b2 = moments[1], c = moments[2];
+  if (adj.balance_inertia && (a + b2 < c || a + c < b2 || b2 + c < a)) {
+    moments.setConstant(moments.sum() / 3);
+    changed = true;
   }
+  if (changed) SetInertiaMatrix(in, axes * moments.asDiagonal() * axes.transpose());
 }
 
 }  // namespace

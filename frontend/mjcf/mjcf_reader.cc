@@ -54,6 +54,8 @@ std::optional<ModelId> Read(FileId file, FrontendContext& ctx) {
   if (!model) return std::nullopt;
   r.model = *model;
   r.model_name = ctx.module.ModelName(*model);
+  // the instance is new: its joints are the ones added from here on
+  const size_t first_joint = ctx.module.joints.size();
 
   const std::vector<xml::XmlElement> top = r.Children(root);
   // phase 2: settings, defaults and assets, wherever they stand
@@ -104,8 +106,8 @@ std::optional<ModelId> Read(FileId file, FrontendContext& ctx) {
     // floating joints one by one in body order, a floating joint not yet
     // named holds no name: its placeholder (the body's name) does not count.
     absl::flat_hash_map<Symbol, int, SymbolHash> joints_named;
-    for (const ir::Joint& j : m.joints) {
-      if (j.model == r.model) ++joints_named[j.name];
+    for (size_t j = first_joint; j < m.joints.size(); ++j) {
+      if (m.joints[j].model == r.model) ++joints_named[m.joints[j].name];
     }
     for (JointId id : r.free_joints) --joints_named[m[id].name];
     for (JointId id : r.free_joints) {

@@ -9,6 +9,7 @@
 // by body_iquat (the inertia about the center of mass in the body frame).
 #include <gtest/gtest.h>
 
+#include <map>
 #include <numbers>
 
 #include "tests/unit/mesh/mesh_test_util.h"
@@ -295,6 +296,47 @@ TEST(MassAdjustmentsTest, DefaultBoundsLeaveAPhysicalInertiaUntouched) {  // BEY
   EXPECT_EQ(out.mass, in.mass);
   EXPECT_EQ(f.InertiaB(full), Sym(in.ixx, in.iyy, in.izz, in.ixy, in.ixz, in.iyz));
   EXPECT_EQ(f.InertiaB(flat), Sym(0.5, 0.5, 0, 0, 0, 0));
+}
+
+// Each model's corrections and total are its own: two instances' bodies,
+// interleaved in the module, each scaled to its model's settotalmass; a
+// model without corrections is left alone (BEYOND-006).
+TEST(MassAdjustmentsTest, EachModelScalesToItsOwnTotal) {  // BEYOND-006
+  MassFixture f;
+  ir::MassAdjustments to_ten, to_three;
+  to_ten.total_mass = 10;
+  to_three.total_mass = 3;
+  to_three.bound_mass = 0.5;
+  f.module[f.model].mass_adjustments = to_ten;
+  const ModelId first = f.model;
+  auto add_model = [&](std::string_view name, std::optional<ir::MassAdjustments> adj) {
+    ir::ModelInstance mi;
+    mi.local_name = f.module.Intern(name);
+    mi.format = ir::SourceFormat::Mjcf;
+    mi.loc = f.NextLoc();
+    mi.mass_adjustments = adj;
+    return f.module.Add(mi);
+  };
+  const ModelId second = add_model("n", to_three), untouched = add_model("o", std::nullopt);
+  std::vector<std::pair<BodyId, ModelId>> bodies;
+  for (int i = 0; i < 6; ++i) {
+    f.model = i % 3 == 0 ? first : i % 3 == 1 ? second : untouched;
+    const BodyId b = f.AddBody(fmt::format("b{}", i), /*from_geometry=*/false);
+    ir::Inertial in;
+    in.mass = i == 4 ? 0.1 : 1.0 + i;  // b4 of model n is raised to boundmass first
+    in.ixx = in.iyy = in.izz = 0.1;
+    f.module[b].inertial = in;
+    bodies.emplace_back(b, f.model);
+  }
+  ASSERT_TRUE(f.RunMassPipeline()) << f.Messages();
+  std::map<uint32_t, double> totals;
+  for (const auto& [b, model] : bodies) totals[model.value] += f.module[b].inertial->mass;
+  EXPECT_NEAR(totals[first.value], 10, 1e-12);
+  EXPECT_NEAR(totals[second.value], 3, 1e-12);
+  EXPECT_EQ(totals[untouched.value], 3.0 + 6.0);  // b2 and b5 as given
+  // model n: b1 (2 kg) and b4 (bounded to 0.5 kg) in proportion
+  EXPECT_NEAR(f.module[bodies[4].first].inertial->mass, 3 * 0.5 / 2.5, 1e-12);
+  EXPECT_NEAR(f.module[bodies[4].first].inertial->ixx, 0.1 * 3 / 2.5, 1e-12);
 }
 
 }  // namespace
