@@ -39,11 +39,6 @@
 
 namespace mdlc::writers::sdf {
 
-bool AllEqual(std::span<const double> values) {
-  return std::adjacent_find(values.begin(), values.end(), std::not_equal_to<>()) ==
-         values.end();
-}
-
 /// "a::b::c" -> {"a", "b", "c"}; "" -> {}.
 std::vector<std::string> Split(const std::string& scoped) {
   std::vector<std::string> out;

@@ -31,7 +31,6 @@ using backend::PlantBody;
 using backend::PlantJoint;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-bool AllEqual(std::span<const double> values);
 /// "a::b::c" -> {"a", "b", "c"}; "" -> {}.
 std::vector<std::string> Split(const std::string& scoped);
 

@@ -4,8 +4,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <functional>
 
 namespace mdlc::writers {
+
+bool AllEqual(std::span<const double> values) {
+  return std::adjacent_find(values.begin(), values.end(), std::not_equal_to<>()) ==
+         values.end();
+}
 
 WriterBase::WriterBase(const backend::CompiledModel& model, const ir::Module& module,
                        const WriteOptions& options, DiagnosticEngine& diags)

@@ -4,6 +4,7 @@
 // asset files it names.
 #pragma once
 
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,6 +21,10 @@
 namespace mdlc::writers {
 
 using backend::EntityIndex;
+
+/// Whether every value is the same (a joint's per-coordinate damping or
+/// limits, which some formats hold once).
+bool AllEqual(std::span<const double> values);
 
 class WriterBase {
  protected:
