@@ -233,9 +233,12 @@ void SdfWriter::BuildModels() {
   joint_scope_.resize(plant_.joints.size());
   for (size_t j = 0; j < plant_.joints.size(); ++j) {
     const PlantJoint& joint = plant_.joints[j];
-    ScopeId scope = CommonScope(BodyScope(joint.parent), BodyScope(joint.child));
-    // a joint to the world is written in its child's model (parent "world")
-    if (joint.parent.index() == 0) scope = BodyScope(joint.child);
+    // a joint to the world is written in its child's model (parent "world");
+    // the common scope of the world and a model N deep is found in N steps,
+    // and a world of models nested N deep, each floating, has N such joints
+    const ScopeId scope = joint.parent.index() == 0
+                              ? BodyScope(joint.child)
+                              : CommonScope(BodyScope(joint.parent), BodyScope(joint.child));
     joint_scope_[j] = scope;
     ModelNode& node = models_[scope];
     joint_names_[j] = Claim(node, joint.name, "joint", JointLoc(JointId(j)), !joint.unnamed);
@@ -348,20 +351,33 @@ void SdfWriter::Value(std::string_view tag, std::string_view text) {
   out_.Open(tag).Text(text).Close();
 }
 
-void SdfWriter::WriteModel(ScopeId scope) {
-  const ModelNode& node = models_[scope];
-  out_.Open("model").Attr("name", node.name);
-  if (node.model_frame) {
-    const BodyId body = plant_.frames[*node.model_frame].body;
-    out_.Attr("canonical_link", Relative(scope, BodyScope(body), link_names_[body.index()]));
+void SdfWriter::WriteModel(ScopeId top) {
+  // a loop, not recursion: a model nested 20,000 deep overflowed the stack
+  std::vector<std::pair<ScopeId, size_t>> open;  // a model, its next child to write
+  auto open_model = [&](ScopeId scope) {
+    const ModelNode& node = models_[scope];
+    out_.Open("model").Attr("name", node.name);
+    if (node.model_frame) {
+      const BodyId body = plant_.frames[*node.model_frame].body;
+      out_.Attr("canonical_link", Relative(scope, BodyScope(body), link_names_[body.index()]));
+    }
+    Pose(ParentModelPose(scope).inverse() * node.X_WM);
+    for (BodyId b : node.links) WriteLink(b);
+    for (JointId j : node.joints) WriteJoint(j, scope);
+    for (size_t f : node.frames) WriteFrame(f, scope);
+    open.emplace_back(scope, 0);
+  };
+  open_model(top);
+  while (!open.empty()) {
+    const ModelNode& node = models_[open.back().first];
+    if (open.back().second < node.children.size()) {
+      open_model(node.children[open.back().second++]);
+      continue;
+    }
+    for (const auto& element : node.elements) element();
+    out_.Close();
+    open.pop_back();
   }
-  Pose(ParentModelPose(scope).inverse() * node.X_WM);
-  for (BodyId b : node.links) WriteLink(b);
-  for (JointId j : node.joints) WriteJoint(j, scope);
-  for (size_t f : node.frames) WriteFrame(f, scope);
-  for (ScopeId child : node.children) WriteModel(child);
-  for (const auto& element : node.elements) element();
-  out_.Close();
 }
 
 void SdfWriter::WriteFrame(size_t f, ScopeId scope) {

@@ -85,20 +85,35 @@ void CheckVisualChildren(SdfReader& r, const xml::XmlElement& e, const Spelling&
 
 /// EXT-032: every element under a <drake:visual> must be drake:-prefixed,
 /// down to the role elements (whose contents Drake reads as they are).
-bool CheckDrakeNamespaced(SdfReader& r, const xml::XmlElement& e) {
+/// Walks the elements in document order in a loop, not by recursion: they
+/// may nest as deep as a document may (its `depth` limit), past what the
+/// stack holds of recursive calls.
+bool CheckDrakeNamespaced(SdfReader& r, const xml::XmlElement& visual) {
   bool ok = true;
-  for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
-    const std::string_view tag = child.Name();
+  xml::XmlElement e = visual.FirstChild();
+  while (e) {
+    const std::string_view tag = e.Name();
+    bool descend = false;
     if (!tag.starts_with(kDrakePrefix)) {
-      r.diags().Report(DiagKind::UnknownSdfElement, child.GetLoc(),
+      r.diags().Report(DiagKind::UnknownSdfElement, e.GetLoc(),
                        fmt::format("<{}> in <{}>: all tags under a drake-namespaced tag must "
                                    "likewise be drake-namespaced",
-                                   tag, e.Name()));
+                                   tag, e.Parent().Name()));
       ok = false;
+    } else {
+      descend = tag != kIllustrationTag && tag != kPerceptionTag;
+    }
+    if (descend && e.FirstChild()) {
+      e = e.FirstChild();
       continue;
     }
-    if (tag == kIllustrationTag || tag == kPerceptionTag) continue;
-    ok = CheckDrakeNamespaced(r, child) && ok;
+    // the next element: a sibling, or the sibling of the nearest ancestor
+    // below the visual that has one
+    while (!e.NextSibling()) {
+      e = e.Parent();
+      if (e.raw() == visual.raw()) return ok;
+    }
+    e = e.NextSibling();
   }
   return ok;
 }

@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "frontend/frontend.h"
 #include "tests/unit/sdf_test_util.h"
@@ -462,6 +464,36 @@ TEST(SdfGeometry, DrakeVisualWithAPlainDescendantIsAnError) {  // EXT-032
                               "all tags under a drake-namespaced tag must likewise be "
                               "drake-namespaced"))
       << l.Messages();
+  EXPECT_TRUE(l.module.geometries.empty());
+}
+
+// The check walks the visual's elements in a loop: 100,000 levels of
+// drake: elements (within the document depth limit) overflowed the stack
+// when it recursed. The plain element at the bottom, and the plain sibling
+// after the deep branch, are each found, in document order.
+TEST(SdfGeometry, DrakeVisualNestedDeepIsCheckedInDocumentOrder) {  // EXT-032
+  constexpr int kDepth = 100000;
+  std::string deep;
+  for (int i = 0; i < kDepth; ++i) deep += "<drake:x>";
+  deep += "<bottom/>";
+  for (int i = 0; i < kDepth; ++i) deep += "</drake:x>";
+  SdfFrontendResult l;
+  EXPECT_FALSE(l.Read(SdfLink(
+      "<drake:visual name='dv'><drake:geometry><drake:box><drake:size>1 1 1</drake:size>"
+      "</drake:box></drake:geometry>" +
+      deep + "<after/></drake:visual>")));
+  std::vector<std::string> found;
+  for (const Diagnostic& d : l.diags.diagnostics()) {
+    if (d.kind == DiagKind::UnknownSdfElement) found.push_back(d.message);
+  }
+  ASSERT_EQ(found.size(), 2u) << l.Messages();
+  EXPECT_EQ(found[0],
+            "<bottom> in <drake:x>: all tags under a drake-namespaced tag must likewise be "
+            "drake-namespaced");
+  EXPECT_EQ(found[1],
+            "<after> in <drake:visual>: all tags under a drake-namespaced tag must likewise be "
+            "drake-namespaced");
+  l.ExpectDiagnostic(DiagKind::UnknownSdfElement, "must likewise be drake-namespaced");
   EXPECT_TRUE(l.module.geometries.empty());
 }
 

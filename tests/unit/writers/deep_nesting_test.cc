@@ -108,5 +108,28 @@ TEST(DeepNesting, Models1000DeepWriteAsNestedSdformatAndReadBack) {
   EXPECT_EQ(after["joints"].size(), before["joints"].size());
 }
 
+// Models nested 30,000 deep, each level's link floating: the writer opens
+// and closes the levels in a loop (recursing per level overflowed the stack
+// at 20,000), and places each floating link's joint in its own model
+// without walking up to the world (which made the levels cost N^2).
+TEST(DeepNesting, FloatingModels30000DeepWriteAsNestedSdformat) {
+  constexpr int kDepth = 30000;
+  std::string text = "<sdf version='1.9'>\n";
+  for (int i = 0; i < kDepth; ++i) {
+    text += fmt::format("<model name='m{}'><link name='l'><inertial><mass>1</mass>"
+                        "</inertial></link>\n",
+                        i);
+  }
+  for (int i = 0; i < kDepth; ++i) text += "</model>\n";
+  CompiledText nested("floating.sdf", text + "</sdf>\n");
+  ASSERT_TRUE(nested.ok()) << nested.Messages();
+  DiagnosticEngine diags;
+  const std::string written = Written(nested, Format::Sdf, diags);
+  EXPECT_TRUE(diags.diagnostics().empty());
+  EXPECT_EQ(Count(written, "<model "), size_t{kDepth});
+  EXPECT_EQ(Count(written, "</model>"), size_t{kDepth});
+  EXPECT_LT(written.size(), size_t{2500} * kDepth);
+}
+
 }  // namespace
 }  // namespace mdlc
