@@ -31,7 +31,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <span>
 #include <variant>
 
 #include "backend/kinematics.h"

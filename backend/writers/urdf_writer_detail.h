@@ -11,7 +11,6 @@
 #include <Eigen/Core>
 #include <limits>
 #include <set>
-#include <span>
 #include <string>
 #include <string_view>
 
