@@ -19,6 +19,8 @@ const std::vector<LimitInfo>& AllLimits() {
        std::numeric_limits<uint64_t>::max()},
       {"include-depth", "files included inside included files", &Limits::include_depth,
        std::numeric_limits<uint64_t>::max()},
+      {"model-depth", "nesting depth of model instances", &Limits::model_depth,
+       std::numeric_limits<uint64_t>::max()},
       {"mesh-vertices", "vertices of one mesh file", &Limits::mesh_vertices,
        std::numeric_limits<uint64_t>::max()},
       // a day at most: the reader's deadline is kept in milliseconds

@@ -407,6 +407,16 @@ std::optional<ModelId> SdfReader::ReadModel(const xml::XmlElement& e, const SdfF
   if (!written_name && !(overrides && overrides->name)) return std::nullopt;
   if (!CheckDefinedName(local_name, loc, "model", file.version)) return std::nullopt;
 
+  // bounded: outputs that print the instance's full name grow with the
+  // square of its depth (ir/limits.h)
+  const uint64_t depth = parent.depth + 1;
+  if (const uint64_t limit = ctx_.sources.limits().model_depth; depth > limit) {
+    diags().Report(DiagKind::LimitExceeded, loc,
+                   fmt::format("model '{}' would be nested {} deep, over the model-depth limit "
+                               "of {} (raise it with --limit model-depth=N)",
+                               local_name, depth, limit));
+    return std::nullopt;
+  }
   const bool top_level = graph()[parent.scope].is_world;
   std::optional<ModelId> model;
   if (top_level && &file == files_.front().get() && !first_model_) {
@@ -425,7 +435,8 @@ std::optional<ModelId> SdfReader::ReadModel(const xml::XmlElement& e, const SdfF
   if (!first_model_) first_model_ = model;
 
   const FrameScopeId scope_id = OpenScope(e, parent, overrides, local_name, *model, false);
-  ModelScope s{scope_id, *model, &file, graph()[scope_id].is_static, module().Intern("__model__")};
+  ModelScope s{scope_id, *model, &file, graph()[scope_id].is_static, module().Intern("__model__"),
+               depth};
   ReadModelBody(e, s);
   return model;
 }

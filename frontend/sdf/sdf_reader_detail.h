@@ -54,6 +54,9 @@ struct ModelScope {
   bool is_static = false;
   /// The name "__model__" means in this scope (a merged model's own frame node name).
   Symbol model_frame_name;
+  /// How deep `model` is nested: 0 for the world, 1 for a top-level model
+  /// (a merged model shares its parent's).
+  uint64_t depth = 0;
 };
 
 class SdfReader {

@@ -86,9 +86,19 @@ std::string FileName(SdfFamily family, int n) {
   return fmt::format("{}_n{}.sdf", SdfFamilyName(family), n);
 }
 
+// A compilation whose limits admit the deepest family: nested_models at
+// 10,000 levels, past the model-depth limit's default (ir/limits.h).
+std::unique_ptr<Compilation> NewCompilation() {
+  auto c = std::make_unique<Compilation>();
+  Limits limits;
+  limits.model_depth = 100'000;
+  c->sources.set_limits(limits);
+  return c;
+}
+
 std::unique_ptr<Compilation> Prepare(benchmark::State& state, SdfFamily family, FileId* file) {
   state.PauseTiming();
-  auto c = std::make_unique<Compilation>();
+  auto c = NewCompilation();
   const int n = static_cast<int>(state.range(0));
   *file = c->sources.AddBuffer(FileName(family, n), Model(family, n));
   state.ResumeTiming();
@@ -178,7 +188,7 @@ void BM_Compile(benchmark::State& state, SdfFamily family) {
 }
 
 void BM_Write(benchmark::State& state, SdfFamily family, Format to) {
-  auto c = std::make_unique<Compilation>();
+  auto c = NewCompilation();
   const int n = static_cast<int>(state.range(0));
   const FileId file = c->sources.AddBuffer(FileName(family, n), Model(family, n));
   if (!RunFrontend(*c, file) || !c->RunPasses() || !c->RunBackend()) {

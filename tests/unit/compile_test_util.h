@@ -22,9 +22,11 @@ namespace mdlc::testing {
 
 class CompiledText : public ClaimsDiagnostics {
  public:
-  /// Writes `text` as `file_name` in a folder of its own and compiles it.
-  CompiledText(std::string_view file_name, std::string_view text)
+  /// Writes `text` as `file_name` in a folder of its own and compiles it
+  /// within `limits`.
+  CompiledText(std::string_view file_name, std::string_view text, const Limits& limits = {})
       : ClaimsDiagnostics(c_.diags) {
+    c_.sources.set_limits(limits);
     dir_ = std::filesystem::temp_directory_path() /
            fmt::format("mdlc_compiled_{}_{}", ::getpid(),
                        ::testing::UnitTest::GetInstance()->current_test_info()->name());

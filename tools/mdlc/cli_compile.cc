@@ -75,7 +75,7 @@ void AddCompileFlags(CLI::App* command, CompileFlags& flags) {
                       "Stop reporting after N errors (0: no limit)");
   command->add_option("--limit", flags.limits,
                       "Set an input limit NAME=VALUE: file-size, total-size, elements, depth, "
-                      "include-depth, mesh-vertices, mesh-seconds (see the README)")
+                      "include-depth, model-depth, mesh-vertices, mesh-seconds (see the README)")
       ->allow_extra_args(false);
   command
       ->add_option("--mesh-reader", flags.mesh_reader,

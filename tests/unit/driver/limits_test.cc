@@ -170,6 +170,31 @@ TEST_F(LimitsTest, DepthStopsADeepDocumentAtItsFirstTooDeepElement) {
   EXPECT_EQ(LimitError(r, "nested 1001 deep").loc.line, 1001u);
 }
 
+// Models nest in models: m1 in m0, m2 in m1, ... Every output that prints an
+// instance's full name grows with the square of the depth, so the depth is
+// bounded; the first model past the bound is the error, and nothing below it
+// is read.
+TEST_F(LimitsTest, ModelDepthIsReportedAtTheFirstModelTooDeep) {
+  const int levels = 12;
+  std::string text = "<sdf version=\"1.9\">\n";
+  for (int i = 0; i < levels; ++i) {
+    text += fmt::format("<model name=\"m{}\"><link name=\"l\"/>\n", i);
+  }
+  for (int i = 0; i < levels; ++i) text += "</model>";
+  const std::string path = Write("nested.sdf", text + "\n</sdf>\n");
+  Options options;
+  options.limits.model_depth = 10;  // m0 is 1 deep, m10 would be 11
+  const Result r = Compile(Input::File(path), options);
+  EXPECT_FALSE(r.ok());
+  const Diagnostic& d =
+      LimitError(r, "model 'm10' would be nested 11 deep, over the model-depth limit of 10");
+  EXPECT_EQ(d.loc.line, 12u);
+  EXPECT_EQ(r.diagnostics().size(), 1u);
+  options.limits.model_depth = levels;
+  EXPECT_TRUE(Compile(Input::File(path), options).ok());
+  EXPECT_EQ(Limits{}.model_depth, 1000u);  // the default, far above real models
+}
+
 // SDFormat includes nest: a chain of models each including the next
 std::string ChainModel(int i, int last) {
   const std::string include =

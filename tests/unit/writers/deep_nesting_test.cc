@@ -121,7 +121,9 @@ TEST(DeepNesting, FloatingModels30000DeepWriteAsNestedSdformat) {
                         i);
   }
   for (int i = 0; i < kDepth; ++i) text += "</model>\n";
-  CompiledText nested("floating.sdf", text + "</sdf>\n");
+  Limits limits;
+  limits.model_depth = kDepth;  // past the default, which bounds what outputs print
+  CompiledText nested("floating.sdf", text + "</sdf>\n", limits);
   ASSERT_TRUE(nested.ok()) << nested.Messages();
   DiagnosticEngine diags;
   const std::string written = Written(nested, Format::Sdf, diags);
