@@ -46,6 +46,7 @@
 #include <memory>
 #include <string>
 
+#include "bench_main.h"
 #include "tools/driver/compiler.h"
 #include "frontend/xml/xml_document.h"
 #include "model_gen.h"
@@ -359,10 +360,5 @@ int main(int argc, char** argv) {
       return mdlc::bench::WriteModels(argv[i] + kWriteModels.size());
     }
   }
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  mdlc::bench::RegisterAll();
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return mdlc::bench::RunBenchmarks(argc, argv, mdlc::bench::RegisterAll);
 }

@@ -23,6 +23,7 @@
 #include <fstream>
 #include <map>
 
+#include "bench_main.h"
 #include "tools/driver/compiler.h"
 #include "tools/driver/heap_policy.h"
 
@@ -163,12 +164,8 @@ void RegisterAll() {
 
 int main(int argc, char** argv) {
   mdlc::KeepFreedMemoryForReuse();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  mdlc::bench::RegisterAll();
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
+  const int status = mdlc::bench::RunBenchmarks(argc, argv, mdlc::bench::RegisterAll);
   std::error_code ec;
   std::filesystem::remove_all(mdlc::bench::Folder(), ec);
-  return 0;
+  return status;
 }

@@ -34,6 +34,7 @@
 #include <string>
 #include <string_view>
 
+#include "bench_main.h"
 #include "backend/writers/writer.h"
 #include "tools/driver/compiler.h"
 #include "tools/driver/heap_policy.h"
@@ -200,14 +201,14 @@ void RegisterAll() {
 }
 
 /// --write_models=DIR: the models as files, to run the command line on.
-bool WriteModels(const std::filesystem::path& dir) {
+int WriteModels(const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
   for (const Family* family :
        {&kSdfDrakeJoints, &kSdfRenamedJoints, &kMjcfContactPairs, &kSdfSameNamedGeoms}) {
     for (int n : kSizes) std::ofstream(dir / FileName(*family, n)) << Model(*family, n);
   }
   std::ofstream(dir / "mjcf_models_n1.xml") << kMjcfBall;
-  return true;
+  return 0;
 }
 
 }  // namespace
@@ -215,17 +216,12 @@ bool WriteModels(const std::filesystem::path& dir) {
 
 int main(int argc, char** argv) {
   mdlc::KeepFreedMemoryForReuse();
-  constexpr std::string_view kWriteFlag = "--write_models=";
+  // our own flag first; Google Benchmark rejects flags it does not know
+  constexpr std::string_view kWriteModels = "--write_models=";
   for (int i = 1; i < argc; ++i) {
-    const std::string_view arg = argv[i];
-    if (arg.starts_with(kWriteFlag)) {
-      return mdlc::bench::WriteModels(std::string(arg.substr(kWriteFlag.size()))) ? 0 : 1;
+    if (std::string_view(argv[i]).starts_with(kWriteModels)) {
+      return mdlc::bench::WriteModels(argv[i] + kWriteModels.size());
     }
   }
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  mdlc::bench::RegisterAll();
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return mdlc::bench::RunBenchmarks(argc, argv, mdlc::bench::RegisterAll);
 }

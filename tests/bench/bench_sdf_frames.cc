@@ -45,6 +45,7 @@
 #include <span>
 #include <string>
 
+#include "bench_main.h"
 #include "backend/writers/writer.h"
 #include "tools/driver/compiler.h"
 #include "frontend/xml/xml_document.h"
@@ -318,10 +319,5 @@ int main(int argc, char** argv) {
     argv[kept++] = argv[i];
   }
   argc = kept;
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  mdlc::bench::RegisterAll();
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return mdlc::bench::RunBenchmarks(argc, argv, mdlc::bench::RegisterAll);
 }
