@@ -131,6 +131,11 @@ def count_instructions(command, functions):
     return int(found.group(1).replace(",", ""))
 
 
+# libxml2's SAX parse with handlers that do nothing (tests/bench/sax_floor.h):
+# the part of the XML formats' compile that is libxml2's own, run in the same
+# process as the family's floor and compile
+SAX_FLOOR = "libxml2_sax"
+
 # mdlc's compile (Compilation::Run: read, frontends, passes, backend) without
 # the printing of its warnings, which the timed benchmarks do not do either;
 # xmllint's parse of the file into a DOM, and the DOM's release
@@ -214,7 +219,8 @@ def main():
     reference_rounds = {name: [] for name, _, _, _ in REFERENCES}
     for _ in range(args.rounds):
         for _, family, floor, sizes, exe in FAMILIES:
-            pattern = rf"^({floor}|compile)/{family}/({'|'.join(map(str, sizes))})$"
+            stages = [floor, "compile"] + ([SAX_FLOOR] if floor == "libxml2_parse" else [])
+            pattern = rf"^({'|'.join(stages)})/{family}/({'|'.join(map(str, sizes))})$"
             family_rounds[family].append(
                 run_benchmarks(os.path.join(bench_dir, exe), pattern, reps, min_time))
         for name, exe, reference, compile_name in REFERENCES:
@@ -254,6 +260,32 @@ def main():
             f"| {fmt_ms(cs)} / {fmt_ms(cl)} | " + " | ".join(fmt_ratio(v) for v in row) + " |")
     add("")
 
+    # the XML formats against libxml2's SAX events alone: how much of each
+    # compile is libxml2's own work, and how much mdlc adds to it
+    add("The same compiles against libxml2's SAX parse alone, with handlers that do nothing "
+        "(`libxml2_sax`, run in the same processes): the least a reader built on libxml2's "
+        "events, as mdlc's is, pays for the file.")
+    add("")
+    add("| input | SAX events alone, small / large (ms) | compile/SAX, small "
+        "| compile/SAX, large | SAX's growth per element |")
+    add("|---|---|---|---|---|")
+    for label, family, floor, sizes, _ in FAMILIES:
+        if floor != "libxml2_parse":
+            continue
+        small, large = sizes[0], sizes[-1]
+        ss = paired(family, lambda get: get(f"{SAX_FLOOR}/{family}/{small}"))
+        sl = paired(family, lambda get: get(f"{SAX_FLOOR}/{family}/{large}"))
+        over_small = paired(family, lambda get: ratio(get(f"compile/{family}/{small}"),
+                                                      get(f"{SAX_FLOOR}/{family}/{small}")))
+        over_large = paired(family, lambda get: ratio(get(f"compile/{family}/{large}"),
+                                                      get(f"{SAX_FLOOR}/{family}/{large}")))
+        sax_growth = paired(family, lambda get: ratio(
+            ratio(get(f"{SAX_FLOOR}/{family}/{large}"), large),
+            ratio(get(f"{SAX_FLOOR}/{family}/{small}"), small)))
+        add(f"| {label}, N = {small} / {large} | {fmt_ms(ss)} / {fmt_ms(sl)} "
+            f"| {fmt_ratio(over_small)} | {fmt_ratio(over_large)} | {fmt_ratio(sax_growth)} |")
+    add("")
+
     # worlds: the per-model cost at each size
     add("| world of N one-link models | N = 1000 | N = 10000 | N = 100000 |")
     add("|---|---|---|---|")
@@ -267,6 +299,14 @@ def main():
     per_model = [paired("world", lambda get, n=n: ratio(get(f"compile/world/{n}"), n / 1000.0))
                  for n in sizes]
     add("| compile per 1000 models (ms) | " + " | ".join(fmt_ms(p) for p in per_model) + " |")
+    add("| floor per 1000 models (ms) | " + " | ".join(
+        fmt_ms(paired("world", lambda get, n=n: ratio(get(f"libxml2_parse/world/{n}"),
+                                                      n / 1000.0)))
+        for n in sizes) + " |")
+    add("| SAX events alone per 1000 models (ms) | " + " | ".join(
+        fmt_ms(paired("world", lambda get, n=n: ratio(get(f"{SAX_FLOOR}/world/{n}"),
+                                                      n / 1000.0)))
+        for n in sizes) + " |")
     world_growth = summary["world"][2]  # the family's growth per model, 1k to 100k
     add("")
 

@@ -9,6 +9,8 @@
 // above it:
 //
 //   libxml2_parse     xmlReadMemory + xmlFreeDoc: libxml2's DOM, the floor
+//   libxml2_sax       libxml2's SAX parse with handlers that do nothing
+//                     (sax_floor.h): what libxml2 alone costs mdlc's reader
 //   xml_document      mdlc's XmlDocument::Parse (libxml2's SAX parse building
 //                     mdlc's own located tree)
 //   frontend          URDF -> IR (frontend::ReadModel)
@@ -51,6 +53,7 @@
 #include "frontend/xml/xml_document.h"
 #include "model_gen.h"
 #include "model_gen_mjcf.h"
+#include "sax_floor.h"
 #include "tools/driver/heap_policy.h"
 
 #ifdef MDLC_BENCH_HAVE_MUJOCO
@@ -155,6 +158,14 @@ void Libxml2Parse(benchmark::State& state, Family family, int options) {
 
 void BM_Libxml2Parse(benchmark::State& state, Family family) {
   Libxml2Parse(state, family, kFloorXmlOptions);
+}
+
+void BM_Libxml2Sax(benchmark::State& state, Family family) {
+  const std::string& text = Model(family, static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    if (!ParseWithEmptySaxHandlers(text)) state.SkipWithError("libxml2 rejected the model");
+  }
+  Finish(state, family);
 }
 
 void BM_XmlDocument(benchmark::State& state, Family family) {
@@ -296,6 +307,7 @@ void RegisterAll() {
   };
   static constexpr Stage kStages[] = {
       {"libxml2_parse", BM_Libxml2Parse},
+      {"libxml2_sax", BM_Libxml2Sax},
       {"xml_document", BM_XmlDocument},
       {"frontend", BM_Frontend},
       {"frontend_passes", BM_FrontendPasses},

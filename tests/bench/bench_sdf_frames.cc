@@ -9,6 +9,8 @@
 // from xml_document down each stage includes the ones above it:
 //
 //   libxml2_parse     xmlReadMemory + xmlFreeDoc: libxml2's DOM, the floor
+//   libxml2_sax       libxml2's SAX parse with handlers that do nothing
+//                     (sax_floor.h): what libxml2 alone costs mdlc's reader
 //   xml_document      mdlc's XmlDocument::Parse (libxml2's SAX parse building
 //                     mdlc's own located tree)
 //   frontend          SDFormat -> IR (frontend::ReadModel), as the CLI calls it
@@ -50,6 +52,7 @@
 #include "tools/driver/compiler.h"
 #include "frontend/xml/xml_document.h"
 #include "model_gen_sdf.h"
+#include "sax_floor.h"
 #include "tools/driver/heap_policy.h"
 
 #ifdef MDLC_BENCH_HAVE_SDFORMAT
@@ -141,6 +144,14 @@ void BM_Libxml2Parse(benchmark::State& state, SdfFamily family) {
     if (!doc) state.SkipWithError("libxml2 rejected the model");
     benchmark::DoNotOptimize(doc);
     xmlFreeDoc(doc);
+  }
+  Finish(state, family);
+}
+
+void BM_Libxml2Sax(benchmark::State& state, SdfFamily family) {
+  const std::string& text = Model(family, static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    if (!ParseWithEmptySaxHandlers(text)) state.SkipWithError("libxml2 rejected the model");
   }
   Finish(state, family);
 }
@@ -243,6 +254,7 @@ void RegisterAll() {
   };
   const Stage stages[] = {
       {"libxml2_parse", BM_Libxml2Parse, kWorldSizes[2]},
+      {"libxml2_sax", BM_Libxml2Sax, kWorldSizes[2]},
       {"xml_document", BM_XmlDocument, kWorldSizes[2]},
       {"frontend", BM_Frontend, kWorldSizes[2]},
       {"frontend_passes", BM_FrontendPasses, kWorldSizes[2]},
