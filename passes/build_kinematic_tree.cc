@@ -143,11 +143,15 @@ void BuildKinematicTreePass::ReportLoop(PassContext& ctx, const std::vector<Join
 void BuildKinematicTreePass::AddFloatingJoint(PassContext& ctx, BodyId body) {
   ir::Module& m = ctx.module;
   const ir::Body& b = m[body];
-  const std::string name = FloatingJointName(m.Text(b.name), [&](const std::string& n) {
-    Symbol s = m.symbols.Find(n);
-    return !s.empty() && joint_names_.contains(Key(b.model, s));
-  });
-  const Symbol symbol = m.Intern(name);
+  // the joint takes its body's name, already interned, unless a joint of the
+  // instance has it (a world of free bodies: one such joint per model)
+  Symbol symbol = b.name;
+  if (joint_names_.contains(Key(b.model, symbol))) {
+    symbol = m.Intern(FloatingJointName(m.Text(b.name), [&](const std::string& n) {
+      Symbol s = m.symbols.Find(n);
+      return !s.empty() && joint_names_.contains(Key(b.model, s));
+    }));
+  }
   joint_names_.insert(Key(b.model, symbol));
   m.Add(MakeFloatingJoint(m, symbol, b.loc, ir::kWorldBody, {}, body, {}, b.default_pose));
 }

@@ -36,6 +36,31 @@ class NameIndex {
   absl::flat_hash_map<uint64_t, IdT> map_;
 };
 
+/// A NameIndex of one IR table (its entities from `first` on), built on its
+/// first lookup: a module whose references the frontends already resolved,
+/// as every SDFormat reference to a link is, never builds one. The table
+/// must not change between lookups.
+template <typename IdT, typename Table>
+class LazyNameIndex {
+ public:
+  LazyNameIndex(const Table& table, size_t first) : table_(table), first_(first) {}
+  std::optional<IdT> Find(ModelId model, Symbol name) const {
+    if (!built_) {
+      for (size_t i = first_; i < table_.size(); ++i) {
+        index_.Add(table_[i].model, table_[i].name, IdT(i));
+      }
+      built_ = true;
+    }
+    return index_.Find(model, name);
+  }
+
+ private:
+  const Table& table_;
+  size_t first_;
+  mutable bool built_ = false;
+  mutable NameIndex<IdT> index_;
+};
+
 /// Model instances by full name, or by a name relative to another instance;
 /// found by walking nested instances (Module::FindModel), never through a
 /// table of full names, which would grow with the square of the nesting depth.

@@ -35,17 +35,17 @@ class ResolveNamesPass : public Pass {
 
  private:
   // `user` describes the referring entity; it is called only to report an error
-  template <typename IdT, typename Table, typename User>
-  void Resolve(PassContext& ctx, ir::Ref<IdT>& ref, ModelId scope, const NameIndex<IdT>& index,
+  template <typename IdT, typename Index, typename Table, typename User>
+  void Resolve(PassContext& ctx, ir::Ref<IdT>& ref, ModelId scope, const Index& index,
                const Table& table, std::string_view kind, const User& user);
   std::optional<ModelId> ScopeFor(PassContext& ctx, ModelId own, std::string_view scope) const;
-  void ResolveFrame(PassContext& ctx, ir::FrameRef& ref, ModelId scope,
-                    const NameIndex<FrameId>& frames, const NameIndex<BodyId>& bodies,
-                    std::string_view user);
+  template <typename FrameIndex, typename BodyIndex>
+  void ResolveFrame(PassContext& ctx, ir::FrameRef& ref, ModelId scope, const FrameIndex& frames,
+                    const BodyIndex& bodies, std::string_view user);
   // a reference from collision filter group `group` (COMMON-053)
-  template <typename IdT, typename Table>
+  template <typename IdT, typename Index, typename Table>
   void ResolveForGroup(PassContext& ctx, ir::Ref<IdT>& ref, const ir::CollisionFilterGroup& group,
-                       const NameIndex<IdT>& index, const Table& table, std::string_view kind);
+                       const Index& index, const Table& table, std::string_view kind);
 
   std::optional<ModelIndex> models_;
 };
@@ -57,10 +57,10 @@ std::optional<ModelId> ResolveNamesPass::ScopeFor(PassContext& ctx, ModelId own,
   return models_->Find(scope);
 }
 
-template <typename IdT, typename Table, typename User>
+template <typename IdT, typename Index, typename Table, typename User>
 void ResolveNamesPass::Resolve(PassContext& ctx, ir::Ref<IdT>& ref, ModelId scope,
-                               const NameIndex<IdT>& index, const Table& table,
-                               std::string_view kind, const User& user) {
+                               const Index& index, const Table& table, std::string_view kind,
+                               const User& user) {
   if (ref.resolved() || ref.name.empty()) return;
   ir::Module& m = ctx.module;
   std::string_view text = m.Text(ref.name);
@@ -102,9 +102,10 @@ void ResolveNamesPass::Resolve(PassContext& ctx, ir::Ref<IdT>& ref, ModelId scop
 }
 
 // a frame reference names an explicit frame, or else a body's own frame
+template <typename FrameIndex, typename BodyIndex>
 void ResolveNamesPass::ResolveFrame(PassContext& ctx, ir::FrameRef& ref, ModelId scope,
-                                    const NameIndex<FrameId>& frames,
-                                    const NameIndex<BodyId>& bodies, std::string_view user) {
+                                    const FrameIndex& frames, const BodyIndex& bodies,
+                                    std::string_view user) {
   if (ref.resolved() || ref.name.empty()) return;
   ir::Module& m = ctx.module;
   std::string_view text = m.Text(ref.name);
@@ -130,11 +131,10 @@ void ResolveNamesPass::ResolveFrame(PassContext& ctx, ir::FrameRef& ref, ModelId
                                text));
 }
 
-template <typename IdT, typename Table>
+template <typename IdT, typename Index, typename Table>
 void ResolveNamesPass::ResolveForGroup(PassContext& ctx, ir::Ref<IdT>& ref,
-                                       const ir::CollisionFilterGroup& group,
-                                       const NameIndex<IdT>& index, const Table& table,
-                                       std::string_view kind) {
+                                       const ir::CollisionFilterGroup& group, const Index& index,
+                                       const Table& table, std::string_view kind) {
   if (ref.resolved()) return;
   ir::Module& m = ctx.module;
   const std::string group_name = m.ScopedName(group.model, group.name);
@@ -186,17 +186,13 @@ void ResolveNamesPass::ResolveForGroup(PassContext& ctx, ir::Ref<IdT>& ref,
 bool ResolveNamesPass::Run(PassContext& ctx) {
   ir::Module& m = ctx.module;
   models_.emplace(m);
-  NameIndex<BodyId> bodies;
-  NameIndex<JointId> joints;
-  for (size_t i = 1; i < m.bodies.size(); ++i) bodies.Add(m.bodies[i].model, m.bodies[i].name, BodyId(i));
-  for (size_t i = 0; i < m.joints.size(); ++i) joints.Add(m.joints[i].model, m.joints[i].name, JointId(i));
-  NameIndex<FrameId> frames;
-  for (size_t i = 0; i < m.frames.size(); ++i) frames.Add(m.frames[i].model, m.frames[i].name, FrameId(i));
-  // a duplicate group name is reported by check-model-elements; the first wins
-  NameIndex<FilterGroupId> groups;
-  for (size_t i = 0; i < m.filter_groups.size(); ++i) {
-    groups.Add(m.filter_groups[i].model, m.filter_groups[i].name, FilterGroupId(i));
-  }
+  // each index is built by the first reference that needs it (the world
+  // body, index 0, is found by its name "world", never through the index);
+  // a duplicate group name is reported by check-model-elements, the first wins
+  LazyNameIndex<BodyId, decltype(m.bodies)> bodies(m.bodies, 1);
+  LazyNameIndex<JointId, decltype(m.joints)> joints(m.joints, 0);
+  LazyNameIndex<FrameId, decltype(m.frames)> frames(m.frames, 0);
+  LazyNameIndex<FilterGroupId, decltype(m.filter_groups)> groups(m.filter_groups, 0);
 
   const size_t errors_before = ctx.diags.error_count();
   auto described = [&](const char* what, Symbol name) {

@@ -42,6 +42,23 @@ TEST(ClosestNameTest, SuggestsTyposOnly) {
   EXPECT_FALSE(passes::ClosestName("gripper", names));
 }
 
+TEST(LazyNameIndexTest, IndexesTheTableFromItsFirstEntityOnAtTheFirstLookup) {  // COMMON-030
+  ir::Module m;
+  std::vector<ir::Body> bodies(3);
+  const ModelId arm(size_t{5}), other(size_t{6});
+  bodies[0].name = m.Intern("link");  // before `first`: never indexed
+  bodies[0].model = arm;
+  bodies[1].name = m.Intern("link");
+  bodies[1].model = arm;
+  bodies[2].name = m.Intern("link");
+  bodies[2].model = other;
+  passes::LazyNameIndex<BodyId, std::vector<ir::Body>> index(bodies, 1);
+  EXPECT_EQ(index.Find(arm, m.Intern("link")), BodyId(size_t{1}));
+  EXPECT_EQ(index.Find(other, m.Intern("link")), BodyId(size_t{2}));
+  EXPECT_EQ(index.Find(arm, m.Intern("tool")), std::nullopt);
+  EXPECT_EQ(index.Find(ModelId(size_t{7}), m.Intern("link")), std::nullopt);
+}
+
 TEST(ResolveNamesTest, ResolvesAndSuggests) {  // URDF-010
   Lowered l;
   ASSERT_TRUE(l.Read(R"(<robot name='r'><link name='base'/><link name='forearm'/>
