@@ -222,7 +222,7 @@ void SdfReader::MergeModel(const xml::XmlElement& model, const SdfFile& file, Mo
   FrameScopeId scope_id = OpenScope(model, parent, &overrides, local, parent.model,
                                     /*merged=*/true);
   ModelScope s{scope_id, parent.model, &file, graph()[scope_id].is_static,
-               module().Intern("__model__"), parent.depth};
+               ModelFrameName(), parent.depth};
   const size_t pending = pending_models_.size();
   ReadModelBody(model, s);
   DrainPendingModels(pending);
@@ -357,7 +357,7 @@ void SdfReader::IncludeUrdf(FileId file, ModelScope parent, const ModelOverrides
   node.X_RN = ReadPoseValue(overrides.pose);
   node.nested = scope_id;
   ir::Frame model_frame;
-  model_frame.name = merge ? node.name : module().Intern("__model__");
+  model_frame.name = merge ? node.name : ModelFrameName();
   model_frame.model = *model;
   model_frame.loc = overrides.loc;
   node.target = ir::FrameTarget::Frame;
@@ -365,7 +365,7 @@ void SdfReader::IncludeUrdf(FileId file, ModelScope parent, const ModelOverrides
   graph()[scope_id].frame = AddNode(parent, std::move(node));
 
   ModelScope s{scope_id, *model, parent.file, graph()[scope_id].is_static,
-               module().Intern("__model__"), parent.depth + 1};
+               ModelFrameName(), parent.depth + 1};
   for (size_t b = first_body; b < module().bodies.size(); ++b) {
     ir::FrameNode link;
     link.kind = ir::FrameNodeKind::Link;

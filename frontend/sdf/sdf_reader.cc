@@ -435,8 +435,7 @@ std::optional<ModelId> SdfReader::ReadModel(const xml::XmlElement& e, const SdfF
   if (!first_model_) first_model_ = model;
 
   const FrameScopeId scope_id = OpenScope(e, parent, overrides, local_name, *model, false);
-  ModelScope s{scope_id, *model, &file, graph()[scope_id].is_static, module().Intern("__model__"),
-               depth};
+  ModelScope s{scope_id, *model, &file, graph()[scope_id].is_static, ModelFrameName(), depth};
   ReadModelBody(e, s);
   return model;
 }
@@ -445,8 +444,9 @@ FrameScopeId SdfReader::OpenScope(const xml::XmlElement& e, const ModelScope& pa
                                   const ModelOverrides* overrides, const std::string& local_name,
                                   ModelId model, bool merged) {
   const Loc loc = overrides ? overrides->loc : e.GetLoc();
+  const Symbol local = module().Intern(local_name);
   ir::FrameScope scope;
-  scope.name = module().Intern(local_name);
+  scope.name = local;
   scope.loc = loc;
   scope.parent = parent.scope;
   if (merged) scope.merged_into = parent.scope;
@@ -468,10 +468,10 @@ FrameScopeId SdfReader::OpenScope(const xml::XmlElement& e, const ModelScope& pa
 
   // Drake gives every SDFormat model instance a `__model__` frame (COMMON-024);
   // a merged model's frame is a frame of the model it merges into (SDF-032)
-  const Symbol node_name = merged ? module().Intern(fmt::format("_merged__{}__model__", local_name))
-                                  : module().Intern(local_name);
+  const Symbol node_name =
+      merged ? module().Intern(fmt::format("_merged__{}__model__", local_name)) : local;
   ir::Frame model_frame;
-  model_frame.name = merged ? node_name : module().Intern("__model__");
+  model_frame.name = merged ? node_name : ModelFrameName();
   model_frame.model = model;
   model_frame.loc = loc;
   const FrameId model_frame_id = module().Add(std::move(model_frame));

@@ -205,6 +205,13 @@ class SdfReader {
   ir::Module& module() { return ctx_.module; }
   ir::FrameGraph& graph() { return ctx_.module.frame_graph; }
   DiagnosticEngine& diags() { return ctx_.diags; }
+  /// "__model__", every model's own frame (COMMON-024): interned once, not
+  /// looked up again for each model
+  Symbol ModelFrameName() {
+    if (model_frame_name_.empty()) model_frame_name_ = module().Intern("__model__");
+    return model_frame_name_;
+  }
+  Symbol model_frame_name_;
 
   // implementation details of sdf_reader.cc / sdf_include.cc
   std::optional<ModelId> ReadWorld(const xml::XmlElement& e, const SdfFile& file);
