@@ -37,9 +37,9 @@ class NameIndex {
 };
 
 /// A NameIndex of one IR table (its entities from `first` on), built on its
-/// first lookup: a module whose references the frontends already resolved,
-/// as every SDFormat reference to a link is, never builds one. The table
-/// must not change between lookups.
+/// first lookup: a module whose references the frontends already resolved
+/// (the SDFormat and MJCF frontends resolve theirs) never builds one. The
+/// table must not change between lookups.
 template <typename IdT, typename Table>
 class LazyNameIndex {
  public:

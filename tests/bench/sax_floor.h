@@ -12,10 +12,16 @@
 
 #include <string_view>
 
+#include <benchmark/benchmark.h>
+
 namespace mdlc::bench {
 
 /// Parses `text` as mdlc's XmlDocument does, every SAX event ignored.
 /// False when libxml2 found the text not well formed.
 bool ParseWithEmptySaxHandlers(std::string_view text);
+
+/// The `libxml2_sax` stage: ParseWithEmptySaxHandlers(text) once per
+/// iteration (the caller reports complexity and bytes).
+void TimeEmptySaxParse(benchmark::State& state, std::string_view text);
 
 }  // namespace mdlc::bench
