@@ -298,17 +298,13 @@ def main():
         fmt_ratio(paired("world", lambda get, n=n: ratio(get(f"compile/world/{n}"),
                                                          get(f"libxml2_parse/world/{n}"))))
         for n in sizes) + " |")
-    per_model = [paired("world", lambda get, n=n: ratio(get(f"compile/world/{n}"), n / 1000.0))
-                 for n in sizes]
-    add("| compile per 1000 models (ms) | " + " | ".join(fmt_ms(p) for p in per_model) + " |")
-    add("| floor per 1000 models (ms) | " + " | ".join(
-        fmt_ms(paired("world", lambda get, n=n: ratio(get(f"libxml2_parse/world/{n}"),
-                                                      n / 1000.0)))
-        for n in sizes) + " |")
-    add("| SAX events alone per 1000 models (ms) | " + " | ".join(
-        fmt_ms(paired("world", lambda get, n=n: ratio(get(f"{SAX_FLOOR}/world/{n}"),
-                                                      n / 1000.0)))
-        for n in sizes) + " |")
+    def per_thousand_models(stage):
+        return [paired("world", lambda get, n=n: ratio(get(f"{stage}/world/{n}"), n / 1000.0))
+                for n in sizes]
+    for label, stage in [("compile", "compile"), ("floor", "libxml2_parse"),
+                         ("SAX events alone", SAX_FLOOR)]:
+        add(f"| {label} per 1000 models (ms) | "
+            + " | ".join(fmt_ms(p) for p in per_thousand_models(stage)) + " |")
     world_growth = summary["world"][2]  # the family's growth per model, 1k to 100k
     add("")
 

@@ -5,9 +5,9 @@
 #include <libxml/xmlerror.h>
 
 #include <algorithm>
-#include <cstring>
 #include <mutex>
 
+#include "frontend/xml/memory_stream.h"
 #include "frontend/xml/start_tags.h"
 #include "frontend/xml/tree_builder.h"
 
@@ -44,18 +44,6 @@ void OnXmlError(void* user, xmlErrorPtr error) {
           static_cast<uint32_t>(error->int2 > 0 ? error->int2 : 0)};
   sink->diags->Report(DiagKind::XmlSyntax, loc, "malformed XML: " + message);
 }
-
-// The source buffer, handed to libxml2 a piece at a time.
-struct MemoryStream {
-  std::string_view rest;
-  static int Read(void* context, char* out, int size) {
-    auto* self = static_cast<MemoryStream*>(context);
-    const size_t n = std::min(self->rest.size(), static_cast<size_t>(std::max(size, 0)));
-    std::memcpy(out, self->rest.data(), n);
-    self->rest.remove_prefix(n);
-    return static_cast<int>(n);
-  }
-};
 
 // What libxml2's parse left: whether the text was well formed, where the
 // parser stopped (line 0 when it could not even be made) and its name

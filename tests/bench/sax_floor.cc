@@ -3,8 +3,7 @@
 #include <libxml/parser.h>
 #include <libxml/SAX2.h>
 
-#include <algorithm>
-#include <cstring>
+#include "frontend/xml/memory_stream.h"
 
 namespace mdlc::bench {
 namespace {
@@ -20,18 +19,6 @@ void IgnoreEntityDeclaration(void*, const xmlChar*, int, const xmlChar*, const x
                              xmlChar*) {}
 xmlEntityPtr NoEntity(void*, const xmlChar* name) { return xmlGetPredefinedEntity(name); }
 xmlEntityPtr NoParameterEntity(void*, const xmlChar*) { return nullptr; }
-
-// the text handed to libxml2 a piece at a time, as xml_document.cc does
-struct Stream {
-  std::string_view rest;
-  static int Read(void* context, char* out, int size) {
-    auto* self = static_cast<Stream*>(context);
-    const size_t n = std::min(self->rest.size(), static_cast<size_t>(std::max(size, 0)));
-    std::memcpy(out, self->rest.data(), n);
-    self->rest.remove_prefix(n);
-    return static_cast<int>(n);
-  }
-};
 
 }  // namespace
 
@@ -57,8 +44,10 @@ bool ParseWithEmptySaxHandlers(std::string_view text) {
   // mdlc's reader's options (xml_document.cc)
   const int options = XML_PARSE_NONET | XML_PARSE_HUGE | XML_PARSE_BIG_LINES |
                       XML_PARSE_NOWARNING | XML_PARSE_NOERROR;
-  Stream stream{text};
-  xmlFreeDoc(xmlCtxtReadIO(parser, Stream::Read, nullptr, &stream, "bench.xml", nullptr, options));
+  // read as XmlDocument::Parse reads
+  xml::MemoryStream stream{text};
+  xmlFreeDoc(
+      xmlCtxtReadIO(parser, xml::MemoryStream::Read, nullptr, &stream, "bench.xml", nullptr, options));
   const bool well_formed = parser->wellFormed != 0;
   xmlFreeParserCtxt(parser);
   return well_formed;

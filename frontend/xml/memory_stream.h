@@ -1,0 +1,24 @@
+// memory_stream.h - a text in memory, handed to libxml2's reader a piece at
+// a time (xmlCtxtReadIO's read callback). xmlCtxtReadMemory would copy the
+// whole buffer first; through this callback the parser holds a few
+// kilobytes of it at a time. The benchmarks' SAX floor reads the same way.
+#pragma once
+
+#include <algorithm>
+#include <cstring>
+#include <string_view>
+
+namespace mdlc::xml {
+
+struct MemoryStream {
+  std::string_view rest;
+  static int Read(void* context, char* out, int size) {
+    auto* self = static_cast<MemoryStream*>(context);
+    const size_t n = std::min(self->rest.size(), static_cast<size_t>(std::max(size, 0)));
+    std::memcpy(out, self->rest.data(), n);
+    self->rest.remove_prefix(n);
+    return static_cast<int>(n);
+  }
+};
+
+}  // namespace mdlc::xml
