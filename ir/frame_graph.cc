@@ -5,11 +5,11 @@ namespace mdlc::ir {
 
 void FrameGraph::IndexNames() {
   names.clear();
-  names.reserve(nodes.size());
+  names.Reserve(nodes.size());
   for (size_t i = 0; i < nodes.size(); ++i) {
     const FrameNode& node = nodes[i];
     if (node.kind == FrameNodeKind::Anchor || node.kind == FrameNodeKind::World) continue;
-    names.emplace(NameKey(Namespace(node.scope), node.name), FrameNodeId(i));  // first one wins
+    names.TryAdd(Namespace(node.scope).value, node.name, FrameNodeId(i));  // first one wins
   }
   names_complete = true;
 }

@@ -20,10 +20,9 @@
 #include <optional>
 #include <vector>
 
-#include <absl/container/flat_hash_map.h>
-
 #include "ir/ids.h"
 #include "ir/location.h"
+#include "ir/scoped_symbol_map.h"
 #include "ir/symbol.h"
 #include "ir/transform.h"
 
@@ -127,27 +126,23 @@ struct FrameGraph {
     while (scopes[scope.index()].merged_into.valid()) scope = scopes[scope.index()].merged_into;
     return scope;
   }
-  /// The key of `name` in namespace `ns` in `names`.
-  static uint64_t NameKey(FrameScopeId ns, Symbol name) {
-    return (uint64_t{ns.value} << 32) | name.value;
-  }
-
   /// Every named node (all but anchors and the world's) by its namespace
   /// and local name; the first node of a name keeps it. The SDFormat reader
   /// fills it as it adds nodes, finding repeated names in it, and
   /// resolve-frames looks references up in it: one table, built once, where
   /// each kept its own (in a world of 100,000 models, the tables outgrow
-  /// the cache and every insert misses). `names_complete` says it holds every
-  /// node; a graph built any other way leaves it false, and resolve-frames
-  /// calls IndexNames.
-  absl::flat_hash_map<uint64_t, FrameNodeId> names;
+  /// the cache and every insert misses). The world scope (scope 0), whose
+  /// names are its models', is indexed by symbol (scoped_symbol_map.h).
+  /// `names_complete` says it holds every node; a graph built any other way
+  /// leaves it false, and resolve-frames calls IndexNames.
+  ScopedSymbolMap<FrameNodeId> names{0};
   bool names_complete = false;
   /// The node named `name` in the namespace of `scope`, if any.
   std::optional<FrameNodeId> FindName(FrameScopeId scope, Symbol name) const {
     if (name.empty()) return std::nullopt;
-    auto it = names.find(NameKey(Namespace(scope), name));
-    if (it == names.end()) return std::nullopt;
-    return it->second;
+    const FrameNodeId* found = names.Find(Namespace(scope).value, name);
+    if (!found) return std::nullopt;
+    return *found;
   }
   /// Builds `names` from the nodes, in order, and marks it complete.
   void IndexNames();

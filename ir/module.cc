@@ -6,10 +6,6 @@
 namespace mdlc::ir {
 namespace {
 
-uint64_t ChildKey(ModelId parent, Symbol local) {
-  return (uint64_t{parent.value} << 32) | local.value;
-}
-
 size_t CountSeparators(std::string_view name) {
   size_t count = 0;
   for (size_t pos = name.find("::"); pos != std::string_view::npos;
@@ -33,7 +29,7 @@ Module::Module() {
 
 ModelId Module::Add(ModelInstance m) {
   const ModelId id(models.size());
-  model_by_parent_.emplace(ChildKey(m.parent, m.local_name), id);
+  model_by_parent_.TryAdd(m.parent.value, m.local_name, id);
   if (!m.parent.valid()) {
     max_top_level_separators_ =
         std::max(max_top_level_separators_, CountSeparators(Text(m.local_name)));
@@ -44,13 +40,13 @@ ModelId Module::Add(ModelInstance m) {
 
 void Module::RenameModel(ModelId model, ModelId parent, Symbol local) {
   ModelInstance& m = models[model.index()];
-  if (auto it = model_by_parent_.find(ChildKey(m.parent, m.local_name));
-      it != model_by_parent_.end() && it->second == model) {
-    model_by_parent_.erase(it);
+  if (const ModelId* held = model_by_parent_.Find(m.parent.value, m.local_name);
+      held && *held == model) {
+    model_by_parent_.Erase(m.parent.value, m.local_name);
   }
   m.parent = parent;
   m.local_name = local;
-  model_by_parent_.emplace(ChildKey(parent, local), model);
+  model_by_parent_.TryAdd(parent.value, local, model);
   if (!parent.valid()) {
     max_top_level_separators_ = std::max(max_top_level_separators_, CountSeparators(Text(local)));
   }
@@ -62,15 +58,15 @@ void Module::ReserveModels(size_t more) {
   // at least doubling, as the frontends' entity tables do
   const size_t capacity = std::max(wanted, 2 * models.capacity());
   models.reserve(capacity);
-  model_by_parent_.reserve(capacity);
+  model_by_parent_.Reserve(capacity - models.size());
 }
 
 void Module::RemoveLastModel() {
   const ModelId last(models.size() - 1);
   const ModelInstance& m = models.back();
-  if (auto it = model_by_parent_.find(ChildKey(m.parent, m.local_name));
-      it != model_by_parent_.end() && it->second == last) {
-    model_by_parent_.erase(it);
+  if (const ModelId* held = model_by_parent_.Find(m.parent.value, m.local_name);
+      held && *held == last) {
+    model_by_parent_.Erase(m.parent.value, m.local_name);
   }
   models.pop_back();
 }
@@ -94,9 +90,9 @@ std::string Module::ModelName(ModelId model) const {
 
 std::optional<ModelId> Module::FindChildModel(ModelId parent, Symbol local) const {
   if (local.empty()) return std::nullopt;
-  auto it = model_by_parent_.find(ChildKey(parent, local));
-  if (it == model_by_parent_.end()) return std::nullopt;
-  return it->second;
+  const ModelId* found = model_by_parent_.Find(parent.value, local);
+  if (!found) return std::nullopt;
+  return *found;
 }
 
 std::optional<ModelId> Module::FindModel(std::string_view scoped, ModelId within) const {

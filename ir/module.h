@@ -17,6 +17,7 @@
 #include "ir/frame_graph.h"
 #include "ir/original_names.h"
 #include "ir/scene_directives.h"
+#include "ir/scoped_symbol_map.h"
 #include "ir/symbol.h"
 
 namespace mdlc::ir {
@@ -114,10 +115,11 @@ struct Module {
   void ReserveModels(size_t more);
 
  private:
-  // (parent, local name) -> the first instance added so; kept by Add. Flat:
-  // a world of many models adds one entry per model, and a node-based map's
-  // allocation and pointer chase per entry grew with the world.
-  absl::flat_hash_map<uint64_t, ModelId> model_by_parent_;
+  // (parent, local name) -> the first instance added so; kept by Add. The
+  // top level (an invalid parent) is indexed by symbol: a world of many
+  // models adds one top-level entry per model, in the order their names
+  // were interned (scoped_symbol_map.h).
+  ScopedSymbolMap<ModelId> model_by_parent_{ModelId().value};
   // the most "::" in a top-level instance's local name: FindModel tries that
   // many longer first components before walking down
   size_t max_top_level_separators_ = 0;

@@ -89,11 +89,12 @@ FrameNodeId SdfReader::AddNode(const ModelScope& s, ir::FrameNode node) {
   const FrameScopeId ns = g.Namespace(s.scope);
   const FrameNodeId id(g.nodes.size());
   node.scope = s.scope;
-  const auto [it, inserted] = g.names.emplace(ir::FrameGraph::NameKey(ns, node.name), id);
+  const auto [holder, inserted] = g.names.TryAdd(ns.value, node.name, id);
   if (inserted) return g.Add(std::move(node));
 
   // the node that has the name; nodes do not move until this one is added
-  ir::FrameNode& first = g[it->second];
+  const FrameNodeId first_id = *holder;
+  ir::FrameNode& first = g[first_id];
   const int first_rank = LoadRank(first.kind), node_rank = LoadRank(node.kind);
   // libsdformat loads links and nested models, then joints, then frames,
   // and renames a later kind that shares an earlier one's name NAME_joint
@@ -103,7 +104,7 @@ FrameNodeId SdfReader::AddNode(const ModelScope& s, ir::FrameNode node) {
   if ((in_world || (s.file && s.file->version < 107)) && first_rank >= 0 && node_rank >= 0 &&
       first_rank != node_rank) {
     const bool rename_first = first_rank > node_rank;
-    const FrameNodeId renamed_id = rename_first ? it->second : id;
+    const FrameNodeId renamed_id = rename_first ? first_id : id;
     ir::FrameNode& renamed = rename_first ? first : node;
     const ir::FrameNode& keeper = rename_first ? node : first;
     const char* kind = renamed.kind == ir::FrameNodeKind::Joint ? "joint" : "frame";
@@ -127,8 +128,8 @@ FrameNodeId SdfReader::AddNode(const ModelScope& s, ir::FrameNode node) {
       case ir::FrameTarget::Frame: module().frames[renamed.target_index].name = renamed.name; break;
       default: break;
     }
-    if (rename_first) it->second = id;  // the newcomer takes the name over
-    g.names.emplace(ir::FrameGraph::NameKey(ns, renamed.name), renamed_id);
+    if (rename_first) *holder = id;  // the newcomer takes the name over
+    g.names.TryAdd(ns.value, renamed.name, renamed_id);
   } else {
     diags()
         .Report(DiagKind::DuplicateName, node.loc,
@@ -212,7 +213,7 @@ void SdfReader::ReserveRoomFor(const xml::XmlDocument& doc) {
   const EntityRoom room = SdfEntityRoom(doc);
   ReserveEntities(module(), room);
   // every node but the anchors of visuals, collisions and sensors has a name
-  graph().names.reserve(graph().names.size() + room.frame_nodes - room.geometries);
+  graph().names.Reserve(room.frame_nodes - room.geometries);
 }
 
 std::optional<ModelId> SdfReader::ReadRootFile(FileId file_id) {

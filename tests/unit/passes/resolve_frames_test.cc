@@ -323,10 +323,11 @@ TEST(ResolveFrames, OldFilesRenameAJointNamedAsItsLink) {  // SDF-001, SDF-011
   const ir::FrameGraph& g = m.frame_graph;
   auto indexed = [&](std::string_view name) -> const ir::FrameNode* {
     const Symbol symbol = m.symbols.Find(name);
-    for (const auto& [key, id] : g.names) {
-      if (static_cast<uint32_t>(key) == symbol.value && g[id].name == symbol) return &g[id];
-    }
-    return nullptr;
+    const ir::FrameNode* found = nullptr;
+    g.names.ForEach([&](uint32_t, Symbol key, FrameNodeId id) {
+      if (key == symbol && g[id].name == symbol) found = &g[id];
+    });
+    return found;
   };
   ASSERT_NE(indexed("arm"), nullptr);
   EXPECT_EQ(indexed("arm")->kind, ir::FrameNodeKind::Link);
