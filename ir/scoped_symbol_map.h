@@ -1,19 +1,26 @@
-// scoped_symbol_map.h - a table of names by (scope, symbol), whose root
-// scope is indexed by the symbol itself.
+// scoped_symbol_map.h - a table of names by (scope, symbol) whose common
+// entries are found by index, not by hash.
 //
 // The frame graph's names and the module's model instances are each one
-// table of every scope's names. In a world of many models the root scope
-// (the world's model frames, the top-level instances) holds one name per
-// model, and in a hash table each of those inserts and lookups lands in a
-// random slot: at 100,000 models the tables no longer fit in the cache and
-// every one of them missed. A model's name is interned as its model is
-// read, so the root scope's symbols come one after another; indexed by the
-// symbol, their entries are written and read in order, next to each other.
-// Every other scope keeps its names in the hash table.
+// table of every scope's names. In a world of many models each model adds
+// two: its name in the root scope (the world's model frames, the top-level
+// instances) and its link's name in its own scope. In a hash table each of
+// those inserts and lookups lands in a random slot, and at 100,000 models
+// the tables no longer fit in the cache and every one of them missed.
+// Here neither is hashed:
+// - the root scope is indexed by the symbol: a model's name is interned as
+//   the model is read, so the root scope's symbols come one after another
+//   and their entries are written and read in order, next to each other;
+// - every other scope's first name is indexed by the scope, whose ids also
+//   come in order; most scopes (a one-link model, a nesting level) hold one
+//   name or a few.
+// A scope's further names go to a hash table.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -24,7 +31,7 @@
 namespace mdlc::ir {
 
 /// (scope, name) -> Value, where Value is an Id (default-constructed:
-/// invalid, which stands for "absent" in the root scope's index).
+/// invalid, which stands for "absent" in the indexes).
 template <typename Value>
 class ScopedSymbolMap {
  public:
@@ -32,12 +39,7 @@ class ScopedSymbolMap {
 
   /// The value of `name` in `scope`; null when it has none.
   const Value* Find(uint32_t scope, Symbol name) const {
-    if (scope == root_scope_) {
-      if (name.value >= root_.size() || !root_[name.value].valid()) return nullptr;
-      return &root_[name.value];
-    }
-    auto it = others_.find(Key(scope, name));
-    return it == others_.end() ? nullptr : &it->second;
+    return const_cast<ScopedSymbolMap*>(this)->Slot(scope, name);
   }
 
   /// Adds (scope, name) -> value unless the key has a value. Returns the
@@ -50,68 +52,99 @@ class ScopedSymbolMap {
       const bool added = !held.valid();
       if (added) {
         held = value;
-        ++root_count_;
+        ++size_;
       }
       return {&held, added};
     }
+    if (scope >= first_.size()) first_.resize(scope + 1);
+    First& first = first_[scope];
+    if (first.value.valid() && first.name == name) return {&first.value, false};
+    if (!first.value.valid() && (others_.empty() || !others_.contains(Key(scope, name)))) {
+      first = First{name, value};
+      ++size_;
+      return {&first.value, true};
+    }
     auto [it, added] = others_.try_emplace(Key(scope, name), value);
+    size_ += added;
     return {&it->second, added};
   }
 
   /// Removes the key's value, if it has one.
   void Erase(uint32_t scope, Symbol name) {
-    if (scope == root_scope_) {
-      if (name.value < root_.size() && root_[name.value].valid()) {
-        root_[name.value] = Value();
-        --root_count_;
+    if (Value* held = Slot(scope, name)) {
+      if (scope != root_scope_ && held != &first_[scope].value) {
+        others_.erase(Key(scope, name));
+      } else {
+        *held = Value();
       }
-      return;
+      --size_;
     }
-    others_.erase(Key(scope, name));
   }
 
-  /// Calls f(scope, name, value) for every entry: the root scope's in
-  /// symbol order, then the others' in no particular order.
+  /// Calls f(scope, name, value) for every entry, in no particular order.
   template <typename F>
   void ForEach(F&& f) const {
     for (uint32_t i = 0; i < root_.size(); ++i) {
       if (root_[i].valid()) f(root_scope_, Symbol{i}, root_[i]);
+    }
+    for (uint32_t scope = 0; scope < first_.size(); ++scope) {
+      if (first_[scope].value.valid()) f(scope, first_[scope].name, first_[scope].value);
     }
     for (const auto& [key, value] : others_) {
       f(static_cast<uint32_t>(key >> 32), Symbol{static_cast<uint32_t>(key)}, value);
     }
   }
 
-  /// Room for `entries` more names outside the root scope.
+  /// Room for `entries` more names beyond each scope's first.
   void Reserve(size_t entries) { others_.reserve(others_.size() + entries); }
-  size_t size() const { return root_count_ + others_.size(); }
+  size_t size() const { return size_; }
   void clear() {
     root_.clear();
-    root_count_ = 0;
+    first_.clear();
     others_.clear();
+    size_ = 0;
   }
 
+  /// The same entries, however they are stored.
   friend bool operator==(const ScopedSymbolMap& a, const ScopedSymbolMap& b) {
-    if (a.root_scope_ != b.root_scope_ || a.root_count_ != b.root_count_ ||
-        a.others_ != b.others_) {
-      return false;
-    }
-    // equal up to the shorter index; past it, only absent entries
-    const auto& [shorter, longer] =
-        a.root_.size() <= b.root_.size() ? std::tie(a.root_, b.root_) : std::tie(b.root_, a.root_);
-    for (size_t i = 0; i < longer.size(); ++i) {
-      if ((i < shorter.size() ? shorter[i] : Value()) != longer[i]) return false;
-    }
-    return true;
+    return a.root_scope_ == b.root_scope_ && a.Entries() == b.Entries();
   }
 
  private:
+  struct First {
+    Symbol name;
+    Value value;
+  };
   static uint64_t Key(uint32_t scope, Symbol name) { return (uint64_t{scope} << 32) | name.value; }
 
+  Value* Slot(uint32_t scope, Symbol name) {
+    if (scope == root_scope_) {
+      if (name.value >= root_.size() || !root_[name.value].valid()) return nullptr;
+      return &root_[name.value];
+    }
+    if (scope < first_.size() && first_[scope].value.valid() && first_[scope].name == name) {
+      return &first_[scope].value;
+    }
+    if (others_.empty()) return nullptr;
+    auto it = others_.find(Key(scope, name));
+    return it == others_.end() ? nullptr : &it->second;
+  }
+
+  std::vector<std::tuple<uint32_t, uint32_t, uint32_t>> Entries() const {
+    std::vector<std::tuple<uint32_t, uint32_t, uint32_t>> out;
+    out.reserve(size_);
+    ForEach([&](uint32_t scope, Symbol name, Value value) {
+      out.emplace_back(scope, name.value, value.value);
+    });
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
   uint32_t root_scope_;
-  std::vector<Value> root_;  // by symbol
-  size_t root_count_ = 0;
+  std::vector<Value> root_;    // the root scope's, by symbol
+  std::vector<First> first_;   // each other scope's first name, by scope
   absl::flat_hash_map<uint64_t, Value> others_;
+  size_t size_ = 0;
 };
 
 }  // namespace mdlc::ir

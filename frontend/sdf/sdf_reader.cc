@@ -212,8 +212,11 @@ void SdfReader::ReportUnknownChild(const xml::XmlElement& e, const xml::XmlEleme
 void SdfReader::ReserveRoomFor(const xml::XmlDocument& doc) {
   const EntityRoom room = SdfEntityRoom(doc);
   ReserveEntities(module(), room);
-  // every node but the anchors of visuals, collisions and sensors has a name
-  graph().names.Reserve(room.frame_nodes - room.geometries);
+  // every node but the anchors of visuals, collisions and sensors has a
+  // name; the names table indexes a model's name in the world and the first
+  // name in each model's scope without hashing, and hashes the rest
+  const size_t named = room.frame_nodes - room.geometries;
+  graph().names.Reserve(named > 2 * room.models ? named - 2 * room.models : 0);
 }
 
 std::optional<ModelId> SdfReader::ReadRootFile(FileId file_id) {
