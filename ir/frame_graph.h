@@ -132,7 +132,9 @@ struct FrameGraph {
   /// resolve-frames looks references up in it: one table, built once, where
   /// each kept its own (in a world of 100,000 models, the tables outgrow
   /// the cache and every insert misses). The world scope (scope 0), whose
-  /// names are its models', is indexed by symbol (scoped_symbol_map.h).
+  /// names are its models', is indexed by symbol, and each other scope's
+  /// first name by the scope, so a world's names are kept in order
+  /// (scoped_symbol_map.h).
   /// `names_complete` says it holds every node; a graph built any other way
   /// leaves it false, and resolve-frames calls IndexNames.
   ScopedSymbolMap<FrameNodeId> names{0};

@@ -38,9 +38,7 @@ class ScopedSymbolMap {
   explicit ScopedSymbolMap(uint32_t root_scope) : root_scope_(root_scope) {}
 
   /// The value of `name` in `scope`; null when it has none.
-  const Value* Find(uint32_t scope, Symbol name) const {
-    return const_cast<ScopedSymbolMap*>(this)->Slot(scope, name);
-  }
+  const Value* Find(uint32_t scope, Symbol name) const { return SlotIn(*this, scope, name); }
 
   /// Adds (scope, name) -> value unless the key has a value. Returns the
   /// value the key holds (valid until the next insertion) and whether it
@@ -71,14 +69,15 @@ class ScopedSymbolMap {
 
   /// Removes the key's value, if it has one.
   void Erase(uint32_t scope, Symbol name) {
-    if (Value* held = Slot(scope, name)) {
-      if (scope != root_scope_ && held != &first_[scope].value) {
-        others_.erase(Key(scope, name));
-      } else {
-        *held = Value();
-      }
-      --size_;
+    Value* held = SlotIn(*this, scope, name);
+    if (!held) return;
+    const bool indexed = scope == root_scope_ || held == &first_[scope].value;
+    if (indexed) {
+      *held = Value();
+    } else {
+      others_.erase(Key(scope, name));
     }
+    --size_;
   }
 
   /// Calls f(scope, name, value) for every entry, in no particular order.
@@ -117,17 +116,21 @@ class ScopedSymbolMap {
   };
   static uint64_t Key(uint32_t scope, Symbol name) { return (uint64_t{scope} << 32) | name.value; }
 
-  Value* Slot(uint32_t scope, Symbol name) {
-    if (scope == root_scope_) {
-      if (name.value >= root_.size() || !root_[name.value].valid()) return nullptr;
-      return &root_[name.value];
+  // The value held for (scope, name), or null; `Self` is the map, const
+  // or not, and the pointer is as const as it.
+  template <typename Self>
+  static auto SlotIn(Self& self, uint32_t scope, Symbol name) -> decltype(&self.root_[0]) {
+    if (scope == self.root_scope_) {
+      if (name.value >= self.root_.size() || !self.root_[name.value].valid()) return nullptr;
+      return &self.root_[name.value];
     }
-    if (scope < first_.size() && first_[scope].value.valid() && first_[scope].name == name) {
-      return &first_[scope].value;
-    }
-    if (others_.empty()) return nullptr;
-    auto it = others_.find(Key(scope, name));
-    return it == others_.end() ? nullptr : &it->second;
+    // a scope with a name past its first has its index too (TryAdd)
+    if (scope >= self.first_.size()) return nullptr;
+    auto& first = self.first_[scope];
+    if (first.value.valid() && first.name == name) return &first.value;
+    if (self.others_.empty()) return nullptr;
+    auto it = self.others_.find(Key(scope, name));
+    return it == self.others_.end() ? nullptr : &it->second;
   }
 
   std::vector<std::tuple<uint32_t, uint32_t, uint32_t>> Entries() const {
