@@ -58,7 +58,6 @@ void Module::ReserveModels(size_t more) {
   // at least doubling, as the frontends' entity tables do
   const size_t capacity = std::max(wanted, 2 * models.capacity());
   models.reserve(capacity);
-  model_by_parent_.Reserve(capacity - models.size());
 }
 
 void Module::RemoveLastModel() {

@@ -11,8 +11,6 @@
 #include <string_view>
 #include <vector>
 
-#include <absl/container/flat_hash_map.h>
-
 #include "ir/entities.h"
 #include "ir/frame_graph.h"
 #include "ir/original_names.h"
@@ -110,8 +108,9 @@ struct Module {
   void RenameModel(ModelId model, ModelId parent, Symbol local);
   /// Removes the last model instance added (nothing may refer to it any more).
   void RemoveLastModel();
-  /// Room for `more` model instances past the current ones, in the table and
-  /// in the index by name.
+  /// Room for `more` model instances past the current ones in the table.
+  /// The index by name needs none for a top-level instance or a parent's
+  /// first child, which it keeps without hashing (scoped_symbol_map.h).
   void ReserveModels(size_t more);
 
  private:

@@ -57,7 +57,9 @@ class ScopedSymbolMap {
     if (scope >= first_.size()) first_.resize(scope + 1);
     First& first = first_[scope];
     if (first.value.valid() && first.name == name) return {&first.value, false};
-    if (!first.value.valid() && (others_.empty() || !others_.contains(Key(scope, name)))) {
+    // an empty first index means the scope has no other name unless an
+    // erase emptied it, so only then is the hash table asked
+    if (!first.value.valid() && (vacated_firsts_ == 0 || !others_.contains(Key(scope, name)))) {
       first = First{name, value};
       ++size_;
       return {&first.value, true};
@@ -74,6 +76,7 @@ class ScopedSymbolMap {
     const bool indexed = scope == root_scope_ || held == &first_[scope].value;
     if (indexed) {
       *held = Value();
+      if (scope != root_scope_) ++vacated_firsts_;
     } else {
       others_.erase(Key(scope, name));
     }
@@ -102,6 +105,7 @@ class ScopedSymbolMap {
     first_.clear();
     others_.clear();
     size_ = 0;
+    vacated_firsts_ = 0;
   }
 
   /// The same entries, however they are stored.
@@ -148,6 +152,7 @@ class ScopedSymbolMap {
   std::vector<First> first_;   // each other scope's first name, by scope
   absl::flat_hash_map<uint64_t, Value> others_;
   size_t size_ = 0;
+  size_t vacated_firsts_ = 0;  // first indexes an erase emptied (never decreases)
 };
 
 }  // namespace mdlc::ir
