@@ -59,7 +59,7 @@ class ScopedSymbolMap {
     if (first.value.valid() && first.name == name) return {&first.value, false};
     // an empty first index means the scope has no other name unless an
     // erase emptied it, so only then is the hash table asked
-    if (!first.value.valid() && (vacated_firsts_ == 0 || !others_.contains(Key(scope, name)))) {
+    if (!first.value.valid() && (!first_vacated_ || !others_.contains(Key(scope, name)))) {
       first = First{name, value};
       ++size_;
       return {&first.value, true};
@@ -76,7 +76,7 @@ class ScopedSymbolMap {
     const bool indexed = scope == root_scope_ || held == &first_[scope].value;
     if (indexed) {
       *held = Value();
-      if (scope != root_scope_) ++vacated_firsts_;
+      if (scope != root_scope_) first_vacated_ = true;
     } else {
       others_.erase(Key(scope, name));
     }
@@ -105,7 +105,7 @@ class ScopedSymbolMap {
     first_.clear();
     others_.clear();
     size_ = 0;
-    vacated_firsts_ = 0;
+    first_vacated_ = false;
   }
 
   /// The same entries, however they are stored.
@@ -152,7 +152,7 @@ class ScopedSymbolMap {
   std::vector<First> first_;   // each other scope's first name, by scope
   absl::flat_hash_map<uint64_t, Value> others_;
   size_t size_ = 0;
-  size_t vacated_firsts_ = 0;  // first indexes an erase emptied (never decreases)
+  bool first_vacated_ = false;  // whether an erase ever emptied a first index
 };
 
 }  // namespace mdlc::ir

@@ -98,11 +98,11 @@ fi
 
 echo "==> configuring and building in $build_dir"
 # optimized, with line tables and function names only (-g1): enough for
-# profiles and stack traces, and a third less compile time than a full -g
+# profiles and stack traces, and about 30% less compile time than a full -g
 # (the largest unit-test source: 67 s with -g, 47 s with -g1)
+optimized="-O2 -g1 -DNDEBUG"
 config=(-G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
-        "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
-        "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG")
+        "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$optimized" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=$optimized")
 if [ "$mode" = example ]; then
   # only the command: no tests, benchmarks or Python module
   config+=(-DMDLC_BUILD_TESTS=OFF -DMDLC_BUILD_BENCHMARKS=OFF -DMDLC_BUILD_PYTHON=OFF)
