@@ -140,6 +140,35 @@ std::optional<fs::path> GazeboModelFolder(std::string_view name, const std::stri
   }
   return std::nullopt;
 }
+
+// The nearest folder above `base_dir` whose package.xml names `name`. Drake
+// does not look upward for packages (nor does mdlc: COMMON-011), but a model
+// that names its own package is the common case of a package left off the
+// command line, so the error says which folder to give. Read quietly with
+// its own sources: this is a hint, and the walk stops at the first match.
+std::optional<fs::path> EnclosingPackageNamed(std::string_view name, const std::string& base_dir) {
+  constexpr int kMaxLevels = 64;  // a bound on the walk, far above real trees
+  std::error_code ec;
+  fs::path dir = fs::absolute(base_dir, ec);
+  if (ec) return std::nullopt;
+  for (int level = 0; level < kMaxLevels; ++level) {
+    const fs::path manifest = dir / "package.xml";
+    if (fs::is_regular_file(manifest, ec)) {
+      SourceManager sources;
+      DiagnosticEngine quiet;
+      if (auto file = sources.LoadFile(manifest.string())) {
+        if (auto doc = xml::XmlDocument::Parse(*file, sources, quiet)) {
+          xml::XmlElement root = doc->Root();
+          xml::XmlElement element = root.Child("name");
+          if (root.Name() == "package" && element && xml::Trim(element.Text()) == name) return dir;
+        }
+      }
+    }
+    if (!dir.has_parent_path() || dir == dir.parent_path()) break;
+    dir = dir.parent_path();
+  }
+  return std::nullopt;
+}
 }  // namespace
 
 std::optional<std::string> UriToPath(std::string_view uri, const std::string& base_dir,
@@ -187,6 +216,13 @@ std::optional<std::string> UriToPath(std::string_view uri, const std::string& ba
                                      packages.searched().empty()
                                          ? std::string("no folders")
                                          : fmt::format("'{}'", fmt::join(packages.searched(), "', '"))));
+        }
+        if (auto enclosing = EnclosingPackageNamed(name, base_dir)) {
+          std::error_code ec;
+          const std::string folder = fs::proximate(*enclosing, ec).string();
+          diag.Note(loc, fmt::format("the package.xml in '{}', a folder above this file, names "
+                                     "package '{}': give --package-path {}",
+                                     folder, name, folder));
         }
         return std::nullopt;
       }

@@ -176,5 +176,29 @@ TEST_F(PackageMapTest, UnresolvableUrisAreErrors) {  // COMMON-010, COMMON-011
   EXPECT_NE(diags_.diagnostics()[2].message.find("does not exist"), std::string::npos);
 }
 
+TEST_F(PackageMapTest, UnknownPackageNamedAboveTheFileSaysWhichFolderToGive) {  // COMMON-011
+  // the package is still unknown (Drake does not look upward either); the
+  // note names the folder whose package.xml, above the referring file,
+  // names it
+  Package("ws/own", "own");
+  Package("ws/own/robots", "inner");  // a nearer package.xml of another name
+  Write("ws/own/robots/urdf/robot.urdf", "<robot name='r'/>");
+  PackageMap map;
+  const std::string base = (root_ / "ws/own/robots/urdf").string();
+  EXPECT_FALSE(ResolveUri("package://own/meshes/a.obj", base, map, {}, diags_));
+  ASSERT_EQ(diags_.error_count(), 1u);
+  const Diagnostic& d = diags_.diagnostics()[0];
+  ASSERT_EQ(d.notes.size(), 2u);
+  EXPECT_NE(d.notes[1].message.find("names package 'own': give --package-path "),
+            std::string::npos)
+      << d.notes[1].message;
+  const std::string named = d.notes[1].message.substr(d.notes[1].message.rfind(' ') + 1);
+  EXPECT_EQ(fs::weakly_canonical(named).string(), Canonical("ws/own"));
+  // a package no folder above names gets no such note
+  EXPECT_FALSE(ResolveUri("package://elsewhere/a.obj", base, map, {}, diags_));
+  ASSERT_EQ(diags_.error_count(), 2u);
+  EXPECT_EQ(diags_.diagnostics()[1].notes.size(), 1u);
+}
+
 }  // namespace
 }  // namespace mdlc::assets
