@@ -102,6 +102,25 @@ void PackageMap::PopulateFromPathList(std::string_view paths, SourceManager& sou
   for (const std::string& root : SplitPathList(paths)) PopulateFromFolder(root, sources, diags);
 }
 
+void PackageMap::PopulateFromAmentPrefixes(std::string_view prefixes) {
+  for (const std::string& prefix : SplitPathList(prefixes)) {
+    // a prefix without an index holds no ROS packages (an install prefix may
+    // hold anything): skipped quietly, as ROS 2's own lookup does
+    const fs::path index = fs::path(prefix) / "share/ament_index/resource_index/packages";
+    std::error_code ec;
+    fs::directory_iterator entries(index, ec);
+    if (ec) continue;
+    searched_.push_back(fmt::format("{} (ament index)", prefix));
+    for (const fs::directory_entry& entry : entries) {
+      const std::string name = entry.path().filename().string();
+      if (packages_.contains(name)) continue;  // an earlier source wins
+      const fs::path share = fs::path(prefix) / "share" / name;
+      if (!fs::is_directory(share, ec)) continue;  // registered, not installed
+      packages_.emplace(name, Package{fs::weakly_canonical(share, ec).string(), std::nullopt, {}});
+    }
+  }
+}
+
 const PackageMap::Package* PackageMap::Find(std::string_view name) const {
   auto it = packages_.find(name);
   return it == packages_.end() ? nullptr : &it->second;
@@ -210,7 +229,7 @@ std::optional<std::string> UriToPath(std::string_view uri, const std::string& ba
             fmt::format("unknown package '{}' in '{}'", name, uri));
         if (packages.searched().empty() && packages.size() == 0) {
           diag.Note(loc, "no packages are known: give --package-path DIR, --package NAME=DIR "
-                         "or set ROS_PACKAGE_PATH");
+                         "or set ROS_PACKAGE_PATH or AMENT_PREFIX_PATH");
         } else {
           diag.Note(loc, fmt::format("{} packages known; searched {}", packages.size(),
                                      packages.searched().empty()

@@ -3,8 +3,8 @@
 //
 // A package is a directory holding a package.xml; its name is that file's
 // <name> element, not the directory's. The map is filled explicitly (Add),
-// by scanning folders (PopulateFromFolder, e.g. for --package-path) or from
-// ROS_PACKAGE_PATH, and is then used to resolve `package://`, `model://`,
+// by scanning folders (PopulateFromFolder, e.g. for --package-path), from
+// ROS_PACKAGE_PATH, or from a ROS 2 install's ament index, and is then used to resolve `package://`, `model://`,
 // `file://`, absolute and relative references. It is a plain value type that
 // embedders fill programmatically as well.
 #pragma once
@@ -46,6 +46,14 @@ class PackageMap {
   /// PackageScan shared by many compiles): the same packages, diagnostics
   /// and "searched" folders, without walking the folder again.
   void PopulateFromScan(const FolderScan& scan, SourceManager& sources, DiagnosticEngine& diags);
+
+  /// The packages a ROS 2 install registers: for each prefix of the
+  /// colon-separated `prefixes` (AMENT_PREFIX_PATH), every NAME in its ament
+  /// resource index (PREFIX/share/ament_index/resource_index/packages/NAME)
+  /// is a package at PREFIX/share/NAME. An earlier prefix overlays a later
+  /// one, as in ROS 2, and a package already known (given explicitly or
+  /// found under a package path) keeps its folder; neither is a warning.
+  void PopulateFromAmentPrefixes(std::string_view prefixes);
 
   const Package* Find(std::string_view name) const;
   size_t size() const { return packages_.size(); }

@@ -36,6 +36,10 @@ std::vector<std::string> PackageFolders(const Options& options) {
   return folders;
 }
 
+// Packages come from the explicit list, then the package paths and ROS 1's
+// ROS_PACKAGE_PATH (walked for package.xml files), then a ROS 2 install's
+// ament index. Reading an index lists one folder per prefix, so it is done
+// per compile rather than kept in the shared scan.
 void DefinePackages(const Options& options, Compilation& c) {
   for (const auto& [name, dir] : options.packages) c.packages.Add(name, dir, c.diags);
   const std::vector<std::string> folders = PackageFolders(options);
@@ -43,9 +47,14 @@ void DefinePackages(const Options& options, Compilation& c) {
     for (const assets::FolderScan& folder : options.package_scan->folders()) {
       c.packages.PopulateFromScan(folder, c.sources, c.diags);
     }
-    return;
+  } else {
+    for (const std::string& dir : folders) c.packages.PopulateFromFolder(dir, c.sources, c.diags);
   }
-  for (const std::string& dir : folders) c.packages.PopulateFromFolder(dir, c.sources, c.diags);
+  if (options.use_ros_package_path) {
+    if (const char* prefixes = std::getenv("AMENT_PREFIX_PATH")) {
+      c.packages.PopulateFromAmentPrefixes(prefixes);
+    }
+  }
 }
 
 void CheckJointPositions(const Options& options, Compilation& c) {

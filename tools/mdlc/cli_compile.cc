@@ -33,7 +33,8 @@ bool ApplyWarningFlags(const CompileFlags& flags, DiagnosticPolicy& policy, std:
   return true;
 }
 
-// --package NAME=DIR, --package-path DIR, and ROS_PACKAGE_PATH
+// --package NAME=DIR, --package-path DIR, and the ROS environment
+// (ROS_PACKAGE_PATH, AMENT_PREFIX_PATH)
 bool ParsePackages(const CompileFlags& flags, Options& options) {
   for (const std::string& definition : flags.packages) {
     const size_t eq = definition.find('=');

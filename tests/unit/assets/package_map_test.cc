@@ -1,12 +1,14 @@
 // PackageMap and URI resolution (COMMON-010..014).
 #include "frontend/assets/package_map.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace mdlc::assets {
 namespace {
@@ -198,6 +200,47 @@ TEST_F(PackageMapTest, UnknownPackageNamedAboveTheFileSaysWhichFolderToGive) {  
   EXPECT_FALSE(ResolveUri("package://elsewhere/a.obj", base, map, {}, diags_));
   ASSERT_EQ(diags_.error_count(), 2u);
   EXPECT_EQ(diags_.diagnostics()[1].notes.size(), 1u);
+}
+
+// A ROS 2 install: PREFIX/share/ament_index/resource_index/packages/NAME
+// registers the package at PREFIX/share/NAME.
+TEST_F(PackageMapTest, AmentIndexNamesTheInstalledPackages) {  // COMMON-012
+  auto install = [&](const std::string& prefix, const std::string& name, bool share = true) {
+    Write(fs::path(prefix) / "share/ament_index/resource_index/packages" / name, "");
+    if (share) fs::create_directories(root_ / prefix / "share" / name / "urdf");
+  };
+  install("overlay", "robot_description");
+  install("underlay", "robot_description");  // overlaid by the first prefix
+  install("underlay", "gripper_description");
+  install("underlay", "registered_only", /*share=*/false);
+  install("underlay", "given");
+  fs::create_directories(root_ / "plain/share");  // a prefix holding no index
+  Package("given_elsewhere", "given");
+
+  PackageMap map;
+  map.PopulateFromFolder((root_ / "given_elsewhere").string(), sources_, diags_);
+  map.PopulateFromAmentPrefixes(fmt::format("{}::{}:{}:{}", (root_ / "overlay").string(),
+                                            (root_ / "plain").string(),
+                                            (root_ / "missing").string(),
+                                            (root_ / "underlay").string()));
+  EXPECT_EQ(diags_.diagnostics().size(), 0u);  // overlays are normal in ROS 2
+  ASSERT_TRUE(map.Find("robot_description"));
+  EXPECT_EQ(map.Find("robot_description")->path, Canonical("overlay/share/robot_description"));
+  ASSERT_TRUE(map.Find("gripper_description"));
+  EXPECT_EQ(map.Find("gripper_description")->path,
+            Canonical("underlay/share/gripper_description"));
+  EXPECT_FALSE(map.Find("registered_only"));
+  ASSERT_TRUE(map.Find("given"));  // what a package path found comes first
+  EXPECT_EQ(map.Find("given")->path, Canonical("given_elsewhere"));
+  EXPECT_EQ(map.size(), 3u);
+  // the prefixes with an index are named in "searched" notes
+  const std::vector<std::string> searched = {(root_ / "given_elsewhere").string(),
+                                             (root_ / "overlay").string() + " (ament index)",
+                                             (root_ / "underlay").string() + " (ament index)"};
+  EXPECT_EQ(map.searched(), searched);
+  const auto mesh = ResolveUri("package://gripper_description/urdf", "/", map, {}, diags_);
+  ASSERT_TRUE(mesh);
+  EXPECT_EQ(Canon(mesh), Canonical("underlay/share/gripper_description/urdf"));
 }
 
 }  // namespace

@@ -150,5 +150,25 @@ TEST_F(PackageScanTest, RosPackagePathIsPartOfTheScan) {
   ::unsetenv("ROS_PACKAGE_PATH");
 }
 
+TEST_F(PackageScanTest, AmentPrefixPathIsReadWithTheRosEnvironment) {
+  // 'hidden' installed in a ROS 2 prefix, as colcon lays it out
+  Write("install/share/ament_index/resource_index/packages/hidden", "");
+  Write("install/share/hidden/x.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  ASSERT_EQ(::setenv("AMENT_PREFIX_PATH", (root_ / "install").string().c_str(), 1), 0);
+  const std::string resolved =
+      "package://hidden/x.obj -> " + (root_ / "install/share/hidden/x.obj").string();
+  // a library reads the environment only when asked
+  EXPECT_EQ(Outcome(options_).find(resolved), std::string::npos);
+  Options ros = options_;
+  ros.use_ros_package_path = true;
+  const std::string walked = Outcome(ros);
+  EXPECT_NE(walked.find(resolved), std::string::npos) << walked;
+  EXPECT_EQ(walked.find("unknown package"), std::string::npos) << walked;
+  // the index is read per compile, alongside a shared scan
+  ros.package_scan = ScanPackages(ros);
+  EXPECT_EQ(Outcome(ros), walked);
+  ::unsetenv("AMENT_PREFIX_PATH");
+}
+
 }  // namespace
 }  // namespace mdlc

@@ -52,8 +52,9 @@ def compile(source, format=None, *, name=None, packages=None, package_paths=(),
         against (default: 'model.' + the format's extension, in the current
         directory).
     packages: {name: directory} for package:// URIs; package_paths: folders
-        searched for package.xml; use_ros_package_path: also search
-        ROS_PACKAGE_PATH.
+        searched for package.xml; use_ros_package_path: also use the ROS
+        environment (ROS_PACKAGE_PATH, and the ament index of each
+        AMENT_PREFIX_PATH prefix).
     strict: warnings are errors. disabled_warnings / error_warnings: -W groups
         silenced / made errors.
     model_name, auto_rename: as --model-name and --auto-rename.

@@ -73,8 +73,10 @@ struct Options {
   std::vector<std::pair<std::string, std::string>> packages;
   /// Folders searched for package.xml files (`--package-path DIR`).
   std::vector<std::string> package_paths;
-  /// Also search the folders of the ROS_PACKAGE_PATH environment variable
-  /// (the command line does; a library reads the environment only if asked).
+  /// Also use the ROS environment: the folders of ROS_PACKAGE_PATH (ROS 1,
+  /// searched like package_paths), then the packages of the ament index of
+  /// each AMENT_PREFIX_PATH prefix (ROS 2). The command line does; a library
+  /// reads the environment only if asked.
   bool use_ros_package_path = false;
   /// The folders above, walked once before (ScanPackages) and shared by many
   /// compiles, e.g. from several threads: the compile reads the packages
