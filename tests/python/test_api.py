@@ -269,6 +269,27 @@ class Packages(unittest.TestCase):
         self.assertEqual(model.to_json(), by_map.to_json())
 
 
+class ResolveUri(unittest.TestCase):  # COMMON-010, COMMON-011
+    def test_a_package_uri_resolves_as_a_models_mesh_does(self):
+        mesh = next((EXAMPLES / "urdf/meshes").iterdir())
+        uri = f"package://mdlc_examples/urdf/meshes/{mesh.name}"
+        path = mdlc.resolve_uri(uri, package_paths=[EXAMPLES])
+        self.assertEqual(pathlib.Path(path).resolve(), mesh.resolve())
+        by_map = mdlc.resolve_uri(uri, packages={"mdlc_examples": str(EXAMPLES)})
+        self.assertEqual(pathlib.Path(by_map).resolve(), mesh.resolve())
+        relative = mdlc.resolve_uri(f"meshes/{mesh.name}", relative_to=EXAMPLES / "urdf")
+        self.assertEqual(pathlib.Path(relative).resolve(), mesh.resolve())
+
+    def test_what_names_no_file_raises_with_the_reason(self):
+        with self.assertRaises(FileNotFoundError) as caught:
+            mdlc.resolve_uri("package://no_such_package/a.obj", package_paths=[EXAMPLES])
+        self.assertIn("unknown package 'no_such_package'", str(caught.exception))
+        self.assertIn(f"searched '{EXAMPLES}'", str(caught.exception))
+        with self.assertRaises(FileNotFoundError) as caught:
+            mdlc.resolve_uri("package://mdlc_examples/missing.obj", package_paths=[EXAMPLES])
+        self.assertIn("which does not exist", str(caught.exception))
+
+
 class Version(unittest.TestCase):
     def test_version_is_the_librarys(self):
         self.assertRegex(mdlc.__version__, r"^\d+\.\d+\.\d+$")

@@ -78,6 +78,19 @@ std::shared_ptr<const assets::PackageScan> ScanPackages(const Options& options) 
   return std::make_shared<const assets::PackageScan>(PackageFolders(options));
 }
 
+UriResolution ResolveUri(std::string_view uri, const Options& options,
+                         const std::string& base_dir) {
+  Compilation c(options.diagnostics);
+  c.sources.set_limits(options.limits);  // package.xml files are read within them
+  DefinePackages(options, c);
+  UriResolution resolution;
+  resolution.path = assets::ResolveUri(uri, base_dir, c.packages, {}, c.diags);
+  for (const Diagnostic& d : c.diags.diagnostics()) {
+    resolution.messages.push_back(FormatDiagnosticText(d, c.sources, /*color=*/false));
+  }
+  return resolution;
+}
+
 Result Compile(const std::vector<Input>& inputs, const Options& options) {
   auto c = std::make_unique<Compilation>(options.diagnostics);
   if (options.on_diagnostic) {

@@ -136,4 +136,19 @@ PYBIND11_MODULE(_mdlc, m) {
       py::arg("use_ros_package_path"), py::arg("strict"), py::arg("disabled_warnings"),
       py::arg("error_warnings"), py::arg("model_name"), py::arg("auto_rename"),
       py::arg("joint_positions"), py::arg("limits"), py::arg("mesh_reader"));
+
+  m.def(
+      "_resolve_uri",
+      [](const std::string& uri, const std::vector<std::pair<std::string, std::string>>& packages,
+         const std::vector<std::string>& package_paths, bool use_ros_package_path,
+         const std::string& relative_to) {
+        Options options;
+        options.packages = packages;
+        options.package_paths = package_paths;
+        options.use_ros_package_path = use_ros_package_path;
+        UriResolution resolution = ResolveUri(uri, options, relative_to);
+        return std::make_pair(std::move(resolution.path), std::move(resolution.messages));
+      },
+      py::arg("uri"), py::arg("packages"), py::arg("package_paths"),
+      py::arg("use_ros_package_path"), py::arg("relative_to"));
 }

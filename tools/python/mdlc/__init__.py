@@ -17,7 +17,7 @@ from ._mdlc import (Actuator, Body, Camera, Constraint, Diagnostic, Frame, Geome
                     Model, Pose)
 
 __version__ = _mdlc.__version__
-__all__ = ["compile", "CompileError", "Model", "Body", "Joint", "Frame", "Geometry",
+__all__ = ["compile", "resolve_uri", "CompileError", "Model", "Body", "Joint", "Frame", "Geometry",
            "Actuator", "Constraint", "Camera", "Pose", "Diagnostic"]
 
 
@@ -86,6 +86,24 @@ def compile(source, format=None, *, name=None, packages=None, package_paths=(),
     if model is None:
         raise CompileError(diagnostics)
     return model
+
+
+def resolve_uri(uri, *, packages=None, package_paths=(), use_ros_package_path=False,
+                relative_to="."):
+    """The existing file (or folder) that a package://, model:// or file://
+    URI, or a path relative to `relative_to`, names: resolved as a model's
+    mesh reference is, with the same package arguments as compile(). For
+    files no model names, such as textures or controller configurations.
+
+    Raises FileNotFoundError, whose message gives the reasons (an unknown
+    package and the folders searched, or the path that does not exist).
+    """
+    path, messages = _mdlc._resolve_uri(
+        os.fspath(uri), sorted((packages or {}).items()),
+        [os.fspath(p) for p in package_paths], use_ros_package_path, os.fspath(relative_to))
+    if path is None:
+        raise FileNotFoundError("".join(messages) or f"cannot resolve '{uri}'")
+    return path
 
 
 _EXTENSIONS = {"urdf": ".urdf", "sdf": ".sdf", "sdformat": ".sdf", "mjcf": ".xml",

@@ -238,6 +238,23 @@ class Result {
 /// Options::package_scan. The scan never changes: share it among threads.
 std::shared_ptr<const assets::PackageScan> ScanPackages(const Options& options);
 
+/// What ResolveUri found: the file, or the diagnostics that say why not.
+struct UriResolution {
+  std::optional<std::string> path;  // lexically normal; set when the file exists
+  /// Each diagnostic as `mdlc compile` prints it (with its notes), e.g. an
+  /// unknown package with the folders searched, or a path that does not exist.
+  std::vector<std::string> messages;
+  bool ok() const { return path.has_value(); }
+};
+
+/// Resolves a `package://`, `model://` or `file://` URI, or a path (relative
+/// to `base_dir`), to an existing file or folder with the packages `options`
+/// defines, exactly as a model's mesh reference is resolved: for files that
+/// no model names, such as a texture or a controller's configuration
+/// (Drake's PackageMap::ResolveUrl). Only the package options are used.
+UriResolution ResolveUri(std::string_view uri, const Options& options = {},
+                         const std::string& base_dir = ".");
+
 /// Compiles the inputs into one plant, as `mdlc compile` does. Never throws
 /// for a bad model: problems are diagnostics, and ok() is false.
 Result Compile(const std::vector<Input>& inputs, const Options& options = {});
