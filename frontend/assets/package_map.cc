@@ -41,6 +41,18 @@ bool PackageMap::Add(const std::string& name, const std::string& path, Diagnosti
   return true;
 }
 
+namespace {
+// The package a parsed package.xml names: its <package> root's <name>,
+// trimmed; nullopt when the root is not <package> or the name is empty.
+std::optional<std::string> ManifestPackageName(xml::XmlElement root) {
+  if (root.Name() != "package") return std::nullopt;
+  xml::XmlElement name = root.Child("name");
+  std::string text(xml::Trim(name ? name.Text() : std::string()));
+  if (text.empty()) return std::nullopt;
+  return text;
+}
+}  // namespace
+
 void PackageMap::AddFromManifest(const ManifestFile& manifest, SourceManager& sources,
                                  DiagnosticEngine& diags) {
   // package.xml is read strictly (COMMON-014)
@@ -54,13 +66,14 @@ void PackageMap::AddFromManifest(const ManifestFile& manifest, SourceManager& so
   auto doc = xml::XmlDocument::Parse(*file, sources, diags);
   if (!doc) return;
   xml::XmlElement root = doc->Root();
-  xml::XmlElement name = root.Child("name");
-  const std::string text(xml::Trim(name ? name.Text() : std::string()));
-  if (root.Name() != "package" || text.empty()) {
+  const std::optional<std::string> named = ManifestPackageName(root);
+  if (!named) {
     diags.Report(DiagKind::MissingElement, root.GetLoc(),
                  "package.xml must be a <package> with a non-empty <name>");
     return;
   }
+  const std::string& text = *named;
+  xml::XmlElement name = root.Child("name");
   std::optional<std::string> deprecated;
   if (auto exp = root.Child("export")) {
     if (auto dep = exp.Child("deprecated")) deprecated = dep.Text();
@@ -177,9 +190,7 @@ std::optional<fs::path> EnclosingPackageNamed(std::string_view name, const std::
       DiagnosticEngine quiet;
       if (auto file = sources.LoadFile(manifest.string())) {
         if (auto doc = xml::XmlDocument::Parse(*file, sources, quiet)) {
-          xml::XmlElement root = doc->Root();
-          xml::XmlElement element = root.Child("name");
-          if (root.Name() == "package" && element && xml::Trim(element.Text()) == name) return dir;
+          if (ManifestPackageName(doc->Root()) == name) return dir;
         }
       }
     }

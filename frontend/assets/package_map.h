@@ -4,8 +4,9 @@
 // A package is a directory holding a package.xml; its name is that file's
 // <name> element, not the directory's. The map is filled explicitly (Add),
 // by scanning folders (PopulateFromFolder, e.g. for --package-path), from
-// ROS_PACKAGE_PATH, or from a ROS 2 install's ament index, and is then used to resolve `package://`, `model://`,
-// `file://`, absolute and relative references. It is a plain value type that
+// ROS_PACKAGE_PATH, or from a ROS 2 install's ament index, and is then used
+// to resolve `package://`, `model://`, `file://`, absolute and relative
+// references. It is a plain value type that
 // embedders fill programmatically as well.
 #pragma once
 
