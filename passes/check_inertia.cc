@@ -70,15 +70,15 @@ std::string Violation(const ir::Inertial& in) {
   const Eigen::Vector3d d = PrincipalMoments(I);
   const double eps =
       16 * std::numeric_limits<double>::epsilon() * std::max(1.0, 0.5 * std::abs(trace));
+  // "{}" prints the shortest text that reads back as the same double: 0.1,
+  // not 0.10000000000000001, and nothing of the value lost
   if (d[0] + eps < 0) {
-    return fmt::format("principal moment {:.17g} is negative (principal moments {:.17g}, {:.17g}, "
-                       "{:.17g})",
-                       d[0], d[0], d[1], d[2]);
+    return fmt::format("principal moment {} is negative (principal moments {}, {}, {})", d[0],
+                       d[0], d[1], d[2]);
   }
   if (d[0] + d[1] + eps < d[2]) {
-    return fmt::format("principal moments violate the triangle inequality: {:.17g} + {:.17g} < "
-                       "{:.17g}",
-                       d[0], d[1], d[2]);
+    return fmt::format("principal moments violate the triangle inequality: {} + {} < {}", d[0],
+                       d[1], d[2]);
   }
   return {};
 }
@@ -104,7 +104,7 @@ bool CheckInertiaPass::Run(PassContext& ctx) {
     std::string problem;
     DiagKind kind = DiagKind::NonPhysicalInertia;
     if (in.mass < 0) {
-      problem = fmt::format("mass {:.17g} is negative; mass must be > 0", in.mass);
+      problem = fmt::format("mass {} is negative; mass must be > 0", in.mass);
       kind = DiagKind::NonPositiveMass;
     } else if (in.mass == 0 && !zero_inertia) {
       problem = "mass is zero but the inertia is not; mass must be > 0 for a body with inertia";

@@ -140,6 +140,15 @@ TEST(CheckInertiaTest, ReplacesNonPhysicalInertiaWithASphere) {  // COMMON-040
   EXPECT_EQ(in.X_BI.p, Eigen::Vector3d(1, 2, 3));  // centred at the given COM
 }
 
+TEST(CheckInertiaTest, MomentsArePrintedAsWrittenNotToSeventeenDigits) {  // COMMON-040
+  Lowered l;
+  ASSERT_TRUE(l.Read(R"(<robot name='r'><link name='a'><inertial><mass value='1'/>
+      <inertia ixx='0.1' iyy='0.1' izz='0.5'/></inertial></link></robot>)"));
+  ASSERT_TRUE(l.RunPasses());
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::NonPhysicalInertia, "triangle inequality: 0.1 + 0.1 < 0.5"))
+      << l.Messages();
+}
+
 TEST(CheckInertiaTest, MassRules) {  // COMMON-041
   Lowered l;
   ASSERT_TRUE(l.Read(R"(<robot name='r'>
