@@ -4,12 +4,15 @@
 #include <libxml/SAX2.h>
 #include <libxml/xmlerror.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <mutex>
 
 #include "frontend/xml/memory_stream.h"
 #include "frontend/xml/start_tags.h"
 #include "frontend/xml/tree_builder.h"
+#include "frontend/xml/xml_declaration.h"
 
 namespace mdlc::xml {
 namespace {
@@ -54,8 +57,10 @@ struct ParseOutcome {
   xmlDictPtr names = nullptr;
 };
 
-// libxml2's parse of `text` into `builder`'s tree.
-ParseOutcome ParseInto(TreeBuilder& builder, std::string_view text, const char* path,
+// libxml2's parse of `text` into `builder`'s tree; `version`, when set, is
+// a declared version libxml2 would refuse, read as "1.0" instead.
+ParseOutcome ParseInto(TreeBuilder& builder, std::string_view text,
+                       const std::optional<DeclaredVersion>& version, const char* path,
                        ErrorSink& sink) {
   xmlSetStructuredErrorFunc(&sink, OnXmlError);
   const int options = XML_PARSE_NONET | XML_PARSE_HUGE | XML_PARSE_BIG_LINES |
@@ -69,6 +74,12 @@ ParseOutcome ParseInto(TreeBuilder& builder, std::string_view text, const char* 
     // With no startDocument handler libxml2 makes no document, except a
     // stand-in it may make to hold a DTD's declarations: freed unread.
     MemoryStream stream{text};
+    std::string mended;  // the declaration, with a version libxml2 reads
+    if (version) {
+      const size_t value_end = version->offset + version->value.size();
+      mended = std::string(text.substr(0, version->offset)) + "1.0";
+      stream = MemoryStream{mended, text.substr(value_end)};
+    }
     xmlFreeDoc(xmlCtxtReadIO(parser, MemoryStream::Read, nullptr, &stream, path, nullptr, options));
     outcome.well_formed = parser->wellFormed != 0;
     outcome.stopped_at =
@@ -112,12 +123,19 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
     return nullptr;
   }
 
+  const std::optional<DeclaredVersion> version = UnsupportedXmlVersion(text);
+  if (version) {
+    diags.Report(DiagKind::XmlWarning, sources.LocForOffset(file, version->offset),
+                 fmt::format("the XML declaration names version '{}'; read as XML 1.0",
+                             version->value));
+  }
+
   std::unique_ptr<XmlDocument> document(new XmlDocument());
   document->file_ = file;
   document->sources_ = &sources;
   TreeBuilder builder(file, sources, document->arena_, diags);
   ErrorSink sink{&diags, file};
-  const ParseOutcome outcome = ParseInto(builder, text, sources.Path(file).c_str(), sink);
+  const ParseOutcome outcome = ParseInto(builder, text, version, sources.Path(file).c_str(), sink);
   document->names_ = outcome.names;
   if (outcome.stopped_at.line == 0) {
     diags.Report(DiagKind::XmlSyntax, Loc{file, 1, 1}, "the XML parser ran out of memory");

@@ -146,6 +146,41 @@ TEST_F(XmlDocumentTest, MalformedXmlReportsLineAndColumn) {  // COMMON-004
   EXPECT_NE(d.message.find("malformed XML"), std::string::npos);
 }
 
+// pybullet's minitaur files declare version "0.0", which libxml2 alone
+// refuses and urdfdom, MuJoCo and Drake read: a warning, and the document
+TEST_F(XmlDocumentTest, AnUnknownXmlVersionIsAWarning) {  // issue 55, COMMON-004
+  const std::pair<std::string, uint32_t> declarations[] = {
+      {"<?xml version=\"0.0\" ?>", 16},
+      {"<?xml version='2.0' encoding='utf-8'?>", 16},
+      {"\xEF\xBB\xBF<?xml  version = \"1\"?>", 22},  // a byte-order mark first (columns count bytes)
+      {"<?xml version=\"1.0abc\"?>", 16}};
+  for (const auto& [declaration, column] : declarations) {
+    diags_ = DiagnosticEngine();
+    auto doc = Parse(declaration + "\n<robot name='r'>\n  <link name='a'/>\n</robot>\n");
+    ASSERT_TRUE(doc) << declaration;
+    EXPECT_EQ(diags_.error_count(), 0u) << declaration;
+    ASSERT_EQ(diags_.diagnostics().size(), 1u) << declaration;
+    const Diagnostic& d = diags_.diagnostics()[0];
+    EXPECT_EQ(d.kind, DiagKind::XmlWarning);
+    EXPECT_EQ(d.severity, Severity::Warning);
+    EXPECT_EQ(d.loc, (Loc{file_, 1, column})) << declaration;
+    EXPECT_NE(d.message.find("read as XML 1.0"), std::string::npos) << d.message;
+    // the document is read whole, every element where it is written
+    EXPECT_EQ(doc->Root().Attribute("name").value, "r");
+    EXPECT_EQ(doc->Root().FirstChild().GetLoc(), (Loc{file_, 3, 3}));
+  }
+  // versions libxml2 reads pass in silence
+  for (const char* declaration : {"<?xml version=\"1.0\"?>", "<?xml version=\"1.1\"?>"}) {
+    diags_ = DiagnosticEngine();
+    EXPECT_TRUE(Parse(std::string(declaration) + "<r/>")) << declaration;
+    EXPECT_TRUE(diags_.diagnostics().empty()) << declaration;
+  }
+  // a document still has to be well formed after its declaration
+  diags_ = DiagnosticEngine();
+  EXPECT_FALSE(Parse("<?xml version=\"0.0\"?>\n<robot>\n"));
+  EXPECT_TRUE(diags_.has_errors());
+}
+
 TEST_F(XmlDocumentTest, EmptyAndWhitespaceOnlyFilesAreErrors) {  // COMMON-004
   EXPECT_FALSE(Parse(""));
   EXPECT_FALSE(Parse("  \n\t\n"));
