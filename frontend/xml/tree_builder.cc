@@ -49,6 +49,21 @@ bool IsBlank(std::string_view text) {
   return true;
 }
 
+// Whether every byte of `text` is ASCII, eight at a time.
+bool IsAscii(std::string_view text) {
+  constexpr uint64_t kHighBits = 0x8080808080808080ull;
+  const char* p = text.data();
+  const char* const end = p + text.size();
+  for (uint64_t word; end - p >= 8; p += 8) {
+    std::memcpy(&word, p, 8);
+    if (word & kHighBits) return false;
+  }
+  for (; p < end; ++p) {
+    if (static_cast<unsigned char>(*p) >= 0x80) return false;
+  }
+  return true;
+}
+
 // Every node type initializes each member where it is declared, so `new T`
 // sets them one store at a time. `new T()` would zero the whole node first,
 // which the compiler does with a string instruction slow to start, once for
@@ -119,6 +134,9 @@ void TreeBuilder::OnCharacters(void* ctx, const unsigned char* text, int length)
   if (self.open_.empty()) return;
   const std::string_view chunk(reinterpret_cast<const char*>(text), static_cast<size_t>(length));
   if (self.pending_blank_ && !IsBlank(chunk)) self.pending_blank_ = false;
+  if (!self.pending_marks_ && !chunk.empty() && (IsXmlSpace(chunk[0]) || !IsAscii(chunk))) {
+    self.pending_marks_ = true;
+  }
   self.pending_text_.append(chunk);
 }
 
@@ -228,12 +246,16 @@ void TreeBuilder::EndElement() {
 
 void TreeBuilder::FlushText(bool at_end_tag) {
   if (pending_text_.empty()) return;
-  const Open& open = open_.back();
+  Open& open = open_.back();
   const bool keep = !pending_blank_ || open.first_is_text || open.last_is_text ||
-                    (at_end_tag && !open.has_children);
-  if (keep) AddContent(detail::ContentKind::kText, Copy(pending_text_));
+                    open.blanks_matter || (at_end_tag && !open.has_children);
+  if (keep) {
+    if (pending_marks_) open.blanks_matter = true;
+    AddContent(detail::ContentKind::kText, Copy(pending_text_));
+  }
   pending_text_.clear();
   pending_blank_ = true;
+  pending_marks_ = false;
 }
 
 void TreeBuilder::AddContent(detail::ContentKind kind, std::string_view text) {

@@ -7,8 +7,12 @@
 //
 // Text follows libxml2's XML_PARSE_NOBLANKS rules, which mdlc's DOM used
 // before: a run of whitespace only is kept when it is an element's whole
-// content or when text is the element's first or last child so far, and
-// dropped otherwise (indentation between elements).
+// content, when text is the element's first or last child so far, or once
+// the element is marked as one whose blanks matter, and dropped otherwise
+// (indentation between elements). libxml2 marks an element when it keeps a
+// piece of its text that starts with a blank (its fast path) or holds a
+// character outside ASCII (its slow path); the pieces are the ones its
+// characters callback hands over.
 #pragma once
 
 #include <cstdint>
@@ -84,6 +88,7 @@ class TreeBuilder {
     bool has_children = false;  // any node: element, text, CDATA, comment, PI
     bool first_is_text = false;
     bool last_is_text = false;
+    bool blanks_matter = false;  // marked as libxml2 marks it: every later blank is kept
   };
   // the SAX callbacks, which find the builder through the parser context
   static void OnStartElement(void* ctx, const unsigned char* local, const unsigned char* prefix,
@@ -125,6 +130,7 @@ class TreeBuilder {
   std::vector<Open> open_;
   std::string pending_text_;  // characters since the last node, not yet placed
   bool pending_blank_ = true;  // pending_text_ holds blanks only
+  bool pending_marks_ = false;  // kept, pending_text_ marks its element (see above)
   // joined names by libxml2's interned (prefix, local) pointers
   absl::flat_hash_map<std::pair<const void*, const void*>, std::string_view> joined_names_;
   uint64_t elements_ = 0;

@@ -161,6 +161,14 @@ TEST(XmlTreeOracleTest, EdgeCasesMatchLibxml2sDom) {
       "<r>\n  <a>  </a>\n  <b>x</b>\n  <!-- c -->\n  <c> <!--k--> y </c>\n  <d>t <e/> </d>\n</r>",
       "<r><a>\n</a><b><!--only--></b><c> <?pi x?> </c><d><![CDATA[ ]]>  </d></r>",
       "<r>  text first <a/>  <b/>  </r>",
+      // text that starts with a blank marks its element: every later blank is kept
+      // (a commented-out block's stray "-->" in a real xacro expansion)
+      "<r><a/>\n  --&gt;\n\n  <b/>\n  <c/>\n  <d><e/>\n  <f/></d>\n</r>",
+      // text that starts with another character does not, unless it leaves ASCII
+      "<r><a/>&gt;\n\n  <b/>\n  <c/>\n</r>",
+      "<r><a/>x y\n  <b/>\n  <c/>\n</r>",
+      "<r><a/>\xC3\xA9t\xC3\xA9\n  <b/>\n  <c/>\n</r>",
+      "<r><a/>x \xC3\xA9\n  <b/>\n  <c/>\n</r>",
       // references in text and attributes, decoded; whitespace in values normalized
       "<r a='x &amp; y &#38; z &lt;&#x41;&gt;' b='&quot;q&apos;' c=\"t\tn\nr\r\n.\">"
       "a &amp;&#38;amp; b<![CDATA[&amp;]]>&#x263A;</r>",
