@@ -11,7 +11,9 @@
 //
 // Reads: ir::Mesh::resolved (set by resolve-assets). Writes:
 // PassContext::meshes. A file that cannot be read, or holds no triangles,
-// is an error at the attribute naming it.
+// is an error at the attribute naming it. A COLLADA file that declares an up
+// axis other than Z gets a note, once per compile, saying what was done
+// with it (passes/mesh/mesh_axes.h).
 #include <fmt/format.h>
 
 #include <set>
@@ -65,14 +67,23 @@ class LoadMeshesPass : public Pass {
     const size_t errors_before = ctx.diags.error_count();
     // one report per place that names a bad file (MJCF geoms share their asset's)
     std::set<std::tuple<std::string, uint32_t, uint32_t, uint32_t>> reported;
+    mesh::OffAxisColladaFiles off_axis;
+    Loc off_axis_loc;  // where the first of them is named
     for (const Use& u : uses) {
       const mesh::MeshOrError m = ctx.meshes->Get(u.path);
-      if (m.ok()) continue;
+      if (m.ok()) {
+        const bool first = off_axis.empty();
+        if (off_axis.Add(u.path, m.mesh->declared_up, m.mesh->turned_to_z_up) && first) {
+          off_axis_loc = u.loc;
+        }
+        continue;
+      }
       if (!reported.emplace(u.path, u.loc.file.value, u.loc.line, u.loc.column).second) {
         continue;
       }
       ctx.diags.Report(m.over_limit ? DiagKind::LimitExceeded : DiagKind::BadMesh, u.loc, m.error);
     }
+    if (!off_axis.empty()) ctx.diags.Report(DiagKind::MeshAxes, off_axis_loc, off_axis.Note());
     return ctx.diags.error_count() == errors_before;
   }
 };

@@ -9,6 +9,7 @@
 
 #include <cctype>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <optional>
 #include <tuple>
@@ -62,6 +63,39 @@ std::optional<std::string> FindBadFace(const aiScene& scene) {
   return std::nullopt;
 }
 
+std::string LowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+/// The up axis a COLLADA file declares, read from its start (its <asset>
+/// comes first); Y, COLLADA's default, when the start cannot be read.
+UpAxis ColladaFileUpAxis(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(16384, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+  return ColladaDeclaredUpAxis(head);
+}
+
+/// Which way is up in the file at `path`, and whether mdlc turns it to Z-up
+/// (mesh_axes.h): glTF always, as Drake does; COLLADA when asked.
+void ReadAxes(const std::string& path, const MeshAxes& axes, TriangleMesh& mesh) {
+  const std::string ext = LowerExtension(path);
+  if (ext == ".gltf" || ext == ".glb") {
+    mesh.declared_up = UpAxis::kY;
+    mesh.turned_to_z_up = true;
+  } else if (IsCollada(path)) {
+    mesh.declared_up = ColladaFileUpAxis(path);
+    mesh.turned_to_z_up =
+        axes.collada == ColladaUpAxis::kApply && mesh.declared_up != UpAxis::kZ;
+  }
+  if (!mesh.turned_to_z_up) return;
+  const Eigen::Matrix3d R = RotationToZUp(mesh.declared_up);
+  for (Eigen::Vector3d& v : mesh.vertices) v = R * v;
+}
+
 // assimp's reason for a failed read, as the tail of mdlc's message: its
 // own full stop and line breaks dropped
 std::string ImporterError(const Assimp::Importer& importer) {
@@ -74,7 +108,7 @@ std::string ImporterError(const Assimp::Importer& importer) {
 
 }  // namespace
 
-MeshOrError ImportMesh(const std::string& path, const Limits& limits) {
+MeshOrError ImportMesh(const std::string& path, const Limits& limits, const MeshAxes& axes) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
     return {nullptr, fmt::format("cannot read mesh file '{}'", path)};
@@ -90,8 +124,8 @@ MeshOrError ImportMesh(const std::string& path, const Limits& limits) {
     return {nullptr, fmt::format("cannot read mesh file '{}': {}", path, *problem)};
   }
   Assimp::Importer importer;
-  // assimp turns a Collada file's Z_UP into Y_UP by rotating the scene;
-  // robot meshes mean their coordinates as written (as ROS tools read them)
+  // assimp turns a COLLADA file's Z_UP into Y_UP by rotating the scene;
+  // mdlc decides the axes itself (ReadAxes), so assimp's turn never leaks
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
   // read with no processing first: assimp's steps trust the faces' vertex
   // indices, and a file whose faces name vertices it does not have would
@@ -126,6 +160,7 @@ MeshOrError ImportMesh(const std::string& path, const Limits& limits) {
   if (mesh->triangles.empty()) {
     return {nullptr, fmt::format("mesh file '{}' holds no triangles", path)};
   }
+  ReadAxes(path, axes, *mesh);
   return {std::move(mesh), {}};
 }
 

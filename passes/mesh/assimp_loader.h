@@ -5,7 +5,8 @@
 // Every mesh of the file's scene is merged, each placed by its node's
 // transform. Vertices at exactly the same position are merged, so that
 // formats that store triangle soups (STL) or split vertices by normal still
-// give a connected surface whose closedness can be checked. The result is
+// give a connected surface whose closedness can be checked. glTF, and
+// COLLADA when asked, are turned Z-up (mesh_axes.h). The result is
 // unscaled: consumers apply the geometry's scale (Scaled()).
 //
 // assimp has memory errors and hangs on malformed files that mdlc cannot
@@ -25,9 +26,11 @@
 
 namespace mdlc::mesh {
 
-/// The mesh in `path`, read by assimp in this process; an error when the
-/// file cannot be read or parsed, holds no triangles, or is over the
-/// file-size or mesh-vertices limit.
-MeshOrError ImportMesh(const std::string& path, const Limits& limits = {});
+/// The mesh in `path`, read by assimp in this process and turned Z-up as
+/// `axes` and the file's format say (mesh_axes.h); an error when the file
+/// cannot be read or parsed, holds no triangles, or is over the file-size or
+/// mesh-vertices limit.
+MeshOrError ImportMesh(const std::string& path, const Limits& limits = {},
+                       const MeshAxes& axes = {});
 
 }  // namespace mdlc::mesh

@@ -32,11 +32,14 @@ const double* GetMatrix(const double* in, Matrix& m) {
 constexpr size_t kMujocoValues = 13 + 9 + 3 + 3 + 3 + 3;
 
 std::optional<std::string> KeyFor(DerivedMeshCache* cache, const std::string& path,
-                                  std::string_view what, const Eigen::Vector3d& scale) {
+                                  const TriangleMesh& mesh, std::string_view what,
+                                  const Eigen::Vector3d& scale) {
   if (!cache) return std::nullopt;
-  // hex floats: the exact scale, not a rounding of it
+  // hex floats: the exact scale, not a rounding of it; the same bytes read
+  // with other axes (--collada-up-axis) are another mesh
   return DerivedMeshCache::Key(
-      path, fmt::format("{}|scale={:a},{:a},{:a}", what, scale.x(), scale.y(), scale.z()));
+      path, fmt::format("{}|scale={:a},{:a},{:a}|up={},turned={}", what, scale.x(), scale.y(),
+                        scale.z(), UpAxisName(mesh.declared_up), mesh.turned_to_z_up));
 }
 
 }  // namespace
@@ -45,7 +48,7 @@ std::optional<MujocoMeshProperties> CachedMujocoMeshMassProperties(
     DerivedMeshCache* cache, const std::string& path, const TriangleMesh& mesh,
     const Eigen::Vector3d& scale, ir::MeshInertia mode, std::string* error) {
   const auto key =
-      KeyFor(cache, path, fmt::format("mujoco-mass|mode={}", static_cast<int>(mode)), scale);
+      KeyFor(cache, path, mesh, fmt::format("mujoco-mass|mode={}", static_cast<int>(mode)), scale);
   if (key) {
     if (auto values = cache->Load(*key); values && values->size() == kMujocoValues) {
       MujocoMeshProperties p;
@@ -75,7 +78,7 @@ std::optional<MujocoMeshProperties> CachedMujocoMeshMassProperties(
 CollisionSolid CachedCollisionSolid(DerivedMeshCache* cache, const std::string& path,
                                     const TriangleMesh& mesh, const Eigen::Vector3d& scale,
                                     bool convex) {
-  const auto key = KeyFor(cache, path, fmt::format("collision-solid|convex={}", convex), scale);
+  const auto key = KeyFor(cache, path, mesh, fmt::format("collision-solid|convex={}", convex), scale);
   if (key) {
     if (auto values = cache->Load(*key); values && values->size() == 14) {
       CollisionSolid s;

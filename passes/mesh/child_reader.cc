@@ -138,10 +138,10 @@ int Spawn(const std::vector<std::string>& args, int out, Child& child) {
 }  // namespace
 
 MeshOrError LoadMeshInChild(const std::string& reader, const std::string& path,
-                            const Limits& limits) {
+                            const Limits& limits, const MeshAxes& axes) {
   // mdlc-mesh-reader NAME=VALUE... -- PATH (reader/mdlc_mesh_reader.cc)
   std::vector<std::string> args{reader};
-  for (std::string& a : EncodeMeshRequest(path, limits)) args.push_back(std::move(a));
+  for (std::string& a : EncodeMeshRequest(path, limits, axes)) args.push_back(std::move(a));
 
   auto failed = [&](std::string what) { return MeshOrError{nullptr, std::move(what)}; };
   // close-on-exec: children other threads start at the same time must not

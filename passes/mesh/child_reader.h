@@ -15,8 +15,9 @@
 
 namespace mdlc::mesh {
 
-/// The mesh in `path`, read by the program `reader` within `limits`.
+/// The mesh in `path`, read by the program `reader` within `limits` and
+/// oriented as `axes` says.
 MeshOrError LoadMeshInChild(const std::string& reader, const std::string& path,
-                            const Limits& limits);
+                            const Limits& limits, const MeshAxes& axes = {});
 
 }  // namespace mdlc::mesh

@@ -59,14 +59,15 @@ MeshReaderLocation ImportModuleLocation() {
                                                        : FindMeshImportModule();
 }
 
-MeshOrError LoadMeshInProcess(const std::string& path, const Limits& limits) {
+MeshOrError LoadMeshInProcess(const std::string& path, const Limits& limits,
+                              const MeshAxes& axes) {
   auto failed = [](std::string what) { return MeshOrError{nullptr, std::move(what)}; };
   const OpenedModule& module = Module();
   if (!module.entry) {
     return failed(
         fmt::format("cannot read '{}' in this process: {}", path, module.location.why_none));
   }
-  const std::vector<std::string> request = EncodeMeshRequest(path, limits);
+  const std::vector<std::string> request = EncodeMeshRequest(path, limits, axes);
   std::vector<const char*> argv;
   for (const std::string& a : request) argv.push_back(a.c_str());
   std::string answer;

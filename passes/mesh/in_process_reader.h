@@ -22,7 +22,8 @@ namespace mdlc::mesh {
 /// be read or parsed, holds no triangles, or is over the file-size or
 /// mesh-vertices limit, and when the import module cannot be opened (it is
 /// looked for once per process: reader_location.h). Thread-safe.
-MeshOrError LoadMeshInProcess(const std::string& path, const Limits& limits = {});
+MeshOrError LoadMeshInProcess(const std::string& path, const Limits& limits = {},
+                              const MeshAxes& axes = {});
 
 /// The import module this process reads meshes with: the one opened, once
 /// a mesh was read here, else the one the search finds now (the path empty,

@@ -10,17 +10,19 @@
 
 namespace mdlc::mesh {
 
-MeshCache::MeshCache(const Limits& limits, MeshReading reading) {
+MeshCache::MeshCache(const Limits& limits, MeshReading reading, const MeshAxes& axes) {
   if (reading == MeshReading::kChildProcess) {
     MeshReaderLocation found = FindMeshReader();
     reader_ = std::move(found.path);
     reader_missing_ = std::move(found.why_none);
   }
   if (reader_.empty()) {
-    loader_ = [limits](const std::string& path) { return LoadMeshInProcess(path, limits); };
+    loader_ = [limits, axes](const std::string& path) {
+      return LoadMeshInProcess(path, limits, axes);
+    };
   } else {
-    loader_ = [limits, reader = reader_](const std::string& path) {
-      return LoadMeshInChild(reader, path, limits);
+    loader_ = [limits, axes, reader = reader_](const std::string& path) {
+      return LoadMeshInChild(reader, path, limits, axes);
     };
   }
 }

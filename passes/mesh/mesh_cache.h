@@ -28,10 +28,12 @@ class MeshCache {
  public:
   using Loader = std::function<MeshOrError(const std::string& path)>;
 
-  /// A cache that reads files within `limits`, as `reading` says
-  /// (mesh_loader.h). The reader program is looked for once, here.
+  /// A cache that reads files within `limits`, where `reading` says
+  /// (mesh_loader.h), oriented as `axes` says (mesh_axes.h). The reader
+  /// program is looked for once, here.
   explicit MeshCache(const Limits& limits = {},
-                     MeshReading reading = MeshReading::kChildProcess);
+                     MeshReading reading = MeshReading::kChildProcess,
+                     const MeshAxes& axes = {});
   /// A cache with another loader (tests).
   explicit MeshCache(Loader loader) : loader_(std::move(loader)) {}
   MeshCache(const MeshCache&) = delete;

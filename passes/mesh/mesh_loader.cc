@@ -6,10 +6,10 @@
 
 namespace mdlc::mesh {
 
-MeshOrError LoadMesh(const std::string& path, const Limits& limits) {
+MeshOrError LoadMesh(const std::string& path, const Limits& limits, const MeshAxes& axes) {
   const MeshReaderLocation reader = FindMeshReader();
-  return reader.path.empty() ? LoadMeshInProcess(path, limits)
-                             : LoadMeshInChild(reader.path, path, limits);
+  return reader.path.empty() ? LoadMeshInProcess(path, limits, axes)
+                             : LoadMeshInChild(reader.path, path, limits, axes);
 }
 
 }  // namespace mdlc::mesh

@@ -22,6 +22,7 @@ enum class MeshReading { kChildProcess, kInProcess };
 
 /// The mesh in `path` (see ImportMesh for what is an error), read by
 /// the mesh reader program when one is found, else in this process.
-MeshOrError LoadMesh(const std::string& path, const Limits& limits = {});
+MeshOrError LoadMesh(const std::string& path, const Limits& limits = {},
+                     const MeshAxes& axes = {});
 
 }  // namespace mdlc::mesh

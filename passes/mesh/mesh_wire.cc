@@ -47,22 +47,33 @@ std::optional<MeshOrError> Fail(std::string* problem, std::string message) {
   return std::nullopt;
 }
 
+constexpr std::string_view kColladaUpAxis = "collada-up-axis=";
+
 }  // namespace
 
-std::vector<std::string> EncodeMeshRequest(const std::string& path, const Limits& limits) {
+std::vector<std::string> EncodeMeshRequest(const std::string& path, const Limits& limits,
+                                           const MeshAxes& axes) {
   std::vector<std::string> args;
   for (const LimitInfo& l : AllLimits()) {
     args.push_back(fmt::format("{}={}", l.name, limits.*l.field));
   }
+  args.push_back(fmt::format("{}{}", kColladaUpAxis, ColladaUpAxisName(axes.collada)));
   args.push_back("--");
   args.push_back(path);
   return args;
 }
 
 std::optional<std::string> DecodeMeshRequest(const std::vector<std::string_view>& args,
-                                             std::string* path, Limits* limits) {
+                                             std::string* path, Limits* limits, MeshAxes* axes) {
   size_t i = 0;
   for (; i < args.size() && args[i] != "--"; ++i) {
+    if (args[i].starts_with(kColladaUpAxis)) {
+      const std::string_view mode = args[i].substr(kColladaUpAxis.size());
+      auto collada = ColladaUpAxisFromName(mode);
+      if (!collada) return fmt::format("unknown collada-up-axis '{}'", mode);
+      axes->collada = *collada;
+      continue;
+    }
     if (auto problem = SetLimit(*limits, args[i])) return problem;
   }
   if (i + 2 != args.size()) return "expected one mesh file after '--'";
@@ -82,6 +93,8 @@ std::string EncodeMeshReply(const MeshOrError& result) {
   }
   const TriangleMesh& m = *result.mesh;
   Put(out, uint8_t{kMeshReply});
+  Put(out, static_cast<uint8_t>(m.declared_up));
+  Put(out, uint8_t{m.turned_to_z_up});
   Put(out, uint64_t{m.vertices.size()});
   Put(out, uint64_t{m.triangles.size()});
   out.reserve(out.size() + m.vertices.size() * 3 * sizeof(double) +
@@ -117,8 +130,14 @@ std::optional<MeshOrError> DecodeMeshReply(std::string_view bytes, std::string* 
     return result;
   }
   if (kind != kMeshReply) return Fail(problem, fmt::format("it is of unknown kind {}", kind));
+  uint8_t declared_up = 0, turned = 0;
   uint64_t vertices = 0, triangles = 0;
-  if (!in.Get(vertices) || !in.Get(triangles)) return Fail(problem, "its mesh header is truncated");
+  if (!in.Get(declared_up) || !in.Get(turned) || !in.Get(vertices) || !in.Get(triangles)) {
+    return Fail(problem, "its mesh header is truncated");
+  }
+  if (declared_up > static_cast<uint8_t>(UpAxis::kZ) || turned > 1) {
+    return Fail(problem, fmt::format("its up axis ({}, turned {}) is invalid", declared_up, turned));
+  }
   // indices are int32: more vertices than that cannot be named
   if (vertices > uint64_t{INT32_MAX} || !in.Holds(vertices, 3 * sizeof(double))) {
     return Fail(problem, fmt::format("it claims {} vertices, more than it holds", vertices));
@@ -132,6 +151,8 @@ std::optional<MeshOrError> DecodeMeshReply(std::string_view bytes, std::string* 
   }
   if (triangles == 0) return Fail(problem, "its mesh has no triangles");
   auto mesh = std::make_shared<TriangleMesh>();
+  mesh->declared_up = static_cast<UpAxis>(declared_up);
+  mesh->turned_to_z_up = turned == 1;
   mesh->vertices.resize(vertices);
   for (Eigen::Vector3d& v : mesh->vertices) {
     for (int k = 0; k < 3; ++k) in.Get(v[k]);

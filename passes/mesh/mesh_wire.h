@@ -3,7 +3,8 @@
 // takes the request on its command line and answers on standard output; the
 // import module takes the same request and answers through a callback.
 //
-// Request: NAME=VALUE for every limit (ir/limits.h), "--", the file's path.
+// Request: NAME=VALUE for every limit (ir/limits.h), collada-up-axis=MODE
+// (mesh_axes.h), "--", the file's path.
 //
 // The child runs assimp on an untrusted file and may have been corrupted by
 // it, so the parent decodes the reply as untrusted bytes too: every count is
@@ -13,7 +14,8 @@
 // guards against a reader from another build.
 //
 // Reply: "MDLCMESH", u32 version, u8 kind, then
-//   kind 0 (mesh):  u64 vertex count V, u64 triangle count T,
+//   kind 0 (mesh):  u8 declared up axis, u8 turned to Z-up (0 or 1),
+//                   u64 vertex count V, u64 triangle count T,
 //                   3V float64 coordinates, 3T int32 vertex indices
 //   kind 1 (error): u8 over_limit, u64 length, the message's bytes
 #pragma once
@@ -29,15 +31,16 @@
 
 namespace mdlc::mesh {
 
-inline constexpr uint32_t kMeshWireVersion = 1;
+inline constexpr uint32_t kMeshWireVersion = 2;
 
-/// The request to read `path` within `limits`.
-std::vector<std::string> EncodeMeshRequest(const std::string& path, const Limits& limits);
+/// The request to read `path` within `limits`, oriented as `axes` says.
+std::vector<std::string> EncodeMeshRequest(const std::string& path, const Limits& limits,
+                                           const MeshAxes& axes = {});
 
-/// The file and limits `args` (a request) ask for; a message saying what is
-/// wrong when they are not a request.
+/// The file, limits and axes `args` (a request) ask for; a message saying
+/// what is wrong when they are not a request.
 std::optional<std::string> DecodeMeshRequest(const std::vector<std::string_view>& args,
-                                             std::string* path, Limits* limits);
+                                             std::string* path, Limits* limits, MeshAxes* axes);
 
 /// `result` as the reader sends it.
 std::string EncodeMeshReply(const MeshOrError& result);

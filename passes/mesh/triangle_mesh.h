@@ -1,7 +1,8 @@
 // triangle_mesh.h - an indexed triangle mesh, the one mesh type the mesh
 // library computes with.
 //
-// Vertices are in the mesh file's frame (meters once scaled); each triangle
+// Vertices are in the mesh file's frame, turned Z-up where mdlc turns it
+// (mesh_axes.h), in meters once scaled; each triangle
 // names three vertices, counter-clockwise seen from outside for a properly
 // oriented closed surface.
 #pragma once
@@ -12,11 +13,18 @@
 #include <string>
 #include <vector>
 
+#include "passes/mesh/mesh_axes.h"
+
 namespace mdlc::mesh {
 
 struct TriangleMesh {
   std::vector<Eigen::Vector3d> vertices;
   std::vector<Eigen::Vector3i> triangles;
+  /// The up axis the file declares (glTF: Y, by its specification;
+  /// COLLADA: its <up_axis>), kNone for formats without one; and whether
+  /// the vertices were turned from it to Z-up when read (mesh_axes.h).
+  UpAxis declared_up = UpAxis::kNone;
+  bool turned_to_z_up = false;
 
   bool empty() const { return triangles.empty(); }
   /// The three corners of triangle `t`.

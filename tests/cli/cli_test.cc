@@ -550,7 +550,7 @@ TEST_F(CliTest, MeshImportModule) {  // issue 16
       {missing, fmt::format("MDLC_MESH_MODULE names '{}', which is not a readable file", missing)},
       {not_elf, fmt::format("cannot open the mesh import module: {}: ", not_elf)},
       {other_version, fmt::format("'{}' is not a mesh import module of this mdlc (it has no "
-                                  "mdlc_mesh_import_v1)",
+                                  "mdlc_mesh_import_v2)",
                                   other_version)}};
   for (const auto& [module, why] : broken) {
     const Outcome r = Mdlc(in_process + model, "MDLC_MESH_MODULE=" + module);

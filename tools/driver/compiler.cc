@@ -59,7 +59,8 @@ bool Compilation::RunPasses() {
     }
   }
   // read within the limits, where the options say
-  meshes = std::make_shared<mesh::MeshCache>(sources.limits(), options.mesh_reading);
+  meshes = std::make_shared<mesh::MeshCache>(sources.limits(), options.mesh_reading,
+                                             options.mesh_axes);
   passes::PassContext ctx{module, diags, sources, packages, meshes, derived_meshes};
   const bool ok = pm.Run(ctx);
   if (options.instrumentation.time_passes) {

@@ -38,6 +38,8 @@ struct CompileOptions {
   bool skip_backend = false;
   /// Where mesh files are read (Options::mesh_reader).
   mesh::MeshReading mesh_reading = mesh::MeshReading::kChildProcess;
+  /// How they are turned Z-up (Options::collada_up_axis).
+  mesh::MeshAxes mesh_axes;
 };
 
 class Compilation {

@@ -114,6 +114,9 @@ Result Compile(const std::vector<Input>& inputs, const Options& options) {
   c->options.mesh_reading = options.mesh_reader == MeshReader::InProcess
                                 ? mesh::MeshReading::kInProcess
                                 : mesh::MeshReading::kChildProcess;
+  c->options.mesh_axes.collada = options.collada_up_axis == ColladaUpAxis::Apply
+                                     ? mesh::ColladaUpAxis::kApply
+                                     : mesh::ColladaUpAxis::kAsWritten;
   if (!options.mesh_cache_dir.empty()) {
     c->derived_meshes = std::make_shared<mesh::DerivedMeshCache>(options.mesh_cache_dir);
   }
@@ -197,6 +200,27 @@ std::vector<MeshSize> Result::MeshSizes(const std::vector<std::string>& resolved
     size.triangles = m.mesh->triangles.size();
   }
   return sizes;
+}
+
+std::vector<MeshTriangles> Result::ReadMeshes(const std::vector<std::string>& resolved_paths,
+                                              std::string* axes_note) const {
+  compilation_->meshes->Prefetch(resolved_paths);
+  mesh::OffAxisColladaFiles off_axis;
+  std::vector<MeshTriangles> meshes;
+  meshes.reserve(resolved_paths.size());
+  for (const std::string& path : resolved_paths) {
+    const mesh::MeshOrError m = compilation_->meshes->Get(path);
+    MeshTriangles& out = meshes.emplace_back();
+    if (!m.ok()) {
+      out.error = m.error;
+      continue;
+    }
+    out.vertices = m.mesh->vertices;
+    out.triangles = m.mesh->triangles;
+    off_axis.Add(path, m.mesh->declared_up, m.mesh->turned_to_z_up);
+  }
+  if (axes_note) *axes_note = off_axis.Note();
+  return meshes;
 }
 
 std::optional<std::string> Result::Convert(const ConvertOptions& options) {

@@ -83,6 +83,11 @@ void AddCompileFlags(CLI::App* command, CompileFlags& flags) {
                    "Read mesh files in a child process (process, the default: a crash of the "
                    "mesh importer is an error about the file) or in-process")
       ->check(CLI::IsMember({"process", "in-process"}));
+  command
+      ->add_option("--collada-up-axis", flags.collada_up_axis,
+                   "COLLADA meshes: as-written (the default, as RViz and Gazebo show them) or "
+                   "apply (turn a file's declared X_UP or Y_UP to Z-up)")
+      ->check(CLI::IsMember({"as-written", "apply"}));
   command->add_option("--model-name", flags.model_name, "Name the model instance this");
   command->add_flag("--auto-rename", flags.auto_rename,
                     "Rename a model whose name is taken to NAME_1, NAME_2, ...");
@@ -113,6 +118,8 @@ int ToOptions(const CompileFlags& flags, Options& options) {
   }
   options.mesh_reader =
       flags.mesh_reader == "in-process" ? MeshReader::InProcess : MeshReader::Process;
+  options.collada_up_axis =
+      flags.collada_up_axis == "apply" ? ColladaUpAxis::Apply : ColladaUpAxis::AsWritten;
   options.model_name = flags.model_name;
   options.auto_rename = flags.auto_rename;
   if (!flags.no_cache) {

@@ -23,6 +23,7 @@ struct CompileFlags {
   size_t max_errors = 0;
   std::vector<std::string> limits;  // --limit NAME=VALUE
   std::string mesh_reader = "process";  // --mesh-reader
+  std::string collada_up_axis = "as-written";  // --collada-up-axis
   std::optional<std::string> model_name;
   bool auto_rename = false;
   std::vector<std::string> package_paths;

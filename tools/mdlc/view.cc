@@ -2,7 +2,8 @@
 // viewer script (viewer/viewer.js), all inside one HTML file.
 //
 // The model JSON (read only by viewer.js, so it is shaped for it):
-//   title, notes[]            what the page should say about what it cannot show
+//   title, notes[]            what the page should say: what it cannot show, and
+//                             what it did with COLLADA meshes not declared Z-up
 //   num_positions, joint_order[]            the plant's q layout
 //   bodies[]   name, scoped_name, model, mass, com, inertia (3x3, row-major),
 //              parent, joint (inbound; -1 for the world), level, source
@@ -19,16 +20,17 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <cstring>
 #include <map>
+#include <set>
 #include <span>
 #include <string_view>
 
 #include "backend/json_writer.h"
 #include "ir/module.h"
-#include "passes/mesh/mesh_loader.h"
 
 #ifdef MDLC_HAVE_VIEWER
 namespace mdlc::tools::viewer {
@@ -259,26 +261,37 @@ std::string ViewModelJson(const Result& result, const std::string& title) {
   }
   w.EndArray();
 
-  // meshes once per file; geometries name them by index
-  std::map<std::string, int> mesh_index;
-  std::vector<std::pair<std::string, std::shared_ptr<const mesh::TriangleMesh>>> meshes;
+  // meshes once per file, read as the compile reads them (in parallel);
+  // geometries name them by index
+  std::vector<std::string> mesh_paths;
+  std::map<std::string, int> mesh_index;  // resolved path -> index in `meshes`; -1: none
+  for (const backend::SceneGeometry& g : scene.geometries) {
+    const auto* m = std::get_if<ir::Mesh>(&g.shape);
+    if (m && !m->resolved.empty() && mesh_index.try_emplace(m->resolved, -1).second) {
+      mesh_paths.push_back(m->resolved);
+    }
+  }
+  std::string axes_note;
+  std::vector<MeshTriangles> read = result.ReadMeshes(mesh_paths, &axes_note);
+  if (!axes_note.empty()) notes.push_back(axes_note);
+  std::vector<std::pair<std::string, const MeshTriangles*>> meshes;
+  for (size_t i = 0; i < mesh_paths.size(); ++i) {
+    if (!read[i].ok()) continue;
+    mesh_index[mesh_paths[i]] = static_cast<int>(meshes.size());
+    meshes.emplace_back(mesh_paths[i], &read[i]);
+  }
+  std::set<std::string> unshown;  // each mesh's note once
   w.Key("geometries").BeginArray();
   for (const backend::SceneGeometry& g : scene.geometries) {
     int mesh = -1;
     if (const auto* m = std::get_if<ir::Mesh>(&g.shape)) {
-      auto [it, inserted] = mesh_index.try_emplace(m->resolved, -1);
-      if (inserted) {
-        mesh::MeshOrError loaded = m->resolved.empty()
-                                       ? mesh::MeshOrError{nullptr, "it was not found"}
-                                       : mesh::LoadMesh(m->resolved);
-        if (loaded.ok()) {
-          it->second = static_cast<int>(meshes.size());
-          meshes.emplace_back(m->resolved, loaded.mesh);
-        } else {
-          notes.push_back(fmt::format("mesh '{}' is not shown: {}", m->uri, loaded.error));
-        }
+      if (auto it = mesh_index.find(m->resolved); it != mesh_index.end()) mesh = it->second;
+      if (mesh < 0 && unshown.insert(m->resolved.empty() ? m->uri : m->resolved).second) {
+        const auto at = std::find(mesh_paths.begin(), mesh_paths.end(), m->resolved);
+        notes.push_back(fmt::format("mesh '{}' is not shown: {}", m->uri,
+                                    at == mesh_paths.end() ? "it was not found"
+                                                           : read[at - mesh_paths.begin()].error));
       }
-      mesh = it->second;
     }
     w.BeginObject();
     w.Key("name").String(g.name).Key("body").Int(g.body.index());

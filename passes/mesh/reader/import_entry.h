@@ -13,8 +13,8 @@ typedef void (*MdlcMeshImportSink)(void* context, const char* bytes, size_t size
 /// The exported name; a new version of the request or of the reply's
 /// calling convention gets a new name, so that a module of another build is
 /// refused when it is opened rather than misread.
-#define MDLC_MESH_IMPORT_ENTRY mdlc_mesh_import_v1
-#define MDLC_MESH_IMPORT_ENTRY_NAME "mdlc_mesh_import_v1"
+#define MDLC_MESH_IMPORT_ENTRY mdlc_mesh_import_v2
+#define MDLC_MESH_IMPORT_ENTRY_NAME "mdlc_mesh_import_v2"
 
 /// int MDLC_MESH_IMPORT_ENTRY(int argc, const char* const* argv,
 ///                            MdlcMeshImportSink sink, void* context):

@@ -22,14 +22,15 @@ extern "C" __attribute__((visibility("default"))) int MDLC_MESH_IMPORT_ENTRY(
     int argc, const char* const* argv, MdlcMeshImportSink sink, void* context) {
   const std::vector<std::string_view> request(argv, argv + argc);
   mdlc::Limits limits;
+  mdlc::mesh::MeshAxes axes;
   std::string path;
-  if (auto problem = mdlc::mesh::DecodeMeshRequest(request, &path, &limits)) {
+  if (auto problem = mdlc::mesh::DecodeMeshRequest(request, &path, &limits, &axes)) {
     sink(context, problem->data(), problem->size());
     return 2;
   }
   // the entry point has a C signature: no exception may leave it
   try {
-    const std::string reply = mdlc::mesh::EncodeMeshReply(mdlc::mesh::ImportMesh(path, limits));
+    const std::string reply = mdlc::mesh::EncodeMeshReply(mdlc::mesh::ImportMesh(path, limits, axes));
     sink(context, reply.data(), reply.size());
     return 0;
   } catch (const std::exception& e) {

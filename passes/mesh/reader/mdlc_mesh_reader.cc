@@ -6,9 +6,10 @@
 // that assimp's memory errors, hangs and leaks on malformed files stay in
 // this short-lived process (issue 16). Not meant to be run by hand:
 //
-//   mdlc-mesh-reader [LIMIT=VALUE]... -- PATH
+//   mdlc-mesh-reader [LIMIT=VALUE]... [collada-up-axis=MODE] -- PATH
 //
-// LIMIT=VALUE as `mdlc --limit` takes them. Exit status 0 with a reply
+// LIMIT=VALUE as `mdlc --limit` takes them, MODE as `mdlc
+// --collada-up-axis` does. Exit status 0 with a reply
 // (also when the file is unreadable: the reply says why), 2 on bad usage, 3
 // when the reply cannot be written.
 #include <unistd.h>
@@ -41,7 +42,7 @@ bool WriteAll(int fd, const std::string& bytes) {
 [[noreturn]] void Usage(const std::string& problem) {
   fmt::print(stderr,
              "mdlc-mesh-reader: error: {}\n"
-             "usage: mdlc-mesh-reader [LIMIT=VALUE]... -- PATH\n",
+             "usage: mdlc-mesh-reader [LIMIT=VALUE]... [collada-up-axis=MODE] -- PATH\n",
              problem);
   std::fflush(stderr);
   ::_exit(2);
@@ -52,9 +53,10 @@ bool WriteAll(int fd, const std::string& bytes) {
 int main(int argc, char** argv) {
   const std::vector<std::string_view> request(argv + 1, argv + argc);
   mdlc::Limits limits;
+  mdlc::mesh::MeshAxes axes;
   std::string path;
-  if (auto problem = mdlc::mesh::DecodeMeshRequest(request, &path, &limits)) Usage(*problem);
-  const std::string reply = mdlc::mesh::EncodeMeshReply(mdlc::mesh::ImportMesh(path, limits));
+  if (auto problem = mdlc::mesh::DecodeMeshRequest(request, &path, &limits, &axes)) Usage(*problem);
+  const std::string reply = mdlc::mesh::EncodeMeshReply(mdlc::mesh::ImportMesh(path, limits, axes));
   // _exit: no destructors, no exit handlers. Whatever assimp leaked or
   // damaged goes with the process, and a leak checker built into the
   // program does not report assimp's leaks as ours.

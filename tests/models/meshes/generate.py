@@ -3,7 +3,12 @@
 files are committed, so this only documents how they were made).
 
 box:      2 x 1 x 0.5 box, corner at (0.5, -0.25, 1): volume 1,
-          center of mass (1.5, 0.25, 1.25). Written in every format.
+          center of mass (1.5, 0.25, 1.25). Written in every format, each
+          in its own axes: glTF is Y-up by its specification, so box.gltf
+          holds (x, z, -y) of each corner and turned Z-up is the box again.
+box_y_up.dae, box_x_up.dae: the box in COLLADA files that declare Y_UP
+          and X_UP, written in those axes: read as written they are the box
+          turned; with the declared axis applied, the box.
 tetra:    the unit corner tetrahedron (0,0,0),(1,0,0),(0,1,0),(0,0,1).
 lshape:   an L-shaped prism (non-convex, closed): the L polygon
           (0,0),(4,0),(4,1),(1,1),(1,4),(0,4) extruded over z in [0, 1]
@@ -105,13 +110,23 @@ def write_ply(name, v, faces):
             f.write(f"{len(face)} " + " ".join(map(str, face)) + "\n")
 
 
-def write_dae(name, v, t):
+# Z-up coordinates in a frame whose up axis is another: COLLADA's Y_UP
+# (right +x, up +y) and X_UP (right -y, up +x); glTF is Y-up
+def in_y_up(v):
+    return [(x, z, -y) for x, y, z in v]
+
+
+def in_x_up(v):
+    return [(z, -x, -y) for x, y, z in v]
+
+
+def write_dae(name, v, t, up="Z_UP"):
     pos = " ".join(f"{c}" for p in v for c in p)
     idx = " ".join(str(i) for tri in t for i in tri)
     with open(os.path.join(HERE, name), "w") as f:
         f.write(f"""<?xml version="1.0" encoding="utf-8"?>
 <COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
-  <asset><unit name="meter" meter="1"/><up_axis>Z_UP</up_axis></asset>
+  <asset><unit name="meter" meter="1"/><up_axis>{up}</up_axis></asset>
   <library_geometries>
     <geometry id="box-mesh" name="box">
       <mesh>
@@ -140,9 +155,11 @@ def write_dae(name, v, t):
 
 
 def write_gltf(name, v, t):
-    # The box's vertices are stored relative to the node's translation, so
-    # that the loader must apply node transforms to get the box back.
-    offset = (0.5, 0.0, 1.0)
+    # The box's vertices (in glTF's Y-up axes) are stored relative to the
+    # node's translation, so that the loader must apply node transforms to
+    # get the box back.
+    v = in_y_up(v)
+    offset = (0.5, 1.0, 0.0)
     local = [tuple(p[i] - offset[i] for i in range(3)) for p in v]
     vb = b"".join(struct.pack("<3f", *p) for p in local)
     ib = b"".join(struct.pack("<3H", *tri) for tri in t)
@@ -181,6 +198,8 @@ def main():
     write_stl_binary("box_binary.stl", bv, bt)
     write_ply("box.ply", bv, bq)
     write_dae("box.dae", bv, bt)
+    write_dae("box_y_up.dae", in_y_up(bv), bt, up="Y_UP")
+    write_dae("box_x_up.dae", in_x_up(bv), bt, up="X_UP")
     write_gltf("box.gltf", bv, bt)
     write_obj("tetra.obj", [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)],
               [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)])

@@ -23,9 +23,9 @@ std::optional<MeshOrError> Decode(const std::string& bytes, std::string* problem
   return DecodeMeshReply(bytes, problem);
 }
 
-// offsets of the mesh reply's fields: marker, version, kind, counts
-constexpr size_t kVersionAt = 8, kKindAt = 12, kVertexCountAt = 13, kTriangleCountAt = 21,
-                 kVerticesAt = 29;
+// offsets of the mesh reply's fields: marker, version, kind, axes, counts
+constexpr size_t kVersionAt = 8, kKindAt = 12, kUpAxisAt = 13, kTurnedAt = 14,
+                 kVertexCountAt = 15, kTriangleCountAt = 23, kVerticesAt = 31;
 
 TEST(MeshWireTest, AMeshComesBackAsSent) {  // issue 16
   const MeshOrError sent = Tetra();
@@ -35,6 +35,33 @@ TEST(MeshWireTest, AMeshComesBackAsSent) {  // issue 16
   ASSERT_TRUE(got->ok());
   EXPECT_EQ(got->mesh->vertices, sent.mesh->vertices);
   EXPECT_EQ(got->mesh->triangles, sent.mesh->triangles);
+  EXPECT_EQ(got->mesh->declared_up, UpAxis::kNone);
+  EXPECT_FALSE(got->mesh->turned_to_z_up);
+}
+
+TEST(MeshWireTest, TheFilesAxesComeBackAsSent) {  // issue 55, BEYOND-001
+  for (const UpAxis up : {UpAxis::kX, UpAxis::kY, UpAxis::kZ}) {
+    for (const bool turned : {false, true}) {
+      MeshOrError sent = Tetra();
+      auto mesh = std::make_shared<TriangleMesh>(*sent.mesh);
+      mesh->declared_up = up;
+      mesh->turned_to_z_up = turned;
+      sent.mesh = mesh;
+      std::string problem;
+      const std::optional<MeshOrError> got = Decode(EncodeMeshReply(sent), &problem);
+      ASSERT_TRUE(got) << problem;
+      EXPECT_EQ(got->mesh->declared_up, up);
+      EXPECT_EQ(got->mesh->turned_to_z_up, turned);
+    }
+  }
+  // an axis or flag no reader sends
+  for (const auto& [at, value] : {std::pair{kUpAxisAt, 4}, std::pair{kTurnedAt, 2}}) {
+    std::string bytes = EncodeMeshReply(Tetra());
+    bytes[at] = static_cast<char>(value);
+    std::string problem;
+    EXPECT_FALSE(Decode(bytes, &problem)) << at;
+    EXPECT_NE(problem.find("up axis"), std::string::npos) << problem;
+  }
 }
 
 TEST(MeshWireTest, AnErrorComesBackWithItsLimitFlag) {  // issue 16
@@ -122,21 +149,30 @@ TEST(MeshWireTest, ARequestCarriesThePathAndEveryLimit) {  // issue 16
   Limits sent;
   sent.mesh_vertices = 3;
   sent.file_size = 12345;
-  const std::vector<std::string> request = EncodeMeshRequest("dir/a mesh.obj", sent);
-  Limits got;
-  std::string path;
-  EXPECT_EQ(DecodeMeshRequest(Views(request), &path, &got), std::nullopt);
-  EXPECT_EQ(path, "dir/a mesh.obj");
-  for (const LimitInfo& l : AllLimits()) EXPECT_EQ(got.*l.field, sent.*l.field) << l.name;
+  for (const ColladaUpAxis collada : {ColladaUpAxis::kAsWritten, ColladaUpAxis::kApply}) {
+    const std::vector<std::string> request =
+        EncodeMeshRequest("dir/a mesh.obj", sent, MeshAxes{collada});
+    Limits got;
+    MeshAxes axes{collada == ColladaUpAxis::kApply ? ColladaUpAxis::kAsWritten
+                                                   : ColladaUpAxis::kApply};
+    std::string path;
+    EXPECT_EQ(DecodeMeshRequest(Views(request), &path, &got, &axes), std::nullopt);
+    EXPECT_EQ(path, "dir/a mesh.obj");
+    EXPECT_EQ(axes.collada, collada);
+    for (const LimitInfo& l : AllLimits()) EXPECT_EQ(got.*l.field, sent.*l.field) << l.name;
+  }
 }
 
 TEST(MeshWireTest, AMalformedRequestIsRefused) {  // issue 16
   const std::vector<std::vector<std::string>> bad = {
-      {"a.obj"}, {"--"}, {"--", "a.obj", "b.obj"}, {"no-such-limit=1", "--", "a.obj"}};
+      {"a.obj"}, {"--"}, {"--", "a.obj", "b.obj"}, {"no-such-limit=1", "--", "a.obj"},
+      {"collada-up-axis=sideways", "--", "a.obj"}};
   for (const std::vector<std::string>& request : bad) {
     Limits limits;
+    MeshAxes axes;
     std::string path;
-    const std::optional<std::string> problem = DecodeMeshRequest(Views(request), &path, &limits);
+    const std::optional<std::string> problem =
+        DecodeMeshRequest(Views(request), &path, &limits, &axes);
     ASSERT_TRUE(problem) << request.front();
     EXPECT_FALSE(problem->empty());
   }

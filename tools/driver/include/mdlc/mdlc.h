@@ -66,6 +66,18 @@ enum class MeshReader {
   InProcess,
 };
 
+/// What a compile does with the up axis a COLLADA (.dae) mesh file declares
+/// (Options::collada_up_axis, `--collada-up-axis`). glTF meshes are always
+/// turned from glTF's Y-up to Z-up, as Drake turns them.
+enum class ColladaUpAxis {
+  /// Vertices as written, whatever the file declares: what RViz (for URDF)
+  /// and Gazebo (for SDFormat) show.
+  AsWritten,
+  /// A file that declares X_UP or Y_UP (or nothing: Y_UP by COLLADA's
+  /// default) is turned to Z-up.
+  Apply,
+};
+
 /// Everything the `mdlc compile` command line can ask for.
 struct Options {
   // -- packages, for package:// and model:// URIs, looked up in this order
@@ -124,6 +136,8 @@ struct Options {
   Limits limits;
   /// Where mesh files are read (`--mesh-reader=process|in-process`).
   MeshReader mesh_reader = MeshReader::Process;
+  /// COLLADA's declared up axis (`--collada-up-axis=as-written|apply`).
+  ColladaUpAxis collada_up_axis = ColladaUpAxis::AsWritten;
 
   // -- caching
   /// Keep derived mesh data (convex hulls, mass properties) in this folder
@@ -143,6 +157,16 @@ std::string DefaultMeshCacheDirectory();
 struct MeshSize {
   size_t vertices = 0;
   size_t triangles = 0;
+  std::string error;  // set when the file could not be read as a mesh
+  bool ok() const { return error.empty(); }
+};
+
+/// A mesh file's triangles as the compile reads them (Result::ReadMeshes):
+/// unscaled (the geometry's scale is not applied), glTF turned Z-up, COLLADA
+/// as Options::collada_up_axis says.
+struct MeshTriangles {
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<Eigen::Vector3i> triangles;
   std::string error;  // set when the file could not be read as a mesh
   bool ok() const { return error.empty(); }
 };
@@ -217,6 +241,12 @@ class Result {
   /// from the meshes this compile read: a file the passes read is not read
   /// again; the others are read now, in parallel.
   std::vector<MeshSize> MeshSizes(const std::vector<std::string>& resolved_paths) const;
+  /// The triangles of those files, read the same way (and as the compile
+  /// reads them: its reader, its axes). `axes_note`, when given, gets the
+  /// note mdlc gives about COLLADA files among them that declare an up axis
+  /// other than Z (empty when none do).
+  std::vector<MeshTriangles> ReadMeshes(const std::vector<std::string>& resolved_paths,
+                                        std::string* axes_note = nullptr) const;
 
   /// The compiled model written as options.to (`mdlc convert`). What the
   /// target cannot hold is reported as -Wlossy warnings, added to
