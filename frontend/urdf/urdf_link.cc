@@ -192,24 +192,60 @@ void UrdfReader::ReadGeometryElement(const xml::XmlElement& e, BodyId body, Symb
   module().Add(std::move(g));
 }
 
+namespace {
+
+bool IsShapeTag(std::string_view tag) {
+  return tag == "box" || tag == "sphere" || tag == "cylinder" || tag == "capsule" ||
+         tag == "drake:capsule" || tag == "ellipsoid" || tag == "drake:ellipsoid" || tag == "mesh";
+}
+
+}  // namespace
+
 std::optional<ir::Shape> UrdfReader::ReadShape(const xml::XmlElement& geometry) {
-  // one shape, plus Drake's <drake:declare_convex/> marker beside a mesh
-  xml::XmlElement e, declare_convex;
+  // one shape, plus Drake's <drake:declare_convex/> marker beside a mesh.
+  // Anything else (a <material> or <origin> written inside <geometry>) is
+  // ignored with a warning, as Drake and urdfdom read the shape beside it;
+  // without a shape, the first such element is taken for an unknown one.
+  xml::XmlElement e, declare_convex, first_other;
+  bool two_shapes = false;
   for (auto c = geometry.FirstChild(); c; c = c.NextSibling()) {
     if (c.Name() == "drake:declare_convex") {
       declare_convex = c;
+    } else if (!IsShapeTag(c.Name())) {
+      if (!first_other) first_other = c;
     } else if (!e) {
       e = c;
     } else {
+      // Drake takes the first by its own order of shapes, urdfdom the first
+      // written: the two would read different shapes
       diags().Report(DiagKind::BadGeometry, c.GetLoc(),
-                     fmt::format("<geometry> must hold exactly one shape; <{}> is ignored",
+                     fmt::format("<geometry> must hold exactly one shape, but also holds <{}>",
                                  c.Name()));
+      two_shapes = true;
     }
+  }
+  if (!e && first_other) {
+    diags().Report(DiagKind::BadGeometry, first_other.GetLoc(),
+                   fmt::format("unknown shape <{}> in <geometry>", first_other.Name()));
+    return std::nullopt;
   }
   if (!e) {
     diags().Report(DiagKind::MissingElement, geometry.GetLoc(), "<geometry> has no shape element");
     return std::nullopt;
   }
+  for (auto c = geometry.FirstChild(); c; c = c.NextSibling()) {
+    if (c.Name() == "drake:declare_convex" || IsShapeTag(c.Name())) continue;
+    const bool belongs_outside = c.Name() == "origin" || c.Name() == "material";
+    diags().Report(DiagKind::UnknownElement, c.GetLoc(),
+                   fmt::format("element <{}> in <geometry> is ignored{}; the shape <{}> is read",
+                               c.Name(),
+                               belongs_outside ? fmt::format(" (it belongs in <{}>, beside "
+                                                             "<geometry>)",
+                                                             geometry.Parent().Name())
+                                               : "",
+                               e.Name()));
+  }
+  if (two_shapes) return std::nullopt;
   if (declare_convex && e.Name() != "mesh") {
     diags().Report(DiagKind::UnsupportedElement, declare_convex.GetLoc(),
                    "<drake:declare_convex> applies only to a <mesh> and is ignored here");

@@ -158,6 +158,25 @@ TEST(UrdfReaderTest, GeometryRolesShapesAndNames) {  // URDF-031, URDF-032, URDF
   EXPECT_EQ(ir::ShapeTypeName(g[6].shape), "convex");
 }
 
+// pybullet's racecar writes <material> inside <geometry>: urdfdom and Drake
+// read the shape beside it, and so does mdlc, with a warning
+TEST(UrdfReaderTest, AnElementBesideTheShapeIsIgnoredAndTheShapeRead) {  // issue 55, URDF-031
+  Lowered l;
+  ASSERT_TRUE(l.Read(R"(<robot name='r'><link name='a'>
+    <visual><geometry><box size='1 2 3'/><material name='grey'/></geometry></visual>
+    <collision><geometry><origin xyz='0 0 1'/><sphere radius='0.5'/></geometry></collision>
+  </link></robot>)"))
+      << l.Messages();
+  const auto& g = l.module.geometries;
+  ASSERT_EQ(g.size(), 2u);
+  EXPECT_EQ(std::get<ir::Box>(g[0].shape).size, Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(std::get<ir::Sphere>(g[1].shape).radius, 0.5);
+  // the misplaced <origin> does not move the geometry
+  EXPECT_EQ(g[1].X_BG.p, Eigen::Vector3d::Zero());
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnknownElement, "element <material> in <geometry> is ignored"));
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnknownElement, "element <origin> in <geometry> is ignored"));
+}
+
 TEST(UrdfReaderTest, ExplicitDuplicateGeometryNameIsRenamedWithAWarning) {  // URDF-040
   Lowered l;
   ASSERT_TRUE(l.Read(R"(<robot name='r'><link name='a'>
