@@ -12,8 +12,8 @@ std::optional<ModelId> ReadModelFile(const std::string& path, FrontendContext& c
   if (!format) {
     ctx.diags.Report(DiagKind::UnknownFormat, {},
                      fmt::format("'{}': unknown file extension; expected .urdf, .sdf, .xml "
-                                 "(MJCF) or .dmd.yaml",
-                                 path));
+                                 "(MJCF) or .dmd.yaml, or a format named ({})",
+                                 path, kFormatNames));
     return std::nullopt;
   }
   LoadError error;

@@ -28,4 +28,12 @@ std::optional<Format> FormatFromPath(std::string_view path) {
   return std::nullopt;
 }
 
+std::optional<Format> FormatFromName(std::string_view name) {
+  if (name == "urdf") return Format::Urdf;
+  if (name == "sdf" || name == "sdformat") return Format::Sdf;
+  if (name == "mjcf" || name == "mujoco") return Format::Mjcf;
+  if (name == "dmd" || name == "directives") return Format::Directives;
+  return std::nullopt;
+}
+
 }  // namespace mdlc

@@ -15,4 +15,11 @@ std::string_view FormatName(Format format);
 /// .xml (MJCF), .dmd.yaml. nullopt for anything else.
 std::optional<Format> FormatFromPath(std::string_view path);
 
+/// The format a user names (`mdlc -x NAME`, Python's format=): urdf; sdf or
+/// sdformat; mjcf or mujoco; dmd or directives. nullopt for anything else.
+std::optional<Format> FormatFromName(std::string_view name);
+
+/// The names FormatFromName takes, for messages: "urdf, sdf, mjcf or dmd".
+inline constexpr std::string_view kFormatNames = "urdf, sdf, mjcf or dmd";
+
 }  // namespace mdlc

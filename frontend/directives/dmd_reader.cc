@@ -458,11 +458,13 @@ void DirectivesReader::AddDirectives(YamlSchemaReader& r, const yaml::Node& node
   }
   auto path = ResolveFile(*file);
   if (!path) return;
-  if (FormatFromPath(*path) != Format::Directives) {
+  // Drake reads any file named here as directives (bimanual_iiwa.yaml); a
+  // file whose extension names a model format is a model, so say so
+  if (auto format = FormatFromPath(*path); format && *format != Format::Directives) {
     diags().Report(DiagKind::UnknownFormat, file->loc,
-                   fmt::format("add_directives needs a .dmd.yaml file, not '{}'; use add_model "
-                               "for a model",
-                               file->text));
+                   fmt::format("add_directives needs a directives file, not the {} model '{}'; "
+                               "use add_model for a model",
+                               FormatName(*format), file->text));
     return;
   }
   // DMD-061: a file already being processed would recurse forever

@@ -19,8 +19,9 @@ void ReadInput(const Input& input, frontend::FrontendContext& ctx) {
   if (!format) {
     ctx.diags.Report(DiagKind::UnknownFormat, {},
                      fmt::format("model text '{}': no format given and none known by its "
-                                 "extension; expected .urdf, .sdf, .xml (MJCF) or .dmd.yaml",
-                                 input.path));
+                                 "extension; expected .urdf, .sdf, .xml (MJCF) or .dmd.yaml, or "
+                                 "a format named ({})",
+                                 input.path, kFormatNames));
     return;
   }
   frontend::ReadModel(ctx.sources.AddBuffer(input.path, *input.text), *format, ctx);

@@ -65,6 +65,14 @@ Result& KeepUntilExit(Result result) {
 void AddCompileFlags(CLI::App* command, CompileFlags& flags) {
   command->add_option("files", flags.files, "Model files (.urdf, .sdf, .xml, .dmd.yaml)")
       ->required();
+  command
+      ->add_option("-x,--input-format", flags.input_format,
+                   "Read the files as this format whatever their names: urdf, sdf, mjcf or dmd")
+      ->check([](const std::string& name) {
+        return FormatFromName(name) ? std::string()
+                                    : fmt::format("unknown format '{}'; expected {}", name,
+                                                  kFormatNames);
+      });
   command->add_option("--diagnostics-format", flags.diagnostics_format, "text or json")
       ->check(CLI::IsMember({"text", "json"}));
   command
@@ -156,7 +164,9 @@ CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup) {
   }
 
   std::vector<Input> inputs;
-  for (const std::string& file : flags.files) inputs.push_back(Input::File(file));
+  const std::optional<Format> format =
+      flags.input_format.empty() ? std::nullopt : FormatFromName(flags.input_format);
+  for (const std::string& file : flags.files) inputs.push_back(Input::File(file, format));
   Result& result = KeepUntilExit(Compile(inputs, options));
   if (stream) stream->Finish();
   if (setup.diagnostics == DiagnosticOutput::ErrorsAfter) {

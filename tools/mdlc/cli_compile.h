@@ -17,6 +17,7 @@ namespace mdlc::cli {
 /// The flags of every subcommand that compiles (AddCompileFlags).
 struct CompileFlags {
   std::vector<std::string> files;
+  std::string input_format;  // -x: the files' format, whatever their names (empty: by name)
   std::string diagnostics_format = "text";
   std::vector<std::string> warning_flags;  // -W<...>
   bool strict = false;

@@ -42,12 +42,9 @@ PyDiagnostic MakeDiagnostic(const Diagnostic& d, const SourceManager& sources) {
 
 std::optional<Format> ParseFormat(const std::optional<std::string>& name) {
   if (!name) return std::nullopt;
-  if (*name == "urdf") return Format::Urdf;
-  if (*name == "sdf" || *name == "sdformat") return Format::Sdf;
-  if (*name == "mjcf" || *name == "mujoco") return Format::Mjcf;
-  if (*name == "directives" || *name == "dmd" || *name == "dmd.yaml") return Format::Directives;
-  throw py::value_error("unknown format '" + *name +
-                        "'; expected 'urdf', 'sdf', 'mjcf' or 'directives'");
+  if (auto format = FormatFromName(*name)) return format;
+  if (*name == "dmd.yaml") return Format::Directives;  // accepted since the module's first release
+  throw py::value_error("unknown format '" + *name + "'; expected " + std::string(kFormatNames));
 }
 
 // Compiles; returns (model or None, [Diagnostic, ...]). The GIL is released
