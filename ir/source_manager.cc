@@ -38,8 +38,30 @@ struct SourceManager::Buffer {
 SourceManager::SourceManager() = default;
 SourceManager::~SourceManager() = default;
 
-std::optional<FileId> SourceManager::LoadFile(const std::string& path, Loc included_from,
+namespace {
+
+// `path` as diagnostics print it and relative references start from: without
+// repeated separators, "." and "name/.." (models/a//model.sdf ->
+// models/a/model.sdf), when that names the same file (a "name/.." through a
+// symbolic link may not, and then the path stays as written).
+std::string TidyPath(const std::string& path) {
+  namespace fs = std::filesystem;
+  const fs::path written(path);
+  const fs::path tidy = written.lexically_normal();
+  if (tidy.empty() || tidy.native() == path) return path;
+  std::error_code ec, ec2;
+  if (path.find("..") != std::string::npos &&
+      fs::weakly_canonical(written, ec) != fs::weakly_canonical(tidy, ec2)) {
+    return path;
+  }
+  return tidy.string();
+}
+
+}  // namespace
+
+std::optional<FileId> SourceManager::LoadFile(const std::string& written_path, Loc included_from,
                                               LoadError* error) {
+  const std::string path = TidyPath(written_path);
   auto fail = [&](bool over_limit, std::string message) -> std::optional<FileId> {
     if (error) *error = {over_limit, std::move(message)};
     return std::nullopt;

@@ -140,6 +140,17 @@ const PackageMap::Package* PackageMap::Find(std::string_view name) const {
 }
 
 namespace {
+// The folder `base_dir` names, absolute and canonical: a file named
+// "model.sdf" has base_dir "", "./model.sdf" ".", and each must look in the
+// same folders above it as its absolute path does.
+fs::path CanonicalDir(const std::string& base_dir) {
+  std::error_code ec;
+  fs::path dir = fs::absolute(base_dir.empty() ? fs::path(".") : fs::path(base_dir), ec);
+  if (ec) return {};
+  fs::path canonical = fs::weakly_canonical(dir, ec);
+  return ec ? dir.lexically_normal() : canonical;
+}
+
 // `model://NAME` where NAME is no package: Gazebo's convention is a model
 // folder NAME (holding model.config) on its model paths. mdlc looks in the
 // folders SDF_PATH, GZ_SIM_RESOURCE_PATH and GAZEBO_MODEL_PATH list, then in
@@ -159,7 +170,7 @@ std::optional<fs::path> GazeboModelFolder(std::string_view name, const std::stri
     }
   }
   std::error_code ec;
-  fs::path up = fs::absolute(base_dir, ec);
+  fs::path up = CanonicalDir(base_dir);
   for (int i = 0; i < 2 && up.has_parent_path() && up != up.parent_path(); ++i) {
     up = up.parent_path();
     roots.push_back(up);
@@ -181,8 +192,8 @@ std::optional<fs::path> GazeboModelFolder(std::string_view name, const std::stri
 std::optional<fs::path> EnclosingPackageNamed(std::string_view name, const std::string& base_dir) {
   constexpr int kMaxLevels = 64;  // a bound on the walk, far above real trees
   std::error_code ec;
-  fs::path dir = fs::absolute(base_dir, ec);
-  if (ec) return std::nullopt;
+  fs::path dir = CanonicalDir(base_dir);
+  if (dir.empty()) return std::nullopt;
   for (int level = 0; level < kMaxLevels; ++level) {
     const fs::path manifest = dir / "package.xml";
     if (fs::is_regular_file(manifest, ec)) {

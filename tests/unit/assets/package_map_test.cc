@@ -166,6 +166,28 @@ TEST_F(PackageMapTest, PackageUriWithThreeSlashesIsReadAsTwoWithAWarning) {  // 
   EXPECT_EQ(diags_.error_count(), 2u);
 }
 
+// PX4's x500_base: model.sdf in models/x500_base/ (with model.config) names
+// model://x500_base/meshes/...; the folder is found however the referring
+// file's path was spelled, relative to the working folder or not
+TEST_F(PackageMapTest, GazeboModelFolderIsFoundHoweverTheFileIsNamed) {  // issue 55, SDF-031
+  Write("models/x500_base/model.config", "<model><name>x500_base</name></model>");
+  Write("models/x500_base/meshes/a.obj", "v 0 0 0\n");
+  const fs::path cwd = fs::current_path();
+  fs::current_path(root_ / "models" / "x500_base");
+  PackageMap none;
+  const std::string expected = Canonical("models/x500_base/meshes/a.obj");
+  // the base folder of "model.sdf", "./model.sdf", "../x500_base/model.sdf" and its absolute path
+  const std::vector<std::string> bases = {"", ".", "../x500_base",
+                                          (root_ / "models/x500_base").string(),
+                                          (root_ / "models//x500_base/").string()};
+  for (const std::string& base : bases) {
+    EXPECT_EQ(Canon(ResolveUri("model://x500_base/meshes/a.obj", base, none, {}, diags_)), expected)
+        << "base '" << base << "'";
+  }
+  fs::current_path(cwd);
+  EXPECT_EQ(diags_.diagnostics().size(), 0u);
+}
+
 TEST_F(PackageMapTest, UnresolvableUrisAreErrors) {  // COMMON-010, COMMON-011
   PackageMap map;
   EXPECT_FALSE(ResolveUri("http://example.com/a.obj", "/", map, {}, diags_));

@@ -2,6 +2,10 @@
 #include "ir/source_manager.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 
 namespace mdlc {
 namespace {
@@ -32,6 +36,36 @@ TEST(SourceManagerTest, MissingFileReportsError) {
   EXPECT_FALSE(sm.LoadFile("/nonexistent/definitely/not/here.urdf", {}, &error));
   EXPECT_FALSE(error.message.empty());
   EXPECT_FALSE(error.over_limit);
+}
+
+// Diagnostics print a file's path tidied (models/a//model.sdf,
+// ./../assets.xml), unless tidying through a symbolic link would name
+// another file.
+TEST(SourceManagerTest, LoadedPathsAreTidied) {  // issue 55
+  namespace fs = std::filesystem;
+  const fs::path root = fs::temp_directory_path() / ("mdlc_tidy_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root / "a" / "sub");
+  fs::create_directories(root / "elsewhere" / "deep");
+  std::ofstream(root / "a" / "m.sdf") << "<sdf/>";
+  std::ofstream(root / "elsewhere" / "m.sdf") << "<other/>";
+  fs::create_directory_symlink(root / "elsewhere" / "deep", root / "a" / "link");
+  const std::string r = root.string();
+  SourceManager sm;
+  for (const std::string& written : {r + "/a//m.sdf", r + "/a/./m.sdf", r + "/a/sub/../m.sdf",
+                                     r + "//a/m.sdf"}) {
+    const auto f = sm.LoadFile(written);
+    ASSERT_TRUE(f) << written;
+    EXPECT_EQ(sm.Path(*f), r + "/a/m.sdf") << written;
+    EXPECT_EQ(sm.Contents(*f), "<sdf/>");
+  }
+  // a/link/.. is elsewhere/, not a/: the path stays as written
+  const std::string through_link = r + "/a/link/../m.sdf";
+  const auto f = sm.LoadFile(through_link);
+  ASSERT_TRUE(f);
+  EXPECT_EQ(sm.Path(*f), through_link);
+  EXPECT_EQ(sm.Contents(*f), "<other/>");
+  fs::remove_all(root);
 }
 
 TEST(SourceManagerTest, RecordsIncludeSite) {
