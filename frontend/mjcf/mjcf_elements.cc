@@ -15,6 +15,28 @@
 
 namespace mdlc::frontend::mjcf {
 
+namespace {
+
+void WarnUnreflectedArmature(MjcfReader& r) {
+  // MJCF-024: the plant holds armature only as an actuator's rotor inertia,
+  // as Drake's does; a joint no actuator drives (a finger moved through a
+  // tendon) has it only where mdlc computes gains from MuJoCo's inertia at
+  // qpos0 (BEYOND-007, BEYOND-008), not in the mass matrix, whose diagonal
+  // MuJoCo adds it to
+  for (const JointId id : r.joint_order) {
+    const auto it = r.joint_armature.find(id.value);
+    if (it == r.joint_armature.end() || it->second.reflected || it->second.value == 0) continue;
+    r.diags().Report(
+        DiagKind::UnsupportedAttribute, it->second.loc,
+        fmt::format("armature {} of joint '{}' is left out of the mass matrix: the plant holds "
+                    "armature only as the rotor inertia of an actuator on the joint, as Drake's "
+                    "does, and no actuator drives it (MuJoCo adds it to the mass matrix)",
+                    it->second.value, r.module().Text(r.module()[id].name)));
+  }
+}
+
+}  // namespace
+
 void LowerModelElements(MjcfReader& reader, const std::vector<xml::XmlElement>& top_level) {
   ElementsLowering L(reader);
   std::vector<xml::XmlElement> keyframes;
@@ -31,7 +53,9 @@ void LowerModelElements(MjcfReader& reader, const std::vector<xml::XmlElement>& 
     if (e.Name() == "keyframe") keyframes.push_back(e);
   }
   if (!keyframes.empty()) LowerKeyframes(L, keyframes);
+  WarnUnreflectedArmature(reader);
 }
+
 
 // --- values ------------------------------------------------------------------
 

@@ -5,12 +5,14 @@
 //     <motor>, then every <position>, then (mdlc) <velocity> and <general> in
 //     document order; an unnamed one is "motor<N>", N the actuators so far;
 //   - gear: the first value (1 or 6 values expected, else W);
-//   - effort limit (MJCF-060, Drake's rule for motor and position):
-//     max(|ctrlrange|) when ctrl-limited, then the min with max(|forcerange|)
-//     when force-limited; asymmetric ranges W (the larger bound is used),
-//     lower > upper W (ignored). Velocity and PD-like general actuators take
-//     forcerange only (their ctrlrange is a velocity or position);
-//     motor-like general ones scale ctrlrange by their gain;
+//   - effort limit (MJCF-060): a motor's is max(|ctrlrange|) when
+//     ctrl-limited (Drake's rule), then the min with max(|forcerange|) when
+//     force-limited; asymmetric ranges W (the larger bound is used), lower >
+//     upper W (ignored). Position, velocity and PD-like general actuators
+//     take forcerange only: their ctrlrange is a range of positions or
+//     velocities, not of forces (Drake's parser reads a position's ctrlrange
+//     as forces; mdlc differs, README); motor-like general ones scale
+//     ctrlrange by their gain;
 //   - rotor inertia = joint armature / gear^2 (MJCF-024; every kind here);
 //   - PD gains: position kp (default 1) and kv -> kp, kd (BEYOND-008; Drake's
 //     parser reads "kd", which MuJoCo does not know: read, with a W);
@@ -87,10 +89,11 @@ class ActuatorLowering {
     a.gear_ratio = Gear();
 
     std::optional<Gains> gains;
-    bool ctrl_is_force = true;  // Drake's effort rule reads ctrlrange as a force
+    bool ctrl_is_force = true;  // a motor's ctrlrange is a range of forces
     double ctrl_scale = 1;
     if (kind == "position") {
       gains = Position(*joint);
+      ctrl_is_force = false;  // a range of positions (Drake reads it as forces)
     } else if (kind == "velocity") {
       gains = Velocity();
       ctrl_is_force = false;
@@ -108,9 +111,10 @@ class ActuatorLowering {
     const bool scaled = gains && gains->dampratio > 0 && gains->kp > 0;
     // MJCF-024: the joint's armature, reflected through the gear
     if (auto it = L_.r.joint_armature.find(joint->value); it != L_.r.joint_armature.end()) {
+      it->second.reflected = true;
       if (a.gear_ratio != 0) {
-        a.rotor_inertia = it->second / (a.gear_ratio * a.gear_ratio);
-      } else if (it->second != 0) {
+        a.rotor_inertia = it->second.value / (a.gear_ratio * a.gear_ratio);
+      } else if (it->second.value != 0) {
         L_.WarnValueOnce("actuator/gear0", e_.Get("gear").loc,
                          "a gear of 0 cannot reflect the joint's armature; rotor inertia 0");
       }

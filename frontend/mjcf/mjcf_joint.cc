@@ -301,7 +301,7 @@ void LowerJoints(MjcfReader& r, const BodyContext& b, std::span<const BodyItem> 
     }
     // MJCF-024: armature waits for an actuator to become rotor inertia
     const double armature = r.Number(j, "armature", 0).value_or(0);
-    if (j.Get("armature").present()) r.joint_armature[id.value] = armature;
+    if (const auto a = j.Get("armature"); a.present()) r.joint_armature[id.value] = {armature, a.loc};
     r.scaled_gains.joints.push_back({id, jt == ir::JointType::Ball ? 0.0 : ref, armature});
     const double springref_value = r.Number(j, "springref", 0).value_or(0);
     const double springref = hinge ? r.compiler.Angle(springref_value) : springref_value;

@@ -150,9 +150,15 @@ struct MjcfReader {
   /// Every body in document order, world first (keyframe and equality
   /// lookups by index), and each body's MJCF joints in document order.
   std::vector<BodyId> body_order;
-  /// Per MJCF joint (1-dof: hinge, slide): armature, so an actuator can turn
-  /// it into rotor inertia (MJCF-024); ref, the joint's qpos0.
-  std::unordered_map<uint32_t, double> joint_armature;  // by JointId index
+  /// Per MJCF joint that sets one: its armature, so an actuator can turn it
+  /// into rotor inertia (MJCF-024), and whether one did; an armature no
+  /// actuator takes is dropped with a warning at the end.
+  struct JointArmature {
+    double value = 0;
+    Loc loc;
+    bool reflected = false;  // an actuator on the joint took it as rotor inertia
+  };
+  std::unordered_map<uint32_t, JointArmature> joint_armature;  // by JointId index
   /// Every MJCF joint in document order (the qpos layout of keyframes).
   std::vector<JointId> joint_order;
   /// Joint springdamper and actuator dampratio requests, with every joint's

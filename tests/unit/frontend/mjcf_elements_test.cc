@@ -102,12 +102,13 @@ class Mjcf {
   mutable testing::DiagnosticClaims claims_;
 };
 
-std::string Doc(std::string_view after_worldbody) {
-  // a chain a (hinge ja, ref 30 degrees) -> b (slide jb, ref 0.25), a free body c
+// A chain a (hinge ja, ref 30 degrees) -> b (slide jb, ref 0.25), a free
+// body c; `ja_extra` adds attributes to ja.
+std::string Doc(std::string_view after_worldbody, std::string_view ja_extra = "") {
   return fmt::format(R"(<mujoco model="m">
  <worldbody>
   <body name="a" pos="0 0 1" euler="0 0 90">
-   <joint name="ja" type="hinge" axis="0 1 0" ref="30" range="-90 90" armature="0.5"/>
+   <joint name="ja" type="hinge" axis="0 1 0" ref="30" range="-90 90" {}/>
    <geom size="0.1"/>
    <body name="b" pos="1 0 0" euler="90 0 0">
     <joint name="jb" type="slide" ref="0.25" range="-1 3"/>
@@ -119,7 +120,7 @@ std::string Doc(std::string_view after_worldbody) {
 {}
 </mujoco>
 )",
-                     after_worldbody);
+                     ja_extra, after_worldbody);
 }
 
 void ExpectVector(const nlohmann::json& v, std::initializer_list<double> expected,
@@ -347,7 +348,8 @@ TEST(MjcfActuator, MotorDefaultsNamesAndRotorInertia) {
   <position joint="jb"/>
   <motor joint="ja" gear="2" ctrlrange="-3 3"/>
   <motor name="named" joint="jb" ctrlrange="-1 2" forcerange="-1.5 1.5"/>
- </actuator>)"));
+ </actuator>)",
+             R"(armature="0.5")"));
   ASSERT_TRUE(m.ok()) << m.Messages();
   const nlohmann::json a = m.Json()["actuators"];
   ASSERT_EQ(a.size(), 3u);
@@ -406,9 +408,61 @@ TEST(MjcfActuator, DefaultClassesPerKindAndInheritRange) {
   ASSERT_TRUE(m.ok()) << m.Messages();
   const auto* p = m.Actuator("p");
   EXPECT_EQ(*p->kp, 20);
-  // inheritrange 0.5 of [-pi/2, pi/2] -> ctrlrange +-pi/4; Drake's rule min forcerange
-  EXPECT_NEAR(p->effort_limit, M_PI / 4, 1e-12);
+  // inheritrange 0.5 of [-pi/2, pi/2] -> ctrlrange +-pi/4, a range of
+  // positions: the effort limit is the default class's forcerange
+  EXPECT_EQ(p->effort_limit, 4);
   EXPECT_EQ(m.Actuator("mo")->gear_ratio, 3);
+}
+
+// Menagerie panda's fingers move through a tendon: no actuator takes their
+// armature as rotor inertia, so the mass matrix lacks what MuJoCo's has
+TEST(MjcfActuator, ArmatureNoActuatorTakesIsWarned) {  // issue 55, MJCF-024
+  {
+    Mjcf m(Doc("", R"(armature="0.5")"));
+    ASSERT_TRUE(m.ok()) << m.Messages();
+    EXPECT_EQ(m.Count(DiagKind::UnsupportedAttribute,
+                      "armature 0.5 of joint 'ja' is left out of the mass matrix: the plant holds "
+                      "armature only as the rotor inertia of an actuator on the joint"),
+              1u)
+        << m.Messages();
+    EXPECT_EQ(m.Line(DiagKind::UnsupportedAttribute), 4u);  // at the attribute
+  }
+  {  // from a default class: at the default's attribute; 0 says nothing
+    Mjcf m(R"(<mujoco model="m">
+ <default><joint armature="0.1"/><default class="none"><joint armature="0"/></default></default>
+ <worldbody>
+  <body name="a"><joint name="ja" axis="0 1 0"/><geom size="0.1"/>
+   <body name="b"><joint name="jb" class="none"/><geom size="0.1"/></body>
+  </body>
+ </worldbody>
+</mujoco>)");
+    ASSERT_TRUE(m.ok()) << m.Messages();
+    EXPECT_EQ(m.Count(DiagKind::UnsupportedAttribute, "armature 0.1 of joint 'ja'"), 1u)
+        << m.Messages();
+    EXPECT_EQ(m.Line(DiagKind::UnsupportedAttribute), 2u);
+  }
+  {  // a motor on the joint takes it: no warning
+    Mjcf m(Doc(R"(<actuator><motor joint="ja"/></actuator>)", R"(armature="0.5")"));
+    ASSERT_TRUE(m.ok()) << m.Messages();
+    EXPECT_EQ(m.DiagCount(), 0u) << m.Messages();
+  }
+}
+
+// anymal_c's actuators: Drake's parser reads a position's ctrlrange, a range
+// of positions, as an effort limit (6.28 here); mdlc reads forcerange
+TEST(MjcfActuator, APositionsEffortLimitIsItsForceRange) {  // issue 55, MJCF-060
+  Mjcf m(Doc(R"(<actuator>
+  <position name="limited" joint="ja" kp="100" ctrlrange="-6.28 6.28" forcerange="-80 80"/>
+  <position name="free" joint="jb" kp="100" ctrlrange="-6.28 0.5"/>
+  <motor name="motor" joint="ja" ctrlrange="-6.28 6.28" forcerange="-80 80"/>
+ </actuator>)"));
+  ASSERT_TRUE(m.ok()) << m.Messages();
+  EXPECT_EQ(m.Actuator("limited")->effort_limit, 80);
+  // no forcerange: unlimited, and an asymmetric range of positions is no news
+  EXPECT_EQ(m.Actuator("free")->effort_limit, kInf);
+  EXPECT_EQ(m.Count(DiagKind::ActuatorWarning, "asymmetric"), 0u) << m.Messages();
+  // a motor's ctrlrange is a range of forces, as Drake reads it
+  EXPECT_NEAR(m.Actuator("motor")->effort_limit, 6.28, 1e-15);
 }
 
 TEST(MjcfActuator, UnsupportedKindsAndTransmissions) {
