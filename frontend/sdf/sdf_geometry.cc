@@ -720,6 +720,15 @@ void SdfReader::ReadSensor(const xml::XmlElement& e, ModelScope& s, BodyId body,
   if (!CheckDefinedName(*name, e.GetLoc(), "sensor", s.file->version)) return;
   const Symbol symbol = module().Intern(*name);
   if (!ClaimName(*this, body, kSensorNames, symbol, e.GetLoc(), "sensor", link_name)) return;
+  // one rule for every sensor, modelled or not: an element SDFormat does not
+  // define in <sensor> is an error (SDF-001), as libsdformat reports it under
+  // Drake's policy (a Gazebo <gz_frame_id> in an imu as in a camera)
+  // (SDFormat 1.12's elements of <sensor>: air_speed since 1.10, frame_id 1.12)
+  CheckChildren(e, {"always_on", "update_rate", "visualize", "topic", "enable_metrics",
+                    "frame_id", "pose", "plugin", "camera", "air_pressure", "air_speed",
+                    "altimeter", "contact", "force_torque", "gps", "imu", "lidar",
+                    "logical_camera", "magnetometer", "navsat", "ray", "rfid", "rfidtag", "sonar",
+                    "transceiver"});
   if (!IsCameraType(*type)) {
     // SDF-043: only cameras are modelled
     diags().Report(DiagKind::UnsupportedElement, e.GetLoc(),
@@ -727,10 +736,6 @@ void SdfReader::ReadSensor(const xml::XmlElement& e, ModelScope& s, BodyId body,
                                *name, *type));
     return;
   }
-  CheckChildren(e, {"always_on", "update_rate", "visualize", "topic", "enable_metrics", "pose",
-                    "plugin", "camera", "air_pressure", "altimeter", "contact", "force_torque",
-                    "gps", "imu", "lidar", "logical_camera", "magnetometer", "navsat", "ray",
-                    "rfid", "rfidtag", "sonar", "transceiver"});
 
   // SDF-044: libsdformat's defaults where the file says nothing
   ir::Camera camera;

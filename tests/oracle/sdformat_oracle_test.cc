@@ -851,6 +851,9 @@ constexpr KnownDisagreement kKnownDisagreements[] = {
      "SDF-001: unknown elements in the SDFormat namespace are errors (libsdformat 12 only warns)"},
     {"sdformat/test/sdf/unrecognized_elements.sdf",
      "SDF-001: unknown elements in the SDFormat namespace are errors (libsdformat 12 only warns)"},
+    {"sdformat/test/integration/model/robot/model.sdf",
+     "SDF-001: <alwaysOn> (for <always_on>) in a gpu_lidar <sensor> is not an SDFormat element: "
+     "an error for every sensor type, as under Drake's policy (libsdformat 12 only warns)"},
     {"gazebo_models/utility_cart/model.sdf", "SDF-010: revolute2 joints are not supported by Drake"},
     {"gazebo_models/utility_cart/model-1_3.sdf", "SDF-010: revolute2 joints are not supported by Drake"},
     {"gazebo_models/utility_cart/model-1_4.sdf", "SDF-010: revolute2 joints are not supported by Drake"},
