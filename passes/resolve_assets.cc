@@ -12,9 +12,10 @@
 // that does not exist is an error when the plant needs it: for a collision
 // geometry, a geometry with mass whose mass properties come from it, or a
 // primitive sized from it. A mesh only visual geometries use is never read for the
-// plant: its missing file is a warning (-Wmissing-asset) and the geometry is
-// kept. Each distinct (folder, uri) is resolved once and reported at most
-// once, however many geometries use it.
+// plant: its missing file, or the unknown package that would hold it, is a
+// warning (-Wmissing-asset) and the geometry is kept. Each distinct (folder,
+// uri) is resolved once and reported at most once, however many geometries
+// use it.
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -67,6 +68,15 @@ std::optional<std::string> WhyShapeMeshIsNeeded(const ir::Module& m, const ir::G
   return std::nullopt;
 }
 
+/// "visual geometry 'g' of body 'b' (and 2 more)": the geometries that use a
+/// file the plant never reads.
+std::string Users(const ir::Module& m, const ir::Geometry& first, size_t users) {
+  const bool drawn = first.roles & (ir::kIllustrationRole | ir::kPerceptionRole);
+  std::string s = Describe(m, first, drawn ? "visual " : "");
+  if (users > 1) s += fmt::format(" (and {} more)", users - 1);
+  return s;
+}
+
 /// One distinct file reference and every mesh that makes it.
 struct Reference {
   std::string uri;
@@ -81,6 +91,28 @@ struct Reference {
   const ir::Geometry* first_user = nullptr;
   size_t users = 0;
 };
+
+/// The path of a reference no use of which the plant reads. An unknown
+/// package is then what a missing file is (COMMON-011, relaxed): a warning,
+/// and the geometries are kept; any other failure (an unsupported scheme)
+/// stays an error.
+std::optional<std::string> ResolveVisualOnly(const Reference& ref,
+                                             const assets::PackageMap& packages,
+                                             const ir::Module& m, DiagnosticEngine& diags) {
+  DiagnosticEngine held;
+  std::optional<std::string> path = assets::UriToPath(ref.uri, ref.base_dir, packages, ref.loc, held);
+  for (const Diagnostic& d : held.diagnostics()) {
+    const bool unknown_package = d.kind == DiagKind::FileNotFound;
+    auto report = unknown_package
+                      ? diags.Report(DiagKind::MissingAsset, d.loc,
+                                     fmt::format("{}; {} is kept without its mesh file, which "
+                                                 "the plant never reads",
+                                                 d.message, Users(m, *ref.first_user, ref.users)))
+                      : diags.Report(d.kind, d.loc, d.message);
+    for (const DiagnosticNote& note : d.notes) report.Note(note.loc, note.message);
+  }
+  return path;
+}
 
 bool ResolveAssetsPass::Run(PassContext& ctx) {
   const assets::PackageMap& packages = ctx.packages;
@@ -120,10 +152,12 @@ bool ResolveAssetsPass::Run(PassContext& ctx) {
     std::optional<std::string> path;
     if (!ref.path.empty()) {
       path = ref.path;
+    } else if (ref.needed_by) {
+      // an unknown package or unsupported scheme is an error when the plant
+      // needs the file
+      path = assets::UriToPath(ref.uri, ref.base_dir, packages, ref.needed_loc, ctx.diags);
     } else {
-      // an unknown package or unsupported scheme is an error whatever uses it
-      path = assets::UriToPath(ref.uri, ref.base_dir, packages,
-                                 ref.needed_by ? ref.needed_loc : ref.loc, ctx.diags);
+      path = ResolveVisualOnly(ref, packages, m, ctx.diags);
     }
     std::error_code ec;
     std::string resolved;
@@ -136,14 +170,10 @@ bool ResolveAssetsPass::Run(PassContext& ctx) {
           .Note(ref.needed_geometry_loc, fmt::format("the plant reads this file: {}", *ref.needed_by));
     } else if (path) {
       // COMMON-011, relaxed: nothing in the plant reads a visual mesh
-      const ir::Geometry& g = *ref.first_user;
-      const bool drawn = g.roles & (ir::kIllustrationRole | ir::kPerceptionRole);
-      std::string users = Describe(m, g, drawn ? "visual " : "");
-      if (ref.users > 1) users += fmt::format(" (and {} more)", ref.users - 1);
       ctx.diags.Report(DiagKind::MissingAsset, ref.loc,
                        fmt::format("'{}' resolves to '{}', which does not exist; {} is kept "
                                    "without its mesh file, which the plant never reads",
-                                   ref.uri, *path, users));
+                                   ref.uri, *path, Users(m, *ref.first_user, ref.users)));
     }
     for (ir::Mesh* mesh : ref.meshes) mesh->resolved = resolved;
   }

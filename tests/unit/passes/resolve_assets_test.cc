@@ -144,16 +144,38 @@ TEST(ResolveAssetsTest, UrdfFileSharedByVisualAndCollisionIsOneErrorAtTheCollisi
   EXPECT_TRUE(r.All(DiagKind::MissingAsset).empty()) << r.Messages();
 }
 
-TEST(ResolveAssetsTest, UnknownPackageStaysAnErrorForAVisual) {  // COMMON-011
+// a visual mesh's unknown package is the case of its missing file: the plant
+// never reads it, so both are warnings and the geometry is kept (issue 55);
+// where the plant reads the file, an unknown package stays an error
+TEST(ResolveAssetsTest, UnknownPackageOfAVisualIsAWarningLikeAMissingFile) {  // issue 55, COMMON-011
   Compiled r("robot.urdf", R"(<robot name="r">
   <link name="a">
     <visual><geometry><mesh filename="package://nowhere/a.obj"/></geometry></visual>
+    <visual><geometry><mesh filename="missing.obj"/></geometry></visual>
   </link>
 </robot>
 )");
-  EXPECT_FALSE(r.ok());
-  ASSERT_EQ(r.All(DiagKind::FileNotFound).size(), 1u) << r.Messages();
-  EXPECT_NE(r.All(DiagKind::FileNotFound)[0]->message.find("unknown package 'nowhere'"),
+  EXPECT_TRUE(r.ok()) << r.Messages();
+  const auto warnings = r.All(DiagKind::MissingAsset);
+  ASSERT_EQ(warnings.size(), 2u) << r.Messages();
+  EXPECT_NE(warnings[0]->message.find("unknown package 'nowhere' in 'package://nowhere/a.obj'; "
+                                      "visual geometry 'Mesh' of body 'a' is kept without its "
+                                      "mesh file, which the plant never reads"),
+            std::string::npos)
+      << r.Messages();
+  EXPECT_FALSE(warnings[0]->notes.empty());  // where it looked
+  EXPECT_NE(r.Geometry("Mesh", kVisualRoles), nullptr);
+  EXPECT_NE(r.Geometry("Mesh_1", kVisualRoles), nullptr);
+
+  Compiled collision("robot.urdf", R"(<robot name="r">
+  <link name="a">
+    <collision><geometry><mesh filename="package://nowhere/a.obj"/></geometry></collision>
+  </link>
+</robot>
+)");
+  EXPECT_FALSE(collision.ok());
+  ASSERT_EQ(collision.All(DiagKind::FileNotFound).size(), 1u) << collision.Messages();
+  EXPECT_NE(collision.All(DiagKind::FileNotFound)[0]->message.find("unknown package 'nowhere'"),
             std::string::npos);
 }
 
