@@ -35,6 +35,66 @@ void SdfReader::ReadDrakeModelElement(const xml::XmlElement& e, ModelScope& s) {
 
 // --- drake: children of a <joint> (EXT-010, EXT-012..014, SDF-021) ---
 
+// SDFormat 1.11's <axis><mimic joint axis><multiplier><offset><reference>:
+// follower = multiplier (leader - reference) + offset, the linear relation
+// <drake:mimic> states with offset' = offset - multiplier reference. Drake
+// reads only <drake:mimic>; mdlc reads both (the README lists it), the Drake
+// element first when a joint has both.
+void SdfReader::ReadAxisMimic(const xml::XmlElement& joint_element, ModelScope& s,
+                              JointId joint_id) {
+  const ir::Joint& joint = module()[joint_id];
+  const std::string joint_name(module().Text(joint.name));
+  for (const char* axis_tag : {"axis", "axis2"}) {
+    const xml::XmlElement axis = joint_element.Child(axis_tag);
+    const xml::XmlElement mimic = axis ? axis.Child("mimic") : xml::XmlElement();
+    if (!mimic) continue;
+    attrs_.WarnUnknownAttributes(mimic, {"joint", "axis"});
+    CheckChildren(mimic, {"multiplier", "offset", "reference"});
+    const int nv = ir::JointVelocityCount(joint.type);
+    auto ignored = [&](std::string why) {
+      diags().Report(DiagKind::JointWarning, mimic.GetLoc(),
+                     fmt::format("<mimic> of joint '{}' is ignored: {}", joint_name, why));
+    };
+    if (std::string_view(axis_tag) == "axis2" || nv != 1 || joint.type == ir::JointType::Weld) {
+      ignored(fmt::format("a coupler joins single-dof joints, and this is the <{}> of a {} joint",
+                          axis_tag, ir::JointTypeName(joint.type)));
+      continue;
+    }
+    if (const xml::XmlElement drake = joint_element.Child("drake:mimic")) {
+      ignored("the joint's <drake:mimic> is read instead");
+      continue;
+    }
+    auto leader = attrs_.String(mimic, "joint", xml::Need::Required);
+    if (!leader) continue;
+    if (leader->empty() || *leader == joint_name) {
+      diags().Report(DiagKind::BadValue, mimic.Attribute("joint").loc,
+                     leader->empty() ? fmt::format("<mimic> of joint '{}' names no joint",
+                                                   joint_name)
+                                     : fmt::format("<mimic> of joint '{}' names joint '{}' "
+                                                   "itself; a joint cannot follow itself",
+                                                   joint_name, *leader));
+      continue;
+    }
+    if (const xml::XmlAttribute leader_axis = mimic.Attribute("axis");
+        leader_axis.present() && leader_axis.value != "axis") {
+      ignored(fmt::format("it follows the '{}' of joint '{}', and a coupler follows a "
+                          "single-dof joint's only axis",
+                          leader_axis.value, *leader));
+      continue;
+    }
+    // SDFormat's defaults where the element is left out
+    const double multiplier = ChildDouble(mimic, "multiplier").value_or(1.0);
+    const double offset = ChildDouble(mimic, "offset").value_or(0.0);
+    const double reference = ChildDouble(mimic, "reference").value_or(0.0);
+    ir::CouplerConstraint c;
+    c.joint0 = {joint.name, joint.loc, {}};  // the follower, as in Drake
+    c.joint1 = {module().Intern(*leader), mimic.Attribute("joint").loc, {}};
+    c.gear_ratio = multiplier;
+    c.offset = offset - multiplier * reference;
+    module().Add(ir::Constraint{s.model, mimic.GetLoc(), std::move(c)});
+  }
+}
+
 void SdfReader::ReadJointDrakeChildren(const xml::XmlElement& joint_element, ModelScope& s,
                                        JointId joint_id, std::optional<ActuatorId> actuator) {
   const ir::Joint& joint = module()[joint_id];
@@ -162,6 +222,7 @@ void SdfReader::ReadJointDrakeChildren(const xml::XmlElement& joint_element, Mod
       }
     }
   }
+  ReadAxisMimic(joint_element, s, joint_id);
 }
 
 }  // namespace mdlc::frontend::sdf

@@ -194,6 +194,8 @@ class SdfReader {
   /// drake: children of a <joint> (drake:mimic, drake:rotor_inertia,
   /// drake:gear_ratio, drake:controller_gains; SDF-021, EXT-010, EXT-012..014).
   /// Called after the joint and its actuator (if any) exist.
+  /// SDFormat 1.11's <axis><mimic>: a coupler, as <drake:mimic> makes.
+  void ReadAxisMimic(const xml::XmlElement& joint_element, ModelScope& s, JointId joint);
   void ReadJointDrakeChildren(const xml::XmlElement& joint_element, ModelScope& s, JointId joint,
                               std::optional<ActuatorId> actuator);
   // --- sdf_deformable.cc

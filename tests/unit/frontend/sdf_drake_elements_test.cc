@@ -637,6 +637,52 @@ TEST(SdfJointDrakeChildrenTest, MimicIsACouplerConstraint) {  // EXT-010
   EXPECT_EQ(json["constraints"][0]["joint1"], "m::j2");
 }
 
+// SDFormat 1.11's <axis><mimic>, read as <drake:mimic> would be written:
+// follower = multiplier (leader - reference) + offset
+TEST(SdfJointDrakeChildrenTest, Sdformat111MimicIsACouplerToo) {  // issue 55, EXT-010
+  {
+    LoweredSdf l;
+    ASSERT_TRUE(l.Read(JointModel("", R"(<mimic joint='j2' axis='axis'><multiplier>2</multiplier>
+        <offset>0.5</offset><reference>0.1</reference></mimic>)")))
+        << l.Messages();
+    ASSERT_EQ(l.module.constraints.size(), 1u);
+    const auto& c = l.module.constraints[0].As<ir::CouplerConstraint>();
+    EXPECT_EQ(l.module.Text(c.joint0.name), "j1");
+    EXPECT_EQ(l.module.Text(c.joint1.name), "j2");
+    EXPECT_EQ(c.gear_ratio, 2);
+    EXPECT_DOUBLE_EQ(c.offset, 0.5 - 2 * 0.1);
+  }
+  {  // SDFormat's defaults: multiplier 1, offset 0, reference 0
+    CompiledSdf compiled(JointModel("", "<mimic joint='j2'/>"));
+    ASSERT_TRUE(compiled.ok()) << compiled.Messages();
+    const nlohmann::json json = compiled.PlantJson();
+    ASSERT_EQ(json["constraints"].size(), 1u);
+    EXPECT_EQ(json["constraints"][0]["type"], "coupler");
+    EXPECT_EQ(json["constraints"][0]["joint0"], "m::j1");
+    EXPECT_EQ(json["constraints"][0]["joint1"], "m::j2");
+  }
+  {  // both: Drake's element is read, the other is ignored with a warning
+    LoweredSdf l;
+    ASSERT_TRUE(l.Read(JointModel("<drake:mimic joint='j2' multiplier='3' offset='0'/>",
+                                  "<mimic joint='j2'/>")))
+        << l.Messages();
+    ASSERT_EQ(l.module.constraints.size(), 1u);
+    EXPECT_EQ(l.module.constraints[0].As<ir::CouplerConstraint>().gear_ratio, 3);
+    EXPECT_TRUE(l.HasDiagnostic(DiagKind::JointWarning,
+                                "<mimic> of joint 'j1' is ignored: the joint's <drake:mimic> is "
+                                "read instead"));
+  }
+  {  // a leader's second axis, and a joint following itself
+    LoweredSdf l;
+    EXPECT_TRUE(l.Read(JointModel("", "<mimic joint='j2' axis='axis2'/>"))) << l.Messages();
+    EXPECT_TRUE(l.module.constraints.empty());
+    EXPECT_TRUE(l.HasDiagnostic(DiagKind::JointWarning, "it follows the 'axis2' of joint 'j2'"));
+    LoweredSdf self;
+    EXPECT_FALSE(self.Read(JointModel("", "<mimic joint='j1'/>")));
+    EXPECT_TRUE(self.HasDiagnostic(DiagKind::BadValue, "a joint cannot follow itself"));
+  }
+}
+
 TEST(SdfJointDrakeChildrenTest, MimicErrors) {  // EXT-010
   struct Case {
     const char* mimic;
