@@ -185,40 +185,49 @@ std::string Result::PlantJson(const Eigen::VectorXd& q,
 
 const std::string& Result::timing_report() const { return compilation_->timing_report(); }
 
-std::vector<MeshSize> Result::MeshSizes(const std::vector<std::string>& resolved_paths) const {
-  compilation_->meshes->Prefetch(resolved_paths);
-  std::vector<MeshSize> sizes;
-  sizes.reserve(resolved_paths.size());
-  for (const std::string& path : resolved_paths) {
-    const mesh::MeshOrError m = compilation_->meshes->Get(path);
-    MeshSize& size = sizes.emplace_back();
-    if (!m.ok()) {
-      size.error = m.error;
-      continue;
+namespace {
+
+/// Reads `paths` through the compile's mesh cache (in parallel, each file
+/// once) and makes an `Out` of each: its error, or what `take` takes from
+/// the mesh.
+template <typename Out, typename Take>
+std::vector<Out> ReadEach(mesh::MeshCache& meshes, const std::vector<std::string>& paths,
+                          Take take) {
+  meshes.Prefetch(paths);
+  std::vector<Out> out;
+  out.reserve(paths.size());
+  for (const std::string& path : paths) {
+    const mesh::MeshOrError m = meshes.Get(path);
+    Out& o = out.emplace_back();
+    if (m.ok()) {
+      take(path, *m.mesh, o);
+    } else {
+      o.error = m.error;
     }
-    size.vertices = m.mesh->vertices.size();
-    size.triangles = m.mesh->triangles.size();
   }
-  return sizes;
+  return out;
+}
+
+}  // namespace
+
+std::vector<MeshSize> Result::MeshSizes(const std::vector<std::string>& resolved_paths) const {
+  return ReadEach<MeshSize>(*compilation_->meshes, resolved_paths,
+                            [](const std::string&, const mesh::TriangleMesh& m, MeshSize& size) {
+                              size.vertices = m.vertices.size();
+                              size.triangles = m.triangles.size();
+                            });
 }
 
 std::vector<MeshTriangles> Result::ReadMeshes(const std::vector<std::string>& resolved_paths,
                                               std::string* axes_note) const {
-  compilation_->meshes->Prefetch(resolved_paths);
   mesh::OffAxisColladaFiles off_axis;
-  std::vector<MeshTriangles> meshes;
-  meshes.reserve(resolved_paths.size());
-  for (const std::string& path : resolved_paths) {
-    const mesh::MeshOrError m = compilation_->meshes->Get(path);
-    MeshTriangles& out = meshes.emplace_back();
-    if (!m.ok()) {
-      out.error = m.error;
-      continue;
-    }
-    out.vertices = m.mesh->vertices;
-    out.triangles = m.mesh->triangles;
-    off_axis.Add(path, m.mesh->declared_up, m.mesh->turned_to_z_up);
-  }
+  std::vector<MeshTriangles> meshes = ReadEach<MeshTriangles>(
+      *compilation_->meshes, resolved_paths,
+      [&](const std::string& path, const mesh::TriangleMesh& m, MeshTriangles& out) {
+        out.vertices = m.vertices;
+        out.triangles = m.triangles;
+        off_axis.Add(path, m.declared_up, m.turned_to_z_up);
+      });
   if (axes_note) *axes_note = off_axis.Note();
   return meshes;
 }
