@@ -21,6 +21,7 @@ struct MemoryStream {
     auto* self = static_cast<MemoryStream*>(context);
     if (self->rest.empty()) std::swap(self->rest, self->then);
     const size_t n = std::min(self->rest.size(), static_cast<size_t>(std::max(size, 0)));
+    if (n == 0) return 0;  // at the end: an empty view may hold no pointer to copy from
     std::memcpy(out, self->rest.data(), n);
     self->rest.remove_prefix(n);
     return static_cast<int>(n);
