@@ -56,8 +56,14 @@ struct XmlOut::State {
 
 XmlOut::XmlOut() : s_(std::make_unique<State>()) {
   s_->buffer = xmlBufferCreate();
+  if (!s_->buffer) throw std::runtime_error("internal: no memory for XML output");
+  // libxml2's buffer grows by exactly what each write needs, a realloc that
+  // copies the whole text each time where realloc cannot grow in place (under
+  // AddressSanitizer, always): a file of 30,000 nested models took 11 minutes
+  // to write there. Doubling keeps writing linear.
+  xmlBufferSetAllocationScheme(s_->buffer, XML_BUFFER_ALLOC_DOUBLEIT);
   s_->writer = xmlNewTextWriterMemory(s_->buffer, 0);
-  if (!s_->buffer || !s_->writer) throw std::runtime_error("internal: no memory for XML output");
+  if (!s_->writer) throw std::runtime_error("internal: no memory for XML output");
   s_->Check(xmlTextWriterStartDocument(s_->writer, "1.0", "UTF-8", nullptr));
 }
 
