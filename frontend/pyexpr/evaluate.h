@@ -1,0 +1,43 @@
+// evaluate.h - evaluating one xacro `${...}` expression.
+//
+// Evaluate() lexes, parses and interprets the Python expression subset
+// xacro's expressions use (literals, operators with Python's precedence and
+// semantics, calls, attribute access, indexing and slicing). It runs no
+// Python and touches no file: names resolve through the host's Scope first,
+// then StandardGlobals() (builtins.h). Nesting and result sizes are bounded
+// by Limits. No exception leaves the API; every failure is an Error.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string_view>
+
+#include "frontend/pyexpr/value.h"
+
+namespace mdlc::pyexpr {
+
+// Where bare names come from: the host's property tables. Lookup may run
+// host code (lazy properties) and fail; its error is passed on unchanged.
+class Scope {
+ public:
+  virtual ~Scope() = default;
+  // nullopt: not defined here (the interpreter then tries StandardGlobals(),
+  // then reports kName)
+  virtual Result<std::optional<Value>> Lookup(std::string_view name) = 0;
+};
+
+// A Scope with no names (only StandardGlobals() resolve).
+class EmptyScope : public Scope {
+ public:
+  Result<std::optional<Value>> Lookup(std::string_view) override { return std::optional<Value>(); }
+};
+
+struct Limits {
+  int max_depth = 100;                  // nesting levels of the expression
+  size_t max_string_bytes = 16 << 20;   // largest str a result may build
+  size_t max_items = 1 << 20;           // largest list/tuple/dict/range
+};
+
+Result<Value> Evaluate(std::string_view expression, Scope& scope, const Limits& limits = {});
+
+}  // namespace mdlc::pyexpr
