@@ -30,6 +30,10 @@ struct FrontendOptions {
   /// Drake's Parser::AddModel (a directive's add_model): the file must hold
   /// exactly one model, so an SDFormat <world> is an error.
   bool single_model = false;
+  /// xacro's NAME:=VALUE arguments for the top-level file, when it is a
+  /// `.xacro`; a xacro file that a model or directive includes is expanded
+  /// with its own defaults.
+  std::vector<std::pair<std::string, std::string>> xacro_args;
 };
 
 struct RenameSuffixes;  // model_naming.h
@@ -50,7 +54,8 @@ struct FrontendContext {
   RenameSuffixes* renames = nullptr;
 };
 
-/// Parses an XML buffer through ctx.documents, when there is one.
+/// Parses an XML buffer through ctx.documents, when there is one. A
+/// `.xacro` file is expanded first (frontend/xacro/).
 std::shared_ptr<const xml::XmlDocument> ParseXml(FileId file, FrontendContext& ctx);
 
 /// Loads `path` and lowers it as `format`, or else with the frontend its
@@ -58,6 +63,10 @@ std::shared_ptr<const xml::XmlDocument> ParseXml(FileId file, FrontendContext& c
 /// reporting errors.
 std::optional<ModelId> ReadModelFile(const std::string& path, FrontendContext& ctx,
                                      std::optional<Format> format = {});
+
+/// The format of a `.xacro` file: the one its root element names (<robot>
+/// URDF, <sdf> SDFormat, <mujoco> MJCF), which xacro leaves as written.
+std::optional<Format> XacroFormat(FileId file, const SourceManager& sources);
 
 /// Lowers a buffer already in the SourceManager as the given format.
 std::optional<ModelId> ReadModel(FileId file, Format format, FrontendContext& ctx);

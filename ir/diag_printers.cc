@@ -39,6 +39,20 @@ void AppendIncludeChain(std::string& out, Loc loc, const SourceManager& sources)
   }
 }
 
+// Where expanded text came from, innermost expansion first: a note at each
+// call site (which may itself be expanded text) naming the expansion.
+void AppendExpansionNotes(std::string& out, Loc loc, const SourceManager& sources) {
+  constexpr int kMaxShown = 64;  // a runaway recursion is cut by its limit anyway
+  int shown = 0;
+  for (FileId file = loc.file; file.valid() && sources.IsExpansion(file) && shown < kMaxShown;
+       ++shown) {
+    const Loc at = sources.ExpandedAt(file);
+    out += fmt::format("{}: note: {}\n", LocPrefix(at, sources), sources.ExpansionNote(file));
+    AppendSnippet(out, at, sources);
+    file = at.file;
+  }
+}
+
 void AppendJsonString(std::string& out, std::string_view s) {
   out += '"';
   for (unsigned char c : s) {
@@ -93,6 +107,7 @@ std::string FormatDiagnosticText(const Diagnostic& diag, const SourceManager& so
                        SeverityName(diag.severity), diag.message, flag);
   }
   AppendSnippet(out, diag.loc, sources);
+  AppendExpansionNotes(out, diag.loc, sources);
   for (const auto& note : diag.notes) {
     out += fmt::format("{}: note: {}\n", LocPrefix(note.loc, sources), note.message);
     AppendSnippet(out, note.loc, sources);
@@ -121,8 +136,21 @@ std::string FormatDiagnosticJson(const Diagnostic& diag, const SourceManager& so
     AppendJsonLoc(out, diag.notes[i].loc, sources);
     out += '}';
   }
-  out += "],\"included_from\":[";
+  out += "],\"expanded_from\":[";
   bool first = true;
+  for (FileId file = diag.loc.file; file.valid() && sources.IsExpansion(file);) {
+    const Loc at = sources.ExpandedAt(file);
+    if (!first) out += ',';
+    first = false;
+    out += "{\"message\":";
+    AppendJsonString(out, sources.ExpansionNote(file));
+    out += ',';
+    AppendJsonLoc(out, at, sources);
+    out += '}';
+    file = at.file;
+  }
+  out += "],\"included_from\":[";
+  first = true;
   if (diag.loc.valid()) {
     for (Loc from = sources.IncludedFrom(diag.loc.file); from.valid();
          from = sources.IncludedFrom(from.file)) {

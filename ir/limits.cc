@@ -25,6 +25,10 @@ const std::vector<LimitInfo>& AllLimits() {
        std::numeric_limits<uint64_t>::max()},
       // a day at most: the reader's deadline is kept in milliseconds
       {"mesh-seconds", "seconds to read one mesh file", &Limits::mesh_seconds, 24 * 3600},
+      {"macro-depth", "xacro macro calls inside macro calls", &Limits::macro_depth,
+       std::numeric_limits<uint64_t>::max()},
+      {"expansion-nodes", "nodes one xacro expansion makes", &Limits::expansion_nodes,
+       std::numeric_limits<uint64_t>::max()},
   };
   return kLimits;
 }

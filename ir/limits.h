@@ -42,6 +42,11 @@ struct Limits {
   /// Seconds the mesh reader may take over one mesh file before it is
   /// stopped (it runs in its own process; see passes/mesh/mesh_reader_process.h).
   uint64_t mesh_seconds = 60;
+  /// xacro macro calls inside macro calls (a macro calling itself ends here).
+  uint64_t macro_depth = 200;
+  /// Nodes (elements, text, comments) one xacro expansion may make: a macro
+  /// that calls itself twice per level doubles its output at every level.
+  uint64_t expansion_nodes = 20'000'000;
 };
 
 /// One limit's name (as `--limit` spells it), what it bounds, and its field.

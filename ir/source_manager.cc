@@ -15,6 +15,11 @@ struct SourceManager::Buffer {
   std::string contents;
   Loc included_from;
   uint32_t include_depth = 0;
+  // an expansion (AddExpansion): the file whose text it shows, where it was
+  // expanded and how; its own path and contents stay empty
+  FileId spelled_in;
+  Loc expanded_at;
+  std::string expansion_note;
   // offsets of the first byte of each line; built on first use
   mutable std::vector<size_t> line_starts;
   // the line of the last lookup: frontends ask in nearly increasing order
@@ -112,7 +117,33 @@ FileId SourceManager::AddBuffer(std::string name, std::string contents, Loc incl
   return FileId{static_cast<uint32_t>(buffers_.size() - 1)};
 }
 
-const SourceManager::Buffer& SourceManager::Get(FileId id) const { return *buffers_.at(id.value); }
+FileId SourceManager::AddExpansion(FileId spelled_in, Loc expanded_at, std::string note) {
+  auto buffer = std::make_unique<Buffer>();
+  buffer->spelled_in = SpellingFile(spelled_in);
+  buffer->expanded_at = expanded_at;
+  buffer->expansion_note = std::move(note);
+  buffers_.push_back(std::move(buffer));
+  return FileId{static_cast<uint32_t>(buffers_.size() - 1)};
+}
+
+const SourceManager::Buffer& SourceManager::Entry(FileId id) const {
+  return *buffers_.at(id.value);
+}
+
+const SourceManager::Buffer& SourceManager::Get(FileId id) const {
+  const Buffer& entry = Entry(id);
+  return entry.spelled_in.valid() ? Entry(entry.spelled_in) : entry;
+}
+
+bool SourceManager::IsExpansion(FileId id) const { return Entry(id).spelled_in.valid(); }
+Loc SourceManager::ExpandedAt(FileId id) const { return Entry(id).expanded_at; }
+const std::string& SourceManager::ExpansionNote(FileId id) const {
+  return Entry(id).expansion_note;
+}
+FileId SourceManager::SpellingFile(FileId id) const {
+  const Buffer& entry = Entry(id);
+  return entry.spelled_in.valid() ? entry.spelled_in : id;
+}
 
 std::string_view SourceManager::Contents(FileId id) const { return Get(id).contents; }
 const std::string& SourceManager::Path(FileId id) const { return Get(id).path; }

@@ -49,6 +49,20 @@ class SourceManager {
   /// Adds an in-memory buffer under a display name.
   FileId AddBuffer(std::string name, std::string contents, Loc included_from = {});
 
+  /// A file id for text of `spelled_in` that a macro expansion placed
+  /// elsewhere (clang's expansion locations): a Loc in it names the line and
+  /// column where the text is written, and the id remembers where it was
+  /// expanded and how (`note`, e.g. "in expansion of macro 'arm'"), so a
+  /// diagnostic about expanded text can say both. Path, contents and lines
+  /// are those of `spelled_in`.
+  FileId AddExpansion(FileId spelled_in, Loc expanded_at, std::string note);
+  bool IsExpansion(FileId id) const;
+  /// Where an expansion id's text was expanded; invalid for a file.
+  Loc ExpandedAt(FileId id) const;
+  const std::string& ExpansionNote(FileId id) const;
+  /// The file whose text `id` shows: `id` itself unless it is an expansion.
+  FileId SpellingFile(FileId id) const;
+
   std::string_view Contents(FileId id) const;
   const std::string& Path(FileId id) const;
   Loc IncludedFrom(FileId id) const;
@@ -63,7 +77,10 @@ class SourceManager {
 
  private:
   struct Buffer;
+  // the buffer holding the text of `id` (an expansion's spelling file)
   const Buffer& Get(FileId id) const;
+  // the entry of `id` itself
+  const Buffer& Entry(FileId id) const;
   std::vector<std::unique_ptr<Buffer>> buffers_;
   Limits limits_;
   uint64_t loaded_bytes_ = 0;  // by LoadFile, against limits_.total_size

@@ -18,6 +18,7 @@
 #include "frontend/directives/dmd_transform.h"
 #include "frontend/directives/yaml_schema.h"
 #include "frontend/frontend.h"
+#include "frontend/xacro/xacro.h"
 #include "frontend/model_naming.h"
 #include "frontend/assets/package_map.h"
 #include "ir/load_report.h"
@@ -284,13 +285,21 @@ void DirectivesReader::AddModel(YamlSchemaReader& r, const yaml::Node& node, Loc
                                file->text));
     return;
   }
+  std::optional<FileId> model_file;
+  if (!format && xacro::IsXacroPath(*path)) {
+    // a .xacro is expanded with its defaults, and read as its root names
+    model_file = Load(*path, file->loc);
+    if (!model_file) return;
+    format = XacroFormat(*model_file, ctx_.sources);
+  }
   if (!format) {
     diags().Report(DiagKind::UnknownFormat, file->loc,
-                   fmt::format("'{}': unknown file extension; expected .urdf, .sdf or .xml (MJCF)",
+                   fmt::format("'{}': unknown file extension; expected .urdf, .sdf, .xml (MJCF) "
+                               "or a .xacro of one of them",
                                file->text));
     return;
   }
-  auto model_file = Load(*path, file->loc);
+  if (!model_file) model_file = Load(*path, file->loc);
   if (!model_file) return;
   // the model is named `name` inside the current namespace (DMD-010)
   FrontendContext sub = ctx_;

@@ -145,7 +145,10 @@ void SdfReader::ReadInclude(const xml::XmlElement& e, const SdfFile& file, Model
     ReportLoadError(diags(), uri_loc, error, fmt::format("cannot read '{}'", *path));
     return;
   }
-  if (EndsWith(*path, ".urdf")) {
+  // a .xacro is expanded with its defaults, and read as its root names
+  const std::optional<Format> xacro_format =
+      EndsWith(*path, ".xacro") ? XacroFormat(*file_id, ctx_.sources) : std::nullopt;
+  if (EndsWith(*path, ".urdf") || xacro_format == Format::Urdf) {
     IncludeUrdf(*file_id, parent, overrides, merge);
     return;
   }
@@ -154,10 +157,10 @@ void SdfReader::ReadInclude(const xml::XmlElement& e, const SdfFile& file, Model
                    fmt::format("including MJCF file '{}' is not implemented yet", *uri));
     return;
   }
-  if (!EndsWith(*path, ".sdf")) {
+  if (!EndsWith(*path, ".sdf") && xacro_format != Format::Sdf) {
     diags().Report(DiagKind::UnknownFormat, uri_loc,
-                   fmt::format("'{}': only SDFormat (.sdf) and URDF (.urdf) files can be "
-                               "included",
+                   fmt::format("'{}': only SDFormat (.sdf) and URDF (.urdf) files, or xacro "
+                               "files of either, can be included",
                                *path));
     return;
   }

@@ -116,12 +116,16 @@ void TreeBuilder::Install(_xmlSAXHandler& sax) {
 // ---- callbacks ----------------------------------------------------------------
 
 void TreeBuilder::OnStartElement(void* ctx, const unsigned char* local,
-                                 const unsigned char* prefix, const unsigned char*, int,
-                                 const unsigned char**, int attribute_count, int defaulted_count,
+                                 const unsigned char* prefix, const unsigned char*,
+                                 int namespace_count, const unsigned char** namespaces,
+                                 int attribute_count, int defaulted_count,
                                  const unsigned char** attributes) {
   // attributes a DTD would default come last; like libxml2's own DOM
   // (without XML_PARSE_DTDATTR), mdlc ignores them
-  BuilderOf(ctx).StartElement(ctx, local, prefix, attribute_count - defaulted_count, attributes);
+  TreeBuilder& self = BuilderOf(ctx);
+  if (!self.keep_namespace_declarations_) namespace_count = 0;
+  self.StartElement(ctx, local, prefix, namespace_count, namespaces,
+                    attribute_count - defaulted_count, attributes);
 }
 
 void TreeBuilder::OnEndElement(void* ctx, const unsigned char*, const unsigned char*,
@@ -150,7 +154,13 @@ void TreeBuilder::OnCdata(void* ctx, const unsigned char* text, int length) {
 
 void TreeBuilder::OnComment(void* ctx, const unsigned char* text) {
   TreeBuilder& self = BuilderOf(ctx);
-  if (self.open_.empty()) return;  // comments outside the root belong to no element
+  if (self.open_.empty()) {
+    // comments outside the root belong to no element; a writer keeps them
+    if (self.keep_namespace_declarations_) {
+      self.outside_comments_.emplace_back(self.Copy(View(text)), self.root_ != nullptr);
+    }
+    return;
+  }
   self.FlushText(false);
   self.AddContent(detail::ContentKind::kComment, self.Copy(View(text)));
 }
@@ -175,7 +185,8 @@ void TreeBuilder::OnEntityDeclaration(void* ctx, const unsigned char*, int, cons
 // ---- building -----------------------------------------------------------------
 
 void TreeBuilder::StartElement(void* parser, const unsigned char* local,
-                               const unsigned char* prefix, int attribute_count,
+                               const unsigned char* prefix, int namespace_count,
+                               const unsigned char** namespaces, int attribute_count,
                                const unsigned char** attributes) {
   if (!open_.empty()) {
     FlushText(false);
@@ -184,21 +195,32 @@ void TreeBuilder::StartElement(void* parser, const unsigned char* local,
   auto* element = Make<detail::ElementNode>(arena_);
   element->name = QualifiedName(prefix, local);
   element_counts_.Add(element->name);
-  if (attribute_count > 0) {
+  if (attribute_count + namespace_count > 0) {
+    const int total = attribute_count + namespace_count;
     auto* nodes = static_cast<detail::AttributeNode*>(arena_.Allocate(
-        sizeof(detail::AttributeNode) * attribute_count, alignof(detail::AttributeNode)));
+        sizeof(detail::AttributeNode) * total, alignof(detail::AttributeNode)));
+    // namespace declarations, when kept, come first, as attributes named
+    // as written ("xmlns:xacro", "xmlns"); libxml2 gives a (prefix, URI)
+    // pair for each
+    for (int i = 0; i < namespace_count; ++i) {
+      const unsigned char* ns_prefix = namespaces[2 * i];
+      auto* node = new (nodes + i) detail::AttributeNode;
+      node->name = ns_prefix ? Copy(fmt::format("xmlns:{}", View(ns_prefix))) : Copy("xmlns");
+      node->value = Copy(namespaces[2 * i + 1] ? View(namespaces[2 * i + 1]) : "");
+      element->attribute_name_bits |= XmlElement::NameBit(node->name);
+    }
     // libxml2 gives five pointers per attribute: local name, prefix, URI,
     // and the value's start and end (not NUL-terminated)
     for (int i = 0; i < attribute_count; ++i) {
       const unsigned char** a = attributes + 5 * i;
-      auto* node = new (nodes + i) detail::AttributeNode;
+      auto* node = new (nodes + namespace_count + i) detail::AttributeNode;
       node->name = QualifiedName(a[1], a[0]);
       node->value = CopyValue(
           {reinterpret_cast<const char*>(a[3]), static_cast<size_t>(a[4] - a[3])});
       element->attribute_name_bits |= XmlElement::NameBit(node->name);
     }
     element->attributes = nodes;
-    element->attribute_count = static_cast<uint32_t>(attribute_count);
+    element->attribute_count = static_cast<uint32_t>(total);
   }
   if (!locator_.Place(*element)) {
     // a guard: the scan lost its way, so fall back on libxml2's line
@@ -234,6 +256,8 @@ void TreeBuilder::StartElement(void* parser, const unsigned char* local,
       parent.element->first_child = element;
     }
     parent.last_child = element;
+    for (detail::ContentNode* c = parent.unplaced_content; c; c = c->next) c->before = element;
+    parent.unplaced_content = nullptr;
   }
   open_.push_back(Open{element});
 }
@@ -247,7 +271,7 @@ void TreeBuilder::EndElement() {
 void TreeBuilder::FlushText(bool at_end_tag) {
   if (pending_text_.empty()) return;
   Open& open = open_.back();
-  const bool keep = !pending_blank_ || open.first_is_text || open.last_is_text ||
+  const bool keep = keep_blank_text_ || !pending_blank_ || open.first_is_text || open.last_is_text ||
                     open.blanks_matter || (at_end_tag && !open.has_children);
   if (keep) {
     if (pending_marks_) open.blanks_matter = true;
@@ -269,6 +293,7 @@ void TreeBuilder::AddContent(detail::ContentKind kind, std::string_view text) {
     open.element->content = node;
   }
   open.last_content = node;
+  if (!open.unplaced_content) open.unplaced_content = node;
   if (kind != detail::ContentKind::kText) {
     NoteOtherChild();
     return;

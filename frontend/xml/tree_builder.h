@@ -68,6 +68,12 @@ class TreeBuilder {
   TreeBuilder(FileId file, const SourceManager& sources, std::pmr::memory_resource& arena,
               DiagnosticEngine& diags);
 
+  /// Keep every whitespace-only text node (ParseOptions::keep_blank_text).
+  void set_keep_blank_text(bool keep) { keep_blank_text_ = keep; }
+  /// Keep namespace declarations as attributes
+  /// (ParseOptions::keep_namespace_declarations).
+  void set_keep_namespace_declarations(bool keep) { keep_namespace_declarations_ = keep; }
+
   /// Points the handler's callbacks at TreeBuilder; the parser context's
   /// `_private` must then point at this builder.
   static void Install(_xmlSAXHandler& sax);
@@ -75,6 +81,12 @@ class TreeBuilder {
   detail::ElementNode* root() const { return root_; }
   /// How many elements of each name, handed over once the tree is built.
   ElementCounts TakeElementCounts() { return std::move(element_counts_); }
+  /// Comments outside the root element, when namespace declarations and
+  /// blanks are kept (a writer of the document wants them): (text, whether
+  /// after the root).
+  std::vector<std::pair<std::string_view, bool>> TakeOutsideComments() {
+    return std::move(outside_comments_);
+  }
   /// The document declared an entity (the parse stopped there).
   bool declared_entity() const { return declared_entity_; }
   /// An element went over a limit, reported (the parse stopped there).
@@ -85,6 +97,9 @@ class TreeBuilder {
     detail::ElementNode* element;
     detail::ElementNode* last_child = nullptr;
     detail::ContentNode* last_content = nullptr;
+    // the first content node since the last element child: the next
+    // element child is the one they come before
+    detail::ContentNode* unplaced_content = nullptr;
     bool has_children = false;  // any node: element, text, CDATA, comment, PI
     bool first_is_text = false;
     bool last_is_text = false;
@@ -105,7 +120,8 @@ class TreeBuilder {
                                   const unsigned char*, unsigned char*);
 
   void StartElement(void* parser, const unsigned char* local, const unsigned char* prefix,
-                    int attribute_count, const unsigned char** attributes);
+                    int namespace_count, const unsigned char** namespaces, int attribute_count,
+                    const unsigned char** attributes);
   void EndElement();
   /// Makes the pending text a child, or drops it; `at_end_tag` when the
   /// element's end tag follows it.
@@ -135,6 +151,9 @@ class TreeBuilder {
   absl::flat_hash_map<std::pair<const void*, const void*>, std::string_view> joined_names_;
   uint64_t elements_ = 0;
   ElementCounts element_counts_;
+  bool keep_blank_text_ = false;
+  bool keep_namespace_declarations_ = false;
+  std::vector<std::pair<std::string_view, bool>> outside_comments_;
   bool declared_entity_ = false;
   bool over_limit_ = false;
 };

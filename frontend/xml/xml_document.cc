@@ -102,7 +102,8 @@ XmlDocument::~XmlDocument() {
 }
 
 std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager& sources,
-                                                DiagnosticEngine& diags) {
+                                                DiagnosticEngine& diags,
+                                                const ParseOptions& options) {
   InstallSecurityHooks();
   std::string_view text = sources.Contents(file);
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
@@ -134,6 +135,8 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
   document->file_ = file;
   document->sources_ = &sources;
   TreeBuilder builder(file, sources, document->arena_, diags);
+  builder.set_keep_blank_text(options.keep_blank_text);
+  builder.set_keep_namespace_declarations(options.keep_namespace_declarations);
   ErrorSink sink{&diags, file};
   const ParseOutcome outcome = ParseInto(builder, text, version, sources.Path(file).c_str(), sink);
   document->names_ = outcome.names;
@@ -156,6 +159,7 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
   }
   document->root_ = builder.root();
   document->element_counts_ = builder.TakeElementCounts();
+  document->outside_comments_ = builder.TakeOutsideComments();
   return document;
 }
 
@@ -174,7 +178,10 @@ XmlElement XmlDocument::Root() const { return XmlElement(this, root_); }
 
 // ---- XmlElement ---------------------------------------------------------------
 
-Loc XmlElement::GetLoc() const { return Loc{doc_->file(), node_->line, node_->column}; }
+Loc XmlElement::GetLoc() const {
+  const FileId file = node_->file == UINT32_MAX ? doc_->file() : FileId{node_->file};
+  return Loc{file, node_->line, node_->column};
+}
 
 XmlElement XmlElement::Child(std::string_view name) const {
   if (!(node_->child_name_bits & NameBit(name))) return {};
@@ -189,8 +196,9 @@ XmlAttribute XmlElement::Attribute(std::string_view name) const {
     const detail::AttributeNode& a = node_->attributes[i];
     if (!SameName(a.name, name)) continue;
     // an attribute the scan could not place is reported at its element
+    const Loc element = GetLoc();
     return XmlAttribute{a.name, a.value,
-                        a.line ? Loc{doc_->file(), a.line, a.column} : GetLoc()};
+                        a.line ? Loc{element.file, a.line, a.column} : element};
   }
   return {};
 }

@@ -30,6 +30,25 @@ struct _xmlDict;
 namespace mdlc::xml {
 
 class XmlDocument;
+class XmlDocumentBuilder;
+
+/// How a document is read. The model readers take the defaults; a macro
+/// stage that writes the document back out needs every node.
+struct ParseOptions {
+  /// Keep whitespace-only text between elements too, which the readers'
+  /// default drops (libxml2's NOBLANKS rules, see tree_builder.h).
+  bool keep_blank_text = false;
+  /// Keep namespace declarations as attributes named as written
+  /// ("xmlns:xacro"), first in their element's list; the readers' default
+  /// has none (libxml2 reports declarations apart from attributes).
+  bool keep_namespace_declarations = false;
+};
+
+/// A text, CDATA or comment node, as XmlElement::ForEachNode visits it.
+struct XmlContent {
+  detail::ContentKind kind;
+  std::string_view text;
+};
 
 /// A view of one attribute: its value and location.
 struct XmlAttribute {
@@ -90,6 +109,10 @@ class XmlElement {
   std::string_view TextView(std::string& storage) const;
   /// The text of each comment directly inside the element, in order.
   std::vector<std::string> Comments() const;
+  /// Every child node in document order: on_element(XmlElement) for element
+  /// children, on_content(XmlContent) for text, CDATA and comments.
+  template <typename OnElement, typename OnContent>
+  void ForEachNode(OnElement&& on_element, OnContent&& on_content) const;
 
   /// The element's identity, for comparisons and as a map key.
   const void* raw() const { return node_; }
@@ -115,7 +138,8 @@ class XmlDocument {
   /// Parses a buffer already in the SourceManager. Reports problems to
   /// `diags` and returns null when the document is unusable.
   static std::unique_ptr<XmlDocument> Parse(FileId file, const SourceManager& sources,
-                                            DiagnosticEngine& diags);
+                                            DiagnosticEngine& diags,
+                                            const ParseOptions& options = {});
   /// The tree of `original` read as `file`, a buffer holding the same text
   /// (the same file loaded again): nothing is parsed, and every element and
   /// attribute is placed in `file`, so diagnostics name the load they come
@@ -128,8 +152,14 @@ class XmlDocument {
   /// How many elements are named `name` ("link", "drake:joint").
   uint64_t CountOf(std::string_view name) const { return element_counts_.Of(name); }
   const SourceManager& sources() const { return *sources_; }
+  /// Comments before (false) and after (true) the root element, in order;
+  /// kept only when parsed with ParseOptions::keep_namespace_declarations.
+  const std::vector<std::pair<std::string_view, bool>>& outside_comments() const {
+    return outside_comments_;
+  }
 
  private:
+  friend class XmlDocumentBuilder;
   XmlDocument() = default;
 
   // every node, attribute and string of the tree; released at once
@@ -140,6 +170,7 @@ class XmlDocument {
   FileId file_;
   const SourceManager* sources_ = nullptr;
   ElementCounts element_counts_;
+  std::vector<std::pair<std::string_view, bool>> outside_comments_;
   // the document whose arena holds the tree, for a SameTextAs copy
   std::shared_ptr<const XmlDocument> original_;
 };
@@ -149,5 +180,17 @@ void XmlElement::ForEachAttributeName(F&& f) const {
   for (uint32_t i = 0; i < node_->attribute_count; ++i) f(node_->attributes[i].name);
 }
 
+template <typename OnElement, typename OnContent>
+void XmlElement::ForEachNode(OnElement&& on_element, OnContent&& on_content) const {
+  const detail::ContentNode* content = node_->content;
+  for (const detail::ElementNode* child = node_->first_child; child;
+       child = child->next_sibling) {
+    for (; content && content->before == child; content = content->next) {
+      on_content(XmlContent{content->kind, content->text});
+    }
+    on_element(XmlElement(doc_, child));
+  }
+  for (; content; content = content->next) on_content(XmlContent{content->kind, content->text});
+}
 
 }  // namespace mdlc::xml

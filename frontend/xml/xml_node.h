@@ -61,10 +61,15 @@ struct AttributeNode {
 
 // Text, CDATA and comments directly inside an element, in document order.
 enum class ContentKind : uint8_t { kText, kCdata, kComment };
+struct ElementNode;
 struct ContentNode {
   ContentKind kind = ContentKind::kText;
   std::string_view text;  // NUL-terminated
   ContentNode* next = nullptr;
+  // the element child this node comes before; null when it follows them
+  // all. Element children and content are kept in two lists (readers ask
+  // for one or the other); this puts them back in document order.
+  const ElementNode* before = nullptr;
 };
 
 struct ElementNode {
@@ -77,6 +82,10 @@ struct ElementNode {
   uint32_t attribute_count = 0;
   uint32_t line = 0;  // of the start tag's '<'
   uint32_t column = 0;
+  // the file the element is written in, when it is not the document's own
+  // (a document a macro stage built from several files); its attributes
+  // are written there too
+  uint32_t file = UINT32_MAX;
   // XmlElement::NameBit of every attribute name, or'ed
   uint64_t attribute_name_bits = 0;
   // the same for the names of the element children

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "frontend/model_naming.h"
+#include "frontend/xacro/xacro.h"
 #include "passes/mesh/in_process_reader.h"
 #include "passes/pass_registry.h"
 
@@ -15,7 +16,14 @@ void ReadInput(const Input& input, frontend::FrontendContext& ctx) {
     frontend::ReadModelFile(input.path, ctx, input.format);
     return;
   }
-  const std::optional<Format> format = input.format ? input.format : FormatFromPath(input.path);
+  std::optional<Format> format = input.format ? input.format : FormatFromPath(input.path);
+  if (!format && xacro::IsXacroPath(input.path)) {
+    const FileId file = ctx.sources.AddBuffer(input.path, *input.text);
+    if (auto xacro_format = frontend::XacroFormat(file, ctx.sources)) {
+      frontend::ReadModel(file, *xacro_format, ctx);
+      return;
+    }
+  }
   if (!format) {
     ctx.diags.Report(DiagKind::UnknownFormat, {},
                      fmt::format("model text '{}': no format given and none known by its "

@@ -11,7 +11,9 @@
 #include "backend/positions.h"
 #include "backend/writers/writer.h"
 #include "frontend/assets/package_scan.h"
+#include "frontend/xacro/xacro.h"
 #include "tools/driver/compiler.h"
+#include "frontend/xacro/xacro.h"
 
 namespace mdlc {
 
@@ -91,6 +93,33 @@ UriResolution ResolveUri(std::string_view uri, const Options& options,
   return resolution;
 }
 
+XacroExpansion ExpandXacro(const std::string& path, const Options& options,
+                           const std::string& shown_name) {
+  Compilation c(options.diagnostics);
+  if (options.on_diagnostic) {
+    c.diags.SetConsumer([&sources = c.sources, consumer = options.on_diagnostic](
+                            const Diagnostic& d) { consumer(d, sources); });
+  }
+  c.sources.set_limits(options.limits);
+  DefinePackages(options, c);
+  xacro::XacroOptions xacro_options;
+  xacro_options.args = options.xacro_args;
+  xacro_options.packages = &c.packages;
+  XacroExpansion out;
+  std::unique_ptr<xacro::Expansion> expansion =
+      xacro::ExpandFile(path, xacro_options, c.sources, c.diags);
+  if (expansion) {
+    out.dependencies = expansion->dependencies;
+    if (!c.diags.has_errors()) {
+      out.xml = xacro::WriteXml(*expansion, shown_name.empty() ? path : shown_name);
+    }
+  }
+  for (const Diagnostic& d : c.diags.diagnostics()) {
+    out.messages.push_back(FormatDiagnosticText(d, c.sources, /*color=*/false));
+  }
+  return out;
+}
+
 Result Compile(const std::vector<Input>& inputs, const Options& options) {
   auto c = std::make_unique<Compilation>(options.diagnostics);
   if (options.on_diagnostic) {
@@ -102,6 +131,7 @@ Result Compile(const std::vector<Input>& inputs, const Options& options) {
   c->options.inputs = inputs;
   c->options.frontend.model_name = options.model_name;
   c->options.frontend.auto_rename = options.auto_rename;
+  c->options.frontend.xacro_args = options.xacro_args;
   c->options.pipeline = options.passes;
   c->options.instrumentation.print_after.insert(options.print_after.begin(),
                                                  options.print_after.end());

@@ -63,7 +63,10 @@ Result& KeepUntilExit(Result result) {
 }  // namespace
 
 void AddCompileFlags(CLI::App* command, CompileFlags& flags) {
-  command->add_option("files", flags.files, "Model files (.urdf, .sdf, .xml, .dmd.yaml)")
+  command
+      ->add_option("files", flags.files,
+                   "Model files (.urdf, .sdf, .xml, .dmd.yaml, .xacro), and NAME:=VALUE "
+                   "arguments for a .xacro")
       ->required();
   command
       ->add_option("-x,--input-format", flags.input_format,
@@ -84,7 +87,8 @@ void AddCompileFlags(CLI::App* command, CompileFlags& flags) {
                       "Stop reporting after N errors (0: no limit)");
   command->add_option("--limit", flags.limits,
                       "Set an input limit NAME=VALUE: file-size, total-size, elements, depth, "
-                      "include-depth, model-depth, mesh-vertices, mesh-seconds (see the README)")
+                      "include-depth, model-depth, mesh-vertices, mesh-seconds, macro-depth, "
+                      "expansion-nodes (see the README)")
       ->allow_extra_args(false);
   command
       ->add_option("--mesh-reader", flags.mesh_reader,
@@ -130,6 +134,12 @@ int ToOptions(const CompileFlags& flags, Options& options) {
       flags.collada_up_axis == "apply" ? ColladaUpAxis::Apply : ColladaUpAxis::AsWritten;
   options.model_name = flags.model_name;
   options.auto_rename = flags.auto_rename;
+  for (const std::string& word : flags.files) {
+    // xacro's NAME:=VALUE arguments sit among the files, as on xacro's command line
+    if (const size_t at = word.find(":="); at != std::string::npos && at > 0) {
+      options.xacro_args.emplace_back(word.substr(0, at), word.substr(at + 2));
+    }
+  }
   if (!flags.no_cache) {
     options.mesh_cache_dir = flags.cache_dir.empty() ? DefaultMeshCacheDirectory() : flags.cache_dir;
   }
@@ -166,7 +176,11 @@ CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup) {
   std::vector<Input> inputs;
   const std::optional<Format> format =
       flags.input_format.empty() ? std::nullopt : FormatFromName(flags.input_format);
-  for (const std::string& file : flags.files) inputs.push_back(Input::File(file, format));
+  for (const std::string& file : flags.files) {
+    if (file.find(":=") == std::string::npos || file.find(":=") == 0) {
+      inputs.push_back(Input::File(file, format));
+    }
+  }
   Result& result = KeepUntilExit(Compile(inputs, options));
   if (stream) stream->Finish();
   if (setup.diagnostics == DiagnosticOutput::ErrorsAfter) {

@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
   const cli::Subcommand subcommands[] = {
       cli::AddCompileCommand(app), cli::AddConvertCommand(app), cli::AddTreeCommand(app),
       cli::AddStatsCommand(app),   cli::AddGraphCommand(app),   cli::AddAssetsCommand(app),
-      cli::AddViewCommand(app),    cli::AddCheckCommand(app),
+      cli::AddViewCommand(app),    cli::AddCheckCommand(app),   cli::AddXacroCommand(app),
   };
 
   try {

@@ -22,5 +22,6 @@ Subcommand AddGraphCommand(CLI::App& app);    // graph_command.cc
 Subcommand AddAssetsCommand(CLI::App& app);   // assets_command.cc
 Subcommand AddViewCommand(CLI::App& app);     // view_command.cc
 Subcommand AddCheckCommand(CLI::App& app);    // check_command.cc
+Subcommand AddXacroCommand(CLI::App& app);    // xacro_command.cc
 
 }  // namespace mdlc::cli

@@ -22,6 +22,8 @@ std::vector<Expectation> CollectExpectations(const SourceManager& sources) {
   std::vector<Expectation> out;
   for (size_t f = 0; f < sources.FileCount(); ++f) {
     FileId file{static_cast<uint32_t>(f)};
+    // an expansion shows its file's text again; its comments are that file's
+    if (sources.IsExpansion(file)) continue;
     std::string_view text = sources.Contents(file);
     // only lines that mention "expected-" are worth a regex
     size_t pos = 0;
@@ -60,9 +62,11 @@ std::string Describe(const SourceManager& sources, Loc loc) {
   return fmt::format("{}:{}", sources.Path(loc.file), loc.line);
 }
 
-bool Matches(Expectation& e, Severity severity, Loc loc, const std::string& message) {
-  if (e.matched || e.severity != severity || !loc.valid() || e.file != loc.file ||
-      e.line != loc.line) {
+bool Matches(Expectation& e, Severity severity, Loc loc, const std::string& message,
+             const SourceManager& sources) {
+  // text a macro expansion placed is expected where it is written
+  if (e.matched || e.severity != severity || !loc.valid() ||
+      e.file != sources.SpellingFile(loc.file) || e.line != loc.line) {
     return false;
   }
   if (message.find(e.text) == std::string::npos) return false;
@@ -78,7 +82,7 @@ std::vector<std::string> VerifyDiagnostics(const std::vector<Diagnostic>& diagno
   std::vector<std::string> problems;
   auto match = [&](Severity severity, Loc loc, const std::string& message) {
     for (auto& e : expectations) {
-      if (Matches(e, severity, loc, message)) return true;
+      if (Matches(e, severity, loc, message, sources)) return true;
     }
     return false;
   };
@@ -89,6 +93,12 @@ std::vector<std::string> VerifyDiagnostics(const std::vector<Diagnostic>& diagno
     }
     for (const auto& note : d.notes) {
       match(Severity::Note, note.loc, note.message);  // notes are checked only when expected
+    }
+    // the macro calls that placed the text, as the printed notes say them
+    for (FileId file = d.loc.file; file.valid() && sources.IsExpansion(file);) {
+      const Loc at = sources.ExpandedAt(file);
+      match(Severity::Note, at, sources.ExpansionNote(file));
+      file = at.file;
     }
   }
   for (const auto& e : expectations) {

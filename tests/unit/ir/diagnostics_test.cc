@@ -96,7 +96,7 @@ TEST(DiagnosticsTest, JsonFormatIsOneEscapedObject) {
   Diagnostic d{DiagKind::BadValue, Severity::Error, Loc{f, 1, 2}, "tab\there", {}};
   EXPECT_EQ(FormatDiagnosticJson(d, sm),
             R"({"severity":"error","kind":"bad-value","group":"schema","message":"tab\there",)"
-            R"("file":"dir/m \"x\".urdf","line":1,"column":2,"notes":[],"included_from":[]})");
+            R"("file":"dir/m \"x\".urdf","line":1,"column":2,"notes":[],"expanded_from":[],"included_from":[]})");
 }
 
 }  // namespace

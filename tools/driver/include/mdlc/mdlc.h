@@ -105,6 +105,11 @@ struct Options {
   /// them (Result::diagnostics()). Either way Result::ok() tells the outcome.
   std::function<void(const Diagnostic&, const SourceManager&)> on_diagnostic;
 
+  // -- xacro
+  /// xacro's NAME:=VALUE arguments for an input that is a `.xacro` file
+  /// (`mdlc compile robot.urdf.xacro ur_type:=ur5e`).
+  std::vector<std::pair<std::string, std::string>> xacro_args;
+
   // -- naming
   /// Name the (single) model instance this instead of the name in the file.
   std::optional<std::string> model_name;
@@ -284,6 +289,26 @@ struct UriResolution {
 /// (Drake's PackageMap::ResolveUrl). Only the package options are used.
 UriResolution ResolveUri(std::string_view uri, const Options& options = {},
                          const std::string& base_dir = ".");
+
+/// What ExpandXacro made: the expanded XML, or the diagnostics that say why not.
+struct XacroExpansion {
+  /// The expanded document, as the `xacro` command writes it; set when it
+  /// expanded without error.
+  std::optional<std::string> xml;
+  /// Every file the expansion read besides the top one (includes, YAML), as
+  /// `xacro --deps` lists them.
+  std::vector<std::string> dependencies;
+  /// Each diagnostic as `mdlc compile` prints it, when Options::on_diagnostic
+  /// is unset.
+  std::vector<std::string> messages;
+  bool ok() const { return xml.has_value(); }
+};
+
+/// Expands a xacro file (`mdlc xacro`) with Options::xacro_args and the
+/// packages `options` defines (for `$(find PKG)`), with no compile after.
+/// `shown_name` is the name the banner comment gives the input (empty: `path`).
+XacroExpansion ExpandXacro(const std::string& path, const Options& options = {},
+                           const std::string& shown_name = "");
 
 /// Compiles the inputs into one plant, as `mdlc compile` does. Never throws
 /// for a bad model: problems are diagnostics, and ok() is false.
