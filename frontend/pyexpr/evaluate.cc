@@ -3,6 +3,11 @@
 
 #include <fmt/format.h>
 
+#include <functional>
+#include <memory>
+#include <optional>
+#include <unordered_set>
+
 #include "frontend/pyexpr/builtins.h"
 #include "frontend/pyexpr/internal.h"
 #include "frontend/pyexpr/parser.h"
@@ -11,6 +16,7 @@ namespace mdlc::pyexpr {
 namespace internal {
 namespace {
 thread_local const Limits* current_limits = nullptr;
+thread_local size_t current_steps = 0;
 }  // namespace
 
 const Limits& CurrentLimits() {
@@ -18,8 +24,24 @@ const Limits& CurrentLimits() {
   return current_limits ? *current_limits : kDefaults;
 }
 
-LimitsScope::LimitsScope(const Limits& limits) : previous_(current_limits) { current_limits = &limits; }
-LimitsScope::~LimitsScope() { current_limits = previous_; }
+LimitsScope::LimitsScope(const Limits& limits) : previous_(current_limits), previous_steps_(current_steps) {
+  current_limits = &limits;
+  current_steps = 0;
+}
+LimitsScope::~LimitsScope() {
+  current_limits = previous_;
+  current_steps = previous_steps_;
+}
+
+Result<bool> CountStep() {
+  size_t limit = CurrentLimits().max_steps;
+  if (++current_steps > limit)
+    return Fail(Error::Kind::kLimit,
+                fmt::format("the expression would take more than the limit of {} steps (comprehension iterations "
+                            "and lambda calls)",
+                            limit));
+  return true;
+}
 
 Result<bool> CheckStringSize(size_t bytes) {
   size_t limit = CurrentLimits().max_string_bytes;
@@ -116,22 +138,123 @@ bool Identical(const Value& a, const Value& b) {
   }
 }
 
+// The variables of one comprehension or lambda call, in front of the
+// enclosing ones. A lambda keeps the frames it was created in, and reads a
+// variable when it runs (Python's closures: `[lambda: i for i in
+// range(3)]` all return 2). A name declared but not yet bound is a
+// NameError, as in Python.
+struct Frame {
+  std::vector<std::pair<std::string, std::optional<Value>>> vars;
+  std::shared_ptr<Frame> parent;
+
+  std::optional<Value>* Find(std::string_view name) {
+    for (auto& var : vars)
+      if (var.first == name) return &var.second;
+    return nullptr;
+  }
+  void Declare(const std::string& name) {
+    if (!Find(name)) vars.emplace_back(name, std::nullopt);
+  }
+};
+using FramePtr = std::shared_ptr<Frame>;
+
+// The scope of the Evaluate() running on this thread: a lambda reads its
+// global names there when it is called (xacro's globals are one live table),
+// and only StandardGlobals() when called outside any evaluation.
+thread_local Scope* current_scope = nullptr;
+// Nesting of Eval() and comprehension clauses on this thread, lambda calls
+// included.
+thread_local int current_depth = 0;
+
+struct LambdaCode {
+  std::vector<std::string> names;
+  std::vector<std::string> kinds;  // as Node::arg_names of a kLambda
+  std::shared_ptr<const Node> body;
+};
+
+Result<Value> CallLambda(const LambdaCode& code, const std::vector<std::optional<Value>>& defaults,
+                         const FramePtr& closure, internal::Positional positional, internal::Keywords keywords);
+
+// The function a lambda expression creates (a named type, so that
+// BreakCycles can see the frames it keeps).
+struct LambdaFunction {
+  std::shared_ptr<const LambdaCode> code;
+  std::shared_ptr<const std::vector<std::optional<Value>>> defaults;
+  FramePtr closure;
+  Result<Value> operator()(internal::Positional positional, internal::Keywords keywords) const {
+    return CallLambda(*code, *defaults, closure, positional, keywords);
+  }
+};
+
+// Whether `target` is reachable from v through containers, lambdas' defaults
+// and closures, and frames.
+bool Reaches(const Value& v, const Frame* target) {
+  std::vector<const Value*> values{&v};
+  std::vector<const Frame*> frames;
+  std::unordered_set<const void*> seen;
+  while (!values.empty() || !frames.empty()) {
+    if (!frames.empty()) {
+      const Frame* f = frames.back();
+      frames.pop_back();
+      if (f == target) return true;
+      if (!seen.insert(f).second) continue;
+      for (const auto& var : f->vars)
+        if (var.second) values.push_back(&*var.second);
+      if (f->parent) frames.push_back(f->parent.get());
+      continue;
+    }
+    const Value* x = values.back();
+    values.pop_back();
+    if (!x->identity() || !seen.insert(x->identity()).second) continue;
+    if (x->IsSequence()) {
+      for (const Value& item : x->items()) values.push_back(&item);
+    } else if (x->IsDict()) {
+      for (const auto& [key, value] : x->dict_items()) {
+        values.push_back(&key);
+        values.push_back(&value);
+      }
+    } else if (x->IsFunction()) {
+      if (const auto* fn = x->function().target<LambdaFunction>()) {
+        for (const auto& d : *fn->defaults)
+          if (d) values.push_back(&*d);
+        if (fn->closure) frames.push_back(fn->closure.get());
+      }
+    }
+  }
+  return false;
+}
+
+// A comprehension's frame that holds (say) a lambda made in it, which keeps
+// the frame, would never be freed: once the comprehension is done, such
+// variables are unbound (a lambda reading one later gets a NameError, where
+// Python would find the value).
+void BreakCycles(Frame& frame) {
+  for (auto& var : frame.vars)
+    if (var.second && Reaches(*var.second, &frame)) var.second.reset();
+}
+
 class Evaluator {
  public:
-  Evaluator(Scope& scope, const Limits& limits) : scope_(scope), limits_(limits) {}
+  Evaluator(Scope& scope, const Limits& limits, FramePtr frame = nullptr)
+      : scope_(scope), limits_(limits), frame_(std::move(frame)) {}
 
   Result<Value> Eval(const Node& n) {
-    if (++depth_ > limits_.max_depth * 4 + 16) {
-      --depth_;
-      return Error{Error::Kind::kLimit,
-                   fmt::format("expression nested deeper than the limit of {} levels", limits_.max_depth), n.offset};
+    if (++current_depth > MaxDepth()) {
+      --current_depth;
+      return TooDeep(n.offset);
     }
     auto r = EvalNode(n);
-    --depth_;
+    --current_depth;
     return r;
   }
 
  private:
+  int MaxDepth() const { return limits_.max_depth * 4 + 16; }
+  Error TooDeep(size_t offset) const {
+    return Error{Error::Kind::kLimit,
+                 fmt::format("expression nested deeper than the limit of {} levels", limits_.max_depth), offset};
+  }
+
   Result<Value> EvalNode(const Node& n) {
     switch (n.type) {
       case Node::Type::kConst: return n.constant;
@@ -208,11 +331,51 @@ class Evaluator {
       case Node::Type::kCall: return CallNode(n);
       case Node::Type::kStarred:
         return Error{Error::Kind::kSyntax, "a starred expression is not allowed here", n.offset};
+      case Node::Type::kListComp:
+      case Node::Type::kGenExp: {
+        std::vector<Value> out;
+        PYEXPR_TRY(done, RunComprehension(n, 1, [&]() -> Result<bool> {
+          PYEXPR_TRY(v, Eval(*n.kids[0]));
+          out.push_back(std::move(v));
+          PYEXPR_TRY(ok, At(internal::CheckItemCount(out.size()), n.offset));
+          return ok;
+        }));
+        (void)done;
+        return Value::List(std::move(out));
+      }
+      case Node::Type::kDictComp: {
+        std::vector<Value::Item> out;
+        PYEXPR_TRY(done, RunComprehension(n, 2, [&]() -> Result<bool> {
+          PYEXPR_TRY(key, Eval(*n.kids[0]));
+          PYEXPR_TRY(value, Eval(*n.kids[1]));
+          if (!Hash(key))
+            return Error{Error::Kind::kType, fmt::format("unhashable type: '{}'", TypeName(key)), n.kids[0]->offset};
+          out.emplace_back(std::move(key), std::move(value));
+          PYEXPR_TRY(ok, At(internal::CheckItemCount(out.size()), n.offset));
+          return ok;
+        }));
+        (void)done;
+        return Value::Dict(std::move(out));
+      }
+      case Node::Type::kCompFor:
+      case Node::Type::kCompIf:
+        return Error{Error::Kind::kSyntax, "a comprehension clause outside a comprehension", n.offset};
+      case Node::Type::kLambda: return MakeLambda(n);
     }
     return Error{Error::Kind::kSyntax, "unknown expression", n.offset};
   }
 
   Result<Value> LookupName(const Node& n) {
+    for (Frame* f = frame_.get(); f; f = f->parent.get()) {
+      if (std::optional<Value>* slot = f->Find(n.name)) {
+        if (*slot) return **slot;
+        Error e{Error::Kind::kName,
+                fmt::format("cannot access local variable '{}' where it is not associated with a value", n.name),
+                n.offset};
+        e.missing_name = n.name;
+        return e;
+      }
+    }
     auto found = scope_.Lookup(n.name);
     if (!found.ok()) return std::move(found).error();
     if (*found) return **found;
@@ -309,8 +472,181 @@ class Evaluator {
     return e;
   }
 
+  // Makes the current frame `frame` until destroyed.
+  class FrameSwap {
+   public:
+    FrameSwap(Evaluator& e, FramePtr frame) : e_(e), saved_(std::move(e.frame_)) { e_.frame_ = std::move(frame); }
+    ~FrameSwap() { e_.frame_ = std::move(saved_); }
+    FrameSwap(const FrameSwap&) = delete;
+    FrameSwap& operator=(const FrameSwap&) = delete;
+
+   private:
+    Evaluator& e_;
+    FramePtr saved_;
+  };
+
+  // Called once per combination of the comprehension's variables that passes
+  // its conditions; false stops the comprehension.
+  using Emit = std::function<Result<bool>()>;
+
+  static void DeclareTargets(const Node& target, Frame& frame) {
+    if (target.type == Node::Type::kName) {
+      frame.Declare(target.name);
+      return;
+    }
+    for (const auto& kid : target.kids) DeclareTargets(*kid, frame);
+  }
+
+  // Runs the clauses n.kids[first_clause...] in a new frame holding the
+  // comprehension's variables; the first iterable is evaluated outside it,
+  // as in Python. false if emit stopped it.
+  Result<bool> RunComprehension(const Node& n, size_t first_clause, const Emit& emit) {
+    auto frame = std::make_shared<Frame>();
+    frame->parent = frame_;
+    for (size_t i = first_clause; i < n.kids.size(); ++i)
+      if (n.kids[i]->type == Node::Type::kCompFor) DeclareTargets(*n.kids[i]->kids[0], *frame);
+    PYEXPR_TRY(first, Eval(*n.kids[first_clause]->kids[1]));
+    Result<bool> result = false;
+    {
+      FrameSwap swap(*this, frame);
+      result = Clauses(n, first_clause, &first, emit);
+    }
+    if (frame.use_count() > 1) BreakCycles(*frame);  // some lambda keeps it
+    return result;
+  }
+
+  Result<bool> Clauses(const Node& n, size_t i, const Value* first, const Emit& emit) {
+    if (i == n.kids.size()) return emit();
+    if (++current_depth > MaxDepth()) {
+      --current_depth;
+      return TooDeep(n.kids[i]->offset);
+    }
+    auto r = Clause(n, i, first, emit);
+    --current_depth;
+    return r;
+  }
+
+  Result<bool> Clause(const Node& n, size_t i, const Value* first, const Emit& emit) {
+    const Node& c = *n.kids[i];
+    if (c.type == Node::Type::kCompIf) {
+      PYEXPR_TRY(cond, Eval(*c.kids[0]));
+      if (!Truthy(cond)) return true;
+      return Clauses(n, i + 1, nullptr, emit);
+    }
+    Value iterable;
+    if (first) {
+      iterable = *first;
+    } else {
+      PYEXPR_TRY(v, Eval(*c.kids[1]));
+      iterable = std::move(v);
+    }
+    PYEXPR_TRY(items, At(internal::Iterate(iterable), c.kids[1]->offset));
+    for (const Value& item : items) {
+      PYEXPR_TRY(step, At(internal::CountStep(), c.offset));
+      (void)step;
+      PYEXPR_TRY(bound, At(Bind(*c.kids[0], item), c.kids[0]->offset));
+      (void)bound;
+      PYEXPR_TRY(more, Clauses(n, i + 1, nullptr, emit));
+      if (!more) return false;
+    }
+    return true;
+  }
+
+  // Assigns v to a comprehension's target (a declared name, or a tuple or
+  // list of targets with at most one starred).
+  Result<bool> Bind(const Node& target, const Value& v) {
+    if (target.type == Node::Type::kName) {
+      std::optional<Value>* slot = frame_ ? frame_->Find(target.name) : nullptr;
+      if (!slot) return Error{Error::Kind::kSyntax, "assignment to an undeclared name", target.offset};
+      *slot = v;
+      return true;
+    }
+    auto unpacked = internal::Iterate(v);
+    if (!unpacked.ok())
+      return Error{Error::Kind::kType, fmt::format("cannot unpack non-iterable {} object", TypeName(v)), target.offset};
+    const std::vector<Value>& items = *unpacked;
+    const auto& kids = target.kids;
+    size_t star = kids.size();
+    for (size_t k = 0; k < kids.size(); ++k)
+      if (kids[k]->type == Node::Type::kStarred) star = k;
+    if (star == kids.size()) {
+      if (items.size() > kids.size())
+        return Error{Error::Kind::kValue, fmt::format("too many values to unpack (expected {})", kids.size()),
+                     target.offset};
+      if (items.size() < kids.size())
+        return Error{Error::Kind::kValue,
+                     fmt::format("not enough values to unpack (expected {}, got {})", kids.size(), items.size()),
+                     target.offset};
+      for (size_t k = 0; k < kids.size(); ++k) {
+        PYEXPR_TRY(ok, Bind(*kids[k], items[k]));
+        (void)ok;
+      }
+      return true;
+    }
+    size_t after = kids.size() - star - 1;
+    if (items.size() < kids.size() - 1)
+      return Error{Error::Kind::kValue,
+                   fmt::format("not enough values to unpack (expected at least {}, got {})", kids.size() - 1,
+                               items.size()),
+                   target.offset};
+    for (size_t k = 0; k < star; ++k) {
+      PYEXPR_TRY(ok, Bind(*kids[k], items[k]));
+      (void)ok;
+    }
+    size_t rest_end = items.size() - after;
+    PYEXPR_TRY(ok, Bind(*kids[star]->kids[0], Value::List(std::vector<Value>(items.begin() + static_cast<ptrdiff_t>(star),
+                                                                            items.begin() + static_cast<ptrdiff_t>(rest_end)))));
+    (void)ok;
+    for (size_t k = 0; k < after; ++k) {
+      PYEXPR_TRY(ok2, Bind(*kids[star + 1 + k], items[rest_end + k]));
+      (void)ok2;
+    }
+    return true;
+  }
+
+  Result<Value> MakeLambda(const Node& n) {
+    auto code = std::make_shared<LambdaCode>();
+    code->names = n.ops;
+    code->kinds = n.arg_names;
+    code->body = n.body;
+    std::vector<std::optional<Value>> defaults;
+    for (const auto& d : n.kids) {
+      if (!d) {
+        defaults.emplace_back();
+        continue;
+      }
+      PYEXPR_TRY(v, Eval(*d));
+      defaults.emplace_back(std::move(v));
+    }
+    return Value::Function(
+        "<lambda>", LambdaFunction{std::move(code),
+                                   std::make_shared<const std::vector<std::optional<Value>>>(std::move(defaults)),
+                                   frame_});
+  }
+
+  static bool IsBuiltin(const Value& callee, std::string_view name) {
+    const Value* python = StandardGlobals().Find("python");
+    const Value* f = python ? python->names().Find(name) : nullptr;
+    return f && callee.IsFunction() && f->identity() == callee.identity();
+  }
+
   Result<Value> CallNode(const Node& n) {
     PYEXPR_TRY(callee, Eval(*n.kids[0]));
+    // any() and all() of a generator expression stop at the first item that
+    // decides, as Python's lazy generator does
+    if (n.kids.size() == 2 && n.arg_names[0].empty() && n.kids[1]->type == Node::Type::kGenExp &&
+        (IsBuiltin(callee, "any") || IsBuiltin(callee, "all"))) {
+      const Node& gen = *n.kids[1];
+      bool is_any = IsBuiltin(callee, "any");
+      bool decided = false;
+      PYEXPR_TRY(done, RunComprehension(gen, 1, [&]() -> Result<bool> {
+        PYEXPR_TRY(v, Eval(*gen.kids[0]));
+        if (Truthy(v) == is_any) decided = true;
+        return !decided;
+      }));
+      (void)done;
+      return Value::Bool(is_any ? decided : !decided);
+    }
     std::vector<Value> positional;
     std::vector<std::pair<std::string, Value>> keywords;
     for (size_t i = 0; i < n.arg_names.size(); ++i) {
@@ -343,8 +679,109 @@ class Evaluator {
 
   Scope& scope_;
   const Limits& limits_;
-  int depth_ = 0;
+  FramePtr frame_;
 };
+
+std::string QuotedList(const std::vector<std::string>& names) {
+  std::string out;
+  for (size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) out += names.size() == 2 ? " and " : (i + 1 == names.size() ? ", and " : ", ");
+    out += "'" + names[i] + "'";
+  }
+  return out;
+}
+
+// Python's argument binding for a lambda's parameters, into frame.
+Result<bool> BindArguments(const LambdaCode& code, const std::vector<std::optional<Value>>& defaults,
+                           internal::Positional positional, internal::Keywords keywords, Frame& frame) {
+  const auto& names = code.names;
+  const auto& kinds = code.kinds;
+  std::vector<std::optional<Value>> bound(names.size());
+  std::vector<size_t> positional_params;
+  size_t var_args = names.size(), var_keywords = names.size();
+  for (size_t i = 0; i < names.size(); ++i) {
+    if (kinds[i] == "" || kinds[i] == "/") positional_params.push_back(i);
+    if (kinds[i] == "*") var_args = i;
+    if (kinds[i] == "**") var_keywords = i;
+  }
+  std::vector<Value> extra;
+  for (size_t k = 0; k < positional.size(); ++k) {
+    if (k < positional_params.size()) {
+      bound[positional_params[k]] = positional[k];
+    } else if (var_args < names.size()) {
+      extra.push_back(positional[k]);
+    } else {
+      size_t required = 0;
+      for (size_t i : positional_params) required += !defaults[i];
+      size_t most = positional_params.size();
+      std::string takes = required == most ? fmt::format("{} positional argument{}", most, most == 1 ? "" : "s")
+                                           : fmt::format("from {} to {} positional arguments", required, most);
+      return Fail(Error::Kind::kType, fmt::format("<lambda>() takes {} but {} {} given", takes, positional.size(),
+                                                  positional.size() == 1 ? "was" : "were"));
+    }
+  }
+  if (var_args < names.size()) bound[var_args] = Value::Tuple(std::move(extra));
+  std::vector<Value::Item> extra_keywords;
+  std::vector<std::string> positional_only_as_keyword;
+  for (const auto& [key, value] : keywords) {
+    size_t i = 0;
+    while (i < names.size() && !(names[i] == key && (kinds[i] == "" || kinds[i] == "kw"))) ++i;
+    if (i < names.size()) {
+      if (bound[i]) return Fail(Error::Kind::kType, fmt::format("<lambda>() got multiple values for argument '{}'", key));
+      bound[i] = value;
+      continue;
+    }
+    if (var_keywords < names.size()) {
+      extra_keywords.emplace_back(Value::Str(key), value);
+      continue;
+    }
+    bool positional_only = false;
+    for (size_t j = 0; j < names.size(); ++j) positional_only = positional_only || (names[j] == key && kinds[j] == "/");
+    if (positional_only) {
+      positional_only_as_keyword.push_back(key);
+      continue;
+    }
+    return Fail(Error::Kind::kType, fmt::format("<lambda>() got an unexpected keyword argument '{}'", key));
+  }
+  if (!positional_only_as_keyword.empty()) {
+    std::string list;
+    for (const auto& k : positional_only_as_keyword) list += (list.empty() ? "'" : ", '") + k + "'";
+    return Fail(Error::Kind::kType,
+                fmt::format("<lambda>() got some positional-only arguments passed as keyword arguments: {}", list));
+  }
+  if (var_keywords < names.size()) bound[var_keywords] = Value::Dict(std::move(extra_keywords));
+  std::vector<std::string> missing, missing_keyword_only;
+  for (size_t i = 0; i < names.size(); ++i) {
+    if (bound[i]) continue;
+    if (defaults[i]) {
+      bound[i] = defaults[i];
+    } else {
+      (kinds[i] == "kw" ? missing_keyword_only : missing).push_back(names[i]);
+    }
+  }
+  if (!missing.empty())
+    return Fail(Error::Kind::kType, fmt::format("<lambda>() missing {} required positional argument{}: {}",
+                                                missing.size(), missing.size() == 1 ? "" : "s", QuotedList(missing)));
+  if (!missing_keyword_only.empty())
+    return Fail(Error::Kind::kType,
+                fmt::format("<lambda>() missing {} required keyword-only argument{}: {}", missing_keyword_only.size(),
+                            missing_keyword_only.size() == 1 ? "" : "s", QuotedList(missing_keyword_only)));
+  for (size_t i = 0; i < names.size(); ++i) frame.vars.emplace_back(names[i], std::move(bound[i]));
+  return true;
+}
+
+Result<Value> CallLambda(const LambdaCode& code, const std::vector<std::optional<Value>>& defaults,
+                         const FramePtr& closure, internal::Positional positional, internal::Keywords keywords) {
+  PYEXPR_TRY(step, internal::CountStep());
+  (void)step;
+  auto frame = std::make_shared<Frame>();
+  frame->parent = closure;
+  PYEXPR_TRY(ok, BindArguments(code, defaults, positional, keywords, *frame));
+  (void)ok;
+  static EmptyScope no_names;
+  Scope& scope = current_scope ? *current_scope : no_names;
+  return Evaluator(scope, internal::CurrentLimits(), std::move(frame)).Eval(*code.body);
+}
 
 }  // namespace
 
@@ -354,7 +791,14 @@ Result<Value> Evaluate(std::string_view expression, Scope& scope, const Limits& 
   if (first == std::string_view::npos) return Error{Error::Kind::kSyntax, "empty expression", expression.size()};
   auto tree = Parse(expression, limits.max_depth);
   if (!tree.ok()) return std::move(tree).error();
-  return Evaluator(scope, limits).Eval(**tree);
+  Scope* saved_scope = current_scope;
+  int saved_depth = current_depth;
+  current_scope = &scope;
+  current_depth = 0;
+  auto result = Evaluator(scope, limits).Eval(**tree);
+  current_scope = saved_scope;
+  current_depth = saved_depth;
+  return result;
 }
 
 }  // namespace mdlc::pyexpr

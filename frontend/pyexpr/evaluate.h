@@ -2,10 +2,16 @@
 //
 // Evaluate() lexes, parses and interprets the Python expression subset
 // xacro's expressions use (literals, operators with Python's precedence and
-// semantics, calls, attribute access, indexing and slicing). It runs no
-// Python and touches no file: names resolve through the host's Scope first,
-// then StandardGlobals() (builtins.h). Nesting and result sizes are bounded
-// by Limits. No exception leaves the API; every failure is an Error.
+// semantics, calls, attribute access, indexing and slicing, list and dict
+// comprehensions, generator expressions, lambda). It runs no Python and
+// touches no file: names resolve through the comprehension and lambda
+// variables in force, then the host's Scope, then StandardGlobals()
+// (builtins.h). A generator expression is evaluated to a list at once
+// (any() and all() still stop at the first item that decides). A lambda may
+// outlive its evaluation; called later, it reads global names from the
+// Scope of the evaluation running then, or only StandardGlobals() outside
+// one. Nesting, result sizes and work are bounded by Limits. No exception
+// leaves the API; every failure is an Error.
 #pragma once
 
 #include <cstddef>
@@ -36,6 +42,7 @@ struct Limits {
   int max_depth = 100;                  // nesting levels of the expression
   size_t max_string_bytes = 16 << 20;   // largest str a result may build
   size_t max_items = 1 << 20;           // largest list/tuple/dict/range
+  size_t max_steps = 4 << 20;           // comprehension iterations and lambda calls
 };
 
 Result<Value> Evaluate(std::string_view expression, Scope& scope, const Limits& limits = {});

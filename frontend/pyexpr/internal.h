@@ -37,11 +37,15 @@ class LimitsScope {
 
  private:
   const Limits* previous_;
+  size_t previous_steps_;
 };
 
 // kLimit errors when a result would exceed the limits.
 Result<bool> CheckStringSize(size_t bytes);
 Result<bool> CheckItemCount(size_t items);
+// Counts one comprehension iteration or lambda call of the evaluation
+// running on this thread; kLimit past Limits::max_steps.
+Result<bool> CountStep();
 
 // Calls a callable value (a Function).
 Result<Value> Call(const Value& callee, Positional positional, Keywords keywords = {});

@@ -46,8 +46,8 @@ class Parser {
 
   Error Unexpected(const Token& tok) const {
     if (tok.type == T::kEnd) return Error{Error::Kind::kSyntax, "unexpected end of expression", tok.offset};
-    if (tok.type == T::kName && (tok.text == "for" || tok.text == "async"))
-      return Error{Error::Kind::kUnsupported, "comprehensions are not supported", tok.offset};
+    if (tok.type == T::kName && tok.text == "async")
+      return Error{Error::Kind::kSyntax, "asynchronous comprehensions are not allowed here", tok.offset};
     if (tok.type == T::kOp && tok.text == "=")
       return Error{Error::Kind::kSyntax, "'=' is not an expression (use '==' to compare)", tok.offset};
     if (tok.type == T::kOp && tok.text == ":=")
@@ -130,7 +130,7 @@ class Parser {
   Result<NodePtr> Test() {
     Depth depth(*this);
     if (depth.exceeded()) return TooDeep(Peek().offset);
-    if (IsWord("lambda")) return Error{Error::Kind::kUnsupported, "lambda is not supported", Peek().offset};
+    if (IsWord("lambda")) return Lambda();
     auto value = Or();
     if (!value.ok()) return value;
     if (IsOp(":=")) return Unexpected(Peek());
@@ -368,10 +368,19 @@ class Parser {
       } else if (seen_keyword && Peek().type != T::kEnd) {
         return Error{Error::Kind::kSyntax, "a positional argument cannot follow keyword arguments", Peek().offset};
       }
+      size_t arg_at = Peek().offset;
       auto value = Test();
       if (!value.ok()) return value;
-      if (IsWord("for"))
-        return Error{Error::Kind::kUnsupported, "comprehensions are not supported", Peek().offset};
+      if (IsWord("for")) {
+        // a generator expression: the sole argument unless parenthesized
+        if (!arg_name.empty()) return Unexpected(Peek());
+        auto gen = Comprehension(Node::Type::kGenExp, arg_at, std::move(*value));
+        if (!gen.ok()) return gen;
+        if (n->kids.size() != 1 || IsOp(","))
+          return Error{Error::Kind::kSyntax, "a generator expression must be parenthesized unless it is the sole argument",
+                       arg_at};
+        value = std::move(gen);
+      }
       n->arg_names.push_back(arg_name);
       n->kids.push_back(std::move(*value));
       if (!IsOp(",")) break;
@@ -459,7 +468,7 @@ class Parser {
           return n;
         }
         if (tok.text == "lambda")
-          return Error{Error::Kind::kUnsupported, "lambda is not supported", tok.offset};
+          return Error{Error::Kind::kSyntax, "a lambda must be parenthesized here", tok.offset};
         if (tok.text == "yield" || tok.text == "await")
           return Error{Error::Kind::kUnsupported, fmt::format("'{}' is not supported", tok.text), tok.offset};
         if (IsKeyword(tok.text)) return Unexpected(tok);
@@ -491,7 +500,14 @@ class Parser {
     }
     auto inner = TestList(/*allow_star=*/true);
     if (!inner.ok()) return inner;
-    if (IsWord("for")) return Error{Error::Kind::kUnsupported, "generator expressions are not supported", Peek().offset};
+    if (IsWord("for")) {
+      if ((*inner)->type == Node::Type::kTuple || (*inner)->type == Node::Type::kStarred) return Unexpected(Peek());
+      auto gen = Comprehension(Node::Type::kGenExp, open, std::move(*inner));
+      if (!gen.ok()) return gen;
+      auto closed = Expect(")", open, "(");
+      if (!closed.ok()) return std::move(closed).error();
+      return gen;
+    }
     auto closed = Expect(")", open, "(");
     if (!closed.ok()) return std::move(closed).error();
     if ((*inner)->type == Node::Type::kTuple) (*inner)->offset = open;
@@ -504,7 +520,16 @@ class Parser {
     while (!IsOp("]")) {
       auto item = StarOrTest(true);
       if (!item.ok()) return item;
-      if (IsWord("for")) return Error{Error::Kind::kUnsupported, "comprehensions are not supported", Peek().offset};
+      if (IsWord("for")) {
+        if (!n->kids.empty()) return Unexpected(Peek());
+        if ((*item)->type == Node::Type::kStarred)
+          return Error{Error::Kind::kSyntax, "iterable unpacking cannot be used in a comprehension", (*item)->offset};
+        auto comp = Comprehension(Node::Type::kListComp, open, std::move(*item));
+        if (!comp.ok()) return comp;
+        auto closed = Expect("]", open, "[");
+        if (!closed.ok()) return std::move(closed).error();
+        return comp;
+      }
       n->kids.push_back(std::move(*item));
       if (!IsOp(",")) break;
       Next();
@@ -528,14 +553,21 @@ class Parser {
         auto key = Test();
         if (!key.ok()) return key;
         if (!IsOp(":")) {
-          if (IsWord("for")) return Error{Error::Kind::kUnsupported, "comprehensions are not supported", Peek().offset};
+          if (IsWord("for")) return Error{Error::Kind::kUnsupported, "sets are not supported", open};
           if (IsOp(",") || IsOp("}")) return Error{Error::Kind::kUnsupported, "sets are not supported", open};
           return Unexpected(Peek());
         }
         Next();
         auto value = Test();
         if (!value.ok()) return value;
-        if (IsWord("for")) return Error{Error::Kind::kUnsupported, "comprehensions are not supported", Peek().offset};
+        if (IsWord("for")) {
+          if (!n->kids.empty()) return Unexpected(Peek());
+          auto comp = Comprehension(Node::Type::kDictComp, open, std::move(*key), std::move(*value));
+          if (!comp.ok()) return comp;
+          auto closed = Expect("}", open, "{");
+          if (!closed.ok()) return std::move(closed).error();
+          return comp;
+        }
         n->kids.push_back(std::move(*key));
         n->kids.push_back(std::move(*value));
       }
@@ -544,6 +576,195 @@ class Parser {
     }
     auto closed = Expect("}", open, "{");
     if (!closed.ok()) return std::move(closed).error();
+    return n;
+  }
+
+  // The clauses after a comprehension's element (the cursor is at 'for'):
+  // ('for' targets 'in' or_test ('if' or_test)*)+
+  Result<NodePtr> Comprehension(Node::Type type, size_t offset, NodePtr element, NodePtr value = nullptr) {
+    auto n = Make(type, offset);
+    n->kids.push_back(std::move(element));
+    if (value) n->kids.push_back(std::move(value));
+    while (IsWord("for") || IsWord("if") || IsWord("async")) {
+      if (IsWord("async")) return Unexpected(Peek());
+      Depth depth(*this);
+      if (depth.exceeded()) return TooDeep(Peek().offset);
+      const Token& word = Next();
+      if (word.text == "if") {
+        auto clause = Make(Node::Type::kCompIf, word.offset);
+        auto cond = Or();
+        if (!cond.ok()) return cond;
+        clause->kids.push_back(std::move(*cond));
+        n->kids.push_back(std::move(clause));
+        continue;
+      }
+      auto clause = Make(Node::Type::kCompFor, word.offset);
+      auto target = TargetList();
+      if (!target.ok()) return target;
+      if ((*target)->type == Node::Type::kStarred)
+        return Error{Error::Kind::kSyntax, "a starred assignment target must be in a list or tuple", (*target)->offset};
+      if (!IsWord("in")) return Unexpected(Peek());
+      Next();
+      auto iterable = Or();
+      if (!iterable.ok()) return iterable;
+      clause->kids.push_back(std::move(*target));
+      clause->kids.push_back(std::move(*iterable));
+      n->kids.push_back(std::move(clause));
+    }
+    return n;
+  }
+
+  bool StartsTarget() const {
+    return IsOp("(") || IsOp("[") || IsOp("*") || (Peek().type == T::kName && !IsKeyword(Peek().text));
+  }
+
+  // target (',' target)* [','] -> a tuple when there is a comma; at most one
+  // starred target
+  Result<NodePtr> TargetList() {
+    size_t start = Peek().offset;
+    auto first = Target();
+    if (!first.ok() || !IsOp(",")) return first;
+    auto tuple = Make(Node::Type::kTuple, start);
+    tuple->kids.push_back(std::move(*first));
+    while (IsOp(",")) {
+      Next();
+      if (!StartsTarget()) break;
+      auto item = Target();
+      if (!item.ok()) return item;
+      tuple->kids.push_back(std::move(*item));
+    }
+    auto starred = CheckStarredTargets(*tuple);
+    if (!starred.ok()) return std::move(starred).error();
+    return tuple;
+  }
+
+  static Result<bool> CheckStarredTargets(const Node& list) {
+    int starred = 0;
+    for (const auto& kid : list.kids) starred += kid->type == Node::Type::kStarred;
+    if (starred > 1) return Error{Error::Kind::kSyntax, "multiple starred expressions in assignment", list.offset};
+    return true;
+  }
+
+  // a name, '*' target, or a parenthesized / bracketed target list
+  Result<NodePtr> Target() {
+    Depth depth(*this);
+    if (depth.exceeded()) return TooDeep(Peek().offset);
+    const Token& tok = Peek();
+    if (IsOp("*")) {
+      Next();
+      auto inner = Target();
+      if (!inner.ok()) return inner;
+      if ((*inner)->type == Node::Type::kStarred)
+        return Error{Error::Kind::kSyntax, "a starred target cannot be starred again", (*inner)->offset};
+      auto n = Make(Node::Type::kStarred, tok.offset);
+      n->kids.push_back(std::move(*inner));
+      return n;
+    }
+    if (IsOp("(") || IsOp("[")) {
+      bool paren = IsOp("(");
+      size_t open = Next().offset;
+      const char* close = paren ? ")" : "]";
+      auto list = Make(paren ? Node::Type::kTuple : Node::Type::kList, open);
+      bool comma = false;
+      while (!IsOp(close)) {
+        auto item = Target();
+        if (!item.ok()) return item;
+        list->kids.push_back(std::move(*item));
+        if (!IsOp(",")) break;
+        comma = true;
+        Next();
+      }
+      auto closed = Expect(close, open, paren ? "(" : "[");
+      if (!closed.ok()) return std::move(closed).error();
+      if (paren && !comma && list->kids.size() == 1) {
+        if (list->kids[0]->type == Node::Type::kStarred)
+          return Error{Error::Kind::kSyntax, "a starred assignment target must be in a list or tuple", open};
+        return std::move(list->kids[0]);
+      }
+      auto starred = CheckStarredTargets(*list);
+      if (!starred.ok()) return std::move(starred).error();
+      return list;
+    }
+    if (tok.type != T::kName || IsKeyword(tok.text)) return Unexpected(tok);
+    if (tok.text.starts_with("__"))
+      return Error{Error::Kind::kUnsupported, fmt::format("names starting with '__' are not allowed ('{}')", tok.text),
+                   tok.offset};
+    Next();
+    if (IsOp(".") || IsOp("[") || IsOp("("))
+      return Error{Error::Kind::kUnsupported, "only names can be assigned in a comprehension", Peek().offset};
+    auto n = Make(Node::Type::kName, tok.offset);
+    n->name = tok.text;
+    return n;
+  }
+
+  // 'lambda' [parameters] ':' test
+  Result<NodePtr> Lambda() {
+    auto n = Make(Node::Type::kLambda, Next().offset);
+    bool seen_default = false, seen_star = false, bare_star = false, seen_slash = false;
+    size_t star_at = 0;
+    while (!IsOp(":")) {
+      if (!n->arg_names.empty() && n->arg_names.back() == "**") return Unexpected(Peek());
+      const Token& tok = Peek();
+      std::string kind = seen_star ? "kw" : "";
+      if (IsOp("/")) {
+        if (seen_slash || seen_star || n->ops.empty()) return Unexpected(tok);
+        Next();
+        seen_slash = true;
+        for (auto& k : n->arg_names) k = "/";
+        if (!IsOp(",")) break;
+        Next();
+        continue;
+      }
+      if (IsOp("**")) {
+        Next();
+        kind = "**";
+      } else if (IsOp("*")) {
+        if (seen_star) return Unexpected(tok);
+        star_at = Next().offset;
+        seen_star = true;
+        if (IsOp(",") || IsOp(":")) {
+          bare_star = true;
+          if (!IsOp(",")) break;
+          Next();
+          continue;
+        }
+        kind = "*";
+      }
+      const Token& name = Peek();
+      if (name.type != T::kName || IsKeyword(name.text)) return Unexpected(name);
+      if (name.text.starts_with("__"))
+        return Error{Error::Kind::kUnsupported, fmt::format("names starting with '__' are not allowed ('{}')", name.text),
+                     name.offset};
+      for (const auto& earlier : n->ops)
+        if (earlier == name.text)
+          return Error{Error::Kind::kSyntax, fmt::format("duplicate argument '{}' in lambda", name.text), name.offset};
+      Next();
+      NodePtr default_value;
+      if (IsOp("=") && (kind == "" || kind == "kw")) {
+        Next();
+        auto value = Test();
+        if (!value.ok()) return value;
+        default_value = std::move(*value);
+        if (kind == "") seen_default = true;
+      } else if (kind == "" && seen_default) {
+        return Error{Error::Kind::kSyntax, "non-default argument follows default argument", name.offset};
+      }
+      n->ops.push_back(name.text);
+      n->op_offsets.push_back(name.offset);
+      n->arg_names.push_back(kind);
+      n->kids.push_back(std::move(default_value));
+      if (!IsOp(",")) break;
+      Next();
+    }
+    bool keyword_only = false;
+    for (const auto& k : n->arg_names) keyword_only = keyword_only || k == "kw";
+    if (bare_star && !keyword_only)
+      return Error{Error::Kind::kSyntax, "named arguments must follow bare *", star_at};
+    if (!IsOp(":")) return Unexpected(Peek());
+    Next();
+    auto body = Test();
+    if (!body.ok()) return body;
+    n->body = std::shared_ptr<const Node>(std::move(*body));
     return n;
   }
 

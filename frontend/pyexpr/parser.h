@@ -33,7 +33,18 @@ struct Node {
     kSubscript, // kids[0][kids[1]]
     kSlice,     // kids[0]:kids[1]:kids[2], any may be null
     kCall,      // kids[0](kids[1..]) with arg_names
-    kStarred,   // *kids[0] inside a list/tuple display
+    kStarred,   // *kids[0] inside a list/tuple display (or a target list)
+    // Comprehensions: the element (kDictComp: key and value) first, then the
+    // clauses in order, each a kCompFor or a kCompIf.
+    kListComp,  // [kids[0] for ...]
+    kDictComp,  // {kids[0]: kids[1] for ...}
+    kGenExp,    // (kids[0] for ...), evaluated eagerly to a list
+    kCompFor,   // for kids[0] in kids[1]: kids[0] is a target (kName, kTuple, kList, kStarred)
+    kCompIf,    // if kids[0]
+    kLambda,    // lambda: parameter names in ops, their kinds in arg_names
+                // ("" positional or keyword, "/" positional-only, "*" the
+                // *args, "kw" keyword-only, "**" the **kwargs); kids: each
+                // parameter's default (null if none); the body in `body`
   };
   Type type = Type::kConst;
   size_t offset = 0;  // where the node's text starts (for operators: the operator)
@@ -45,6 +56,9 @@ struct Node {
   // kCall: per argument after the callee: "" positional, "*" unpacked
   // sequence, "**" unpacked mapping, else the keyword's name
   std::vector<std::string> arg_names;
+  // kLambda: the body, shared with the function values the lambda creates
+  // (they outlive the tree)
+  std::shared_ptr<const Node> body;
 };
 
 // Parses a whole expression (a tuple when it has top-level commas). Nesting

@@ -241,7 +241,7 @@ std::string TypeName(const Value& v) {
     case Value::Kind::kList: return "list";
     case Value::Kind::kTuple: return "tuple";
     case Value::Kind::kDict: return "dict";
-    case Value::Kind::kFunction: return "builtin_function_or_method";
+    case Value::Kind::kFunction: return v.name() == "<lambda>" ? "function" : "builtin_function_or_method";
     case Value::Kind::kNamespace: return "namespace";
     case Value::Kind::kOpaque: return v.opaque_type();
   }
@@ -321,7 +321,9 @@ void AppendRepr(const Value& v, std::string& out, int depth) {
       out.push_back('}');
       break;
     }
-    case Value::Kind::kFunction: out += "<built-in function " + v.name() + ">"; break;
+    case Value::Kind::kFunction:
+      out += v.name() == "<lambda>" ? "<function <lambda>>" : "<built-in function " + v.name() + ">";
+      break;
     case Value::Kind::kNamespace: out += "<namespace " + v.name() + ">"; break;
     case Value::Kind::kOpaque: out += "<" + v.opaque_type() + " object>"; break;
   }

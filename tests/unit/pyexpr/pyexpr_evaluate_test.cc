@@ -335,8 +335,9 @@ TEST(PyExprEvaluate, SyntaxErrorsWithOffsets) {
 }
 
 TEST(PyExprEvaluate, UnsupportedConstructs) {
-  EXPECT_EQ(EvalError("[v for v in l]").kind, Error::Kind::kUnsupported);
-  EXPECT_EQ(EvalError("lambda: 1").kind, Error::Kind::kUnsupported);
+  EXPECT_EQ(EvalError("{v for v in l}").kind, Error::Kind::kUnsupported);  // sets
+  EXPECT_EQ(EvalError("[x for x.a in l]").kind, Error::Kind::kUnsupported);
+  EXPECT_EQ(EvalError("[__v for __v in l]").kind, Error::Kind::kUnsupported);
   EXPECT_EQ(EvalError("f'{x}'").kind, Error::Kind::kUnsupported);
   EXPECT_EQ(EvalError("1j").kind, Error::Kind::kUnsupported);
   EXPECT_EQ(EvalError("{1, 2}").kind, Error::Kind::kUnsupported);
@@ -348,6 +349,155 @@ TEST(PyExprEvaluate, UnsupportedConstructs) {
   EXPECT_EQ(e.offset, 2u);
   // like xacro, even in a branch that is never taken
   EXPECT_EQ(EvalError("False and __builtins__").kind, Error::Kind::kUnsupported);
+}
+
+// Comprehensions and generator expressions (expected values from Python 3.11).
+TEST(PyExprEvaluate, Comprehensions) {
+  EXPECT_EQ(EvalRepr("[i * 2 for i in python.range(3)]"), "[0, 2, 4]");
+  EXPECT_EQ(EvalRepr("dict(a=dict(b=1))['a']['b']"), "1");
+  EXPECT_EQ(EvalRepr("[x*y for x in range(3) for y in range(3) if x != y]"), "[0, 0, 0, 2, 0, 2]");
+  EXPECT_EQ(EvalRepr("[x for x in range(10) if x % 2 if x > 3]"), "[5, 7, 9]");
+  EXPECT_EQ(EvalRepr("[(k, v) for k, v in d.items()]"), "[('k', 0.5), ('n', {'m': 1})]");
+  EXPECT_EQ(EvalRepr("[k for k in d]"), "['k', 'n']");
+  EXPECT_EQ(EvalRepr("[y for x in l for y in range(x)]"), "[0, 1, 2, 0, 0, 1]");
+  EXPECT_EQ(EvalRepr("[[j for j in range(i)] for i in range(4)]"), "[[], [0], [0, 1], [0, 1, 2]]");
+  EXPECT_EQ(EvalRepr("[x if x > 1 else -x for x in l]"), "[3, -1, 2]");
+  EXPECT_EQ(EvalRepr("[x + y for x in 'ab' for y in 'cd']"), "['ac', 'ad', 'bc', 'bd']");
+  EXPECT_EQ(EvalRepr("[(i, c) for i, c in python.enumerate('ab')]"), "[(0, 'a'), (1, 'b')]");
+  EXPECT_EQ(EvalRepr("[i for i in range(3) for i in range(i)]"), "[0, 0, 1]");
+  EXPECT_EQ(EvalRepr("[x for x in y.n]"), "['m']");
+  EXPECT_EQ(EvalRepr("[() for () in [()]]"), "[()]");
+  // dict comprehensions; a repeated key keeps its first place and last value
+  EXPECT_EQ(EvalRepr("{k: v for k, v in python.zip('abc', range(3))}"), "{'a': 0, 'b': 1, 'c': 2}");
+  EXPECT_EQ(EvalRepr("{k: v for k, v in [(1, 2), (1, 3)]}"), "{1: 3}");
+  EXPECT_EQ(EvalRepr("{k: [v for v in range(k)] for k in range(3)}"), "{0: [], 1: [0], 2: [0, 1]}");
+  EXPECT_EQ(EvalRepr("{[k]: v for k, v in [(1, 2)]}"), "ERR TypeError");
+  // unpacking targets
+  EXPECT_EQ(EvalRepr("[a for a, *b in [(1, 2, 3), (4,)]]"), "[1, 4]");
+  EXPECT_EQ(EvalRepr("[b for a, *b in [(1, 2, 3), (4,)]]"), "[[2, 3], []]");
+  EXPECT_EQ(EvalRepr("[c for a, *b, c in [(1, 2, 3, 4)]]"), "[4]");
+  EXPECT_EQ(EvalRepr("[(a, b, c) for a, (b, c) in [(1, (2, 3))]]"), "[(1, 2, 3)]");
+  EXPECT_EQ(EvalRepr("[(a, b) for [a, b] in ['xy', 'zw']]"), "[('x', 'y'), ('z', 'w')]");
+  EXPECT_EQ(EvalRepr("[a for a, b in [(1, 2, 3)]]"), "ERR ValueError");
+  EXPECT_EQ(EvalRepr("[a for a, b, c in [(1, 2)]]"), "ERR ValueError");
+  EXPECT_EQ(EvalRepr("[a for a, *b, c in [(1,)]]"), "ERR ValueError");
+  EXPECT_EQ(EvalRepr("[a for a, b in [1]]"), "ERR TypeError");
+  EXPECT_EQ(EvalRepr("[x for x in 5]"), "ERR TypeError");
+  // the variables are local: they shadow the scope's names and do not leak;
+  // the first iterable is evaluated outside
+  EXPECT_EQ(EvalRepr("([x for x in range(3)], x)"), "([0, 1, 2], 5)");
+  EXPECT_EQ(EvalRepr("[x for x in [x, x + 1]]"), "[5, 6]");
+  EXPECT_EQ(EvalRepr("[x for x in range(3)][-1] + x"), "7");
+  EXPECT_EQ(EvalRepr("[y for x in l if y for y in l]"), "ERR NameError");  // UnboundLocalError
+  // generator expressions (as lists)
+  EXPECT_EQ(EvalRepr("python.sum(x*x for x in l)"), "14");
+  EXPECT_EQ(EvalRepr("python.sum(x for x in range(101))"), "5050");
+  EXPECT_EQ(EvalRepr("python.sum((x for x in l), 10)"), "16");
+  EXPECT_EQ(EvalRepr("python.any(x > 2 for x in l)"), "True");
+  EXPECT_EQ(EvalRepr("python.all(x > 2 for x in l)"), "False");
+  EXPECT_EQ(EvalRepr("max(x % 3 for x in l)"), "2");
+  EXPECT_EQ(EvalRepr("min(-x for x in l)"), "-3");
+  EXPECT_EQ(EvalRepr("python.tuple(x for x in l)"), "(3, 1, 2)");
+  EXPECT_EQ(EvalRepr("list(x for x in 'abc')"), "['a', 'b', 'c']");
+  EXPECT_EQ(EvalRepr("','.join(str(x) for x in l)"), "'3,1,2'");
+  EXPECT_EQ(EvalRepr("sorted(x for x in l)"), "[1, 2, 3]");
+  EXPECT_EQ(EvalRepr("(x for x in l)"), "[3, 1, 2]");
+  // any() and all() stop where Python's lazy generator would
+  EXPECT_EQ(EvalRepr("python.any(1/x for x in [1, 0])"), "True");
+  EXPECT_EQ(EvalRepr("python.all(1/x - 1 for x in [1, 0])"), "False");
+  EXPECT_EQ(EvalRepr("python.all(1/x for x in [1, 0])"), "ERR ZeroDivisionError");
+}
+
+TEST(PyExprEvaluate, ComprehensionSyntax) {
+  for (const char* bad : {"[x for x in l, 1]", "python.sum(x for x in l, )", "python.sum(1, x for x in l)",
+                          "len(k=x for x in l)", "(x, y for x in l)", "[*x for x in l]", "{**d for x in l}",
+                          "[x for x in l if x else 1]", "[x for *x in l]", "[x for a, *b, *c in l]",
+                          "[x for x in l for]", "[x for x in]", "[x for in l]", "[x for x in l if]",
+                          "[x for x in l if lambda: 1]", "[x async for x in l]", "[x for x in l] for x in l"}) {
+    EXPECT_EQ(EvalError(bad).kind, Error::Kind::kSyntax) << bad;
+  }
+  EXPECT_EQ(EvalError("python.sum(1, x for x in l)").offset, 14u);
+}
+
+TEST(PyExprEvaluate, Lambda) {
+  EXPECT_EQ(EvalRepr("(lambda: 1)()"), "1");
+  EXPECT_EQ(EvalRepr("lambda a: a"), "<function <lambda>>");
+  EXPECT_EQ(EvalRepr("(lambda a, b=1: a + b)(2)"), "3");
+  EXPECT_EQ(EvalRepr("(lambda a, b=1: a + b)(2, 3)"), "5");
+  EXPECT_EQ(EvalRepr("(lambda a, b=1: a + b)(b=5, a=2)"), "7");
+  EXPECT_EQ(EvalRepr("(lambda *a: a)(1, 2)"), "(1, 2)");
+  EXPECT_EQ(EvalRepr("(lambda **k: k)(a=1, b=2)"), "{'a': 1, 'b': 2}");
+  EXPECT_EQ(EvalRepr("(lambda a, *r, k=3, **kw: (a, r, k, kw))(1, 2, 3, k=4, z=5)"), "(1, (2, 3), 4, {'z': 5})");
+  EXPECT_EQ(EvalRepr("(lambda a, /, b: a + b)(1, b=2)"), "3");
+  EXPECT_EQ(EvalRepr("(lambda *, a=1: a)()"), "1");
+  EXPECT_EQ(EvalRepr("(lambda a=x: a)()"), "5");
+  EXPECT_EQ(EvalRepr("(lambda: lambda: 3)()()"), "3");
+  EXPECT_EQ(EvalRepr("(lambda a: lambda b: a + b)(1)(2)"), "3");
+  EXPECT_EQ(EvalRepr("(lambda a, b: a if a > b else b)(3, 4)"), "4");
+  EXPECT_EQ(EvalRepr("(lambda x: x)(x) + x"), "10");
+  EXPECT_EQ(EvalRepr("(lambda x: [x for x in range(x)])(3)"), "[0, 1, 2]");
+  EXPECT_EQ(EvalRepr("(lambda n: [n * k for k in range(n)])(4)"), "[0, 4, 8, 12]");
+  EXPECT_EQ(EvalRepr("(lambda f: f(f, 5))(lambda g, n: 1 if n == 0 else n * g(g, n - 1))"), "120");
+  EXPECT_EQ(EvalRepr("[lambda: 1][0]()"), "1");
+  // closures read the variable when called, as in Python
+  EXPECT_EQ(EvalRepr("[f() for f in [lambda: i for i in range(3)]]"), "[2, 2, 2]");
+  EXPECT_EQ(EvalRepr("[f() for f in [lambda i=i: i for i in range(3)]]"), "[0, 1, 2]");
+  EXPECT_EQ(EvalRepr("[h() for x in [1] for h in [lambda: x]]"), "[1]");
+  // with the builtins that take functions
+  EXPECT_EQ(EvalRepr("list(map(lambda v: v * 2, l))"), "[6, 2, 4]");
+  EXPECT_EQ(EvalRepr("list(map(lambda a, b: a + b, l, [10, 20, 30]))"), "[13, 21, 32]");
+  EXPECT_EQ(EvalRepr("list(python.filter(lambda v: v > 1, l))"), "[3, 2]");
+  EXPECT_EQ(EvalRepr("sorted(l, key=lambda v: -v)"), "[3, 2, 1]");
+  EXPECT_EQ(EvalRepr("sorted(['bb', 'a', 'ccc'], key=lambda s: len(s))"), "['a', 'bb', 'ccc']");
+  EXPECT_EQ(EvalRepr("max(l, key=lambda v: (v - 2) ** 2)"), "3");
+  EXPECT_EQ(EvalRepr("min(l, key=lambda v: python.abs(v - 2))"), "2");
+  // argument errors
+  for (const char* bad : {"(lambda a, /, b: a + b)(a=1, b=2)", "(lambda a, *, b: a + b)(1, 2)",
+                          "(lambda a, *, b: a + b)(1)", "(lambda a, b: a)(1)", "(lambda a, b: a)(1, 2, 3)",
+                          "(lambda: 0)(1)", "(lambda a: a)(1, a=2)", "(lambda a: a)(b=2)"}) {
+    EXPECT_EQ(EvalError(bad).kind, Error::Kind::kType) << bad;
+  }
+  EXPECT_EQ(EvalError("(lambda a, b, c: a)(1)").message, "<lambda>() missing 2 required positional arguments: 'b' and 'c'");
+  EXPECT_EQ(EvalError("(lambda a, b=2: a)(1, 2, 3)").message,
+            "<lambda>() takes from 1 to 2 positional arguments but 3 were given");
+  for (const char* bad : {"lambda a=1, b: 0", "lambda a, a: 0", "lambda *: 0", "lambda *, **k: 0", "1 + lambda: 2",
+                          "lambda a, /, b, /: 1", "lambda /: 1", "lambda **k, a: 1", "lambda *a, *b: 1"}) {
+    EXPECT_EQ(EvalError(bad).kind, Error::Kind::kSyntax) << bad;
+  }
+  // unbounded recursion is a depth error
+  EXPECT_EQ(EvalError("(lambda f: f(f))(lambda f: f(f))").kind, Error::Kind::kLimit);
+}
+
+TEST(PyExprEvaluate, LambdaOutlivesItsEvaluation) {
+  EvalTestScope scope;
+  auto f = Evaluate("lambda a, k=x: [a * k + v for v in range(3)]", scope);
+  ASSERT_TRUE(f.ok());
+  std::vector<Value> args = {Value::Int(2)};
+  auto r = f->function()(args, {});
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(Repr(*r), "[10, 11, 12]");
+  // called outside any evaluation, only the standard globals resolve
+  auto g = Evaluate("lambda: x", scope);
+  ASSERT_TRUE(g.ok());
+  r = g->function()({}, {});
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().kind, Error::Kind::kName);
+}
+
+TEST(PyExprEvaluate, ComprehensionLimits) {
+  EXPECT_EQ(EvalError("[x for x in range(10**7)]").kind, Error::Kind::kLimit);
+  Limits small;
+  small.max_items = 10;
+  EXPECT_EQ(EvalRepr("[x for x in range(10)]", small), "[0, 1, 2, 3, 4, 5, 6, 7, 8, 9]");
+  EXPECT_EQ(EvalRepr("[(x, y) for x in range(4) for y in range(3)]", small), "ERR LimitError");
+  EXPECT_EQ(EvalRepr("{x: y for x in range(4) for y in range(3)}", small), "ERR LimitError");
+  Limits few_steps;
+  few_steps.max_steps = 100;
+  EXPECT_EQ(EvalRepr("len([1 for x in range(10) for y in range(9)])", few_steps), "90");
+  EXPECT_EQ(EvalRepr("[1 for x in range(10) for y in range(10) if 0]", few_steps), "ERR LimitError");
+  EXPECT_EQ(EvalRepr("list(map(lambda v: v, range(101)))", few_steps), "ERR LimitError");
+  few_steps.max_steps = 1000;
+  EXPECT_EQ(EvalRepr("[[j for j in range(100)] for i in range(100)]", few_steps), "ERR LimitError");
 }
 
 TEST(PyExprEvaluate, DepthLimit) {
