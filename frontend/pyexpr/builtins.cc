@@ -56,8 +56,7 @@ Result<Value> FloatToInt(double d) {
   if (std::isnan(d)) return Fail(Error::Kind::kValue, "cannot convert float nan to integer");
   if (std::isinf(d)) return Fail(Error::Kind::kOverflow, "cannot convert float infinity to integer");
   double t = std::trunc(d);
-  if (t >= 9223372036854775808.0 || t < -9223372036854775808.0)
-    return Fail(Error::Kind::kOverflow, "integer result too large (pyexpr ints are 64-bit)");
+  if (t >= 9223372036854775808.0 || t < -9223372036854775808.0) return BigResult(*BigInt::FromDouble(t));
   return Value::Int(static_cast<int64_t>(t));
 }
 
@@ -110,7 +109,7 @@ Result<Value> IntFromText(const std::string& text, int64_t base) {
     if (s.size() > 1 && s[0] == '0' && s.find_first_not_of("0_") != std::string_view::npos) return invalid();
   }
   if (s.empty()) return invalid();
-  uint64_t v = 0;
+  std::string digits;
   bool last_digit = false;
   for (size_t i = 0; i < s.size(); ++i) {
     char c = s[i];
@@ -120,15 +119,17 @@ Result<Value> IntFromText(const std::string& text, int64_t base) {
     }
     int d = (c >= '0' && c <= '9') ? c - '0' : (c >= 'a' && c <= 'z') ? c - 'a' + 10 : (c >= 'A' && c <= 'Z') ? c - 'A' + 10 : 99;
     if (d >= b) return invalid();
-    if (v > (static_cast<uint64_t>(std::numeric_limits<int64_t>::max()) + 1 - static_cast<uint64_t>(d)) / static_cast<uint64_t>(b))
-      return Fail(Error::Kind::kOverflow, "integer result too large (pyexpr ints are 64-bit)");
-    v = v * static_cast<uint64_t>(b) + static_cast<uint64_t>(d);
+    digits.push_back(c);
     last_digit = true;
   }
   if (!last_digit) return invalid();
-  if (!negative && v > static_cast<uint64_t>(std::numeric_limits<int64_t>::max()))
-    return Fail(Error::Kind::kOverflow, "integer result too large (pyexpr ints are 64-bit)");
-  return Value::Int(negative ? static_cast<int64_t>(0 - v) : static_cast<int64_t>(v));
+  // Python 3.11 limits conversions in bases that are not powers of two
+  if ((b & (b - 1)) != 0 && digits.size() > 4300)
+    return Fail(Error::Kind::kValue,
+                fmt::format("Exceeds the limit (4300 digits) for integer string conversion: value has {} digits; use "
+                            "sys.set_int_max_str_digits() to increase the limit",
+                            digits.size()));
+  return internal::BigResult(BigInt::FromDigits(digits, static_cast<int>(b), negative));
 }
 
 Result<Value> BuiltinInt(Positional args, Keywords kw) {
@@ -142,7 +143,7 @@ Result<Value> BuiltinInt(Positional args, Keywords kw) {
     if (!base->IsIntegral()) return Fail(Error::Kind::kType, "int() base must be an integer");
     return IntFromText(x.AsStr(), base->AsInt());
   }
-  if (x.IsIntegral()) return Value::Int(x.AsInt());
+  if (x.IsIntegral()) return x.IsBigInt() ? x : Value::Int(x.AsInt());
   if (x.IsFloat()) return internal::FloatToInt(x.AsFloat());
   if (x.IsStr()) return IntFromText(x.AsStr(), 10);
   return Fail(Error::Kind::kType, fmt::format("int() needs a string or a number, not '{}'", TypeName(x)));
@@ -152,7 +153,10 @@ Result<Value> BuiltinFloat(Positional args, Keywords kw) {
   PYEXPR_CHECK(CheckArgs("float", args, kw, 0, 1));
   if (args.empty()) return Value::Float(0.0);
   const Value& x = args[0];
-  if (x.IsNumber()) return Value::Float(x.AsFloat());
+  if (x.IsNumber()) {
+    PYEXPR_TRY(d, internal::ToFloat(x));
+    return Value::Float(d);
+  }
   if (x.IsStr()) {
     if (auto d = ParsePythonFloat(x.AsStr())) return Value::Float(*d);
     return Fail(Error::Kind::kValue, fmt::format("could not convert string to float: {}", Repr(x)));
@@ -302,9 +306,19 @@ Result<Value> BuiltinRound(Positional args, Keywords kw) {
     return Fail(Error::Kind::kType, fmt::format("'{}' object cannot be interpreted as an integer", TypeName(*nd)));
   if (x->IsIntegral()) {
     int64_t v = x->AsInt();
-    if (!nd || nd->AsInt() >= 0) return Value::Int(v);
+    if (!nd || nd->AsInt() >= 0) return x->IsBigInt() ? *x : Value::Int(v);
+    if (x->IsBigInt() || nd->IsBigInt() || -nd->AsInt() >= 19) {
+      // v = q*m + r with 0 <= r < m; ties to even
+      if (nd->IsBigInt() || static_cast<double>(-nd->AsInt()) > static_cast<double>(x->AsBigInt().BitLength()) / 3.3 + 2)
+        return Value::Int(0);
+      BigInt m = BigInt::Pow(BigInt::FromInt64(10), static_cast<uint64_t>(-nd->AsInt()));
+      BigInt q, r;
+      BigInt::DivMod(x->AsBigInt(), m, &q, &r);
+      int c = BigInt::Compare(r + r, m);
+      if (c > 0 || (c == 0 && q.IsOdd())) q = q + BigInt::FromInt64(1);
+      return internal::BigResult(q * m);
+    }
     int64_t k = -nd->AsInt();
-    if (k >= 19) return Value::Int(0);
     int64_t m = 1;
     for (int64_t i = 0; i < k; ++i) m *= 10;
     int64_t q = v / m, r = v % m;
@@ -315,7 +329,7 @@ Result<Value> BuiltinRound(Positional args, Keywords kw) {
     // now v = q*m + r with 0 <= r < m
     if (2 * r > m || (2 * r == m && (q & 1))) q += 1;
     int64_t out;
-    if (__builtin_mul_overflow(q, m, &out)) return Fail(Error::Kind::kOverflow, "integer result too large (pyexpr ints are 64-bit)");
+    if (__builtin_mul_overflow(q, m, &out)) return internal::BigResult(BigInt::FromInt64(q) * BigInt::FromInt64(m));
     return Value::Int(out);
   }
   double d = x->AsFloat();
@@ -327,8 +341,7 @@ Result<Value> BuiltinAbs(Positional args, Keywords kw) {
   PYEXPR_CHECK(CheckArgs("abs", args, kw, 1, 1));
   const Value& x = args[0];
   if (x.IsIntegral()) {
-    if (x.AsInt() == std::numeric_limits<int64_t>::min())
-      return Fail(Error::Kind::kOverflow, "integer result too large (pyexpr ints are 64-bit)");
+    if (x.IsBigInt() || x.AsInt() == std::numeric_limits<int64_t>::min()) return Value::Big(x.AsBigInt().Abs());
     return Value::Int(x.AsInt() < 0 ? -x.AsInt() : x.AsInt());
   }
   if (x.IsFloat()) return Value::Float(std::fabs(x.AsFloat()));

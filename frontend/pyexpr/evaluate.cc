@@ -33,6 +33,28 @@ LimitsScope::~LimitsScope() {
   current_steps = previous_steps_;
 }
 
+Result<bool> CheckIntBits(double bits) {
+  size_t digits = CurrentLimits().max_int_digits;
+  if (bits > static_cast<double>(digits) * 3.3219280948873623 + 64)
+    return Fail(Error::Kind::kLimit, fmt::format("the int would have more than the limit of {} digits", digits));
+  return true;
+}
+
+Result<Value> BigResult(BigInt i) {
+  auto ok = CheckIntBits(static_cast<double>(i.BitLength()));
+  if (!ok.ok()) return std::move(ok).error();
+  return Value::Big(std::move(i));
+}
+
+Result<double> ToFloat(const Value& v) {
+  if (v.IsBigInt()) {
+    auto d = v.big().ToDouble();
+    if (!d) return Fail(Error::Kind::kOverflow, "int too large to convert to float");
+    return *d;
+  }
+  return v.AsFloat();
+}
+
 Result<bool> CountStep() {
   size_t limit = CurrentLimits().max_steps;
   if (++current_steps > limit)
@@ -131,7 +153,9 @@ bool Identical(const Value& a, const Value& b) {
   switch (a.kind()) {
     case Value::Kind::kNone: return true;
     case Value::Kind::kBool:
-    case Value::Kind::kInt: return a.AsInt() == b.AsInt();  // CPython shares small ints
+    case Value::Kind::kInt:
+      if (a.IsBigInt() || b.IsBigInt()) return a.identity() == b.identity();
+      return a.AsInt() == b.AsInt();  // CPython shares small ints
     case Value::Kind::kFloat: return false;
     case Value::Kind::kOpaque: return a.opaque_payload() == b.opaque_payload();
     default: return a.identity() == b.identity();

@@ -43,6 +43,7 @@ struct Limits {
   size_t max_string_bytes = 16 << 20;   // largest str a result may build
   size_t max_items = 1 << 20;           // largest list/tuple/dict/range
   size_t max_steps = 4 << 20;           // comprehension iterations and lambda calls
+  size_t max_int_digits = 10000;        // largest int an operation may build (about; in bits * log10(2))
 };
 
 Result<Value> Evaluate(std::string_view expression, Scope& scope, const Limits& limits = {});

@@ -83,6 +83,13 @@ Result<double> AsReal(const Value& v, std::string_view function);
 
 // Python's float -> int conversion (truncation), with its errors.
 Result<Value> FloatToInt(double d);
+// An int of any size as a Value, or kLimit when it has more bits than
+// Limits::max_int_digits allows.
+Result<Value> BigResult(BigInt i);
+// kLimit when an int of about `bits` bits would exceed the limit.
+Result<bool> CheckIntBits(double bits);
+// float(v) for an int or bool (an OverflowError when too large) or a float.
+Result<double> ToFloat(const Value& v);
 
 // Attribute lookup on str/list/dict values (their methods; str_methods.cc).
 Result<Value> Method(const Value& self, std::string_view name);

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "frontend/pyexpr/internal.h"
 #include "frontend/pyexpr/number_text.h"
 
 namespace mdlc::pyexpr {
@@ -66,7 +67,7 @@ class Lexer {
           token = String(word);
         } else {
           pos_ = end;
-          token = Token{Token::Type::kName, std::string(word), 0, 0, start};
+          token = Token{Token::Type::kName, std::string(word), 0, 0, start, {}};
         }
       } else if (c == '\'' || c == '"') {
         token = String("");
@@ -77,7 +78,7 @@ class Lexer {
       token->offset = start;
       tokens.push_back(std::move(*token));
     }
-    tokens.push_back(Token{Token::Type::kEnd, "", 0, 0, s_.size()});
+    tokens.push_back(Token{Token::Type::kEnd, "", 0, 0, s_.size(), {}});
     return tokens;
   }
 
@@ -144,16 +145,8 @@ class Lexer {
       if (digits.empty()) return SyntaxError("invalid number literal", start);
       if (pos_ < s_.size() && IsNameChar(static_cast<unsigned char>(s_[pos_])))
         return SyntaxError("invalid number literal", start);
-      uint64_t v = 0;
-      for (char c : digits) {
-        uint64_t d = static_cast<uint64_t>(DigitValue(c));
-        if (v > (static_cast<uint64_t>(std::numeric_limits<int64_t>::max()) - d) / static_cast<uint64_t>(base))
-          return Error{Error::Kind::kOverflow, "integer literal is too large", start};
-        v = v * static_cast<uint64_t>(base) + d;
-      }
       t.type = Token::Type::kInt;
-      t.int_value = static_cast<int64_t>(v);
-      return t;
+      return BigLiteral(std::move(t), digits, base, start);
     }
     std::string text;
     auto ok = Digits(10, text, false);
@@ -194,10 +187,26 @@ class Lexer {
     }
     if (text.size() > 1 && text[0] == '0' && text.find_first_not_of('0') != std::string::npos)
       return SyntaxError("leading zeros are not allowed in decimal integers (use 0o for octal)", start);
-    auto i = ParsePythonInt(text);
-    if (!i) return Error{Error::Kind::kOverflow, "integer literal is too large", start};
     t.type = Token::Type::kInt;
-    t.int_value = *i;
+    return BigLiteral(std::move(t), text, 10, start);
+  }
+
+  // an int literal's digits (no underscores) as int_value or big_value
+  Result<Token> BigLiteral(Token t, std::string_view digits, int base, size_t start) {
+    size_t first = digits.find_first_not_of('0');
+    if (first == std::string_view::npos) return t;
+    digits.remove_prefix(first);
+    if (base == 10 && digits.size() > 4300)
+      return Error{Error::Kind::kValue,
+                   "the literal exceeds the limit (4300 digits) for integer string conversion", start};
+    BigInt v = BigInt::FromDigits(digits, base);
+    if (auto small = v.ToInt64()) {
+      t.int_value = *small;
+      return t;
+    }
+    auto ok = internal::CheckIntBits(static_cast<double>(v.BitLength()));
+    if (!ok.ok()) return Error{ok.error().kind, ok.error().message, start};
+    t.big_value = Value::Big(std::move(v));
     return t;
   }
 

@@ -18,6 +18,7 @@ struct Token {
   int64_t int_value = 0;
   double float_value = 0;
   size_t offset = 0;  // byte offset of the token's first character
+  Value big_value;    // kInt beyond 64 bits: the int (else None)
 };
 
 // Splits the expression into tokens, ending with a kEnd token. Newlines and

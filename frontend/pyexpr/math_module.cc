@@ -27,7 +27,6 @@ using internal::Positional;
 
 Error Domain() { return Fail(Error::Kind::kValue, "math domain error (the argument is outside the function's domain)"); }
 Error Range() { return Fail(Error::Kind::kOverflow, "math range error (the result is too large for a float)"); }
-Error IntTooLarge() { return Fail(Error::Kind::kOverflow, "integer result too large (pyexpr ints are 64-bit)"); }
 
 // A one-argument float function with Python's error rules: a nan from a
 // non-nan argument is a domain error; an infinite result from a finite
@@ -126,7 +125,7 @@ Result<Value> Log(Positional args, Keywords kw) {
 
 Result<Value> Rounding(const std::string& name, double (*f)(double), Positional args, Keywords kw) {
   PYEXPR_CHECK(CheckArgs(name, args, kw, 1, 1));
-  if (args[0].IsIntegral()) return Value::Int(args[0].AsInt());
+  if (args[0].IsIntegral()) return args[0].IsBigInt() ? args[0] : Value::Int(args[0].AsInt());
   PYEXPR_TRY(x, internal::AsReal(args[0], name));
   return internal::FloatToInt(f(x));
 }
@@ -380,15 +379,16 @@ void AddMathModule(NameTable& t) {
     PYEXPR_CHECK(CheckArgs("factorial", args, kw, 1, 1));
     PYEXPR_TRY(n, IntArg(args[0], "factorial"));
     if (n < 0) return Fail(Error::Kind::kValue, "factorial() is not defined for negative values");
-    int64_t r = 1;
-    for (int64_t i = 2; i <= n; ++i)
-      if (__builtin_mul_overflow(r, i, &r)) return IntTooLarge();
-    return Value::Int(r);
+    PYEXPR_CHECK(internal::CheckIntBits(std::lgamma(static_cast<double>(n) + 1) / std::log(2.0)));
+    BigInt r = BigInt::FromInt64(1);
+    for (int64_t i = 2; i <= n; ++i) r = r * BigInt::FromInt64(i);
+    return internal::BigResult(std::move(r));
   }));
   t.Set("isqrt", Fn("isqrt", [](Positional args, Keywords kw) -> Result<Value> {
     PYEXPR_CHECK(CheckArgs("isqrt", args, kw, 1, 1));
     PYEXPR_TRY(n, IntArg(args[0], "isqrt"));
     if (n < 0) return Fail(Error::Kind::kValue, "isqrt() argument must be nonnegative");
+    if (args[0].IsBigInt()) return Value::Big(args[0].big().Isqrt());
     auto r = static_cast<int64_t>(std::sqrt(static_cast<double>(n)));
     while (r > 0 && static_cast<__int128>(r) * r > n) --r;
     while (static_cast<__int128>(r + 1) * (r + 1) <= n) ++r;
@@ -397,23 +397,25 @@ void AddMathModule(NameTable& t) {
   auto gcd_lcm = [](const std::string& name, bool is_gcd) {
     return Fn(name, [name, is_gcd](Positional args, Keywords kw) -> Result<Value> {
       PYEXPR_CHECK(CheckArgs(name, args, kw, 0, std::numeric_limits<size_t>::max()));
-      int64_t acc = is_gcd ? 0 : 1;
+      BigInt acc = BigInt::FromInt64(is_gcd ? 0 : 1);
       for (const Value& v : args) {
-        PYEXPR_TRY(x, IntArg(v, name));
-        if (x == std::numeric_limits<int64_t>::min()) return IntTooLarge();
-        x = x < 0 ? -x : x;
+        PYEXPR_TRY(checked, IntArg(v, name));
+        (void)checked;
+        BigInt x = v.AsBigInt().Abs();
         if (is_gcd) {
-          acc = std::gcd(acc, x);
+          acc = BigInt::Gcd(acc, x);
         } else {
-          if (acc == 0 || x == 0) {
-            acc = 0;
+          if (acc.IsZero() || x.IsZero()) {
+            acc = BigInt();
             continue;
           }
-          int64_t g = std::gcd(acc, x);
-          if (__builtin_mul_overflow(acc / g, x, &acc)) return IntTooLarge();
+          BigInt q;
+          BigInt::DivModMagnitude(acc, BigInt::Gcd(acc, x), &q, nullptr);
+          PYEXPR_CHECK(internal::CheckIntBits(static_cast<double>(q.BitLength() + x.BitLength())));
+          acc = q * x;
         }
       }
-      return Value::Int(acc);
+      return internal::BigResult(std::move(acc));
     });
   };
   t.Set("gcd", gcd_lcm("gcd", true));
@@ -429,18 +431,27 @@ void AddMathModule(NameTable& t) {
       }
       if (n < 0) return Fail(Error::Kind::kValue, "n must be a non-negative integer");
       if (k < 0) return Fail(Error::Kind::kValue, "k must be a non-negative integer");
-      if (k > n) return Value::Int(0);
-      if (is_comb && k > n - k) k = n - k;
-      __int128 r = 1;
+      BigInt big_n = args[0].AsBigInt(), big_k = BigInt::FromInt64(k);
+      if (args.size() > 1 && !args[1].IsNone()) big_k = args[1].AsBigInt();
+      if (BigInt::Compare(big_k, big_n) > 0) return Value::Int(0);
+      if (is_comb && BigInt::Compare(big_k + big_k, big_n) > 0) big_k = big_n - big_k;
+      k = big_k.ToInt64().value_or(std::numeric_limits<int64_t>::max());
+      // log2 of the result, to refuse before computing what the limit forbids
+      double nd = args[0].AsFloat(), kd = big_k.ToDouble().value_or(HUGE_VAL);
+      PYEXPR_CHECK(internal::CheckIntBits(kd));  // the result has at least k bits
+      double k_factorial = is_comb ? std::lgamma(kd + 1) : 0.0;
+      double bits = nd < 1e15 ? (std::lgamma(nd + 1) - std::lgamma(nd - kd + 1) - k_factorial) / std::log(2.0)
+                              : kd * std::log2(nd) - k_factorial / std::log(2.0);
+      PYEXPR_CHECK(internal::CheckIntBits(bits));
+      BigInt r = BigInt::FromInt64(1);
       for (int64_t i = 1; i <= k; ++i) {
         if (is_comb) {
-          r = r * (n - k + i) / i;
+          BigInt::DivModMagnitude(r * (big_n - big_k + BigInt::FromInt64(i)), BigInt::FromInt64(i), &r, nullptr);
         } else {
-          r = r * (n - i + 1);
+          r = r * (big_n - BigInt::FromInt64(i - 1));
         }
-        if (r > std::numeric_limits<int64_t>::max()) return IntTooLarge();
       }
-      return Value::Int(static_cast<int64_t>(r));
+      return internal::BigResult(std::move(r));
     });
   };
   t.Set("comb", comb_perm("comb", true));

@@ -1,6 +1,6 @@
 // operators.cc - Python's operators on values: arithmetic with Python's
-// int/float rules (floor division and modulo signs, int overflow reported
-// instead of growing), sequence concatenation and repetition within the
+// int/float rules (floor division and modulo signs; ints grow past 64 bits
+// into BigInts, within Limits::max_int_digits), sequence concatenation and repetition within the
 // limits, membership, indexing and slicing.
 #include <fmt/format.h>
 
@@ -17,23 +17,35 @@ Error Unsupported(BinOp op, const Value& a, const Value& b) {
                                               TypeName(a), TypeName(b)));
 }
 
-Error IntOverflow() { return Fail(Error::Kind::kOverflow, "integer result too large (pyexpr ints are 64-bit)"); }
-
-Result<Value> IntPow(int64_t base, int64_t exponent) {
-  int64_t result = 1;
-  int64_t b = base;
-  int64_t e = exponent;
-  while (e > 0) {
-    if (e & 1) {
-      if (__builtin_mul_overflow(result, b, &result)) return IntOverflow();
+// a ** e for ints, e >= 0
+Result<Value> IntPow(const Value& a, const Value& e) {
+  if (!a.IsBigInt() && !e.IsBigInt()) {
+    int64_t result = 1, b = a.AsInt(), n = e.AsInt();
+    bool overflow = false;
+    while (n > 0 && !overflow) {
+      if ((n & 1) && __builtin_mul_overflow(result, b, &result)) overflow = true;
+      n >>= 1;
+      if (n > 0 && __builtin_mul_overflow(b, b, &b)) overflow = true;
     }
-    e >>= 1;
-    if (e > 0 && __builtin_mul_overflow(b, b, &b)) {
-      // b*b overflows; the result only stays in range when nothing more multiplies in
-      return IntOverflow();
-    }
+    if (!overflow) return Value::Int(result);
   }
-  return Value::Int(result);
+  BigInt base = a.AsBigInt();
+  if (base.IsZero() || BigInt::Compare(base.Abs(), BigInt::FromInt64(1)) == 0) {
+    bool odd = e.AsBigInt().IsOdd();
+    if (base.IsZero()) return Value::Int(e.AsBigInt().IsZero() ? 1 : 0);
+    return Value::Int(base.IsNegative() && odd ? -1 : 1);
+  }
+  // |a| >= 2: at least (bits(a) - 1) * e bits
+  double bits = (static_cast<double>(base.BitLength()) - 1) * e.AsFloat();
+  auto ok = CheckIntBits(bits);
+  if (!ok.ok()) return std::move(ok).error();
+  return BigResult(BigInt::Pow(base, static_cast<uint64_t>(e.AsInt())));
+}
+
+Result<Value> BigFloorDivMod(BinOp op, const Value& a, const Value& b) {
+  BigInt q, r;
+  BigInt::DivMod(a.AsBigInt(), b.AsBigInt(), &q, &r);
+  return BigResult(op == BinOp::kMod ? std::move(r) : std::move(q));
 }
 
 Result<Value> FloatPow(double a, double b) {
@@ -50,12 +62,13 @@ Result<Value> FloatPow(double a, double b) {
 Result<Value> FloorDivMod(BinOp op, const Value& a, const Value& b) {
   if (a.IsIntegral() && b.IsIntegral()) {
     int64_t x = a.AsInt(), y = b.AsInt();
-    if (y == 0)
+    if (!b.IsBigInt() && y == 0)
       return Fail(Error::Kind::kZeroDivision,
                   op == BinOp::kMod ? "integer modulo by zero" : "integer division by zero");
+    if (a.IsBigInt() || b.IsBigInt()) return BigFloorDivMod(op, a, b);
     if (x == std::numeric_limits<int64_t>::min() && y == -1) {
       if (op == BinOp::kMod) return Value::Int(0);
-      return IntOverflow();
+      return BigFloorDivMod(op, a, b);
     }
     int64_t q = x / y, r = x % y;
     if (r != 0 && ((r < 0) != (y < 0))) {
@@ -207,11 +220,19 @@ Result<Value> PercentFormat(const std::string& format, const Value& args);
 Result<Value> ApplyBinary(BinOp op, const Value& a, const Value& b) {
   bool ints = a.IsIntegral() && b.IsIntegral();
   bool numbers = a.IsNumber() && b.IsNumber();
+  bool big = a.IsBigInt() || b.IsBigInt();
+  if (big && numbers && !ints && op != BinOp::kPow) {
+    // a big int meets a float: float(int) must not overflow
+    auto x = ToFloat(a);
+    if (!x.ok()) return std::move(x).error();
+    auto y = ToFloat(b);
+    if (!y.ok()) return std::move(y).error();
+  }
   switch (op) {
     case BinOp::kAdd:
       if (ints) {
         int64_t r;
-        if (__builtin_add_overflow(a.AsInt(), b.AsInt(), &r)) return IntOverflow();
+        if (big || __builtin_add_overflow(a.AsInt(), b.AsInt(), &r)) return BigResult(a.AsBigInt() + b.AsBigInt());
         return Value::Int(r);
       }
       if (numbers) return Value::Float(a.AsFloat() + b.AsFloat());
@@ -231,7 +252,7 @@ Result<Value> ApplyBinary(BinOp op, const Value& a, const Value& b) {
     case BinOp::kSub:
       if (ints) {
         int64_t r;
-        if (__builtin_sub_overflow(a.AsInt(), b.AsInt(), &r)) return IntOverflow();
+        if (big || __builtin_sub_overflow(a.AsInt(), b.AsInt(), &r)) return BigResult(a.AsBigInt() - b.AsBigInt());
         return Value::Int(r);
       }
       if (numbers) return Value::Float(a.AsFloat() - b.AsFloat());
@@ -239,7 +260,12 @@ Result<Value> ApplyBinary(BinOp op, const Value& a, const Value& b) {
     case BinOp::kMul:
       if (ints) {
         int64_t r;
-        if (__builtin_mul_overflow(a.AsInt(), b.AsInt(), &r)) return IntOverflow();
+        if (big || __builtin_mul_overflow(a.AsInt(), b.AsInt(), &r)) {
+          BigInt x = a.AsBigInt(), y = b.AsBigInt();
+          auto ok = CheckIntBits(static_cast<double>(x.BitLength() + y.BitLength()) - 1);
+          if (!ok.ok()) return std::move(ok).error();
+          return BigResult(x * y);
+        }
         return Value::Int(r);
       }
       if (numbers) return Value::Float(a.AsFloat() * b.AsFloat());
@@ -250,6 +276,12 @@ Result<Value> ApplyBinary(BinOp op, const Value& a, const Value& b) {
       if (numbers) {
         if (b.AsFloat() == 0.0)
           return Fail(Error::Kind::kZeroDivision, ints ? "division by zero" : "float division by zero");
+        if (ints && (big || std::max(std::abs(a.AsFloat()), std::abs(b.AsFloat())) > 9007199254740992.0)) {
+          // correctly rounded, as Python's int / int
+          auto q = BigInt::TrueDivide(a.AsBigInt(), b.AsBigInt());
+          if (!q) return Fail(Error::Kind::kOverflow, "integer division result too large for a float");
+          return Value::Float(*q);
+        }
         return Value::Float(a.AsFloat() / b.AsFloat());
       }
       return Unsupported(op, a, b);
@@ -262,11 +294,19 @@ Result<Value> ApplyBinary(BinOp op, const Value& a, const Value& b) {
       return Unsupported(op, a, b);
     case BinOp::kPow:
       if (ints) {
-        if (b.AsInt() >= 0) return IntPow(a.AsInt(), b.AsInt());
+        if (b.AsInt() >= 0) return IntPow(a, b);
         if (a.AsInt() == 0) return Fail(Error::Kind::kZeroDivision, "zero cannot be raised to a negative power");
-        return FloatPow(a.AsFloat(), b.AsFloat());
+        auto x = ToFloat(a);
+        if (!x.ok()) return std::move(x).error();
+        return FloatPow(*x, b.AsFloat());
       }
-      if (numbers) return FloatPow(a.AsFloat(), b.AsFloat());
+      if (numbers) {
+        auto x = ToFloat(a);
+        if (!x.ok()) return std::move(x).error();
+        auto y = ToFloat(b);
+        if (!y.ok()) return std::move(y).error();
+        return FloatPow(*x, *y);
+      }
       return Unsupported(op, a, b);
     case BinOp::kMatMul: return Unsupported(op, a, b);
     case BinOp::kLShift:
@@ -274,17 +314,28 @@ Result<Value> ApplyBinary(BinOp op, const Value& a, const Value& b) {
       if (!ints) return Unsupported(op, a, b);
       int64_t x = a.AsInt(), n = b.AsInt();
       if (n < 0) return Fail(Error::Kind::kValue, "negative shift count");
-      if (op == BinOp::kRShift) return Value::Int(n >= 63 ? (x < 0 ? -1 : 0) : (x >> n));
-      if (x == 0) return Value::Int(0);
-      if (n >= 63) return IntOverflow();
-      int64_t r = static_cast<int64_t>(static_cast<uint64_t>(x) << n);
-      if ((r >> n) != x) return IntOverflow();
-      return Value::Int(r);
+      if (op == BinOp::kRShift) {
+        if (a.IsBigInt()) return BigResult(a.big().ShiftRight(static_cast<size_t>(std::min<int64_t>(n, 1 << 30))));
+        return Value::Int(n >= 63 ? (x < 0 ? -1 : 0) : (x >> n));
+      }
+      if (x == 0 && !a.IsBigInt()) return Value::Int(0);
+      if (!big && n < 63) {
+        int64_t r = static_cast<int64_t>(static_cast<uint64_t>(x) << n);
+        if ((r >> n) == x) return Value::Int(r);
+      }
+      BigInt v = a.AsBigInt();
+      auto ok = CheckIntBits(static_cast<double>(v.BitLength()) + b.AsFloat());
+      if (!ok.ok()) return std::move(ok).error();
+      return BigResult(v.ShiftLeft(static_cast<size_t>(n)));
     }
     case BinOp::kBitAnd:
     case BinOp::kBitOr:
     case BinOp::kBitXor: {
       if (!ints) return Unsupported(op, a, b);
+      if (big) {
+        auto bop = op == BinOp::kBitAnd ? BigInt::BitOp::kAnd : op == BinOp::kBitOr ? BigInt::BitOp::kOr : BigInt::BitOp::kXor;
+        return BigResult(BigInt::Bitwise(bop, a.AsBigInt(), b.AsBigInt()));
+      }
       int64_t x = a.AsInt(), y = b.AsInt();
       int64_t r = op == BinOp::kBitAnd ? (x & y) : (op == BinOp::kBitOr ? (x | y) : (x ^ y));
       if (a.IsBool() && b.IsBool()) return Value::Bool(r != 0);
@@ -295,11 +346,18 @@ Result<Value> ApplyBinary(BinOp op, const Value& a, const Value& b) {
 }
 
 Result<Value> ApplyUnary(UnOp op, const Value& a) {
+  if (a.IsBigInt()) {
+    switch (op) {
+      case UnOp::kNeg: return Value::Big(-a.big());
+      case UnOp::kPos: return a;
+      case UnOp::kInvert: return Value::Big(a.big().Invert());
+    }
+  }
   if (a.IsIntegral()) {
     int64_t x = a.AsInt();
     switch (op) {
       case UnOp::kNeg:
-        if (x == std::numeric_limits<int64_t>::min()) return IntOverflow();
+        if (x == std::numeric_limits<int64_t>::min()) return Value::Big(-BigInt::FromInt64(x));
         return Value::Int(-x);
       case UnOp::kPos: return Value::Int(x);
       case UnOp::kInvert: return Value::Int(~x);

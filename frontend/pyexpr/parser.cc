@@ -444,7 +444,7 @@ class Parser {
       case T::kInt: {
         Next();
         auto n = Make(Node::Type::kConst, tok.offset);
-        n->constant = Value::Int(tok.int_value);
+        n->constant = tok.big_value.IsInt() ? tok.big_value : Value::Int(tok.int_value);
         return n;
       }
       case T::kFloat: {

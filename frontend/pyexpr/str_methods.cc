@@ -704,11 +704,27 @@ Result<std::string> FormatFloat(double d, const Spec& spec) {
   return Align(spec, SignText(spec, negative), body, '>');
 }
 
-Result<std::string> FormatInt(int64_t v, const Spec& spec) {
+Result<std::string> FormatInt(const Value& value, const Spec& spec) {
   char type = spec.type;
-  if (type == 'e' || type == 'E' || type == 'f' || type == 'F' || type == 'g' || type == 'G' || type == '%')
-    return FormatFloat(static_cast<double>(v), spec);
+  if (type == 'e' || type == 'E' || type == 'f' || type == 'F' || type == 'g' || type == 'G' || type == '%') {
+    if (value.IsBigInt() && !value.big().ToDouble())
+      return Fail(Error::Kind::kOverflow, "int too large to convert to float");
+    return FormatFloat(value.AsFloat(), spec);
+  }
   if (spec.precision >= 0) return Fail(Error::Kind::kValue, "precision is not allowed in an integer format specifier");
+  if (value.IsBigInt()) {
+    if (type == 'c') return Fail(Error::Kind::kOverflow, "%c arg not in range(0x110000)");
+    if (type != 0 && type != 'd' && type != 'n' && type != 'b' && type != 'o' && type != 'x' && type != 'X')
+      return Fail(Error::Kind::kValue, fmt::format("unknown format code '{}' for an int", type));
+    int base = type == 'b' ? 2 : type == 'o' ? 8 : (type == 'x' || type == 'X') ? 16 : 10;
+    std::string body = value.big().Abs().ToString(base), prefix;
+    if (type == 'X')
+      for (char& c : body) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (base != 10 && spec.alternate) prefix = std::string("0") + type;
+    if (spec.grouping) body = Group(body, spec.grouping, base == 10 ? 3 : 4);
+    return Align(spec, SignText(spec, value.big().IsNegative()) + prefix, body, '>');
+  }
+  int64_t v = value.AsInt();
   bool negative = v < 0;
   uint64_t mag = negative ? 0 - static_cast<uint64_t>(v) : static_cast<uint64_t>(v);
   std::string body, prefix;
@@ -751,7 +767,7 @@ Result<std::string> FormatWithSpec(const Value& v, std::string_view spec_text) {
   if (spec_text.empty()) return Str(v);
   PYEXPR_TRY(spec, ParseSpec(spec_text));
   if (v.IsFloat()) return FormatFloat(v.AsFloat(), spec);
-  if (v.IsIntegral()) return FormatInt(v.AsInt(), spec);
+  if (v.IsIntegral()) return FormatInt(v, spec);
   if (v.IsStr()) {
     if (spec.type != 0 && spec.type != 's')
       return Fail(Error::Kind::kValue, fmt::format("unknown format code '{}' for a str", spec.type));
@@ -1036,7 +1052,7 @@ Result<Value> PercentFormat(const std::string& format, const Value& args) {
         }
         spec.precision = -1;
         spec.type = 'd';
-        PYEXPR_TRY(t, FormatInt(n.AsInt(), spec));
+        PYEXPR_TRY(t, FormatInt(n, spec));
         text = t;
         break;
       }
@@ -1047,7 +1063,7 @@ Result<Value> PercentFormat(const std::string& format, const Value& args) {
           return Fail(Error::Kind::kType, fmt::format("%{} format: an integer is required, not {}", conv, TypeName(value)));
         spec.precision = -1;
         spec.type = conv;
-        PYEXPR_TRY(t, FormatInt(value.AsInt(), spec));
+        PYEXPR_TRY(t, FormatInt(value, spec));
         text = t;
         break;
       }
@@ -1057,7 +1073,7 @@ Result<Value> PercentFormat(const std::string& format, const Value& args) {
         } else if (value.IsIntegral()) {
           spec.type = 'c';
           spec.align = left ? '<' : '>';
-          PYEXPR_TRY(t, FormatInt(value.AsInt(), spec));
+          PYEXPR_TRY(t, FormatInt(value, spec));
           text = t;
         } else {
           return Fail(Error::Kind::kType, "%c requires an int or a single character");

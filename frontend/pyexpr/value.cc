@@ -29,6 +29,9 @@ struct NsObj {
   std::string name;
   std::shared_ptr<const NameTable> names;
 };
+struct BigObj {
+  BigInt i;
+};
 struct OpaqueObj {
   std::string type;
   std::shared_ptr<const void> payload;
@@ -83,6 +86,19 @@ Value Value::Int(int64_t i) {
   v.scalar_.i = i;
   return v;
 }
+
+Value Value::Big(BigInt i) {
+  if (auto small = i.ToInt64()) return Int(*small);
+  Value v;
+  v.kind_ = Kind::kInt;
+  v.scalar_.i = i.IsNegative() ? std::numeric_limits<int64_t>::min() : std::numeric_limits<int64_t>::max();
+  v.heap_ = std::make_shared<const BigObj>(BigObj{std::move(i)});
+  return v;
+}
+
+const BigInt& Value::big() const { return Heap<BigObj>(heap_).i; }
+
+BigInt Value::AsBigInt() const { return IsBigInt() ? big() : BigInt::FromInt64(AsInt()); }
 
 Value Value::Float(double d) {
   Value v;
@@ -166,7 +182,12 @@ int64_t Value::AsInt() const { return kind_ == Kind::kBool ? (scalar_.b ? 1 : 0)
 double Value::AsFloat() const {
   switch (kind_) {
     case Kind::kFloat: return scalar_.d;
-    case Kind::kInt: return static_cast<double>(scalar_.i);
+    case Kind::kInt:
+      if (heap_) {
+        const BigInt& b = big();
+        return b.ToDouble().value_or(b.IsNegative() ? -HUGE_VAL : HUGE_VAL);
+      }
+      return static_cast<double>(scalar_.i);
     case Kind::kBool: return scalar_.b ? 1.0 : 0.0;
     default: return 0.0;
   }
@@ -294,7 +315,7 @@ void AppendRepr(const Value& v, std::string& out, int depth) {
   switch (v.kind()) {
     case Value::Kind::kNone: out += "None"; break;
     case Value::Kind::kBool: out += v.AsBool() ? "True" : "False"; break;
-    case Value::Kind::kInt: out += std::to_string(v.AsInt()); break;
+    case Value::Kind::kInt: out += v.IsBigInt() ? v.big().ToString() : std::to_string(v.AsInt()); break;
     case Value::Kind::kFloat: out += FloatRepr(v.AsFloat()); break;
     case Value::Kind::kStr: AppendStrRepr(v.AsStr(), out); break;
     case Value::Kind::kList:
@@ -346,6 +367,12 @@ std::optional<int> CompareIntDouble(int64_t i, double d) {
 
 // Numeric comparison: -1, 0, 1, nullopt for nan.
 std::optional<int> CompareNumbers(const Value& a, const Value& b) {
+  if (a.IsBigInt() || b.IsBigInt()) {
+    if (a.IsIntegral() && b.IsIntegral()) return BigInt::Compare(a.AsBigInt(), b.AsBigInt());
+    if (std::isnan(a.AsFloat()) || std::isnan(b.AsFloat())) return std::nullopt;
+    if (a.IsIntegral()) return BigInt::CompareDouble(a.AsBigInt(), b.AsFloat());
+    return -BigInt::CompareDouble(b.AsBigInt(), a.AsFloat());
+  }
   if (a.IsIntegral() && b.IsIntegral()) {
     int64_t x = a.AsInt(), y = b.AsInt();
     return x < y ? -1 : (x > y ? 1 : 0);
@@ -444,10 +471,15 @@ std::optional<uint64_t> Hash(const Value& v) {
   switch (v.kind()) {
     case Value::Kind::kNone: return 0x9e3779b97f4a7c15ULL;
     case Value::Kind::kBool:
-    case Value::Kind::kInt: return Mix(static_cast<uint64_t>(v.AsInt()));
+    case Value::Kind::kInt:
+      if (v.IsBigInt()) return v.big().Hash();
+      return Mix(static_cast<uint64_t>(v.AsInt()));
     case Value::Kind::kFloat: {
       double d = v.AsFloat();
-      if (d == std::trunc(d) && std::fabs(d) < 9.2e18) return Mix(static_cast<uint64_t>(static_cast<int64_t>(d)));
+      if (std::isfinite(d) && d == std::trunc(d)) {  // as the equal int
+        if (std::fabs(d) < 9223372036854775808.0) return Mix(static_cast<uint64_t>(static_cast<int64_t>(d)));
+        return BigInt::FromDouble(d)->Hash();
+      }
       if (d == 0) return Mix(0);
       uint64_t bits;
       std::memcpy(&bits, &d, sizeof bits);

@@ -21,6 +21,8 @@
 #include <variant>
 #include <vector>
 
+#include "frontend/pyexpr/bigint.h"
+
 namespace mdlc::pyexpr {
 
 // What went wrong while lexing, parsing or evaluating an expression (or
@@ -109,6 +111,9 @@ class Value {
   Value() = default;  // None
   static Value Bool(bool b);
   static Value Int(int64_t i);
+  // An int of any size: a 64-bit int when it fits, else a big int (Python
+  // has one int type; kind() is kInt either way).
+  static Value Big(BigInt i);
   static Value Float(double d);
   static Value Str(std::string s);
   static Value List(std::vector<Value> items);
@@ -130,6 +135,7 @@ class Value {
   bool IsNone() const { return kind_ == Kind::kNone; }
   bool IsBool() const { return kind_ == Kind::kBool; }
   bool IsInt() const { return kind_ == Kind::kInt; }      // not bool
+  bool IsBigInt() const { return kind_ == Kind::kInt && heap_ != nullptr; }  // beyond 64 bits
   bool IsFloat() const { return kind_ == Kind::kFloat; }
   bool IsStr() const { return kind_ == Kind::kStr; }
   bool IsList() const { return kind_ == Kind::kList; }
@@ -143,8 +149,10 @@ class Value {
   bool IsSequence() const { return kind_ == Kind::kList || kind_ == Kind::kTuple; }
 
   bool AsBool() const { return scalar_.b; }        // kBool
-  int64_t AsInt() const;                           // kInt or kBool
-  double AsFloat() const;                          // kFloat, kInt or kBool
+  int64_t AsInt() const;                           // kInt or kBool; a big int saturates to INT64_MIN/MAX
+  double AsFloat() const;                          // kFloat, kInt or kBool; a big int too large: +-inf
+  const BigInt& big() const;                       // IsBigInt()
+  BigInt AsBigInt() const;                         // kInt or kBool, any size
   const std::string& AsStr() const;                // kStr
   const std::vector<Value>& items() const;         // kList, kTuple
   const std::vector<Item>& dict_items() const;     // kDict

@@ -3,6 +3,7 @@
 // (expected values checked against Python 3.11).
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <map>
 #include <string>
 
@@ -80,7 +81,7 @@ TEST(PyExprEvaluate, Literals) {
   EXPECT_EQ(EvalRepr("1, 2"), "(1, 2)");
   EXPECT_EQ(EvalRepr("  x  "), "5");
   EXPECT_EQ(EvalRepr("007"), "ERR SyntaxError");
-  EXPECT_EQ(EvalRepr("123456789012345678901234"), "ERR OverflowError");
+  EXPECT_EQ(EvalRepr("123456789012345678901234"), "123456789012345678901234");
 }
 
 TEST(PyExprEvaluate, Arithmetic) {
@@ -123,9 +124,8 @@ TEST(PyExprEvaluate, ArithmeticErrors) {
   EXPECT_EQ(EvalRepr("5.0//0"), "ERR ZeroDivisionError");
   EXPECT_EQ(EvalRepr("5%0"), "ERR ZeroDivisionError");
   EXPECT_EQ(EvalRepr("0**-1"), "ERR ZeroDivisionError");
-  EXPECT_EQ(EvalRepr("2**63"), "ERR OverflowError");
-  EXPECT_EQ(EvalRepr("1 << 70"), "ERR OverflowError");
-  EXPECT_EQ(EvalRepr("9223372036854775807 + 1"), "ERR OverflowError");
+  EXPECT_EQ(EvalRepr("float(2**1024)"), "ERR OverflowError");
+  EXPECT_EQ(EvalRepr("2**2000 + 1.0"), "ERR OverflowError");
   EXPECT_EQ(EvalRepr("(-8)**(1/3)"), "ERR UnsupportedError");
   EXPECT_EQ(EvalRepr("'a'+1"), "ERR TypeError");
   EXPECT_EQ(EvalRepr("-'a'"), "ERR TypeError");
@@ -498,6 +498,104 @@ TEST(PyExprEvaluate, ComprehensionLimits) {
   EXPECT_EQ(EvalRepr("list(map(lambda v: v, range(101)))", few_steps), "ERR LimitError");
   few_steps.max_steps = 1000;
   EXPECT_EQ(EvalRepr("[[j for j in range(100)] for i in range(100)]", few_steps), "ERR LimitError");
+}
+
+TEST(PyExprEvaluate, BigInts) {
+  // expected values from Python 3.11
+  EXPECT_EQ(EvalRepr("2 ** 70"), "1180591620717411303424");
+  EXPECT_EQ(EvalRepr("2**63"), "9223372036854775808");
+  EXPECT_EQ(EvalRepr("-2**63 - 1"), "-9223372036854775809");
+  EXPECT_EQ(EvalRepr("(-2)**63"), "-9223372036854775808");
+  EXPECT_EQ(EvalRepr("9223372036854775807 + 1"), "9223372036854775808");
+  EXPECT_EQ(EvalRepr("1 << 70"), "1180591620717411303424");
+  EXPECT_EQ(EvalRepr("str(2**70)"), "'1180591620717411303424'");
+  EXPECT_EQ(EvalRepr("123456789012345678901234567890 * 987654321098765432109876543210"), "121932631137021795226185032733622923332237463801111263526900");
+  EXPECT_EQ(EvalRepr("-2**100 // 3"), "-422550200076076467165567735126");
+  EXPECT_EQ(EvalRepr("2**100 % -7"), "-5");
+  EXPECT_EQ(EvalRepr("(2**200 + 12345) % (2**70 + 1)"), "1152921504606859321");
+  EXPECT_EQ(EvalRepr("-(2**200 + 12345) // (2**70 + 1)"), "-1361129467683753853852345508222465998849");
+  EXPECT_EQ(EvalRepr("python.divmod(-2**80, 10**9)"), "(-1208925819614630, 825293824)");
+  EXPECT_EQ(EvalRepr("python.abs(-2**70)"), "1180591620717411303424");
+  EXPECT_EQ(EvalRepr("~(2**70)"), "-1180591620717411303425");
+  EXPECT_EQ(EvalRepr("2**63 // -1"), "-9223372036854775808");
+  EXPECT_EQ(EvalRepr("-9223372036854775808 // -1"), "9223372036854775808");
+  EXPECT_EQ(EvalRepr("2**70 == 2.0**70"), "True");
+  EXPECT_EQ(EvalRepr("2**70 + 1 == 2.0**70"), "False");
+  EXPECT_EQ(EvalRepr("2**70 + 1 > 2.0**70"), "True");
+  EXPECT_EQ(EvalRepr("2**1100 > 1e308"), "True");
+  EXPECT_EQ(EvalRepr("-2**1100 < -1e308"), "True");
+  EXPECT_EQ(EvalRepr("int(1e30)"), "1000000000000000019884624838656");
+  EXPECT_EQ(EvalRepr("int(-1e30)"), "-1000000000000000019884624838656");
+  EXPECT_EQ(EvalRepr("float(2**70)"), "1.1805916207174113e+21");
+  EXPECT_EQ(EvalRepr("float(2**80 + 2**27)"), "1.2089258196146292e+24");
+  EXPECT_EQ(EvalRepr("float(2**80 + 2**27 + 1)"), "1.2089258196146294e+24");
+  EXPECT_EQ(EvalRepr("2**70 / 3"), "3.935305402391371e+20");
+  EXPECT_EQ(EvalRepr("1 / 2**70"), "8.470329472543003e-22");
+  EXPECT_EQ(EvalRepr("10**400 / 10**399"), "10.0");
+  EXPECT_EQ(EvalRepr("(2**64+1) / 3"), "6.148914691236517e+18");
+  EXPECT_EQ(EvalRepr("2**70 + 0.5"), "1.1805916207174113e+21");
+  EXPECT_EQ(EvalRepr("{2**70: 1}[2.0**70]"), "1");
+  EXPECT_EQ(EvalRepr("{2**70: 'a', 2**70: 'b'}"), "{1180591620717411303424: 'b'}");
+  EXPECT_EQ(EvalRepr("int('123456789012345678901234567890')"), "123456789012345678901234567890");
+  EXPECT_EQ(EvalRepr("int('-123456789012345678901234567890')"), "-123456789012345678901234567890");
+  EXPECT_EQ(EvalRepr("int('f' * 30, 16)"), "1329227995784915872903807060280344575");
+  EXPECT_EQ(EvalRepr("math.factorial(30)"), "265252859812191058636308480000000");
+  EXPECT_EQ(EvalRepr("math.comb(100, 50)"), "100891344545564193334812497256");
+  EXPECT_EQ(EvalRepr("math.perm(30, 20)"), "73096577329197271449600000");
+  EXPECT_EQ(EvalRepr("math.perm(2**70, 2)"), "1393796574908163946344801800419805182820352");
+  EXPECT_EQ(EvalRepr("math.gcd(2**100 * 3, -(2**70) * 9, 6)"), "6");
+  EXPECT_EQ(EvalRepr("math.lcm(2**70, 3**40)"), "14353237968448109868972222216943775514624");
+  EXPECT_EQ(EvalRepr("math.isqrt(10**50 - 1)"), "9999999999999999999999999");
+  EXPECT_EQ(EvalRepr("math.isqrt(2**127)"), "13043817825332782212");
+  EXPECT_EQ(EvalRepr("round(2**70 + 5, -1)"), "1180591620717411303430");
+  EXPECT_EQ(EvalRepr("round(2**70 + 15, -1)"), "1180591620717411303440");
+  EXPECT_EQ(EvalRepr("round(123456789012345678901250000000, -23)"), "123456800000000000000000000000");
+  EXPECT_EQ(EvalRepr("round(1e30)"), "1000000000000000019884624838656");
+  EXPECT_EQ(EvalRepr("-2**70 & 0xffff"), "0");
+  EXPECT_EQ(EvalRepr("-2**70 | 5"), "-1180591620717411303419");
+  EXPECT_EQ(EvalRepr("(2**70 - 1) & -2**68"), "885443715538058477568");
+  EXPECT_EQ(EvalRepr("2**70 ^ 2**69"), "1770887431076116955136");
+  EXPECT_EQ(EvalRepr("-(2**70 + 1) >> 3"), "-147573952589676412929");
+  EXPECT_EQ(EvalRepr("-2**70 >> 100"), "-1");
+  EXPECT_EQ(EvalRepr("-1 << 100"), "-1267650600228229401496703205376");
+  EXPECT_EQ(EvalRepr("'%d' % 2**70"), "'1180591620717411303424'");
+  EXPECT_EQ(EvalRepr("'{:#X}'.format(-2**70)"), "'-0X400000000000000000'");
+  EXPECT_EQ(EvalRepr("'{:,}'.format(2**70)"), "'1,180,591,620,717,411,303,424'");
+  EXPECT_EQ(EvalRepr("(-3) ** 41"), "-36472996377170786403");
+  EXPECT_EQ(EvalRepr("(2**70) ** -1"), "8.470329472543003e-22");
+  EXPECT_EQ(EvalRepr("(-1) ** (2**70 + 1)"), "-1");
+  EXPECT_EQ(EvalRepr("2**70 - 2**70"), "0");
+  EXPECT_EQ(EvalRepr("sorted([2**70, -2**70, 0, 2.0**71])"), "[-1180591620717411303424, 0, 1180591620717411303424, 2.3611832414348226e+21]");
+  EXPECT_EQ(EvalRepr("0x10000000000000000"), "18446744073709551616");
+  EXPECT_EQ(EvalRepr("math.floor(1e20)"), "100000000000000000000");
+  EXPECT_EQ(EvalRepr("2**70 // 1.5"), "7.870610804782742e+20");
+  EXPECT_EQ(EvalRepr("int('1' * 5000)"), "ERR ValueError");
+  // a Value holds a small int inline and demotes results that fit
+  EvalTestScope scope;
+  auto v = Evaluate("2**70 - 2**70 + 7", scope);
+  ASSERT_TRUE(v.ok());
+  EXPECT_FALSE(v->IsBigInt());
+  EXPECT_EQ(v->AsInt(), 7);
+  v = Evaluate("-2**70", scope);
+  ASSERT_TRUE(v.ok());
+  EXPECT_TRUE(v->IsBigInt());
+  EXPECT_EQ(v->AsInt(), std::numeric_limits<int64_t>::min());  // saturated
+  EXPECT_EQ(Str(*v), "-1180591620717411303424");
+}
+
+TEST(PyExprEvaluate, BigIntLimits) {
+  EXPECT_EQ(EvalRepr("10**10**6"), "ERR LimitError");
+  EXPECT_EQ(EvalRepr("2**(2**70)"), "ERR LimitError");
+  EXPECT_EQ(EvalRepr("math.factorial(10**6)"), "ERR LimitError");
+  EXPECT_EQ(EvalRepr("1 << 10**6"), "ERR LimitError");
+  EXPECT_EQ(EvalRepr("10**5000 * 10**5050"), "ERR LimitError");
+  EXPECT_EQ(EvalRepr("math.comb(60000, 30000)"), "ERR LimitError");
+  EXPECT_EQ(EvalRepr("len(str(2**33000))"), "9934");
+  EXPECT_EQ(EvalRepr("[1] * 2**70"), "ERR LimitError");
+  Limits small;
+  small.max_int_digits = 30;
+  EXPECT_EQ(EvalRepr("10**25", small), "10000000000000000000000000");
+  EXPECT_EQ(EvalRepr("10**60", small), "ERR LimitError");
 }
 
 TEST(PyExprEvaluate, DepthLimit) {
