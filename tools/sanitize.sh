@@ -3,7 +3,7 @@
 # Sanitizer, then each libFuzzer harness for a fixed time (issue 16).
 #
 #   tools/sanitize.sh [SECONDS]   SECONDS per fuzzer (default 60)
-#   FUZZERS="urdf sdf"            only these fuzzers (default: all five)
+#   FUZZERS="urdf sdf"            only these fuzzers (default: all six)
 #   FUZZ_ONLY=1                   skip the test suite (a longer hunt)
 #
 # Builds with clang in BUILD_DIR (default: build-sanitize), every library
@@ -11,8 +11,10 @@
 # diagnostics, golden, command-line and convert tests there (the oracle and
 # corpus suites run in the ordinary build: under the sanitizers they would
 # only repeat the same code paths, slower); then runs fuzz_urdf, fuzz_sdf,
-# fuzz_mjcf, fuzz_directives and fuzz_mesh, each seeded from the project's
-# models and diagnostics files and, when present, the shared corpus. Any
+# fuzz_mjcf, fuzz_directives, fuzz_mesh and fuzz_xacro, each seeded from the
+# project's models and diagnostics files (fuzz_xacro: from its seeds in
+# tests/fuzz/seeds/xacro and the xacro test cases, with the token dictionary
+# tests/fuzz/xacro.dict) and, when present, the shared corpus. Any
 # sanitizer report, crash, leak or timeout fails the script; a fuzzer's
 # failing input is kept as BUILD_DIR/fuzz/<fuzzer>/crash-* for the
 # regression suite (tests/fuzz/regressions/).
@@ -45,7 +47,7 @@ cmake -S "$root" -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Debug \
   -DMDLC_BUILD_TESTS=ON -DMDLC_BUILD_FUZZERS=ON \
   -DMDLC_BUILD_BENCHMARKS=OFF -DMDLC_BUILD_PYTHON=OFF >/dev/null
 targets=(mdlc mdlc_unit_tests mdlc_cli_test mdlc_convert_test
-         fuzz_urdf fuzz_sdf fuzz_mjcf fuzz_directives fuzz_mesh)
+         fuzz_urdf fuzz_sdf fuzz_mjcf fuzz_directives fuzz_mesh fuzz_xacro)
 cmake --build "$build_dir" -j "$jobs" --target "${targets[@]}"
 
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
@@ -64,7 +66,9 @@ fi
 echo "==> fuzzing, ${seconds}s per harness"
 fuzz_root="$build_dir/fuzz"
 status=0
-for fuzzer in ${FUZZERS:-urdf sdf mjcf directives mesh}; do
+for fuzzer in ${FUZZERS:-urdf sdf mjcf directives mesh xacro}; do
+  options=()
+  names=(-name '*.urdf' -o -name '*.sdf' -o -name '*.xml' -o -name '*.yaml')
   case $fuzzer in
     urdf) seeds=("$root/tests/models/urdf" "$root/tests/diag/urdf" "$root/examples/urdf")
           format=urdf ;;
@@ -75,6 +79,8 @@ for fuzzer in ${FUZZERS:-urdf sdf mjcf directives mesh}; do
     directives) seeds=("$root/tests/models/dmd" "$root/tests/diag/dmd" "$root/examples/directives")
                 format=dmd ;;
     mesh) seeds=() format=mesh ;;
+    xacro) seeds=("$root/tests/fuzz/seeds/xacro" "$root/tests/xacro/cases")
+           format=xacro names=(-name '*.xacro') options=(-dict="$root/tests/fuzz/xacro.dict") ;;
   esac
   work="$fuzz_root/$fuzzer"
   rm -rf "$work/corpus"
@@ -92,14 +98,20 @@ for fuzzer in ${FUZZERS:-urdf sdf mjcf directives mesh}; do
     done
   else
     for dir in "${seeds[@]}"; do
-      [ -d "$dir" ] && find "$dir" -type f \( -name '*.urdf' -o -name '*.sdf' -o -name '*.xml' \
-        -o -name '*.yaml' \) -size -64k -exec cp -t "$work/corpus" {} + 2>/dev/null || true
+      [ -d "$dir" ] && find "$dir" -type f \( "${names[@]}" \) -size -64k \
+        -exec cp -t "$work/corpus" {} + 2>/dev/null || true
     done
   fi
   # the shared corpus, when present: real models of the fuzzer's format (the
   # manifest's format column) and real meshes, each small enough for
-  # -max_len
-  if [ -f "$shared/corpus/manifest.tsv" ]; then
+  # -max_len; for fuzz_xacro, the real robots' xacro files
+  if [ "$fuzzer" = xacro ]; then
+    if [ -d "$shared/corpus/xacro" ]; then
+      while IFS= read -r -d '' f; do
+        cp "$f" "$work/corpus/corpus_$(printf '%s' "${f#"$shared/corpus/xacro/"}" | tr '/' '_')"
+      done < <(find "$shared/corpus/xacro" -type f -name '*.xacro' -size -64k -print0)
+    fi
+  elif [ -f "$shared/corpus/manifest.tsv" ]; then
     while IFS= read -r path; do
       f="$shared/corpus/$path"
       [ -f "$f" ] && [ "$(stat -L -c %s "$f")" -lt 65536 ] || continue
@@ -120,13 +132,14 @@ for fuzzer in ${FUZZERS:-urdf sdf mjcf directives mesh}; do
   echo "--> fuzz_$fuzzer: $(ls "$work/corpus" | wc -l) seeds"
   if ! (cd "$work" && "$build_dir/tests/fuzz/fuzz_$fuzzer" -max_total_time="$seconds" \
           -timeout=20 -rss_limit_mb=2560 -max_len=65536 -print_final_stats=1 \
-          -artifact_prefix="$work/" corpus >"$work/log.txt" 2>&1); then
+          "${options[@]}" -artifact_prefix="$work/" corpus >"$work/log.txt" 2>&1); then
     echo "fuzz_$fuzzer FAILED; its input and log:" >&2
     ls "$work"/crash-* "$work"/leak-* "$work"/timeout-* "$work"/oom-* 2>/dev/null >&2 || true
     tail -40 "$work/log.txt" >&2
     status=1
   else
-    grep -E "^stat::number_of_executed_units|^stat::peak_rss_mb" "$work/log.txt" |
+    grep -E "^stat::number_of_executed_units|^stat::average_exec_per_sec|^stat::peak_rss_mb" \
+      "$work/log.txt" |
       sed "s/^/    fuzz_$fuzzer /"
   fi
 done
