@@ -46,7 +46,7 @@ struct Limits {
   uint64_t macro_depth = 200;
   /// Nodes (elements, text, comments) one xacro expansion may make: a macro
   /// that calls itself twice per level doubles its output at every level.
-  uint64_t expansion_nodes = 20'000'000;
+  uint64_t expansion_nodes = 2'000'000;
 };
 
 /// One limit's name (as `--limit` spells it), what it bounds, and its field.

@@ -52,8 +52,8 @@ Expander::Expander(const XacroOptions& options, SourceManager& sources, Diagnost
   for (const auto& [name, value] : options.args) args_[name] = value;
 }
 
-void Expander::Fail(Loc at, std::string message) {
-  diags_.Report(DiagKind::XacroError, at, std::move(message));
+void Expander::Fail(Loc at, std::string message, DiagKind kind) {
+  diags_.Report(kind, at, std::move(message));
   throw ExpansionFailed{};
 }
 
@@ -69,9 +69,11 @@ void Expander::WarnIfGlobal(std::string_view name, Loc at) {
 
 void Expander::CountNode() {
   if (expansion_->tree.size() > sources_.limits().expansion_nodes) {
-    Fail(here_, fmt::format("the expansion makes more than {} nodes, the expansion-nodes limit "
-                            "(raise it with --limit expansion-nodes=N)",
-                            sources_.limits().expansion_nodes));
+    Fail(here_,
+         fmt::format("the expansion makes more than {} nodes, the expansion-nodes limit "
+                     "(raise it with --limit expansion-nodes=N)",
+                     sources_.limits().expansion_nodes),
+         DiagKind::LimitExceeded);
   }
 }
 
@@ -476,9 +478,11 @@ bool Expander::CallMacro(Node* node, MacroTable& macros, SymbolTable& symbols) {
 void Expander::ExpandMacro(Node* node, const Macro& macro, MacroTable& macros,
                            SymbolTable& symbols) {
   if (macro_stack_.size() >= sources_.limits().macro_depth) {
-    Fail(node->loc, fmt::format("macro '{}' is called {} macro calls deep, over the macro-depth "
-                                "limit (raise it with --limit macro-depth=N)",
-                                macro.name, macro_stack_.size() + 1));
+    Fail(node->loc,
+         fmt::format("macro '{}' is called {} macro calls deep, over the macro-depth limit of {} "
+                     "(raise it with --limit macro-depth=N)",
+                     macro.name, macro_stack_.size() + 1, sources_.limits().macro_depth),
+         DiagKind::LimitExceeded);
   }
   macro_stack_.push_back(&macro);
   const Loc call_at = node->loc;

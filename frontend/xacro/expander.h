@@ -40,7 +40,7 @@ class Expander {
   pyexpr::Result<std::optional<pyexpr::Value>> LookupName(std::string_view name,
                                                           SymbolTable& scope);
 
-  [[noreturn]] void Fail(Loc at, std::string message);
+  [[noreturn]] void Fail(Loc at, std::string message, DiagKind kind = DiagKind::XacroError);
   void Warn(Loc at, std::string message);
 
  private:

@@ -11,9 +11,19 @@
 namespace mdlc::xacro {
 namespace {
 
+// How deep xacro source may nest elements. Expansion walks the tree
+// recursively, as xacro does (which stops near this depth at Python's
+// recursion limit); a bound keeps the walk's stack small.
+constexpr int kMaxSourceDepth = 1000;
+
 // Copies a parsed element, its attributes and every child node in document
-// order into the tree.
-Node* CopyElement(Tree& tree, const xml::XmlElement& element) {
+// order into the tree; null when the element nests deeper than
+// kMaxSourceDepth, at `*too_deep`.
+Node* CopyElement(Tree& tree, const xml::XmlElement& element, int depth, Loc* too_deep) {
+  if (depth > kMaxSourceDepth) {
+    *too_deep = element.GetLoc();
+    return nullptr;
+  }
   Node* node = tree.Make(Node::Kind::kElement);
   node->name = std::string(element.Name());
   node->loc = element.GetLoc();
@@ -22,7 +32,10 @@ Node* CopyElement(Tree& tree, const xml::XmlElement& element) {
     node->attributes.push_back(Attribute{std::string(name), std::string(a.value), a.loc});
   });
   element.ForEachNode(
-      [&](const xml::XmlElement& child) { tree.AppendChild(node, CopyElement(tree, child)); },
+      [&](const xml::XmlElement& child) {
+        if (too_deep->valid()) return;
+        if (Node* copy = CopyElement(tree, child, depth + 1, too_deep)) tree.AppendChild(node, copy);
+      },
       [&](const xml::XmlContent& content) {
         Node::Kind kind = content.kind == xml::detail::ContentKind::kComment ? Node::Kind::kComment
                           : content.kind == xml::detail::ContentKind::kCdata ? Node::Kind::kCdata
@@ -102,7 +115,13 @@ Node* Expander::ReadBuffer(FileId file) {
   options.keep_namespace_declarations = true;
   std::unique_ptr<xml::XmlDocument> doc = xml::XmlDocument::Parse(file, sources_, diags_, options);
   if (!doc) throw ExpansionFailed{};
-  Node* root = CopyElement(expansion_->tree, doc->Root());
+  Loc too_deep;
+  Node* root = CopyElement(expansion_->tree, doc->Root(), 1, &too_deep);
+  if (too_deep.valid()) {
+    Fail(too_deep,
+         fmt::format("xacro source may nest elements at most {} deep", kMaxSourceDepth),
+         DiagKind::LimitExceeded);
+  }
   if (file == expansion_->file) {
     for (const auto& [text, after_root] : doc->outside_comments()) {
       (after_root ? expansion_->comments_after_root : expansion_->comments_before_root)
