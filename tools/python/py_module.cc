@@ -1,4 +1,5 @@
-// py_module.cc - the extension module mdlc._mdlc: compile() and Diagnostic.
+// py_module.cc - the extension module mdlc._mdlc: compile(), expand_xacro()
+// and Diagnostic.
 // The package mdlc (mdlc/__init__.py) wraps it with the Python-facing API:
 // argument handling and the CompileError exception.
 #include <pybind11/eigen.h>
@@ -69,6 +70,41 @@ py::tuple CompileForPython(const std::vector<std::pair<std::string, std::optiona
   return py::make_tuple(MakeModel(result, diagnostics), diagnostics);
 }
 
+// Expands a xacro file; returns (xml or None, [Diagnostic, ...]), the XML
+// set when the expansion had no error. The GIL is released meanwhile.
+py::tuple ExpandXacroForPython(const std::string& path, Options options) {
+  std::vector<PyDiagnostic> collected;
+  options.on_diagnostic = [&collected](const Diagnostic& d, const SourceManager& sources) {
+    collected.push_back(MakeDiagnostic(d, sources));
+  };
+  XacroExpansion expansion;
+  {
+    py::gil_scoped_release release;
+    expansion = ExpandXacro(path, options);
+  }
+  py::list diagnostics;
+  for (PyDiagnostic& d : collected) diagnostics.append(std::move(d));
+  if (!expansion.ok()) return py::make_tuple(py::none(), diagnostics);
+  return py::make_tuple(*expansion.xml, diagnostics);
+}
+
+// The options compile() and expand_xacro() share: packages, xacro
+// arguments, diagnostics and limits.
+void SetCommonOptions(Options& options,
+                      const std::vector<std::pair<std::string, std::string>>& packages,
+                      const std::vector<std::string>& package_paths, bool use_ros_package_path,
+                      const std::vector<std::pair<std::string, std::string>>& xacro_args,
+                      bool strict, const std::vector<std::string>& limits) {
+  for (const std::string& setting : limits) {
+    if (auto problem = SetLimit(options.limits, setting)) throw py::value_error(*problem);
+  }
+  options.packages = packages;
+  options.package_paths = package_paths;
+  options.use_ros_package_path = use_ros_package_path;
+  options.xacro_args = xacro_args;
+  options.diagnostics.warnings_as_errors = strict;
+}
+
 }  // namespace
 }  // namespace mdlc::python
 
@@ -106,7 +142,8 @@ PYBIND11_MODULE(_mdlc, m) {
          const std::vector<std::string>& disabled_warnings,
          const std::vector<std::string>& error_warnings, std::optional<std::string> model_name,
          bool auto_rename, const std::vector<std::pair<std::string, double>>& joint_positions,
-         const std::vector<std::string>& limits, const std::string& mesh_reader) {
+         const std::vector<std::string>& limits, const std::string& mesh_reader,
+         const std::vector<std::pair<std::string, std::string>>& xacro_args) {
         Options options;
         if (mesh_reader == "in-process") {
           options.mesh_reader = MeshReader::InProcess;
@@ -114,13 +151,8 @@ PYBIND11_MODULE(_mdlc, m) {
           throw py::value_error("unknown mesh_reader '" + mesh_reader +
                                 "'; expected 'process' or 'in-process'");
         }
-        for (const std::string& setting : limits) {
-          if (auto problem = SetLimit(options.limits, setting)) throw py::value_error(*problem);
-        }
-        options.packages = packages;
-        options.package_paths = package_paths;
-        options.use_ros_package_path = use_ros_package_path;
-        options.diagnostics.warnings_as_errors = strict;
+        SetCommonOptions(options, packages, package_paths, use_ros_package_path, xacro_args,
+                         strict, limits);
         options.diagnostics.disabled_groups.insert(disabled_warnings.begin(),
                                                    disabled_warnings.end());
         options.diagnostics.error_groups.insert(error_warnings.begin(), error_warnings.end());
@@ -132,7 +164,22 @@ PYBIND11_MODULE(_mdlc, m) {
       py::arg("inputs"), py::arg("format"), py::arg("packages"), py::arg("package_paths"),
       py::arg("use_ros_package_path"), py::arg("strict"), py::arg("disabled_warnings"),
       py::arg("error_warnings"), py::arg("model_name"), py::arg("auto_rename"),
-      py::arg("joint_positions"), py::arg("limits"), py::arg("mesh_reader"));
+      py::arg("joint_positions"), py::arg("limits"), py::arg("mesh_reader"),
+      py::arg("xacro_args"));
+
+  m.def(
+      "_expand_xacro",
+      [](const std::string& path, const std::vector<std::pair<std::string, std::string>>& args,
+         const std::vector<std::pair<std::string, std::string>>& packages,
+         const std::vector<std::string>& package_paths, bool use_ros_package_path, bool strict,
+         const std::vector<std::string>& limits) {
+        Options options;
+        SetCommonOptions(options, packages, package_paths, use_ros_package_path, args, strict,
+                         limits);
+        return ExpandXacroForPython(path, std::move(options));
+      },
+      py::arg("path"), py::arg("args"), py::arg("packages"), py::arg("package_paths"),
+      py::arg("use_ros_package_path"), py::arg("strict"), py::arg("limits"));
 
   m.def(
       "_resolve_uri",

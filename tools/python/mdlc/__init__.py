@@ -2,6 +2,8 @@
 
     import mdlc
     model = mdlc.compile("robot.urdf")
+    arm = mdlc.compile("arm.urdf.xacro", xacro_args={"prefix": "left_"})
+    xml = mdlc.expand_xacro("arm.urdf.xacro", {"prefix": "left_"})  # the URDF text
     M = model.mass_matrix()                 # numpy, nv x nv, at the default q
     X_WB = model.body_poses(q)              # one mdlc.Pose per body
     for body in model.bodies: print(body.scoped_name, body.mass, body.com)
@@ -17,14 +19,16 @@ from ._mdlc import (Actuator, Body, Camera, Constraint, Diagnostic, Frame, Geome
                     Model, Pose)
 
 __version__ = _mdlc.__version__
-__all__ = ["compile", "resolve_uri", "CompileError", "Model", "Body", "Joint", "Frame", "Geometry",
-           "Actuator", "Constraint", "Camera", "Pose", "Diagnostic"]
+__all__ = ["compile", "expand_xacro", "resolve_uri", "CompileError", "Model", "Body", "Joint",
+           "Frame", "Geometry", "Actuator", "Constraint", "Camera", "Pose", "Diagnostic"]
 
 
 class CompileError(Exception):
-    """The model did not compile. `diagnostics` holds every diagnostic reported
-    (errors, and the warnings and notes around them), each with file, line,
-    column, severity, group and message."""
+    """The model did not compile (or a xacro file did not expand).
+    `diagnostics` holds every diagnostic reported (errors, and the warnings and
+    notes around them), each with file, line, column, severity, group and
+    message; the exception's message is the errors as the command line prints
+    them (file:line:column: error: ...)."""
 
     def __init__(self, diagnostics):
         self.diagnostics = list(diagnostics)
@@ -41,7 +45,7 @@ def _looks_like_text(source):
 def compile(source, format=None, *, name=None, packages=None, package_paths=(),
             use_ros_package_path=False, strict=False, disabled_warnings=(),
             error_warnings=(), model_name=None, auto_rename=False, joint_positions=None,
-            limits=None, mesh_reader="process"):
+            limits=None, mesh_reader="process", xacro_args=None):
     """Compiles one model, or several into one plant, and returns a Model.
 
     source: a path (str or os.PathLike), model text (str with markup), or a
@@ -64,6 +68,11 @@ def compile(source, format=None, *, name=None, packages=None, package_paths=(),
     mesh_reader: 'process' (read each mesh file in a child process, so that
         a crash of the mesh importer is a diagnostic, not the interpreter's
         crash) or 'in-process'; as --mesh-reader.
+    xacro_args: {name: value} (str to str), the NAME:=VALUE arguments of a
+        xacro input (a path, or text whose name= ends in .xacro, e.g.
+        robot.urdf.xacro), which $(arg NAME) reads; they win over the
+        defaults of <xacro:arg>. A xacro input is expanded before it is read,
+        and its format is its root element's (<robot>, <sdf> or <mujoco>).
 
     Raises CompileError (with every diagnostic) when the model has errors.
     """
@@ -82,10 +91,38 @@ def compile(source, format=None, *, name=None, packages=None, package_paths=(),
         inputs, format, sorted((packages or {}).items()), [os.fspath(p) for p in package_paths],
         use_ros_package_path, strict, list(disabled_warnings), list(error_warnings), model_name,
         auto_rename, list((joint_positions or {}).items()),
-        [f"{k.replace('_', '-')}={v}" for k, v in (limits or {}).items()], mesh_reader)
+        _limit_settings(limits), mesh_reader, _xacro_args("compile", xacro_args))
     if model is None:
         raise CompileError(diagnostics)
     return model
+
+
+def expand_xacro(path, args=None, *, packages=None, package_paths=(),
+                 use_ros_package_path=False, strict=False, limits=None):
+    """Expands a xacro file and returns the XML text, as `mdlc xacro` (and
+    ROS's xacro command) writes it; nothing is compiled.
+
+    path: the xacro file (str or os.PathLike); the banner comment of the
+        output names it as given.
+    args: {name: value} (str to str), xacro's NAME:=VALUE arguments, which
+        $(arg NAME) reads; they win over the defaults of <xacro:arg>.
+    packages, package_paths, use_ros_package_path: where $(find PKG) looks,
+        as for compile().
+    strict: warnings are errors. limits: as for compile() (macro_depth and
+        expansion_nodes bound the expansion).
+
+    Raises CompileError when the file does not expand: its message gives each
+    error as file:line:column, with the macro calls and includes that led
+    there, and its `diagnostics` every diagnostic. Warnings of an expansion
+    that succeeds are not returned (strict=True makes them errors).
+    """
+    xml, diagnostics = _mdlc._expand_xacro(
+        os.fspath(path), _xacro_args("expand_xacro", args), sorted((packages or {}).items()),
+        [os.fspath(p) for p in package_paths], use_ros_package_path, strict,
+        _limit_settings(limits))
+    if xml is None:
+        raise CompileError(diagnostics)
+    return xml
 
 
 def resolve_uri(uri, *, packages=None, package_paths=(), use_ros_package_path=False,
@@ -104,6 +141,21 @@ def resolve_uri(uri, *, packages=None, package_paths=(), use_ros_package_path=Fa
     if path is None:
         raise FileNotFoundError("".join(messages) or f"cannot resolve '{uri}'")
     return path
+
+
+def _limit_settings(limits):
+    # {"file_size": "64M"} -> ["file-size=64M"], as --limit spells them
+    return [f"{k.replace('_', '-')}={v}" for k, v in (limits or {}).items()]
+
+
+def _xacro_args(function, args):
+    # {name: value} -> [(name, value)], checked: xacro's arguments are text
+    pairs = list((args or {}).items())
+    for name, value in pairs:
+        if not isinstance(name, str) or not isinstance(value, str):
+            raise TypeError(f"mdlc.{function}: xacro arguments map str to str, got "
+                            f"{type(name).__name__} -> {type(value).__name__} for {name!r}")
+    return pairs
 
 
 _EXTENSIONS = {"urdf": ".urdf", "sdf": ".sdf", "sdformat": ".sdf", "mjcf": ".xml",
