@@ -100,6 +100,7 @@ class Expander {
   std::unique_ptr<pyexpr::NameTable> xacro_namespace_;
   pyexpr::Value xacro_namespace_value_;
   std::map<std::string, bool, std::less<>> dependency_seen_;
+  std::map<std::string, pyexpr::Value, std::less<>> yaml_values_;  // by absolute path
 };
 
 }  // namespace mdlc::xacro

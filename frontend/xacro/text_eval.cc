@@ -360,6 +360,11 @@ std::string Expander::EvalSubstitutionExpression(std::string_view expression, Lo
 
 pyexpr::Result<pyexpr::Value> Expander::LoadYaml(const std::string& filename) {
   const std::string path = AbsoluteFilename(filename);
+  // a model loads the same file in every call of a macro: read it once
+  // (values are never changed in place, so one may be shared)
+  if (auto cached = yaml_values_.find(path); cached != yaml_values_.end()) {
+    return cached->second;
+  }
   LoadError error;
   std::optional<FileId> file = sources_.LoadFile(path, here_, &error);
   if (!file) {
@@ -367,7 +372,9 @@ pyexpr::Result<pyexpr::Value> Expander::LoadYaml(const std::string& filename) {
                          fmt::format("xacro.load_yaml cannot read '{}': {}", path, error.message)};
   }
   if (dependency_seen_.try_emplace(path, true).second) expansion_->dependencies.push_back(path);
-  return pyexpr::LoadYaml(sources_.Contents(*file));
+  pyexpr::Result<pyexpr::Value> value = pyexpr::LoadYaml(sources_.Contents(*file));
+  if (value.ok()) yaml_values_.emplace(path, value.value());
+  return value;
 }
 
 const pyexpr::NameTable& Expander::XacroNamespace() {

@@ -46,9 +46,12 @@ Node* Node::NextElementSibling() const {
 }
 
 Node* Tree::Make(Node::Kind kind) {
-  nodes_.push_back(std::make_unique<Node>());
-  nodes_.back()->kind = kind;
-  return nodes_.back().get();
+  const size_t in_block = size_ % kBlockNodes;
+  if (in_block == 0) blocks_.push_back(std::make_unique<Node[]>(kBlockNodes));
+  Node* node = &blocks_.back()[in_block];
+  ++size_;
+  node->kind = kind;
+  return node;
 }
 
 void Tree::AppendChild(Node* parent, Node* child) {
