@@ -101,6 +101,7 @@ class Expander {
   pyexpr::Value xacro_namespace_value_;
   std::map<std::string, bool, std::less<>> dependency_seen_;
   std::map<std::string, pyexpr::Value, std::less<>> yaml_values_;  // by absolute path
+  std::map<std::string, bool, std::less<>> deprecated_warned_;   // bare names warned of
 };
 
 }  // namespace mdlc::xacro

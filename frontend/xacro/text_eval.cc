@@ -155,11 +155,19 @@ pyexpr::Result<std::optional<pyexpr::Value>> Expander::LookupName(std::string_vi
   auto [symbol, owner] = scope.Find(name);
   if (!symbol) {
     if (name == "xacro") return std::optional<pyexpr::Value>(xacro_namespace_value_);
-    // the xacro functions are also globals (deprecated by xacro, still read)
-    if (name == "load_yaml" || name == "abs_filename" || name == "dotify") {
-      XacroNamespace();
-      if (const pyexpr::Value* v = xacro_namespace_->Find(name)) {
-        return std::optional<pyexpr::Value>(*v);
+    // names xacro still reads bare but deprecated: its own functions, and
+    // two Python builtins it moved to python.
+    if (name == "load_yaml" || name == "abs_filename" || name == "dotify" ||
+        name == "sorted" || name == "range") {
+      const bool xacro_function = name[0] != 's' && name[0] != 'r';
+      if (deprecated_warned_.try_emplace(std::string(name), true).second) {
+        Warn(here_, fmt::format("'{}' alone is deprecated; use {}.{}", name,
+                                xacro_function ? "xacro" : "python", name));
+      }
+      if (xacro_function) {
+        if (const pyexpr::Value* v = XacroNamespace().Find(name)) {
+          return std::optional<pyexpr::Value>(*v);
+        }
       }
     }
     return std::optional<pyexpr::Value>();

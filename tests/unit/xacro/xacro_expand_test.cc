@@ -292,6 +292,46 @@ TEST_F(XacroFiles, FatalIsALocatedErrorAndWarningALocatedWarning) {
   EXPECT_EQ(error->message, "stop here");
 }
 
+// Deliberate difference: xacro prints xacro.error's message and goes on;
+// mdlc reports a located error, so the expansion goes on (later errors are
+// reported too) but the compile fails.
+TEST_F(XacroFiles, ErrorIsALocatedErrorAndTheExpansionGoesOn) {
+  Write("r.urdf.xacro", R"X(<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <a v="${xacro.error('first')}"/>
+  <b v="${xacro.error('second')}"/>
+</robot>
+)X");
+  auto expansion = Expand("r.urdf.xacro");
+  ASSERT_TRUE(expansion);
+  ASSERT_EQ(diags_.error_count(), 2u) << Printed();
+  EXPECT_EQ(diags_.diagnostics()[0].message, "first");
+  EXPECT_EQ(diags_.diagnostics()[0].loc.line, 2u);
+  EXPECT_EQ(diags_.diagnostics()[1].loc.line, 3u);
+}
+
+// xacro's deprecated bare names still work, with a warning naming the new one.
+TEST_F(XacroFiles, DeprecatedBareNamesWarnOncePerName) {
+  Write("units.yaml", "a: 1\n");
+  Write("r.urdf.xacro", R"X(<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <a v="${sorted([2, 1])}" w="${sorted([3])}" y="${load_yaml('units.yaml')['a']}"/>
+</robot>
+)X");
+  auto expansion = Expand("r.urdf.xacro");
+  ASSERT_TRUE(expansion) << Printed();
+  Node* a = expansion->root->FirstElementChild();
+  EXPECT_EQ(a->FindAttribute("v")->value, "[1, 2]");
+  EXPECT_EQ(a->FindAttribute("y")->value, "1");
+  size_t warnings = 0;
+  for (const Diagnostic& d : diags_.diagnostics()) {
+    if (d.kind != DiagKind::XacroWarning) continue;
+    ++warnings;
+    EXPECT_EQ(d.loc.line, 2u);
+  }
+  EXPECT_EQ(warnings, 2u) << Printed();
+  EXPECT_NE(Printed().find("use python.sorted"), std::string::npos) << Printed();
+  EXPECT_NE(Printed().find("use xacro.load_yaml"), std::string::npos) << Printed();
+}
+
 // Deliberate difference: ros/xacro 2 cannot say $(dirname) (it has no file
 // name to give) and fails; mdlc gives the folder of the file being read, as
 // ROS 1's xacro does. An included file gets its own folder.
