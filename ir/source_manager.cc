@@ -20,6 +20,9 @@ struct SourceManager::Buffer {
   FileId spelled_in;
   Loc expanded_at;
   std::string expansion_note;
+  // an inclusion (AddInclusion): the spelled file's text with its own
+  // included_from and include_depth
+  bool is_inclusion = false;
   // offsets of the first byte of each line; built on first use
   mutable std::vector<size_t> line_starts;
   // the line of the last lookup: frontends ask in nearly increasing order
@@ -126,29 +129,62 @@ FileId SourceManager::AddExpansion(FileId spelled_in, Loc expanded_at, std::stri
   return FileId{static_cast<uint32_t>(buffers_.size() - 1)};
 }
 
+std::optional<FileId> SourceManager::AddInclusion(FileId spelled_in, Loc included_from,
+                                                  LoadError* error) {
+  const uint32_t depth = included_from.valid() ? IncludeDepth(included_from.file) + 1 : 0;
+  if (depth > limits_.include_depth) {
+    if (error) {
+      *error = {true, fmt::format("'{}' would be included {} files deep, over the include-depth "
+                                  "limit of {} (raise it with --limit include-depth=N)",
+                                  Path(spelled_in), depth, limits_.include_depth)};
+    }
+    return std::nullopt;
+  }
+  auto buffer = std::make_unique<Buffer>();
+  buffer->spelled_in = SpellingFile(spelled_in);
+  buffer->included_from = included_from;
+  buffer->include_depth = depth;
+  buffer->is_inclusion = true;
+  buffers_.push_back(std::move(buffer));
+  return FileId{static_cast<uint32_t>(buffers_.size() - 1)};
+}
+
 const SourceManager::Buffer& SourceManager::Entry(FileId id) const {
   return *buffers_.at(id.value);
 }
 
 const SourceManager::Buffer& SourceManager::Get(FileId id) const {
-  const Buffer& entry = Entry(id);
-  return entry.spelled_in.valid() ? Entry(entry.spelled_in) : entry;
+  const Buffer* entry = &Entry(id);
+  while (entry->spelled_in.valid()) entry = &Entry(entry->spelled_in);
+  return *entry;
 }
 
-bool SourceManager::IsExpansion(FileId id) const { return Entry(id).spelled_in.valid(); }
+// The entry that says where `id`'s text is included from: an inclusion, or
+// the file an expansion's text is in.
+const SourceManager::Buffer& SourceManager::Placement(FileId id) const {
+  const Buffer* entry = &Entry(id);
+  while (!entry->is_inclusion && entry->spelled_in.valid()) entry = &Entry(entry->spelled_in);
+  return *entry;
+}
+
+bool SourceManager::IsExpansion(FileId id) const {
+  const Buffer& entry = Entry(id);
+  return entry.spelled_in.valid() && !entry.is_inclusion;
+}
 Loc SourceManager::ExpandedAt(FileId id) const { return Entry(id).expanded_at; }
 const std::string& SourceManager::ExpansionNote(FileId id) const {
   return Entry(id).expansion_note;
 }
 FileId SourceManager::SpellingFile(FileId id) const {
   const Buffer& entry = Entry(id);
-  return entry.spelled_in.valid() ? entry.spelled_in : id;
+  return entry.spelled_in.valid() && !entry.is_inclusion ? entry.spelled_in : id;
 }
 
 std::string_view SourceManager::Contents(FileId id) const { return Get(id).contents; }
 const std::string& SourceManager::Path(FileId id) const { return Get(id).path; }
-Loc SourceManager::IncludedFrom(FileId id) const { return Get(id).included_from; }
-uint32_t SourceManager::IncludeDepth(FileId id) const { return Get(id).include_depth; }
+// an expansion is included where its file is; an inclusion where it says
+Loc SourceManager::IncludedFrom(FileId id) const { return Placement(id).included_from; }
+uint32_t SourceManager::IncludeDepth(FileId id) const { return Placement(id).include_depth; }
 size_t SourceManager::FileCount() const { return buffers_.size(); }
 
 Loc SourceManager::LocForOffset(FileId id, size_t offset) const {

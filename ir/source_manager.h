@@ -56,6 +56,12 @@ class SourceManager {
   /// diagnostic about expanded text can say both. Path, contents and lines
   /// are those of `spelled_in`.
   FileId AddExpansion(FileId spelled_in, Loc expanded_at, std::string note);
+  /// A file id for `spelled_in`'s text read again from another place (a
+  /// file included many times): its own "included from" place, the text,
+  /// path and lines of `spelled_in`, nothing read or counted again. Fails
+  /// like LoadFile when it would pass the include-depth limit.
+  std::optional<FileId> AddInclusion(FileId spelled_in, Loc included_from,
+                                     LoadError* error = nullptr);
   bool IsExpansion(FileId id) const;
   /// Where an expansion id's text was expanded; invalid for a file.
   Loc ExpandedAt(FileId id) const;
@@ -81,6 +87,8 @@ class SourceManager {
   const Buffer& Get(FileId id) const;
   // the entry of `id` itself
   const Buffer& Entry(FileId id) const;
+  // the entry that places `id` (see IncludedFrom)
+  const Buffer& Placement(FileId id) const;
   std::vector<std::unique_ptr<Buffer>> buffers_;
   Limits limits_;
   uint64_t loaded_bytes_ = 0;  // by LoadFile, against limits_.total_size

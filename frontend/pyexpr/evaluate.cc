@@ -809,20 +809,40 @@ Result<Value> CallLambda(const LambdaCode& code, const std::vector<std::optional
 
 }  // namespace
 
-Result<Value> Evaluate(std::string_view expression, Scope& scope, const Limits& limits) {
+struct ParsedExpression {
+  NodePtr tree;
+};
+
+Result<std::shared_ptr<const ParsedExpression>> ParseExpression(std::string_view expression,
+                                                                const Limits& limits) {
   internal::LimitsScope limits_scope(limits);
   size_t first = expression.find_first_not_of(" \t\r\n");
-  if (first == std::string_view::npos) return Error{Error::Kind::kSyntax, "empty expression", expression.size()};
+  if (first == std::string_view::npos) {
+    return Error{Error::Kind::kSyntax, "empty expression", expression.size()};
+  }
   auto tree = Parse(expression, limits.max_depth);
   if (!tree.ok()) return std::move(tree).error();
+  auto parsed = std::make_shared<ParsedExpression>();
+  parsed->tree = std::move(*tree);
+  return std::shared_ptr<const ParsedExpression>(std::move(parsed));
+}
+
+Result<Value> Evaluate(const ParsedExpression& parsed, Scope& scope, const Limits& limits) {
+  internal::LimitsScope limits_scope(limits);
   Scope* saved_scope = current_scope;
   int saved_depth = current_depth;
   current_scope = &scope;
   current_depth = 0;
-  auto result = Evaluator(scope, limits).Eval(**tree);
+  auto result = Evaluator(scope, limits).Eval(*parsed.tree);
   current_scope = saved_scope;
   current_depth = saved_depth;
   return result;
+}
+
+Result<Value> Evaluate(std::string_view expression, Scope& scope, const Limits& limits) {
+  auto parsed = ParseExpression(expression, limits);
+  if (!parsed.ok()) return std::move(parsed).error();
+  return Evaluate(**parsed, scope, limits);
 }
 
 }  // namespace mdlc::pyexpr

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string_view>
 
@@ -47,5 +48,12 @@ struct Limits {
 };
 
 Result<Value> Evaluate(std::string_view expression, Scope& scope, const Limits& limits = {});
+
+// An expression parsed once, to evaluate many times: xacro evaluates the
+// same text at every call of the macro that holds it.
+struct ParsedExpression;
+Result<std::shared_ptr<const ParsedExpression>> ParseExpression(std::string_view expression,
+                                                                const Limits& limits = {});
+Result<Value> Evaluate(const ParsedExpression& parsed, Scope& scope, const Limits& limits = {});
 
 }  // namespace mdlc::pyexpr

@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "frontend/pyexpr/evaluate.h"
@@ -34,6 +35,9 @@ class Expander {
   /// `$$` escapes. A text that is one expression gives its value as it is
   /// (a float stays a float); anything else gives the joined str().
   pyexpr::Value EvalText(std::string_view text, SymbolTable& scope, Loc at);
+  /// Evaluates an expression, parsing each distinct text once.
+  pyexpr::Result<pyexpr::Value> EvaluateExpression(const std::string& expression,
+                                                   pyexpr::Scope& names);
   /// str() of EvalText.
   std::string EvalString(std::string_view text, SymbolTable& scope, Loc at);
   /// The value of a property, evaluating it in its scope on first use.
@@ -101,7 +105,11 @@ class Expander {
   pyexpr::Value xacro_namespace_value_;
   std::map<std::string, bool, std::less<>> dependency_seen_;
   std::map<std::string, pyexpr::Value, std::less<>> yaml_values_;  // by absolute path
+  // each included file as first read, unevaluated, by path: its FileId and tree
+  std::map<std::string, std::pair<FileId, Node*>, std::less<>> read_files_;
   std::map<std::string, bool, std::less<>> deprecated_warned_;   // bare names warned of
+  // every expression text evaluated, parsed
+  std::unordered_map<std::string, std::shared_ptr<const pyexpr::ParsedExpression>> parsed_;
 };
 
 }  // namespace mdlc::xacro

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <regex>
 
 #include "frontend/xacro/expander.h"
 #include "frontend/xml/xml_document.h"
@@ -50,8 +49,71 @@ Node* CopyElement(Tree& tree, const xml::XmlElement& element, int depth, Loc* to
 
 bool HasGlob(std::string_view spec) { return spec.find_first_of("*[?") != std::string_view::npos; }
 
-// Python's glob of one pattern: '*', '?' and '[...]' within a path part
-std::vector<std::string> Glob(const std::string& pattern) {
+// Python's fnmatch of one path part: '*', '?', '[set]', '[!set]' with
+// ranges; anything else matches itself. Iterative, with one point to go
+// back to for the last '*' (linear in practice, never exponential).
+bool PartMatches(std::string_view name, std::string_view pattern) {
+  // the length of a [set] at pattern[p] ('[' included), 0 when unclosed
+  auto set_length = [&](size_t p) -> size_t {
+    size_t q = p + 1;
+    if (q < pattern.size() && pattern[q] == '!') ++q;
+    if (q < pattern.size() && pattern[q] == ']') ++q;  // a leading ']' is a member
+    const size_t close = pattern.find(']', q);
+    return close == std::string_view::npos ? 0 : close - p + 1;
+  };
+  auto in_set = [&](size_t p, size_t length, char c) {
+    size_t q = p + 1;
+    const bool negated = q < p + length - 1 && pattern[q] == '!';
+    if (negated) ++q;
+    bool found = false;
+    for (const size_t last = p + length - 1; q < last; ++q) {
+      if (q + 2 < last && pattern[q + 1] == '-') {
+        if (pattern[q] <= c && c <= pattern[q + 2]) found = true;
+        q += 2;
+      } else if (pattern[q] == c) {
+        found = true;
+      }
+    }
+    return found != negated;
+  };
+  size_t n = 0, p = 0;
+  size_t star = std::string_view::npos, star_n = 0;
+  while (n < name.size()) {
+    if (p < pattern.size() && pattern[p] == '*') {
+      star = ++p;
+      star_n = n;
+      continue;
+    }
+    if (p < pattern.size()) {
+      if (pattern[p] == '[') {
+        if (const size_t length = set_length(p)) {
+          if (in_set(p, length, name[n])) {
+            p += length;
+            ++n;
+            continue;
+          }
+        } else if (name[n] == '[') {
+          ++p;
+          ++n;
+          continue;
+        }
+      } else if (pattern[p] == '?' || pattern[p] == name[n]) {
+        ++p;
+        ++n;
+        continue;
+      }
+    }
+    if (star == std::string_view::npos) return false;
+    p = star;
+    n = ++star_n;
+  }
+  while (p < pattern.size() && pattern[p] == '*') ++p;
+  return p == pattern.size();
+}
+
+// Python's glob of one pattern, sorted. `budget` bounds the folder entries
+// it may look at (a pattern of many '*' parts could walk a whole disk).
+std::vector<std::string> Glob(const std::string& pattern, size_t& budget) {
   namespace fs = std::filesystem;
   std::vector<std::string> matches{""};
   const fs::path p(pattern);
@@ -66,36 +128,15 @@ std::vector<std::string> Glob(const std::string& pattern) {
         if (first || fs::exists(joined)) next.push_back(joined.string());
         continue;
       }
-      std::string regex;
-      for (size_t i = 0; i < piece.size(); ++i) {
-        const char c = piece[i];
-        if (c == '*') {
-          regex += "[^/]*";
-        } else if (c == '?') {
-          regex += "[^/]";
-        } else if (c == '[') {
-          const size_t close = piece.find(']', i + 1);
-          if (close == std::string::npos) {
-            regex += "\\[";
-          } else {
-            std::string set = piece.substr(i + 1, close - i - 1);
-            if (!set.empty() && set[0] == '!') set[0] = '^';
-            regex += "[" + set + "]";
-            i = close;
-          }
-        } else if (std::isalnum(static_cast<unsigned char>(c))) {
-          regex += c;
-        } else {
-          regex += std::string("\\") + c;
-        }
-      }
-      const std::regex re(regex);
       std::error_code ec;
       const fs::path dir = prefix.empty() ? fs::path(".") : fs::path(prefix);
-      for (const auto& entry : fs::directory_iterator(dir, ec)) {
-        const std::string name = entry.path().filename().string();
+      for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator();
+           it.increment(ec)) {
+        if (budget == 0) return {};
+        --budget;
+        const std::string name = it->path().filename().string();
         if (name[0] == '.' && piece[0] != '.') continue;
-        if (std::regex_match(name, re)) {
+        if (PartMatches(name, piece)) {
           next.push_back(prefix.empty() ? name : (fs::path(prefix) / name).string());
         }
       }
@@ -134,6 +175,21 @@ Node* Expander::ReadBuffer(FileId file) {
 
 Node* Expander::ReadFile(const std::string& path, Loc included_from, bool optional) {
   LoadError error;
+  // a file included again (by every call of a macro that includes it) is
+  // the text already read, included from this place: copied, not parsed
+  if (auto read = read_files_.find(path); read != read_files_.end()) {
+    const auto [first, pristine] = read->second;
+    std::optional<FileId> again = sources_.AddInclusion(first, included_from, &error);
+    if (!again) {
+      diags_.Report(DiagKind::LimitExceeded, included_from, error.message);
+      throw ExpansionFailed{};
+    }
+    Node* copy = expansion_->tree.Clone(*pristine, [&, first = first](Loc loc) {
+      return loc.file == first ? Loc{*again, loc.line, loc.column} : loc;
+    });
+    CountNode();
+    return copy;
+  }
   std::optional<FileId> file = sources_.LoadFile(path, included_from, &error);
   if (!file) {
     if (optional && !error.over_limit) return nullptr;
@@ -143,13 +199,23 @@ Node* Expander::ReadFile(const std::string& path, Loc included_from, bool option
     }
     Fail(included_from, fmt::format("cannot include '{}': {}", path, error.message));
   }
-  return ReadBuffer(*file);
+  Node* root = ReadBuffer(*file);
+  read_files_.emplace(path, std::make_pair(*file, expansion_->tree.Clone(*root)));
+  return root;
 }
 
 std::vector<std::string> Expander::IncludeFiles(const std::string& spec, Loc at) {
   const std::string path = AbsoluteFilename(spec);
   if (!HasGlob(path)) return {path};
-  std::vector<std::string> files = Glob(path);
+  constexpr size_t kMaxEntries = 100'000;
+  size_t budget = kMaxEntries;
+  std::vector<std::string> files = Glob(path, budget);
+  if (budget == 0) {
+    Fail(at, fmt::format("include pattern '{}' looks at more than {} folder entries; name the "
+                         "folders it may search",
+                         path, kMaxEntries),
+         DiagKind::LimitExceeded);
+  }
   if (files.empty()) Warn(at, fmt::format("include pattern '{}' matches no file", path));
   return files;
 }

@@ -105,7 +105,7 @@ pyexpr::Value Expander::EvalText(std::string_view text, SymbolTable& scope, Loc 
         // `$(...)` inside an expression is substituted first
         const std::string expression = EvalString(piece.text, scope, at);
         ExpressionScope names(*this, scope);
-        pyexpr::Result<pyexpr::Value> result = pyexpr::Evaluate(expression, names);
+        pyexpr::Result<pyexpr::Value> result = EvaluateExpression(expression, names);
         if (!result.ok()) {
           const pyexpr::Error& e = result.error();
           std::string message = fmt::format("in '${{{}}}': {}", piece.text, ErrorText(e));
@@ -131,6 +131,17 @@ pyexpr::Value Expander::EvalText(std::string_view text, SymbolTable& scope, Loc 
   std::string joined;
   for (const pyexpr::Value& v : values) joined += pyexpr::Str(v);
   return pyexpr::Value::Str(std::move(joined));
+}
+
+pyexpr::Result<pyexpr::Value> Expander::EvaluateExpression(const std::string& expression,
+                                                          pyexpr::Scope& names) {
+  auto cached = parsed_.find(expression);
+  if (cached == parsed_.end()) {
+    auto parsed = pyexpr::ParseExpression(expression);
+    if (!parsed.ok()) return parsed.error();
+    cached = parsed_.emplace(expression, std::move(parsed.value())).first;
+  }
+  return pyexpr::Evaluate(*cached->second, names);
 }
 
 std::string Expander::EvalString(std::string_view text, SymbolTable& scope, Loc at) {

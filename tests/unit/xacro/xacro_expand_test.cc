@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "frontend/assets/package_map.h"
+#include "frontend/xacro/macro_params.h"
 #include "frontend/xacro/xacro.h"
 #include "frontend/xml/xml_document.h"
 #include "ir/diagnostics.h"
@@ -196,6 +197,31 @@ TEST_F(XacroFiles, FindUsesThePackageMap) {
   EXPECT_EQ(expansion->root->FirstElementChild()->FindAttribute("name")->value, "from_package");
   ASSERT_EQ(expansion->dependencies.size(), 1u);
   EXPECT_EQ(fs::path(expansion->dependencies[0]).filename(), "parts.xacro");
+}
+
+// A file included again is not read again, yet each inclusion is its own
+// place: an error in the second says it was included from the second include.
+TEST_F(XacroFiles, EachInclusionOfAFileIsPlacedAtItsOwnInclude) {
+  Write("part.xacro", R"X(<robot xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <link name="${n}"/>
+</robot>
+)X");
+  Write("r.urdf.xacro", R"X(<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:property name="n" value="a"/>
+  <xacro:include filename="part.xacro"/>
+  <xacro:property name="n" remove="true"/>
+  <xacro:include filename="part.xacro"/>
+</robot>
+)X");
+  EXPECT_FALSE(Expand("r.urdf.xacro"));
+  const Diagnostic* d = First(DiagKind::XacroError);
+  ASSERT_TRUE(d) << Printed();
+  EXPECT_EQ(fs::path(sources_.Path(d->loc.file)).filename(), "part.xacro");
+  EXPECT_EQ(d->loc.line, 2u);
+  EXPECT_EQ(sources_.IncludedFrom(d->loc.file).line, 5u);
+  EXPECT_NE(Printed().find("in file included from " + (dir_ / "r.urdf.xacro").string() + ":5:"),
+            std::string::npos)
+      << Printed();
 }
 
 TEST_F(XacroFiles, AnIncludeCycleIsAnErrorAtTheInclude) {
@@ -394,6 +420,84 @@ TEST(XacroPath, XacroFilesAreNamedByTheirLastExtension) {
   EXPECT_TRUE(IsXacroPath("dir.xacro/robot.sdf.xacro"));
   EXPECT_FALSE(IsXacroPath("robot.urdf"));
   EXPECT_FALSE(IsXacroPath("robot.xacro.urdf"));
+}
+
+}  // namespace
+}  // namespace mdlc::xacro
+
+namespace mdlc::xacro {
+namespace {
+
+std::string Params(std::string_view text) {
+  std::string out;
+  while (!text.empty()) {
+    const MacroParam p = NextMacroParam(text);
+    if (p.name.empty()) break;
+    out += p.name;
+    if (p.has_default) {
+      out += ":=";
+      if (p.forward) out += "^";
+      out += p.default_text ? "[" + *p.default_text + "]" : "-";
+    }
+    out += " ";
+  }
+  return out;
+}
+
+// The grammar ros/xacro reads `params` with (a regular expression there);
+// every expected value is what that expression gives.
+TEST(XacroMacroParams, ReadAsXacroReadsThem) {
+  EXPECT_EQ(Params("a b  c"), "a b c ");
+  EXPECT_EQ(Params("a:=1 b=2 c := 3"), "a:=[1] b:=[2] c:=[3] ");
+  EXPECT_EQ(Params("*origin **content name"), "*origin **content name ");
+  EXPECT_EQ(Params("x:=^ y:=^|0.5 z:=^|${a b}"), "x:=^- y:=^[0.5] z:=^[${a b}] ");
+  // a blank after := belongs to it: the default is what follows
+  EXPECT_EQ(Params("d:= e:=''"), "d:=[e:=''] ");
+  EXPECT_EQ(Params("d:="), "d:=- ");
+  EXPECT_EQ(Params("f:='a b' g:=\"c d\" h:=x'y z'w"), "f:=['a b'] g:=[\"c d\"] h:=[x'y z'w] ");
+  // $(...) is one default only when a blank follows its ')'; else blanks cut it
+  EXPECT_EQ(Params("p:=$(find pkg)/x.yaml q:=${1 + 2}"), "p:=[$(find] pkg)/x.yaml q:=[${1 + 2}] ");
+  EXPECT_EQ(Params("p:=$(find pkg) q"), "p:=[$(find pkg)] q ");
+  EXPECT_EQ(Params("r:=${a}${b} s"), "r:=[${a}${b}] s ");
+}
+
+// The inputs that hung and overflowed the stack in a regular expression
+// matcher (tests/fuzz/regressions/xacro/) read in one pass.
+TEST(XacroMacroParams, UnbalancedQuotesAndLongDefaultsReadInOnePass) {
+  EXPECT_EQ(Params("a:='unclosed b"), "a:='unclosed b ");
+  const std::string quotes(100'000, '\'');
+  std::string_view rest_of_quotes = quotes;
+  NextMacroParam(rest_of_quotes);  // a name of quotes: read in one pass, whatever it gives
+  EXPECT_EQ(Params("k:='$(find p)/y1e308   q:='x'"), "k:=['$(find p)/y1e308   q:='x'] ");
+  const std::string long_default = "a:='" + std::string(200'000, 'x') + "' b";
+  std::string_view rest = long_default;
+  const MacroParam p = NextMacroParam(rest);
+  EXPECT_EQ(p.name, "a");
+  ASSERT_TRUE(p.default_text);
+  EXPECT_EQ(p.default_text->size(), 200'002u);
+  EXPECT_EQ(rest, "b");
+}
+
+TEST_F(XacroFiles, IncludePatternsMatchAsGlobDoes) {
+  Write("parts/a1.xacro", "<robot><link name=\"a1\"/></robot>");
+  Write("parts/a2.xacro", "<robot><link name=\"a2\"/></robot>");
+  Write("parts/b.xacro", "<robot><link name=\"b\"/></robot>");
+  Write("r.urdf.xacro", R"X(<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:include filename="parts/a[0-9].xacro"/>
+  <xacro:include filename="parts/[!a]*.xacro"/>
+  <xacro:include filename="[z-a]/x.xacro"/>
+</robot>
+)X");
+  auto expansion = Expand("r.urdf.xacro");
+  ASSERT_TRUE(expansion) << Printed();
+  std::string names;
+  for (Node* n = expansion->root->FirstElementChild(); n; n = n->NextElementSibling()) {
+    names += n->FindAttribute("name")->value + " ";
+  }
+  EXPECT_EQ(names, "a1 a2 b ");
+  // the reversed range matches nothing, with a warning
+  ASSERT_TRUE(First(DiagKind::XacroWarning)) << Printed();
+  EXPECT_EQ(First(DiagKind::XacroWarning)->loc.line, 4u);
 }
 
 }  // namespace
