@@ -20,6 +20,10 @@
 #include "frontend/xacro/symbols.h"
 #include "frontend/xacro/xacro.h"
 
+namespace mdlc::xml {
+class XmlDocument;
+}
+
 namespace mdlc::xacro {
 
 /// Thrown once an error is reported: the expansion stops.
@@ -65,7 +69,11 @@ class Expander {
   std::vector<std::string> IncludeFiles(const std::string& spec, Loc at);
   /// Reads and parses an included file into a tree; its document element.
   Node* ReadFile(const std::string& path, Loc included_from, bool optional);
-  Node* ReadBuffer(FileId file);
+  /// Parses a loaded file and copies it into the tree; `path` names it for
+  /// the next inclusion of the same file.
+  Node* ReadBuffer(FileId file, const std::string* path = nullptr);
+  /// Copies a parsed document into the tree, placed in `file`.
+  Node* CopyDocument(const xml::XmlDocument& doc, FileId file);
   // ---- tree helpers ----
   void RemovePreviousComments(Node* node);
   void LiftNamespaces(Node* to, const Node& from);
@@ -105,8 +113,8 @@ class Expander {
   pyexpr::Value xacro_namespace_value_;
   std::map<std::string, bool, std::less<>> dependency_seen_;
   std::map<std::string, pyexpr::Value, std::less<>> yaml_values_;  // by absolute path
-  // each included file as first read, unevaluated, by path: its FileId and tree
-  std::map<std::string, std::pair<FileId, Node*>, std::less<>> read_files_;
+  // each included file as first parsed, by path
+  std::map<std::string, std::shared_ptr<const xml::XmlDocument>, std::less<>> read_files_;
   std::map<std::string, bool, std::less<>> deprecated_warned_;   // bare names warned of
   // every expression text evaluated, parsed
   std::unordered_map<std::string, std::shared_ptr<const pyexpr::ParsedExpression>> parsed_;

@@ -18,7 +18,8 @@ constexpr int kMaxSourceDepth = 1000;
 // Copies a parsed element, its attributes and every child node in document
 // order into the tree; null when the element nests deeper than
 // kMaxSourceDepth, at `*too_deep`.
-Node* CopyElement(Tree& tree, const xml::XmlElement& element, int depth, Loc* too_deep) {
+Node* CopyElement(Tree& tree, const xml::XmlElement& element, int depth, Loc* too_deep,
+                  FileId file) {
   if (depth > kMaxSourceDepth) {
     *too_deep = element.GetLoc();
     return nullptr;
@@ -26,14 +27,18 @@ Node* CopyElement(Tree& tree, const xml::XmlElement& element, int depth, Loc* to
   Node* node = tree.Make(Node::Kind::kElement);
   node->name = std::string(element.Name());
   node->loc = element.GetLoc();
+  node->loc.file = file;
   element.ForEachAttributeName([&](std::string_view name) {
     const xml::XmlAttribute a = element.Attribute(name);
-    node->attributes.push_back(Attribute{std::string(name), std::string(a.value), a.loc});
+    node->attributes.push_back(
+        Attribute{std::string(name), std::string(a.value), Loc{file, a.loc.line, a.loc.column}});
   });
   element.ForEachNode(
       [&](const xml::XmlElement& child) {
         if (too_deep->valid()) return;
-        if (Node* copy = CopyElement(tree, child, depth + 1, too_deep)) tree.AppendChild(node, copy);
+        if (Node* copy = CopyElement(tree, child, depth + 1, too_deep, file)) {
+          tree.AppendChild(node, copy);
+        }
       },
       [&](const xml::XmlContent& content) {
         Node::Kind kind = content.kind == xml::detail::ContentKind::kComment ? Node::Kind::kComment
@@ -150,21 +155,28 @@ std::vector<std::string> Glob(const std::string& pattern, size_t& budget) {
 
 }  // namespace
 
-Node* Expander::ReadBuffer(FileId file) {
+Node* Expander::ReadBuffer(FileId file, const std::string* path) {
   xml::ParseOptions options;
   options.keep_blank_text = true;
   options.keep_namespace_declarations = true;
-  std::unique_ptr<xml::XmlDocument> doc = xml::XmlDocument::Parse(file, sources_, diags_, options);
+  std::shared_ptr<const xml::XmlDocument> doc =
+      xml::XmlDocument::Parse(file, sources_, diags_, options);
   if (!doc) throw ExpansionFailed{};
+  // kept for the next inclusion of the same file (its tree is compact)
+  if (path) read_files_.emplace(*path, doc);
+  return CopyDocument(*doc, file);
+}
+
+Node* Expander::CopyDocument(const xml::XmlDocument& doc, FileId file) {
   Loc too_deep;
-  Node* root = CopyElement(expansion_->tree, doc->Root(), 1, &too_deep);
+  Node* root = CopyElement(expansion_->tree, doc.Root(), 1, &too_deep, file);
   if (too_deep.valid()) {
     Fail(too_deep,
          fmt::format("xacro source may nest elements at most {} deep", kMaxSourceDepth),
          DiagKind::LimitExceeded);
   }
   if (file == expansion_->file) {
-    for (const auto& [text, after_root] : doc->outside_comments()) {
+    for (const auto& [text, after_root] : doc.outside_comments()) {
       (after_root ? expansion_->comments_after_root : expansion_->comments_before_root)
           .emplace_back(text);
     }
@@ -178,17 +190,13 @@ Node* Expander::ReadFile(const std::string& path, Loc included_from, bool option
   // a file included again (by every call of a macro that includes it) is
   // the text already read, included from this place: copied, not parsed
   if (auto read = read_files_.find(path); read != read_files_.end()) {
-    const auto [first, pristine] = read->second;
+    const FileId first = read->second->file();
     std::optional<FileId> again = sources_.AddInclusion(first, included_from, &error);
     if (!again) {
       diags_.Report(DiagKind::LimitExceeded, included_from, error.message);
       throw ExpansionFailed{};
     }
-    Node* copy = expansion_->tree.Clone(*pristine, [&, first = first](Loc loc) {
-      return loc.file == first ? Loc{*again, loc.line, loc.column} : loc;
-    });
-    CountNode();
-    return copy;
+    return CopyDocument(*read->second, *again);
   }
   std::optional<FileId> file = sources_.LoadFile(path, included_from, &error);
   if (!file) {
@@ -199,9 +207,7 @@ Node* Expander::ReadFile(const std::string& path, Loc included_from, bool option
     }
     Fail(included_from, fmt::format("cannot include '{}': {}", path, error.message));
   }
-  Node* root = ReadBuffer(*file);
-  read_files_.emplace(path, std::make_pair(*file, expansion_->tree.Clone(*root)));
-  return root;
+  return ReadBuffer(*file, &path);
 }
 
 std::vector<std::string> Expander::IncludeFiles(const std::string& spec, Loc at) {
