@@ -94,6 +94,8 @@ std::unique_ptr<Expansion> Expander::Run(FileId file) {
   expansion_ = std::make_unique<Expansion>();
   expansion_->file = file;
   file_stack_.push_back(sources_.Path(file));
+  std::error_code ec;
+  open_files_.push_back(std::filesystem::weakly_canonical(sources_.Path(file), ec).string());
   XacroNamespace();
   try {
     Node* root = ReadBuffer(file);

@@ -104,6 +104,7 @@ class Expander {
   std::unique_ptr<Expansion> expansion_;
   std::map<std::string, std::string, std::less<>> args_;
   std::vector<std::string> file_stack_;   // the file being processed is last
+  std::vector<std::string> open_files_;   // the same files, as canonical paths
   std::vector<const Macro*> macro_stack_;
   std::vector<std::unique_ptr<SymbolTable>> scopes_;   // every scope made, kept to the end
   std::vector<std::unique_ptr<MacroTable>> macro_scopes_;

@@ -249,14 +249,19 @@ void Expander::Include(Node* node, MacroTable& macros, SymbolTable& symbols) {
   const std::string spec = EvalString(a[0]->value, symbols, a[0]->loc);
   std::vector<Node*> included;
   for (const std::string& path : IncludeFiles(spec, a[0]->loc)) {
-    if (std::find(file_stack_.begin(), file_stack_.end(), path) != file_stack_.end()) {
+    // the same file however its path is written (dir/../x.xacro, a link)
+    std::error_code ec;
+    const std::string same = std::filesystem::weakly_canonical(path, ec).string();
+    if (std::find(open_files_.begin(), open_files_.end(), same) != open_files_.end()) {
       Fail(a[0]->loc, fmt::format("'{}' includes itself (through the files that include it)", path));
     }
     if (dependency_seen_.try_emplace(path, true).second) expansion_->dependencies.push_back(path);
     Node* root = ReadFile(path, a[0]->loc, optional);
     if (!root) continue;
     file_stack_.push_back(path);
+    open_files_.push_back(same);
     EvalAll(root, *ns_macros, *ns_symbols);
+    open_files_.pop_back();
     file_stack_.pop_back();
     included.push_back(root);
     LiftNamespaces(node->parent(), *root);
