@@ -70,12 +70,6 @@ using internal::FindKeyword;
 using internal::Keywords;
 using internal::Positional;
 
-#define PYEXPR_CHECK(expr)                            \
-  do {                                                \
-    auto pyexpr_check_ = (expr);                      \
-    if (!pyexpr_check_.ok()) return std::move(pyexpr_check_).error(); \
-  } while (0)
-
 Result<Value> Unsupported(std::string_view name) {
   return Fail(Error::Kind::kUnsupported, fmt::format("the builtin {}() is not supported", name));
 }

@@ -19,6 +19,14 @@
     return std::move(PYEXPR_CONCAT(var, _result)).error();     \
   auto var = std::move(*PYEXPR_CONCAT(var, _result))
 
+// Returns the error of a Result expression from the enclosing function,
+// which returns a Result too.
+#define PYEXPR_CHECK(expr)                                            \
+  do {                                                                \
+    auto pyexpr_check_ = (expr);                                      \
+    if (!pyexpr_check_.ok()) return std::move(pyexpr_check_).error(); \
+  } while (0)
+
 namespace mdlc::pyexpr::internal {
 
 using Keywords = std::span<const std::pair<std::string, Value>>;

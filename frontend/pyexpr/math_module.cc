@@ -19,12 +19,6 @@ using internal::FindKeyword;
 using internal::Keywords;
 using internal::Positional;
 
-#define PYEXPR_CHECK(expr)                                              \
-  do {                                                                  \
-    auto pyexpr_check_ = (expr);                                        \
-    if (!pyexpr_check_.ok()) return std::move(pyexpr_check_).error();   \
-  } while (0)
-
 Error Domain() { return Fail(Error::Kind::kValue, "math domain error (the argument is outside the function's domain)"); }
 Error Range() { return Fail(Error::Kind::kOverflow, "math range error (the result is too large for a float)"); }
 

@@ -45,12 +45,6 @@ using internal::FindKeyword;
 using internal::Keywords;
 using internal::Positional;
 
-#define PYEXPR_CHECK(expr)                                              \
-  do {                                                                  \
-    auto pyexpr_check_ = (expr);                                        \
-    if (!pyexpr_check_.ok()) return std::move(pyexpr_check_).error();   \
-  } while (0)
-
 constexpr size_t kNoMax = std::numeric_limits<size_t>::max();
 
 bool IsSpaceChar(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f' || (c >= 0x1c && c <= 0x1f); }

@@ -248,16 +248,8 @@ void TreeBuilder::StartElement(void* parser, const unsigned char* local,
     root_ = element;
   } else {
     Open& parent = open_.back();
-    element->parent = parent.element;
-    parent.element->child_name_bits |= XmlElement::NameBit(element->name);
-    if (parent.last_child) {
-      parent.last_child->next_sibling = element;
-    } else {
-      parent.element->first_child = element;
-    }
-    parent.last_child = element;
-    for (detail::ContentNode* c = parent.unplaced_content; c; c = c->next) c->before = element;
-    parent.unplaced_content = nullptr;
+    detail::LinkElementChild(parent.element, parent.last_child, parent.unplaced_content, element,
+                             XmlElement::NameBit(element->name));
   }
   open_.push_back(Open{element});
 }

@@ -92,4 +92,21 @@ struct ElementNode {
   uint64_t child_name_bits = 0;
 };
 
+/// Appends `child` to `parent`'s element children (`last_child` is the last
+/// so far), and places the content added since the previous element child
+/// (`unplaced`) before it. Both tree builders link elements so.
+inline void LinkElementChild(ElementNode* parent, ElementNode*& last_child,
+                             ContentNode*& unplaced, ElementNode* child, uint64_t child_bit) {
+  child->parent = parent;
+  parent->child_name_bits |= child_bit;
+  if (last_child) {
+    last_child->next_sibling = child;
+  } else {
+    parent->first_child = child;
+  }
+  last_child = child;
+  for (ContentNode* c = unplaced; c; c = c->next) c->before = child;
+  unplaced = nullptr;
+}
+
 }  // namespace mdlc::xml::detail
