@@ -189,6 +189,18 @@ thread_local Scope* current_scope = nullptr;
 // Nesting of Eval() and comprehension clauses on this thread, lambda calls
 // included.
 thread_local int current_depth = 0;
+// Where the outermost Evaluate() on this thread found the stack, and how much
+// of it the evaluation may use below that. The depth count bounds nesting;
+// this bounds the stack itself, whose frames are many times larger under
+// AddressSanitizer and whose size a thread of an embedding program may set
+// small (a runaway lambda recursion overflowed the stack under ASan).
+thread_local const char* stack_start = nullptr;
+constexpr size_t kMaxStackBytes = 1 << 20;
+
+bool StackNearlyFull() {
+  const char here = 0;
+  return stack_start && stack_start - &here > static_cast<ptrdiff_t>(kMaxStackBytes);
+}
 
 struct LambdaCode {
   std::vector<std::string> names;
@@ -263,7 +275,7 @@ class Evaluator {
       : scope_(scope), limits_(limits), frame_(std::move(frame)) {}
 
   Result<Value> Eval(const Node& n) {
-    if (++current_depth > MaxDepth()) {
+    if (++current_depth > MaxDepth() || StackNearlyFull()) {
       --current_depth;
       return TooDeep(n.offset);
     }
@@ -541,7 +553,7 @@ class Evaluator {
 
   Result<bool> Clauses(const Node& n, size_t i, const Value* first, const Emit& emit) {
     if (i == n.kids.size()) return emit();
-    if (++current_depth > MaxDepth()) {
+    if (++current_depth > MaxDepth() || StackNearlyFull()) {
       --current_depth;
       return TooDeep(n.kids[i]->offset);
     }
@@ -831,11 +843,15 @@ Result<Value> Evaluate(const ParsedExpression& parsed, Scope& scope, const Limit
   internal::LimitsScope limits_scope(limits);
   Scope* saved_scope = current_scope;
   int saved_depth = current_depth;
+  const char* saved_stack_start = stack_start;
+  const char here = 0;
+  if (!stack_start) stack_start = &here;  // nested evaluations share the outermost budget
   current_scope = &scope;
   current_depth = 0;
   auto result = Evaluator(scope, limits).Eval(*parsed.tree);
   current_scope = saved_scope;
   current_depth = saved_depth;
+  stack_start = saved_stack_start;
   return result;
 }
 
