@@ -133,6 +133,6 @@ fuzz_seconds=${FUZZ_SECONDS:-30}
 # fuzz_mesh reads each input with the mesh reader in a child process, as a
 # compile does, so assimp's own crashes there are errors, not failures
 BUILD_DIR="${SANITIZE_BUILD_DIR:-$build_dir-sanitize}" JOBS="$jobs" \
-  FUZZERS="${FUZZERS:-urdf sdf mjcf directives mesh}" \
+  FUZZERS="${FUZZERS:-urdf sdf mjcf directives mesh xacro}" \
   bash "$root/tools/sanitize.sh" "$fuzz_seconds"
 echo "==> passed: the test suite, the sanitizer suite and ${fuzz_seconds} s of each fuzzer"
