@@ -22,13 +22,25 @@ std::optional<Format> XacroFormat(FileId file, const SourceManager& sources) {
 
 std::optional<ModelId> ReadModelFile(const std::string& path, FrontendContext& ctx,
                                      std::optional<Format> format) {
-  if (!format && xacro::IsXacroPath(path)) {
-    LoadError error;
-    auto file = ctx.sources.LoadFile(path, {}, &error);
-    if (!file) {
-      ReportLoadError(ctx.diags, {}, error, fmt::format("cannot read '{}'", path));
+  // a .xacro's format is its root element's, known once the file is read
+  const bool xacro_by_name = !format && xacro::IsXacroPath(path);
+  if (!format && !xacro_by_name) {
+    format = FormatFromPath(path);
+    if (!format) {
+      ctx.diags.Report(DiagKind::UnknownFormat, {},
+                       fmt::format("'{}': unknown file extension; expected .urdf, .sdf, .xml "
+                                   "(MJCF) or .dmd.yaml, or a format named ({})",
+                                   path, kFormatNames));
       return std::nullopt;
     }
+  }
+  LoadError error;
+  auto file = ctx.sources.LoadFile(path, {}, &error);
+  if (!file) {
+    ReportLoadError(ctx.diags, {}, error, fmt::format("cannot read '{}'", path));
+    return std::nullopt;
+  }
+  if (xacro_by_name) {
     format = XacroFormat(*file, ctx.sources);
     if (!format) {
       ctx.diags.Report(DiagKind::UnknownFormat, Loc{*file, 1, 1},
@@ -38,21 +50,6 @@ std::optional<ModelId> ReadModelFile(const std::string& path, FrontendContext& c
                                    path));
       return std::nullopt;
     }
-    return ReadModel(*file, *format, ctx);
-  }
-  if (!format) format = FormatFromPath(path);
-  if (!format) {
-    ctx.diags.Report(DiagKind::UnknownFormat, {},
-                     fmt::format("'{}': unknown file extension; expected .urdf, .sdf, .xml "
-                                 "(MJCF) or .dmd.yaml, or a format named ({})",
-                                 path, kFormatNames));
-    return std::nullopt;
-  }
-  LoadError error;
-  auto file = ctx.sources.LoadFile(path, {}, &error);
-  if (!file) {
-    ReportLoadError(ctx.diags, {}, error, fmt::format("cannot read '{}'", path));
-    return std::nullopt;
   }
   return ReadModel(*file, *format, ctx);
 }

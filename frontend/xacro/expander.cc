@@ -77,6 +77,10 @@ void Expander::CountNode() {
   }
 }
 
+void Expander::NoteDependency(const std::string& path) {
+  if (dependency_seen_.insert(path).second) expansion_->dependencies.push_back(path);
+}
+
 std::string Expander::CurrentFile() const {
   return file_stack_.empty() ? std::string() : file_stack_.back();
 }

@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -88,6 +89,8 @@ class Expander {
   /// xacro warns of a property or parameter named like a global (pi, max).
   void WarnIfGlobal(std::string_view name, Loc at);
   std::string CurrentFile() const;
+  /// Lists a file the expansion read, once (`xacro --deps`).
+  void NoteDependency(const std::string& path);
   std::string AbsoluteFilename(std::string_view spec) const;
 
   // ---- $(...) and the xacro namespace (text_eval.cc) ----
@@ -112,7 +115,7 @@ class Expander {
   Loc here_;                    // what is being evaluated, for xacro.message and friends
   std::unique_ptr<pyexpr::NameTable> xacro_namespace_;
   pyexpr::Value xacro_namespace_value_;
-  std::map<std::string, bool, std::less<>> dependency_seen_;
+  std::set<std::string, std::less<>> dependency_seen_;  // dependencies, as a set
   std::map<std::string, pyexpr::Value, std::less<>> yaml_values_;  // by absolute path
   // each included file as first parsed, by path
   std::map<std::string, std::shared_ptr<const xml::XmlDocument>, std::less<>> read_files_;

@@ -255,7 +255,7 @@ void Expander::Include(Node* node, MacroTable& macros, SymbolTable& symbols) {
     if (std::find(open_files_.begin(), open_files_.end(), same) != open_files_.end()) {
       Fail(a[0]->loc, fmt::format("'{}' includes itself (through the files that include it)", path));
     }
-    if (dependency_seen_.try_emplace(path, true).second) expansion_->dependencies.push_back(path);
+    NoteDependency(path);
     Node* root = ReadFile(path, a[0]->loc, optional);
     if (!root) continue;
     file_stack_.push_back(path);

@@ -82,8 +82,6 @@ size_t CutPieces(std::string_view text, std::vector<Piece>& pieces) {
   return std::string_view::npos;
 }
 
-std::string ErrorText(const pyexpr::Error& error) { return error.message; }
-
 }  // namespace
 
 pyexpr::Value Expander::EvalText(std::string_view text, SymbolTable& scope, Loc at) {
@@ -108,7 +106,7 @@ pyexpr::Value Expander::EvalText(std::string_view text, SymbolTable& scope, Loc 
         pyexpr::Result<pyexpr::Value> result = EvaluateExpression(expression, names);
         if (!result.ok()) {
           const pyexpr::Error& e = result.error();
-          std::string message = fmt::format("in '${{{}}}': {}", piece.text, ErrorText(e));
+          std::string message = fmt::format("in '${{{}}}': {}", piece.text, e.message);
           if (e.kind == pyexpr::Error::Kind::kName && !e.missing_name.empty()) {
             message += DidYouMean(e.missing_name, scope);
           }
@@ -390,7 +388,7 @@ pyexpr::Result<pyexpr::Value> Expander::LoadYaml(const std::string& filename) {
     return pyexpr::Error{pyexpr::Error::Kind::kHost,
                          fmt::format("xacro.load_yaml cannot read '{}': {}", path, error.message)};
   }
-  if (dependency_seen_.try_emplace(path, true).second) expansion_->dependencies.push_back(path);
+  NoteDependency(path);
   pyexpr::Result<pyexpr::Value> value = pyexpr::LoadYaml(sources_.Contents(*file));
   if (value.ok()) yaml_values_.emplace(path, value.value());
   return value;
