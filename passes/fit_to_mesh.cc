@@ -29,11 +29,9 @@ class FitToMeshPass : public Pass {
       if (!g.fit_to_mesh) continue;
       const ir::MeshFit fit = *g.fit_to_mesh;
       if (fit.mesh.resolved.empty()) continue;  // resolve-assets reported it
-      const mesh::MeshOrError loaded = ctx.meshes->Get(fit.mesh.resolved);
-      if (!loaded.ok()) continue;  // load-meshes reported it
+      if (!ctx.meshes->Status(fit.mesh.resolved).ok()) continue;  // load-meshes reported it
       std::string why;
-      auto props = mesh::CachedMujocoMeshMassProperties(ctx.derived_meshes.get(),
-                                                        fit.mesh.resolved, *loaded.mesh,
+      auto props = mesh::CachedMujocoMeshMassProperties(*ctx.meshes, fit.mesh.resolved,
                                                         fit.mesh.scale, fit.mesh_inertia, &why);
       std::optional<mesh::FittedPrimitive> fitted;
       if (props) fitted = mesh::FitPrimitive(*props, g.shape, fit.aabb, fit.fitscale, &why);

@@ -45,10 +45,9 @@ std::optional<mesh::MassProperties> InertiaFromCollisionsPass::MeshSolid(PassCon
                                                                          const ir::Geometry& g,
                                                                          const ir::Mesh& m) {
   if (m.resolved.empty()) return std::nullopt;  // resolve-assets reported it
-  const mesh::MeshOrError loaded = ctx.meshes->Get(m.resolved);
-  if (!loaded.ok()) return std::nullopt;  // load-meshes reported it
-  const mesh::CollisionSolid solid = mesh::CachedCollisionSolid(
-      ctx.derived_meshes.get(), m.resolved, *loaded.mesh, m.scale, m.convex);
+  if (!ctx.meshes->Status(m.resolved).ok()) return std::nullopt;  // load-meshes reported it
+  const mesh::CollisionSolid solid =
+      mesh::CachedCollisionSolid(*ctx.meshes, m.resolved, m.scale, m.convex);
   if (solid.used_hull && !m.convex) {
     ctx.diags.Report(DiagKind::MeshNotClosed, m.uri_loc.valid() ? m.uri_loc : g.loc,
                      fmt::format("mesh '{}' of collision '{}' is not a closed, outward-oriented "

@@ -1,5 +1,7 @@
-// load-meshes pass: reads the mesh files the compiler computes with into the
-// PassContext's mesh cache, in parallel, each file once (BEYOND-001).
+// load-meshes pass: finds out, for every mesh file the compiler computes
+// with, whether it is a mesh and what the compile takes from it, in
+// parallel, each file once (BEYOND-001): from the derived mesh cache when
+// it knows the file's content, else by reading the file (issue 57).
 //
 // Which meshes: those whose geometry is needed, namely a mesh a primitive
 // is fitted to (MJCF, BEYOND-002), a mesh geometry that contributes to a
@@ -7,7 +9,8 @@
 // proximity mesh of a body whose inertia comes from its collisions
 // (SDFormat <inertial auto="true">). Other meshes (visuals, deformable .vtk
 // volume meshes, ...) are not read, as Drake's parser does not read them:
-// a placeholder or unreadable visual mesh is no error.
+// a placeholder or unreadable visual mesh is no error (resolve-assets has
+// checked that the file is there).
 //
 // Reads: ir::Mesh::resolved (set by resolve-assets). Writes:
 // PassContext::meshes. A file that cannot be read, or holds no triangles,
@@ -28,7 +31,7 @@ class LoadMeshesPass : public Pass {
   std::string_view name() const override { return "load-meshes"; }
   std::string_view description() const override {
     return "Read the mesh files that mass properties and fitted primitives need (each once, in "
-           "parallel)";
+           "parallel, unless the mesh cache knows them)";
   }
   ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Named; }
   bool Run(PassContext& ctx) override {
@@ -62,7 +65,7 @@ class LoadMeshesPass : public Pass {
                        fmt::format("mesh files are read inside mdlc, unprotected: {}",
                                    ctx.meshes->reader_missing()));
     }
-    ctx.meshes->Prefetch(paths);
+    ctx.meshes->Survey(paths);
 
     const size_t errors_before = ctx.diags.error_count();
     // one report per place that names a bad file (MJCF geoms share their asset's)
@@ -70,10 +73,10 @@ class LoadMeshesPass : public Pass {
     mesh::OffAxisColladaFiles off_axis;
     Loc off_axis_loc;  // where the first of them is named
     for (const Use& u : uses) {
-      const mesh::MeshOrError m = ctx.meshes->Get(u.path);
+      const mesh::MeshStatus m = ctx.meshes->Status(u.path);
       if (m.ok()) {
         const bool first = off_axis.empty();
-        if (off_axis.Add(u.path, m.mesh->declared_up, m.mesh->turned_to_z_up) && first) {
+        if (off_axis.Add(u.path, m.facts->declared_up, m.facts->turned_to_z_up) && first) {
           off_axis_loc = u.loc;
         }
         continue;

@@ -85,12 +85,10 @@ std::optional<MassFromGeometryPass::Part> MassFromGeometryPass::PartOf(PassConte
       return std::nullopt;
     }
     if (mesh->resolved.empty()) return std::nullopt;  // resolve-assets reported it
-    const mesh::MeshOrError loaded = ctx.meshes->Get(mesh->resolved);
-    if (!loaded.ok()) return std::nullopt;  // load-meshes reported it
+    if (!ctx.meshes->Status(mesh->resolved).ok()) return std::nullopt;  // load-meshes reported it
     std::string why;
-    auto props = mesh::CachedMujocoMeshMassProperties(ctx.derived_meshes.get(), mesh->resolved,
-                                                      *loaded.mesh, mesh->scale, c.mesh_inertia,
-                                                      &why);
+    auto props = mesh::CachedMujocoMeshMassProperties(*ctx.meshes, mesh->resolved, mesh->scale,
+                                                      c.mesh_inertia, &why);
     if (!props) {
       ctx.diags
           .Report(DiagKind::BadMassProperties, g.loc,

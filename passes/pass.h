@@ -14,7 +14,6 @@
 #include "ir/module.h"
 #include "ir/source_manager.h"
 #include "ir/verifier.h"
-#include "passes/mesh/derived_cache.h"
 #include "passes/mesh/mesh_cache.h"
 
 namespace mdlc::passes {
@@ -26,12 +25,11 @@ struct PassContext {
   /// Packages for resolving package:// URIs.
   const assets::PackageMap& packages = assets::NoPackages();
   /// Mesh files read during this compile, each once (load-meshes fills it;
-  /// fit-to-mesh, mass-from-geometry and inertia-from-collisions read it).
-  /// An embedder may share one cache between compiles of the same files.
+  /// fit-to-mesh, mass-from-geometry and inertia-from-collisions read it),
+  /// with the derived data kept on disk between compiles when it has a
+  /// DerivedMeshCache. An embedder may share one cache between compiles of
+  /// the same files.
   std::shared_ptr<mesh::MeshCache> meshes = std::make_shared<mesh::MeshCache>();
-  /// Derived mesh data kept on disk between compiles (hulls, mass
-  /// properties); null: computed every time.
-  std::shared_ptr<mesh::DerivedMeshCache> derived_meshes = nullptr;
 };
 
 class Pass {

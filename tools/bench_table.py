@@ -11,10 +11,15 @@ freed memory for reuse (tools/driver/heap_policy.h), as the mdlc command
 does; the one-shot rows pay every first touch.
 
     python3 tools/bench_table.py [BUILD_DIR] [--repetitions=3] [--rounds=5]
-                                 [--readme=README.md]
+                                 [--readme=README.md] [--corpus=DIR] [--only-meshes]
 
 BUILD_DIR (default: build) must hold mdlc, mdlc_bench, mdlc_bench_sdf and
-mdlc_bench_dmd. Ratios are paired: one process runs a family's floor and
+mdlc_bench_dmd. When it also holds mdlc_bench_meshes, a last part times
+mesh-heavy models (issue 57): synthetic ones and real ones from the corpus
+(--corpus, default $MDLC_CORPUS, else ../shared/corpus), the mesh cache cold
+and warm, meshes read by child processes and in-process, and MuJoCo 2.2.2's
+load of the same MJCF files, in wall time (the child readers' work is in
+other processes); --only-meshes runs that part alone. Ratios are paired: one process runs a family's floor and
 compile at both sizes, --repetitions times each, interleaved at random, and
 the family's ratios are read from that process's fastest CPU times; each
 number in the table is the median over --rounds such processes. A slow
@@ -79,25 +84,37 @@ REFERENCES = [
 ]
 
 
-def run_benchmarks(exe, pattern, repetitions, min_time):
-    """{name: fastest cpu time in ms over the repetitions} for the benchmarks
-    matching `pattern`."""
+def benchmark_runs(exe, pattern, repetitions, min_time, extra_args=()):
+    """The runs (Google Benchmark's JSON records) of the benchmarks matching
+    `pattern`, --repetitions times each, interleaved at random; None when
+    `exe` is not built."""
     if not os.path.exists(exe):
         print(f"bench_table: {exe} is not built; skipping it", file=sys.stderr)
-        return {}
+        return None
     out = subprocess.run(
         [exe, f"--benchmark_filter={pattern}", f"--benchmark_repetitions={repetitions}",
          f"--benchmark_min_time={min_time}", "--benchmark_enable_random_interleaving=true",
-         "--benchmark_format=json"],
+         "--benchmark_format=json"] + list(extra_args),
         check=True, capture_output=True, text=True).stdout
+    return json.loads(out)["benchmarks"]
+
+
+def fastest_times(runs, key="cpu_time"):
+    """{name: fastest `key` time in ms} over the runs that did not fail."""
     scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
     times = {}
-    for b in json.loads(out)["benchmarks"]:
+    for b in runs or []:
         if b.get("run_type") != "iteration" or b.get("error_occurred"):
             continue
-        t = b["cpu_time"] * scale[b["time_unit"]]
+        t = b[key] * scale[b["time_unit"]]
         times[b["run_name"]] = min(t, times.get(b["run_name"], t))
     return times
+
+
+def run_benchmarks(exe, pattern, repetitions, min_time):
+    """{name: fastest cpu time in ms over the repetitions} for the benchmarks
+    matching `pattern`."""
+    return fastest_times(benchmark_runs(exe, pattern, repetitions, min_time))
 
 
 def measure_process(command):
@@ -197,6 +214,109 @@ def verdict(value, goal, at_most=True):
     return "met" if ok else "**not met**"
 
 
+# (label, model) of mdlc_bench_meshes (tests/bench/bench_meshes.cc, issue 57):
+# compiles whose time goes to mesh files. The corpus models are read from
+# --corpus; the synthetic ones are written by the benchmark itself.
+MESH_MODELS = [
+    ("synthetic, 100 bodies (MJCF)", "synthetic_n100"),
+    ("synthetic, 1000 bodies (MJCF)", "synthetic_n1000"),
+    ("Menagerie Allegro hand (MJCF)", "allegro_hand"),
+    ("Menagerie Robotiq 2F-85 (MJCF)", "robotiq_2f85"),
+    ("Menagerie Shadow hand (MJCF)", "shadow_hand"),
+    ("Menagerie TALOS (MJCF)", "talos"),
+    ("Menagerie Cassie (MJCF)", "cassie"),
+    ("Drake iiwa14 (SDFormat)", "iiwa14"),
+    ("Drake Panda arm and hand (URDF)", "panda"),
+]
+
+
+def mesh_numbers(get, model):
+    """One process's numbers for a mesh model: the cold compile with child
+    readers and in-process, the one over the other, the warm compile with
+    child readers, cold over warm, MuJoCo's load, and MuJoCo's over the cold
+    compile's."""
+    compile_ = f"mesh_compile/{model}"
+    cold, cold_here = get(f"{compile_}/cold/process"), get(f"{compile_}/cold/in_process")
+    warm, mujoco = get(f"{compile_}/warm/process"), get(f"mujoco_load/{model}")
+    return (cold, cold_here, ratio(cold, cold_here), warm, ratio(cold, warm), mujoco,
+            ratio(mujoco, cold))
+
+
+def add_mesh_part(add, exe, corpus, reps, min_time, rounds):
+    """The meshes part: a table of mdlc_bench_meshes's models and its goals.
+    Wall times, not CPU times: the child readers work in processes of their
+    own, which the benchmark process's CPU time leaves out. As for the
+    families above, each model runs in a process of its own per round, its
+    benchmarks interleaved, and every number is the median over the rounds
+    of one process's fastest runs."""
+    if not os.path.exists(exe):
+        print(f"bench_table: {exe} is not built; skipping the meshes part", file=sys.stderr)
+        return
+    model_rounds = {model: [] for _, model in MESH_MODELS}
+    files, errors = {}, {}
+    for _ in range(rounds):
+        for _, model in MESH_MODELS:
+            runs = benchmark_runs(exe, rf"^(mesh_compile|mujoco_load)/{model}(/|$)", reps,
+                                  min_time, [f"--corpus={corpus}"])
+            # UseRealTime names its runs NAME/real_time
+            model_rounds[model].append({name.removesuffix("/real_time"): t
+                                        for name, t in fastest_times(runs, "real_time").items()})
+            for b in runs:
+                name = b["run_name"].removesuffix("/real_time")
+                if b.get("error_occurred"):
+                    errors.setdefault(name, " ".join(b.get("error_message", "").split()))
+                elif b.get("run_type") == "iteration" and "mesh_files" in b:
+                    files[model] = (int(b["mesh_files"]), int(b["cache_entries"]))
+
+    add("Mesh-heavy models (`mdlc_bench_meshes`): `mdlc::Compile` with the mesh cache cold (an "
+        "empty folder each run) and warm (filled by one compile before), meshes read by child "
+        "processes (the default) and in-process, and MuJoCo 2.2.2's `mj_loadXML` of the same "
+        "MJCF file. Wall times: the child readers' work is in other processes. Each model's "
+        "benchmarks run interleaved in one process, every number is read from its fastest of "
+        f"{reps} runs, and the table shows the median over {rounds} such processes. Mesh files: "
+        "the files the model names / the entries a cold compile leaves in the mesh cache (none: "
+        "the compile needed no mesh, its bodies' inertia being declared; MuJoCo reads every "
+        "mesh all the same). Goals: child processes ≤ 1.2x in-process, cold over warm ≥ 3x, "
+        "MuJoCo over mdlc's cold compile ≥ 2x.")
+    add("")
+    add("| model | mesh files / cache entries | cold, process (ms) | cold, in-process (ms) "
+        "| process/in-process | warm, process (ms) | cold/warm | MuJoCo 2.2.2 (ms) "
+        "| MuJoCo/cold |")
+    add("|---|---|---|---|---|---|---|---|---|")
+    summary = {}
+    for label, model in MESH_MODELS:
+        numbers = [mesh_numbers(times.get, model) for times in model_rounds[model]]
+        cold, cold_here, over_here, warm, over_warm, mujoco, over_cold = (
+            median([v for v in column if v is not None]) for column in zip(*numbers))
+        summary[model] = (over_here, over_warm, over_cold)
+        counts = files.get(model)
+        add(f"| {label} | {'–' if counts is None else f'{counts[0]} / {counts[1]}'} "
+            f"| {fmt_ms(cold)} | {fmt_ms(cold_here)} | {fmt_ratio(over_here)} | {fmt_ms(warm)} "
+            f"| {fmt_ratio(over_warm)} | {fmt_ms(mujoco)} | {fmt_ratio(over_cold)} |")
+    add("")
+    if errors:
+        add("Not measured:")
+        add("")
+        for name, message in sorted(errors.items()):
+            add(f"- `{name}`: {message}")
+        add("")
+
+    worst_process = max((v[0] for v in summary.values() if v[0] is not None), default=None)
+    # a compile that reads no mesh has nothing for the cache to save
+    worst_warm = min((v[1] for model, v in summary.items()
+                      if v[1] is not None and files.get(model, (0, 0))[1] > 0), default=None)
+    worst_mujoco = min((v[2] for v in summary.values() if v[2] is not None), default=None)
+    add("| goal | measured | |")
+    add("|---|---|---|")
+    add(f"| meshes read by child processes ≤ 1.2x in-process, cold cache, every model | worst "
+        f"{fmt_ratio(worst_process)} | {verdict(worst_process, 1.2)} |")
+    add(f"| warm mesh cache ≥ 3x faster than cold (child processes), every model whose "
+        f"compile reads meshes | worst {fmt_ratio(worst_warm)} "
+        f"| {verdict(worst_warm, 3, at_most=False)} |")
+    add(f"| cold compile ≥ 2x faster than MuJoCo 2.2.2 `mj_loadXML`, every MJCF model it "
+        f"loads | worst {fmt_ratio(worst_mujoco)} | {verdict(worst_mujoco, 2, at_most=False)} |")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -208,13 +328,28 @@ def main():
     parser.add_argument("--readme", help="replace the table between the markers in this file")
     parser.add_argument("--no-instructions", dest="instructions", action="store_false",
                         help="skip the instruction counts (callgrind)")
+    parser.add_argument("--corpus",
+                        default=os.environ.get("MDLC_CORPUS", os.path.join("..", "shared", "corpus")),
+                        help="the corpus of real models, for the meshes part "
+                             "(default: $MDLC_CORPUS, else ../shared/corpus)")
+    parser.add_argument("--only-meshes", action="store_true",
+                        help="run the meshes part (mdlc_bench_meshes) alone")
     args = parser.parse_args()
     if args.rounds < 1:
         parser.error("--rounds must be at least 1: every number is a median over them")
+    if args.only_meshes and args.readme:
+        parser.error("--readme replaces the whole table, which --only-meshes does not make")
 
     bench_dir = os.path.join(args.build, "tests", "bench")
     mdlc = os.path.join(args.build, "tools", "mdlc", "mdlc")
     reps, min_time = args.repetitions, args.min_time
+    meshes_exe = os.path.join(bench_dir, "mdlc_bench_meshes")
+    corpus = os.path.abspath(args.corpus)
+    if args.only_meshes:
+        lines = []
+        add_mesh_part(lines.append, meshes_exe, corpus, reps, min_time, args.rounds)
+        print("\n".join(lines))
+        return
 
     # paired ratios (see the module's docstring): a process per family and round
     family_rounds = {family: [] for _, family, _, _, _ in FAMILIES}
@@ -463,6 +598,9 @@ def main():
         f"| {verdict(mujoco, 10, at_most=False)} |")
     add(f"| faster than libsdformat 12 (SDFormat chain / world, N = 1000) "
         f"| {fmt_ratio(sdformat_chain)} / {fmt_ratio(sdformat_world)} | |")
+    if os.path.exists(meshes_exe):
+        add("")
+        add_mesh_part(add, meshes_exe, corpus, reps, min_time, args.rounds)
 
     table = "\n".join(lines)
     print(table)

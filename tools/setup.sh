@@ -25,7 +25,7 @@ jobs=${JOBS:-$(nproc)}
 
 # what mdlc needs to build and run
 runtime_packages=(cmake ninja-build g++ pkg-config libeigen3-dev libxml2-dev libyaml-cpp-dev
-                  libfmt-dev libassimp-dev libqhull-dev libcli11-dev libabsl-dev)
+                  libfmt-dev libassimp-dev libqhull-dev libcli11-dev libabsl-dev libxxhash-dev)
 # the Python module (built and tested by `test`)
 python_packages=(python3-dev python3-numpy pybind11-dev)
 # what its tests need besides: GoogleTest, Google Benchmark, and the reference

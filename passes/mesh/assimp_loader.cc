@@ -4,33 +4,48 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <absl/container/flat_hash_map.h>
 #include <assimp/Importer.hpp>
 #include <fmt/format.h>
 
+#include <array>
 #include <cctype>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <optional>
-#include <tuple>
 
 #include "passes/mesh/ply_header.h"
 
 namespace mdlc::mesh {
 namespace {
 
+/// A vertex position as the weld compares it: the bits of its coordinates,
+/// with -0 taken as 0 (the two are the same position).
+using PositionKey = std::array<uint64_t, 3>;
+PositionKey KeyOf(const aiVector3D& p) {
+  PositionKey key;
+  for (int k = 0; k < 3; ++k) {
+    const double c = p[k] == 0 ? 0.0 : double{p[k]};
+    std::memcpy(&key[k], &c, sizeof c);
+  }
+  return key;
+}
+/// Vertex ids by position; a hash table, as a mesh file can hold millions.
+using WeldIndex = absl::flat_hash_map<PositionKey, int>;
+
 /// Appends the triangles of `node` and its children, placed by the
-/// accumulated node transform, welding vertices by exact position.
+/// accumulated node transform, welding vertices by exact position (ids in
+/// the order positions first occur).
 void Collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent,
-             std::map<std::tuple<double, double, double>, int>& index, TriangleMesh& out) {
+             WeldIndex& index, TriangleMesh& out) {
   const aiMatrix4x4 world = parent * node.mTransformation;
   for (unsigned i = 0; i < node.mNumMeshes; ++i) {
     const aiMesh& m = *scene.mMeshes[node.mMeshes[i]];
     std::vector<int> ids(m.mNumVertices);
     for (unsigned v = 0; v < m.mNumVertices; ++v) {
       const aiVector3D p = world * m.mVertices[v];
-      const std::tuple<double, double, double> key{p.x, p.y, p.z};
-      auto [it, inserted] = index.emplace(key, static_cast<int>(out.vertices.size()));
+      auto [it, inserted] = index.emplace(KeyOf(p), static_cast<int>(out.vertices.size()));
       if (inserted) out.vertices.emplace_back(p.x, p.y, p.z);
       ids[v] = it->second;
     }
@@ -155,7 +170,9 @@ MeshOrError ImportMesh(const std::string& path, const Limits& limits, const Mesh
             true};
   }
   auto mesh = std::make_shared<TriangleMesh>();
-  std::map<std::tuple<double, double, double>, int> index;
+  WeldIndex index;
+  index.reserve(vertices);
+  mesh->vertices.reserve(vertices);
   Collect(*scene, *scene->mRootNode, aiMatrix4x4(), index, *mesh);
   if (mesh->triangles.empty()) {
     return {nullptr, fmt::format("mesh file '{}' holds no triangles", path)};

@@ -31,24 +31,37 @@ const double* GetMatrix(const double* in, Matrix& m) {
 }
 constexpr size_t kMujocoValues = 13 + 9 + 3 + 3 + 3 + 3;
 
-std::optional<std::string> KeyFor(DerivedMeshCache* cache, const std::string& path,
-                                  const TriangleMesh& mesh, std::string_view what,
-                                  const Eigen::Vector3d& scale) {
-  if (!cache) return std::nullopt;
+std::optional<std::string> KeyFor(MeshCache& meshes, const std::string& path,
+                                  std::string_view what, const Eigen::Vector3d& scale) {
+  if (!meshes.derived()) return std::nullopt;
+  const MeshStatus status = meshes.Status(path);
+  const std::optional<ContentDigest> digest = meshes.Digest(path);
+  if (!status.ok() || !digest) return std::nullopt;
   // hex floats: the exact scale, not a rounding of it; the same bytes read
   // with other axes (--collada-up-axis) are another mesh
   return DerivedMeshCache::Key(
-      path, fmt::format("{}|scale={:a},{:a},{:a}|up={},turned={}", what, scale.x(), scale.y(),
-                        scale.z(), UpAxisName(mesh.declared_up), mesh.turned_to_z_up));
+      *digest, fmt::format("{}|scale={:a},{:a},{:a}|up={},turned={}", what, scale.x(), scale.y(),
+                           scale.z(), UpAxisName(status.facts->declared_up),
+                           status.facts->turned_to_z_up));
+}
+
+/// The mesh at `path`, read now that it is needed; null, with `*error`
+/// set, when it cannot be (changed on disk since it was surveyed).
+std::shared_ptr<const TriangleMesh> Triangles(MeshCache& meshes, const std::string& path,
+                                              std::string* error) {
+  MeshOrError m = meshes.Get(path);
+  if (!m.ok()) *error = m.error;
+  return m.mesh;
 }
 
 }  // namespace
 
 std::optional<MujocoMeshProperties> CachedMujocoMeshMassProperties(
-    DerivedMeshCache* cache, const std::string& path, const TriangleMesh& mesh,
-    const Eigen::Vector3d& scale, ir::MeshInertia mode, std::string* error) {
+    MeshCache& meshes, const std::string& path, const Eigen::Vector3d& scale,
+    ir::MeshInertia mode, std::string* error) {
+  DerivedMeshCache* cache = meshes.derived();
   const auto key =
-      KeyFor(cache, path, mesh, fmt::format("mujoco-mass|mode={}", static_cast<int>(mode)), scale);
+      KeyFor(meshes, path, fmt::format("mujoco-mass|mode={}", static_cast<int>(mode)), scale);
   if (key) {
     if (auto values = cache->Load(*key); values && values->size() == kMujocoValues) {
       MujocoMeshProperties p;
@@ -61,7 +74,9 @@ std::optional<MujocoMeshProperties> CachedMujocoMeshMassProperties(
       return p;
     }
   }
-  auto p = MujocoMeshMassProperties(Scaled(mesh, scale), mode, error);
+  const auto mesh = Triangles(meshes, path, error);
+  if (!mesh) return std::nullopt;
+  auto p = MujocoMeshMassProperties(Scaled(*mesh, scale), mode, error);
   if (p && key) {
     std::vector<double> values;
     Put(p->mass, values);
@@ -75,10 +90,10 @@ std::optional<MujocoMeshProperties> CachedMujocoMeshMassProperties(
   return p;
 }
 
-CollisionSolid CachedCollisionSolid(DerivedMeshCache* cache, const std::string& path,
-                                    const TriangleMesh& mesh, const Eigen::Vector3d& scale,
-                                    bool convex) {
-  const auto key = KeyFor(cache, path, mesh, fmt::format("collision-solid|convex={}", convex), scale);
+CollisionSolid CachedCollisionSolid(MeshCache& meshes, const std::string& path,
+                                    const Eigen::Vector3d& scale, bool convex) {
+  DerivedMeshCache* cache = meshes.derived();
+  const auto key = KeyFor(meshes, path, fmt::format("collision-solid|convex={}", convex), scale);
   if (key) {
     if (auto values = cache->Load(*key); values && values->size() == 14) {
       CollisionSolid s;
@@ -88,7 +103,9 @@ CollisionSolid CachedCollisionSolid(DerivedMeshCache* cache, const std::string& 
     }
   }
   CollisionSolid s;
-  const TriangleMesh scaled = Scaled(mesh, scale);
+  const auto mesh = Triangles(meshes, path, &s.error);
+  if (!mesh) return s;
+  const TriangleMesh scaled = Scaled(*mesh, scale);
   if (!convex) {
     const MeshTopology topo = AnalyzeTopology(scaled);
     if (topo.closed && topo.consistently_oriented) {

@@ -1,8 +1,12 @@
 // derived_cache.cc - see derived_cache.h.
 #include "passes/mesh/derived_cache.h"
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <unistd.h>
+#include <xxhash.h>
+
+#include <cerrno>
 
 #include <cstdlib>
 #include <cstring>
@@ -18,8 +22,7 @@ namespace fs = std::filesystem;
 // Bump when the layout of an entry or the meaning of its values changes.
 constexpr std::string_view kMagic = "mdlc-derived-mesh/1\n";
 
-// FNV-1a, 64 bits, in two independent streams (different offset bases) for
-// a 128-bit content key.
+// FNV-1a, 64 bits: an entry's checksum against a torn or damaged file.
 struct Fnv {
   uint64_t h;
   void Add(std::string_view bytes) {
@@ -46,25 +49,44 @@ std::string DerivedMeshCache::DefaultDirectory() {
   return "";
 }
 
+std::optional<ContentDigest> DerivedMeshCache::Digest(const std::string& path) {
+  // XXH3 at memory speed: a warm compile hashes every mesh it would have
+  // read, and this is then most of its time
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return std::nullopt;
+  XXH3_state_t* state = XXH3_createState();
+  XXH3_128bits_reset(state);
+  uint64_t size = 0;
+  std::vector<char> buffer(size_t{1} << 20);
+  bool failed = false;
+  for (;;) {
+    const ssize_t n = ::read(fd, buffer.data(), buffer.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) failed = true;
+    if (n <= 0) break;
+    XXH3_128bits_update(state, buffer.data(), static_cast<size_t>(n));
+    size += static_cast<uint64_t>(n);
+  }
+  const XXH128_hash_t h = XXH3_128bits_digest(state);
+  XXH3_freeState(state);
+  ::close(fd);
+  if (failed) return std::nullopt;
+  return ContentDigest{h.high64, h.low64, size};
+}
+
+std::string DerivedMeshCache::Key(const ContentDigest& content, std::string_view options) {
+  // the options and the format version are part of what the key names
+  const std::string text = fmt::format("{:016x}{:016x}|{}|{}|{}", content.a, content.b,
+                                       content.size, options, kMagic);
+  const XXH128_hash_t h = XXH3_128bits(text.data(), text.size());
+  return fmt::format("{:016x}{:016x}", h.high64, h.low64);
+}
+
 std::optional<std::string> DerivedMeshCache::Key(const std::string& path,
                                                  std::string_view options) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  Fnv a{0xcbf29ce484222325ULL}, b{0x84222325cbf29ce4ULL};
-  uint64_t size = 0;
-  char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    const std::string_view chunk(buffer, static_cast<size_t>(in.gcount()));
-    a.Add(chunk);
-    b.Add(chunk);
-    size += chunk.size();
-  }
-  if (in.bad()) return std::nullopt;
-  // the options and the format version are part of what the key names
-  const std::string rest = fmt::format("{}|{}|{}", size, options, kMagic);
-  a.Add(rest);
-  b.Add(rest);
-  return fmt::format("{:016x}{:016x}", a.h, b.h);
+  const std::optional<ContentDigest> content = Digest(path);
+  if (!content) return std::nullopt;
+  return Key(*content, options);
 }
 
 std::optional<std::vector<double>> DerivedMeshCache::Load(const std::string& key) {

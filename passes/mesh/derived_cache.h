@@ -11,12 +11,19 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace mdlc::mesh {
+
+/// A file's content, condensed: two independent 64-bit hashes and its size.
+/// A key (DerivedMeshCache::Key) adds the options to it.
+struct ContentDigest {
+  uint64_t a = 0, b = 0, size = 0;
+};
 
 class DerivedMeshCache {
  public:
@@ -30,6 +37,11 @@ class DerivedMeshCache {
   /// The key of data derived from the file at `path` with `options` (any
   /// text that names the processing); nullopt when the file cannot be read.
   static std::optional<std::string> Key(const std::string& path, std::string_view options);
+  /// The same from the file's digest, for a file digested once and keyed
+  /// many times.
+  static std::string Key(const ContentDigest& content, std::string_view options);
+  /// The digest of the file at `path`; nullopt when it cannot be read.
+  static std::optional<ContentDigest> Digest(const std::string& path);
 
   /// The values stored under `key`, or nullopt (a miss) when there are none
   /// or the entry is damaged.

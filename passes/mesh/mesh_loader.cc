@@ -1,6 +1,6 @@
 #include "passes/mesh/mesh_loader.h"
 
-#include "passes/mesh/child_reader.h"
+#include "passes/mesh/reader_pool.h"
 #include "passes/mesh/in_process_reader.h"
 #include "passes/mesh/reader_location.h"
 

@@ -1,11 +1,11 @@
-// mesh_loader.h - how mdlc reads a mesh file: in a short-lived child process
-// running the mesh reader program, so that a crash, hang or leak inside
-// assimp becomes an error about that file instead of taking down the
-// compiler or the program embedding it (issue 16).
+// mesh_loader.h - how mdlc reads a mesh file: in a worker process running
+// the mesh reader program, so that a crash, hang or leak inside assimp
+// becomes an error about that file instead of taking down the compiler or
+// the program embedding it (issues 16 and 57).
 //
-// The child runs ImportMesh (assimp_loader.h) and sends the result
-// back (mesh_wire.h); child_reader.h spawns and watches it;
-// reader_location.h finds the program. Without the program the file is read
+// The worker runs ImportMesh (assimp_loader.h) and sends the result
+// back (mesh_wire.h, worker_frames.h); reader_pool.h starts and watches
+// workers; reader_location.h finds the program. Without the program the file is read
 // in this process (in_process_reader.h), which gives the same mesh, without
 // the protection.
 #pragma once

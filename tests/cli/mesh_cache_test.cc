@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -45,6 +46,19 @@ class MeshCacheTest : public mdlc::cli_test::CliFixture {
       return {-1, -1};
     }
     return {std::stoi(m[1]), std::stoi(m[2])};
+  }
+  /// (parsed, hashed, known from the cache, workers started) from the
+  /// --time-passes report.
+  static std::array<int, 4> MeshCounts(const std::string& report) {
+    std::smatch m;
+    const std::regex line(
+        "meshes: ([0-9]+) parsed, ([0-9]+) hashed, ([0-9]+) known from the cache; ([0-9]+) "
+        "reader workers started");
+    if (!std::regex_search(report, m, line)) {
+      ADD_FAILURE() << "no meshes line in:\n" << report;
+      return {-1, -1, -1, -1};
+    }
+    return {std::stoi(m[1]), std::stoi(m[2]), std::stoi(m[3]), std::stoi(m[4])};
   }
   size_t Entries() const {
     size_t n = 0;
@@ -119,3 +133,42 @@ TEST_F(MeshCacheTest, TheEnvironmentNamesTheDefaultFolder) {
 }
 
 }  // namespace
+
+// A second compile of an unchanged model hashes its meshes and reads none:
+// no worker is started (issue 57).
+TEST_F(MeshCacheTest, AWarmCompileReadsNoMeshAndStartsNoWorker) {
+  const std::string flags = "--cache-dir " + cache_.string();
+  Outcome cold = Compile(flags);
+  ASSERT_EQ(cold.status, 0) << cold.err;
+  const auto [parsed, hashed, known, workers] = MeshCounts(cold.err);
+  EXPECT_GT(parsed, 1);
+  EXPECT_EQ(hashed, parsed);
+  EXPECT_EQ(known, 0);
+  EXPECT_GE(workers, 1);
+  // a worker per reading thread, each reading several files
+  EXPECT_LT(workers, parsed);
+
+  Outcome warm = Compile(flags);
+  ASSERT_EQ(warm.status, 0) << warm.err;
+  EXPECT_EQ(MeshCounts(warm.err), (std::array<int, 4>{0, parsed, parsed, 0})) << warm.err;
+  EXPECT_EQ(warm.out, cold.out);
+}
+
+// A mesh that only a visual names is not read: a compile checks that the
+// file is there, and nothing it outputs comes from its triangles (issue 57).
+TEST_F(MeshCacheTest, AVisualOnlyMeshIsNotParsed) {
+  fs::copy_file(std::string(MDLC_TEST_MODELS) + "/meshes/garbage.stl", dir_ / "looks.stl");
+  const fs::path urdf = dir_ / "robot.urdf";
+  std::ofstream(urdf) << R"(<robot name="r">
+  <link name="base">
+    <inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>
+    <visual><geometry><mesh filename="looks.stl"/></geometry></visual>
+  </link>
+</robot>
+)";
+  Outcome r = Mdlc(fmt::format("compile {} --emit=none --time-passes --cache-dir {}",
+                               urdf.string(), cache_.string()),
+                   dir_ / "unused");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(MeshCounts(r.err), (std::array<int, 4>{0, 0, 0, 0})) << r.err;
+}

@@ -1,7 +1,9 @@
 // fuzz_mesh.cc - a libFuzzer harness for the mesh loader (issue 16): the
 // first byte picks the file type, the rest is the file; it is loaded as a
-// model's mesh would be (the mesh reader program in a child process, then
-// mdlc's checks on its reply and mass properties).
+// model's mesh would be (by a mesh reader worker process, then mdlc's checks
+// on its reply and mass properties). One pool of workers serves the whole
+// run, as one serves a whole compile (issue 57): an input that crashes a
+// worker costs that worker, the next input gets a fresh one.
 //
 // assimp runs in the child, the reader built with the same sanitizers: its
 // memory errors and hangs there become errors here, as they do in a
@@ -17,23 +19,24 @@
 #include <string>
 
 #include "passes/mesh/mass_properties.h"
-#include "passes/mesh/child_reader.h"
+#include "passes/mesh/reader_pool.h"
 #include "passes/mesh/reader_location.h"
 
 namespace {
 
-/// The reader program; the harness refuses to run without one, rather than
-/// fuzz assimp in its own process.
-const std::string& Reader() {
-  static const std::string reader = [] {
+/// The workers, of the reader program; the harness refuses to run without
+/// one, rather than fuzz assimp in its own process.
+mdlc::mesh::MeshReaderPool& Workers() {
+  static mdlc::mesh::MeshReaderPool* pool = [] {
     const mdlc::mesh::MeshReaderLocation found = mdlc::mesh::FindMeshReader();
     if (found.path.empty()) {
       std::fprintf(stderr, "fuzz_mesh: %s\n", found.why_none.c_str());
       std::abort();
     }
-    return found.path;
+    // never destroyed: libFuzzer may end the process from any thread
+    return new mdlc::mesh::MeshReaderPool(found.path);
   }();
-  return reader;
+  return *pool;
 }
 
 }  // namespace
@@ -56,7 +59,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   // a hang in the child is an error long before libFuzzer's -timeout; short,
   // because inputs on which assimp hangs would otherwise take most of a run
   limits.mesh_seconds = 2;
-  const mdlc::mesh::MeshOrError loaded = mdlc::mesh::LoadMeshInChild(Reader(), file, limits);
+  const mdlc::mesh::MeshOrError loaded = Workers().Read(file, limits);
   if (loaded.ok()) {
     (void)mdlc::mesh::SolidMassProperties(*loaded.mesh);
     (void)mdlc::mesh::ShellMassProperties(*loaded.mesh);

@@ -69,11 +69,15 @@ bool Compilation::RunPasses() {
   }
   // read within the limits, where the options say
   meshes = std::make_shared<mesh::MeshCache>(sources.limits(), options.mesh_reading,
-                                             options.mesh_axes);
-  passes::PassContext ctx{module, diags, sources, packages, meshes, derived_meshes};
+                                             options.mesh_axes, derived_meshes);
+  passes::PassContext ctx{module, diags, sources, packages, meshes};
   const bool ok = pm.Run(ctx);
   if (options.instrumentation.time_passes) {
     timing_report_ = pm.TimingReport();
+    timing_report_ += fmt::format(
+        "  meshes: {} parsed, {} hashed, {} known from the cache; {} reader workers started\n",
+        meshes->files_read(), meshes->files_hashed(), meshes->facts_from_cache(),
+        meshes->workers_started());
     if (derived_meshes) {
       timing_report_ += fmt::format("  mesh cache: {} hits, {} misses ({})\n",
                                     derived_meshes->hits(), derived_meshes->misses(),

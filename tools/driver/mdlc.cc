@@ -241,11 +241,23 @@ std::vector<Out> ReadEach(mesh::MeshCache& meshes, const std::vector<std::string
 }  // namespace
 
 std::vector<MeshSize> Result::MeshSizes(const std::vector<std::string>& resolved_paths) const {
-  return ReadEach<MeshSize>(*compilation_->meshes, resolved_paths,
-                            [](const std::string&, const mesh::TriangleMesh& m, MeshSize& size) {
-                              size.vertices = m.vertices.size();
-                              size.triangles = m.triangles.size();
-                            });
+  // the counts are among a mesh's facts: a warm cache answers without
+  // reading the file
+  mesh::MeshCache& meshes = *compilation_->meshes;
+  meshes.Survey(resolved_paths);
+  std::vector<MeshSize> out;
+  out.reserve(resolved_paths.size());
+  for (const std::string& path : resolved_paths) {
+    const mesh::MeshStatus m = meshes.Status(path);
+    MeshSize& size = out.emplace_back();
+    if (m.ok()) {
+      size.vertices = m.facts->vertices;
+      size.triangles = m.facts->triangles;
+    } else {
+      size.error = m.error;
+    }
+  }
+  return out;
 }
 
 std::vector<MeshTriangles> Result::ReadMeshes(const std::vector<std::string>& resolved_paths,

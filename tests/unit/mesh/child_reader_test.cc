@@ -3,7 +3,7 @@
 // and whatever goes wrong in the child (a crash, a hang, a failure, a
 // malformed reply) is an error about the file. Stand-in readers are small
 // shell scripts.
-#include "passes/mesh/child_reader.h"
+#include "passes/mesh/reader_pool.h"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>

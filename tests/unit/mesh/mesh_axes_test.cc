@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "passes/mesh/child_reader.h"
+#include "passes/mesh/reader_pool.h"
 #include "passes/mesh/in_process_reader.h"
 #include "passes/mesh/mass_properties.h"
 #include "passes/mesh/mesh_loader.h"

@@ -57,12 +57,14 @@ struct Input {
 
 /// Where a compile reads mesh files (Options::mesh_reader, `--mesh-reader`).
 enum class MeshReader {
-  /// In a short-lived child process running the mdlc-mesh-reader program,
-  /// one per file, so that a crash or hang of the mesh importer on a
-  /// malformed file is an error about that file, not a crash of the caller.
-  /// Without the program, files are read in this process and a note says so.
+  /// In worker processes running the mdlc-mesh-reader program, one per
+  /// thread reading meshes, each reading many files, so that a crash or
+  /// hang of the mesh importer on a malformed file is an error about that
+  /// file, not a crash of the caller; a fresh worker reads the files after
+  /// it. Without the program, files are read in this process and a note
+  /// says so.
   Process,
-  /// In this process: no process per file, and no such protection.
+  /// In this process: no worker processes, and no such protection.
   InProcess,
 };
 
@@ -244,7 +246,8 @@ class Result {
 
   /// The sizes of mesh files the model names (ir::Mesh::resolved paths),
   /// from the meshes this compile read: a file the passes read is not read
-  /// again; the others are read now, in parallel.
+  /// again, nor one the mesh cache knows; the others are read now, in
+  /// parallel.
   std::vector<MeshSize> MeshSizes(const std::vector<std::string>& resolved_paths) const;
   /// The triangles of those files, read the same way (and as the compile
   /// reads them: its reader, its axes). `axes_note`, when given, gets the
