@@ -57,7 +57,8 @@ MeshCache::MeshCache(const Limits& limits, MeshReading reading, const MeshAxes& 
       return LoadMeshInProcess(path, limits, axes);
     };
   } else {
-    pool_ = std::make_shared<MeshReaderPool>(reader_);
+    pool_ = SharedMeshReaderPool(reader_);
+    workers_before_ = pool_->workers_started();
     loader_ = [limits, axes, pool = pool_](const std::string& path) {
       return pool->Read(path, limits, axes);
     };
@@ -70,7 +71,9 @@ MeshCache::MeshCache(Loader loader, std::shared_ptr<DerivedMeshCache> derived,
 
 MeshCache::~MeshCache() = default;
 
-size_t MeshCache::workers_started() const { return pool_ ? pool_->workers_started() : 0; }
+size_t MeshCache::workers_started() const {
+  return pool_ ? pool_->workers_started() - workers_before_ : 0;
+}
 
 std::shared_ptr<MeshCache::Entry> MeshCache::EntryFor(const std::string& path) {
   std::lock_guard lock(mutex_);

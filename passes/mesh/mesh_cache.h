@@ -104,7 +104,9 @@ class MeshCache {
   /// Why files are read in this process though a reader program was asked
   /// for (worth telling the user: the protection is off); else empty.
   const std::string& reader_missing() const { return reader_missing_; }
-  /// Reader worker processes started so far.
+  /// Reader worker processes started since this cache was made (by the
+  /// process's shared pool, reader_pool.h: idle workers of earlier compiles
+  /// are reused).
   size_t workers_started() const;
 
  private:
@@ -129,6 +131,7 @@ class MeshCache {
   std::string settings_;  // what changes a read's result besides the bytes
   std::shared_ptr<DerivedMeshCache> derived_;
   std::shared_ptr<MeshReaderPool> pool_;
+  size_t workers_before_ = 0;
   std::string reader_;
   std::string reader_missing_;
   std::mutex mutex_;  // guards entries_ (not the loading itself)

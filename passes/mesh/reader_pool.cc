@@ -3,10 +3,12 @@
 
 #include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <fmt/format.h>
 
 #include <cstring>
+#include <map>
 
 #include "passes/mesh/mesh_wire.h"
 #include "passes/mesh/worker_frames.h"
@@ -138,6 +140,23 @@ MeshOrError MeshReaderPool::Read(const std::string& path, const Limits& limits,
     GiveBack(std::move(worker));
     return std::move(*result);
   }
+}
+
+std::shared_ptr<MeshReaderPool> SharedMeshReaderPool(const std::string& program) {
+  static std::mutex mutex;
+  // leaked on purpose: no destructor runs at exit while another thread may
+  // still read, and the workers end with the process anyway
+  static auto* pools = new std::map<std::string, std::shared_ptr<MeshReaderPool>>;
+  static pid_t owner = ::getpid();
+  std::lock_guard lock(mutex);
+  if (::getpid() != owner) {
+    // a forked child: its parent's workers answer its parent; leave them be
+    pools = new std::map<std::string, std::shared_ptr<MeshReaderPool>>;
+    owner = ::getpid();
+  }
+  std::shared_ptr<MeshReaderPool>& pool = (*pools)[program];
+  if (!pool) pool = std::make_shared<MeshReaderPool>(program);
+  return pool;
 }
 
 MeshOrError LoadMeshInChild(const std::string& reader, const std::string& path,

@@ -63,6 +63,13 @@ class MeshReaderPool {
   std::atomic<size_t> started_{0};
 };
 
+/// The pool of workers of `program` that every compile in this process
+/// shares, so that a program compiling many models (an embedder, a
+/// benchmark, a Python session) starts its workers once; idle workers end
+/// when this process does (their input closes). Never destroyed. A process
+/// forked from one that had a pool gets a pool of its own.
+std::shared_ptr<MeshReaderPool> SharedMeshReaderPool(const std::string& program);
+
 /// The mesh in `path`, read by a worker of `reader` started for it alone.
 MeshOrError LoadMeshInChild(const std::string& reader, const std::string& path,
                             const Limits& limits, const MeshAxes& axes = {});
