@@ -97,14 +97,14 @@ std::string EncodeMeshReply(const MeshOrError& result) {
   Put(out, uint8_t{m.turned_to_z_up});
   Put(out, uint64_t{m.vertices.size()});
   Put(out, uint64_t{m.triangles.size()});
-  out.reserve(out.size() + m.vertices.size() * 3 * sizeof(double) +
-              m.triangles.size() * 3 * sizeof(int32_t));
-  for (const Eigen::Vector3d& v : m.vertices) {
-    for (int k = 0; k < 3; ++k) Put(out, double{v[k]});
-  }
-  for (const Eigen::Vector3i& t : m.triangles) {
-    for (int k = 0; k < 3; ++k) Put(out, int32_t{t[k]});
-  }
+  // Eigen's fixed-size vectors are their coefficients, packed: the two
+  // arrays go out as they lie in memory
+  static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double));
+  static_assert(sizeof(Eigen::Vector3i) == 3 * sizeof(int32_t));
+  out.append(reinterpret_cast<const char*>(m.vertices.data()),
+             m.vertices.size() * sizeof(Eigen::Vector3d));
+  out.append(reinterpret_cast<const char*>(m.triangles.data()),
+             m.triangles.size() * sizeof(Eigen::Vector3i));
   return out;
 }
 
@@ -154,19 +154,16 @@ std::optional<MeshOrError> DecodeMeshReply(std::string_view bytes, std::string* 
   mesh->declared_up = static_cast<UpAxis>(declared_up);
   mesh->turned_to_z_up = turned == 1;
   mesh->vertices.resize(vertices);
-  for (Eigen::Vector3d& v : mesh->vertices) {
-    for (int k = 0; k < 3; ++k) in.Get(v[k]);
-  }
+  std::memcpy(mesh->vertices.data(), in.Take(vertex_bytes).data(), vertex_bytes);
   mesh->triangles.resize(triangles);
+  std::memcpy(mesh->triangles.data(), in.Take(in.left()).data(), after_vertices);
   for (size_t t = 0; t < triangles; ++t) {
     for (int k = 0; k < 3; ++k) {
-      int32_t index = 0;
-      in.Get(index);
+      const int32_t index = mesh->triangles[t][k];
       if (index < 0 || static_cast<uint64_t>(index) >= vertices) {
         return Fail(problem, fmt::format("its triangle {} names vertex {} of {}", t, index,
                                          vertices));
       }
-      mesh->triangles[t][k] = index;
     }
   }
   return MeshOrError{std::move(mesh), {}};

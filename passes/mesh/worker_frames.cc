@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -62,10 +63,20 @@ bool RequestFrameReader::ReadExactly(void* out, size_t n, bool* nothing_read) {
   auto* bytes = static_cast<char*>(out);
   size_t done = 0;
   while (done < n) {
-    const ssize_t got = ::read(fd_, bytes + done, n - done);
-    if (got < 0 && errno == EINTR) continue;
-    if (got <= 0) break;
-    done += static_cast<size_t>(got);
+    if (taken_ == buffer_.size()) {
+      buffer_.resize(size_t{1} << 16);
+      taken_ = 0;
+      ssize_t got;
+      do {
+        got = ::read(fd_, buffer_.data(), buffer_.size());
+      } while (got < 0 && errno == EINTR);
+      buffer_.resize(static_cast<size_t>(std::max<ssize_t>(got, 0)));
+      if (got <= 0) break;
+    }
+    const size_t step = std::min(n - done, buffer_.size() - taken_);
+    std::memcpy(bytes + done, buffer_.data() + taken_, step);
+    taken_ += step;
+    done += step;
   }
   if (nothing_read) *nothing_read = done == 0;
   return done == n;

@@ -37,7 +37,8 @@ std::string EncodeRequestFrame(const std::vector<std::string>& args);
 std::string EncodeReplyFrame(std::string_view reply);
 
 /// Reads whole request frames from a file descriptor (a worker's standard
-/// input).
+/// input), buffered: a request of a few dozen arguments is one read, not
+/// two per argument.
 class RequestFrameReader {
  public:
   explicit RequestFrameReader(int fd) : fd_(fd) {}
@@ -49,6 +50,8 @@ class RequestFrameReader {
  private:
   bool ReadExactly(void* out, size_t n, bool* nothing_read);
   int fd_;
+  std::string buffer_;  // read from fd_, not yet taken
+  size_t taken_ = 0;
 };
 
 /// Writes all of `bytes` to `fd`; false when it cannot.

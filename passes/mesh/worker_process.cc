@@ -102,6 +102,30 @@ bool WorkerProcess::Send(std::string_view frame) {
   return true;
 }
 
+namespace {
+
+/// What ReadSome got when it got no bytes.
+enum : ssize_t { kEnd = 0, kError = -1, kTimeout = -2 };
+
+/// Up to `want` bytes from `fd` into `into`, waiting for them until
+/// `deadline`: a read first (a reply is usually there already), a poll only
+/// when there is nothing yet. The count, or kEnd, kError or kTimeout.
+ssize_t ReadSome(int fd, char* into, size_t want, WorkerProcess::Clock::time_point deadline) {
+  for (;;) {
+    const ssize_t n = ::recv(fd, into, want, MSG_DONTWAIT);
+    if (n > 0) return n;
+    if (n == 0 || errno == ECONNRESET) return kEnd;
+    if (errno == EINTR) continue;
+    if (errno != EAGAIN && errno != EWOULDBLOCK) return kError;
+    pollfd p{fd, POLLIN, 0};
+    const int ready = ::poll(&p, 1, MillisecondsLeft(deadline));
+    if (ready < 0 && errno != EINTR) return kError;
+    if (ready == 0) return kTimeout;
+  }
+}
+
+}  // namespace
+
 WorkerProcess::Outcome WorkerProcess::Receive(Clock::time_point deadline, std::string* reply,
                                               size_t* bytes_received) {
   // Read the header, then the payload into a buffer that grows as bytes
@@ -119,19 +143,11 @@ WorkerProcess::Outcome WorkerProcess::Receive(Clock::time_point deadline, std::s
     if (length && got == *length) {
       payload.resize(got);
       // one request is in flight at a time, so nothing may follow the frame
-      pollfd p{fd_, POLLIN, 0};
-      if (::poll(&p, 1, 0) > 0 && (p.revents & POLLIN)) {
-        char extra;
-        if (::recv(fd_, &extra, 1, MSG_PEEK | MSG_DONTWAIT) == 1) return Outcome::kOverlong;
-      }
+      char extra;
+      if (::recv(fd_, &extra, 1, MSG_PEEK | MSG_DONTWAIT) == 1) return Outcome::kOverlong;
       ++served_;
       return Outcome::kReply;
     }
-    pollfd p{fd_, POLLIN, 0};
-    const int ready = ::poll(&p, 1, MillisecondsLeft(deadline));
-    if (ready < 0 && errno == EINTR) continue;
-    if (ready < 0) return Outcome::kFailed;
-    if (ready == 0) return Outcome::kTimedOut;
     char* into;
     size_t want;
     if (!length) {
@@ -142,9 +158,9 @@ WorkerProcess::Outcome WorkerProcess::Receive(Clock::time_point deadline, std::s
       if (payload.size() < got + want) payload.resize(got + want);
       into = payload.data() + got;
     }
-    const ssize_t n = ::read(fd_, into, want);
-    if (n == 0 || (n < 0 && errno == ECONNRESET)) return Outcome::kEnded;
-    if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
+    const ssize_t n = ReadSome(fd_, into, want, deadline);
+    if (n == kEnd) return Outcome::kEnded;
+    if (n == kTimeout) return Outcome::kTimedOut;
     if (n < 0) return Outcome::kFailed;
     *bytes_received += static_cast<size_t>(n);
     if (!length) {

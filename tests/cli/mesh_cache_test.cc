@@ -172,3 +172,40 @@ TEST_F(MeshCacheTest, AVisualOnlyMeshIsNotParsed) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(MeshCounts(r.err), (std::array<int, 4>{0, 0, 0, 0})) << r.err;
 }
+
+// A compile of many meshes in which the reader crashes on one: that mesh
+// gets one located error, and every other mesh loads (issue 57). The
+// stand-in reader crashes on any file whose name says "crash".
+TEST_F(MeshCacheTest, ACrashOnOneMeshOfManyLosesOnlyThatMesh) {
+  std::string bodies, assets;
+  for (int i = 0; i < 12; ++i) {
+    const std::string name = i == 7 ? "crash" : fmt::format("part{}", i);
+    fs::copy_file(std::string(MDLC_TEST_MODELS) + "/meshes/box.obj", dir_ / (name + ".obj"));
+    assets += fmt::format("    <mesh name=\"{0}\" file=\"{0}.obj\"/>\n", name);
+    bodies += fmt::format(
+        "    <body name=\"b{0}\" pos=\"{0} 0 0\"><freejoint/><geom type=\"mesh\" "
+        "mesh=\"{1}\"/></body>\n",
+        i, name);
+  }
+  const fs::path model = dir_ / "many.xml";
+  std::ofstream(model) << "<mujoco model=\"many\">\n  <asset>\n"
+                       << assets << "  </asset>\n  <worldbody>\n"
+                       << bodies << "  </worldbody>\n</mujoco>\n";
+  Outcome r = CliFixture::Mdlc(
+      fmt::format("compile {} --emit=none --time-passes --no-cache", model.string()),
+      fmt::format("MDLC_MESH_READER={}", MDLC_FAULTY_MESH_READER));
+  EXPECT_NE(r.status, 0);
+  // one error, at the crash mesh's file attribute (line 10 of the model)
+  const std::regex located(
+      "many\\.xml:10:[0-9]+: error: the mesh reader crashed \\(signal 11, SIGSEGV\\) reading "
+      "'[^']*crash\\.obj'");
+  EXPECT_TRUE(std::regex_search(r.err, located)) << r.err;
+  size_t errors = 0;
+  for (size_t at = r.err.find(": error: "); at != std::string::npos;
+       at = r.err.find(": error: ", at + 1)) {
+    ++errors;
+  }
+  EXPECT_EQ(errors, 1u) << r.err;
+  // all twelve were read: the eleven after a crash by the same or a fresh worker
+  EXPECT_EQ(MeshCounts(r.err)[0], 12) << r.err;
+}
