@@ -43,10 +43,7 @@ MeshFacts FactsOf(const TriangleMesh& m) {
 MeshCache::MeshCache(const Limits& limits, MeshReading reading, const MeshAxes& axes,
                      std::shared_ptr<DerivedMeshCache> derived)
     : derived_(std::move(derived)) {
-  // whatever the request says besides the path changes what is read
-  std::vector<std::string> request = EncodeMeshRequest("", limits, axes);
-  request.resize(request.size() - 2);  // "--" and the path
-  settings_ = fmt::format("{}", fmt::join(request, " "));
+  settings_ = fmt::format("{}", fmt::join(EncodeMeshSettings(limits, axes), " "));
   if (reading == MeshReading::kChildProcess) {
     MeshReaderLocation found = FindMeshReader();
     reader_ = std::move(found.path);
@@ -134,10 +131,8 @@ MeshStatus MeshCache::Status(const std::string& path) {
   return entry->status;
 }
 
-void MeshCache::ForEachInParallel(const std::vector<std::string>& paths, size_t threads,
+void MeshCache::ForEachInParallel(const std::vector<std::string>& todo, size_t threads,
                                   const std::function<void(const std::string&)>& work) {
-  const std::set<std::string> unique(paths.begin(), paths.end());
-  const std::vector<std::string> todo(unique.begin(), unique.end());
   threads = std::min(threads, todo.size());
   if (threads <= 1) {
     for (const std::string& p : todo) work(p);
@@ -154,6 +149,12 @@ void MeshCache::ForEachInParallel(const std::vector<std::string>& paths, size_t 
 
 namespace {
 
+/// `paths` without repeats.
+std::vector<std::string> Distinct(const std::vector<std::string>& paths) {
+  const std::set<std::string> unique(paths.begin(), paths.end());
+  return {unique.begin(), unique.end()};
+}
+
 size_t HardwareThreads() { return std::max(1u, std::thread::hardware_concurrency()); }
 
 /// Threads worth reading files of `bytes` in all: each further thread has
@@ -169,10 +170,13 @@ size_t ReadingThreadsFor(uint64_t bytes) {
 void MeshCache::Survey(const std::vector<std::string>& paths) {
   // first what the derived cache knows (hashing is cheap: a thread each),
   // then the files it does not, read on as many threads as they are worth
-  if (derived_) ForEachInParallel(paths, HardwareThreads(), [this](const std::string& p) { LookUp(p); });
+  const std::vector<std::string> files = Distinct(paths);
+  if (derived_) {
+    ForEachInParallel(files, HardwareThreads(), [this](const std::string& p) { LookUp(p); });
+  }
   std::vector<std::string> unknown;
   uint64_t bytes = 0;
-  for (const std::string& p : std::set<std::string>(paths.begin(), paths.end())) {
+  for (const std::string& p : files) {
     if (LookUp(p).cached_facts) continue;
     unknown.push_back(p);
     std::error_code ec;
@@ -181,11 +185,11 @@ void MeshCache::Survey(const std::vector<std::string>& paths) {
   }
   ForEachInParallel(unknown, ReadingThreadsFor(bytes),
                     [this](const std::string& p) { Status(p); });
-  for (const std::string& p : paths) Status(p);  // the known ones: no reading
+  for (const std::string& p : files) Status(p);  // the known ones: no reading
 }
 
 void MeshCache::Prefetch(const std::vector<std::string>& paths) {
-  ForEachInParallel(paths, HardwareThreads(), [this](const std::string& p) { Get(p); });
+  ForEachInParallel(Distinct(paths), HardwareThreads(), [this](const std::string& p) { Get(p); });
 }
 
 }  // namespace mdlc::mesh

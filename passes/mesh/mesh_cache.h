@@ -122,9 +122,8 @@ class MeshCache {
   /// Asks the derived cache for the file's facts, once.
   Entry& LookUp(const std::string& path);
   MeshStatus FindStatus(const std::string& path);
-  /// Runs `work` on each of the distinct `paths`, on up to `threads`
-  /// threads.
-  static void ForEachInParallel(const std::vector<std::string>& paths, size_t threads,
+  /// Runs `work` on each of `todo` (no repeats), on up to `threads` threads.
+  static void ForEachInParallel(const std::vector<std::string>& todo, size_t threads,
                                 const std::function<void(const std::string&)>& work);
 
   Loader loader_;

@@ -51,13 +51,18 @@ constexpr std::string_view kColladaUpAxis = "collada-up-axis=";
 
 }  // namespace
 
-std::vector<std::string> EncodeMeshRequest(const std::string& path, const Limits& limits,
-                                           const MeshAxes& axes) {
+std::vector<std::string> EncodeMeshSettings(const Limits& limits, const MeshAxes& axes) {
   std::vector<std::string> args;
   for (const LimitInfo& l : AllLimits()) {
     args.push_back(fmt::format("{}={}", l.name, limits.*l.field));
   }
   args.push_back(fmt::format("{}{}", kColladaUpAxis, ColladaUpAxisName(axes.collada)));
+  return args;
+}
+
+std::vector<std::string> EncodeMeshRequest(const std::string& path, const Limits& limits,
+                                           const MeshAxes& axes) {
+  std::vector<std::string> args = EncodeMeshSettings(limits, axes);
   args.push_back("--");
   args.push_back(path);
   return args;
@@ -153,10 +158,13 @@ std::optional<MeshOrError> DecodeMeshReply(std::string_view bytes, std::string* 
   auto mesh = std::make_shared<TriangleMesh>();
   mesh->declared_up = static_cast<UpAxis>(declared_up);
   mesh->turned_to_z_up = turned == 1;
+  // the arrays as EncodeMeshReply wrote them: packed coefficients
   mesh->vertices.resize(vertices);
-  std::memcpy(mesh->vertices.data(), in.Take(vertex_bytes).data(), vertex_bytes);
+  std::memcpy(static_cast<void*>(mesh->vertices.data()), in.Take(vertex_bytes).data(),
+              vertex_bytes);
   mesh->triangles.resize(triangles);
-  std::memcpy(mesh->triangles.data(), in.Take(in.left()).data(), after_vertices);
+  std::memcpy(static_cast<void*>(mesh->triangles.data()), in.Take(in.left()).data(),
+              after_vertices);
   for (size_t t = 0; t < triangles; ++t) {
     for (int k = 0; k < 3; ++k) {
       const int32_t index = mesh->triangles[t][k];

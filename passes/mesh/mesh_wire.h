@@ -33,6 +33,10 @@ namespace mdlc::mesh {
 
 inline constexpr uint32_t kMeshWireVersion = 2;
 
+/// The part of a request that is not the file: every limit and the axes.
+/// What changes a read's result besides the file's bytes.
+std::vector<std::string> EncodeMeshSettings(const Limits& limits, const MeshAxes& axes = {});
+
 /// The request to read `path` within `limits`, oriented as `axes` says.
 std::vector<std::string> EncodeMeshRequest(const std::string& path, const Limits& limits,
                                            const MeshAxes& axes = {});

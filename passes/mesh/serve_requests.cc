@@ -11,6 +11,16 @@
 #include "passes/mesh/worker_frames.h"
 
 namespace mdlc::mesh {
+namespace {
+
+/// Says why a request is refused; the exit status for it.
+int Refuse(const std::string& problem) {
+  fmt::print(stderr, "mdlc-mesh-reader: error: {}\n", problem);
+  std::fflush(stderr);
+  return 2;
+}
+
+}  // namespace
 
 int ServeMeshRequests(int in, int out, const ReadMeshFunction& read) {
   RequestFrameReader requests(in);
@@ -19,10 +29,7 @@ int ServeMeshRequests(int in, int out, const ReadMeshFunction& read) {
   for (;;) {
     switch (requests.Next(&args, &problem)) {
       case RequestFrameReader::Status::kEnd: return 0;
-      case RequestFrameReader::Status::kMalformed:
-        fmt::print(stderr, "mdlc-mesh-reader: error: {}\n", problem);
-        std::fflush(stderr);
-        return 2;
+      case RequestFrameReader::Status::kMalformed: return Refuse(problem);
       case RequestFrameReader::Status::kRequest: break;
     }
     const std::vector<std::string_view> request(args.begin(), args.end());
@@ -30,14 +37,9 @@ int ServeMeshRequests(int in, int out, const ReadMeshFunction& read) {
     Limits limits;
     MeshAxes axes;
     std::string path;
-    MeshOrError result;
-    if (auto bad = DecodeMeshRequest(request, &path, &limits, &axes)) {
-      fmt::print(stderr, "mdlc-mesh-reader: error: {}\n", *bad);
-      std::fflush(stderr);
-      return 2;
-    }
-    result = read(path, limits, axes);
-    if (!WriteAll(out, EncodeReplyFrame(EncodeMeshReply(result)))) return 3;
+    if (auto bad = DecodeMeshRequest(request, &path, &limits, &axes)) return Refuse(*bad);
+    const std::string reply = EncodeMeshReply(read(path, limits, axes));
+    if (!WriteAll(out, ReplyFrameHeader(reply.size())) || !WriteAll(out, reply)) return 3;
   }
 }
 

@@ -33,11 +33,9 @@ std::string EncodeRequestFrame(const std::vector<std::string>& args) {
   return out;
 }
 
-std::string EncodeReplyFrame(std::string_view reply) {
+std::string ReplyFrameHeader(uint64_t length) {
   std::string out;
-  out.reserve(kReplyFrameHeader + reply.size());
-  Put(out, uint64_t{reply.size()});
-  out += reply;
+  Put(out, length);
   return out;
 }
 

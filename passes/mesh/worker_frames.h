@@ -33,8 +33,9 @@ inline constexpr uint32_t kMaxRequestArgumentBytes = 1 << 20;
 /// `args` as a request frame.
 std::string EncodeRequestFrame(const std::vector<std::string>& args);
 
-/// `reply` as a reply frame.
-std::string EncodeReplyFrame(std::string_view reply);
+/// The header of a reply frame whose reply is `length` bytes; the reply
+/// follows it as it is (a mesh's reply can be hundreds of MB: not copied).
+std::string ReplyFrameHeader(uint64_t length);
 
 /// Reads whole request frames from a file descriptor (a worker's standard
 /// input), buffered: a request of a few dozen arguments is one read, not

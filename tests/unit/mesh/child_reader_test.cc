@@ -23,16 +23,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class ChildReaderTest : public ::testing::Test {
+class ChildReaderTest : public MeshFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           fmt::format("mdlc_child_reader_{}_{}", ::getpid(),
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   /// An executable shell script standing in for the reader.
   std::string StandIn(const std::string& body) {
     const fs::path script = dir_ / "reader.sh";
@@ -40,8 +32,6 @@ class ChildReaderTest : public ::testing::Test {
     ::chmod(script.c_str(), 0755);
     return script.string();
   }
-
-  fs::path dir_;
 };
 
 std::string RealReader() {

@@ -33,7 +33,9 @@ mdlc::mesh::MeshOrError ReadOrMisbehave(const std::string& path, const mdlc::Lim
     for (;;) ::pause();
   }
   if (name.find("garbage") != std::string::npos) {
-    mdlc::mesh::WriteAll(STDOUT_FILENO, mdlc::mesh::EncodeReplyFrame("no reply, honestly"));
+    const std::string_view garbage = "no reply, honestly";
+    mdlc::mesh::WriteAll(STDOUT_FILENO, mdlc::mesh::ReplyFrameHeader(garbage.size()));
+    mdlc::mesh::WriteAll(STDOUT_FILENO, garbage);
     ::_exit(0);
   }
   if (name.find("vanish") != std::string::npos) ::_exit(0);

@@ -6,8 +6,10 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <Eigen/Core>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -21,6 +23,29 @@ namespace mdlc::testing {
 inline std::string MeshPath(std::string_view name) {
   return fmt::format("{}/meshes/{}", MDLC_TEST_MODELS, name);
 }
+
+/// A test with a folder of its own, named for the test and removed after
+/// it, into which test meshes are copied under the names a test needs.
+class MeshFolderTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = std::filesystem::temp_directory_path() /
+           fmt::format("mdlc_{}_{}_{}", test->test_suite_name(), ::getpid(), test->name());
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  /// A copy of the test mesh `mesh` named `name` in the test's folder.
+  std::string Copy(const std::string& mesh, const std::string& name) {
+    const std::filesystem::path to = dir_ / name;
+    std::filesystem::copy_file(MeshPath(mesh), to,
+                               std::filesystem::copy_options::overwrite_existing);
+    return to.string();
+  }
+
+  std::filesystem::path dir_;
+};
 
 /// EXPECT that two matrices agree entry by entry within `tol`.
 inline void ExpectNear(const Eigen::MatrixXd& actual, const Eigen::MatrixXd& expected, double tol,

@@ -24,32 +24,14 @@
 namespace mdlc::testing {
 namespace {
 
-namespace fs = std::filesystem;
-
-class ReaderPoolTest : public ::testing::Test {
+class ReaderPoolTest : public MeshFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           fmt::format("mdlc_reader_pool_{}_{}", ::getpid(),
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  /// A copy of the test mesh `mesh` named `name` in the test's folder.
-  std::string Copy(const std::string& mesh, const std::string& name) {
-    const fs::path to = dir_ / name;
-    fs::copy_file(MeshPath(mesh), to, fs::copy_options::overwrite_existing);
-    return to.string();
-  }
   /// `n` copies of box.obj, ok0.obj ... .
   std::vector<std::string> Boxes(int n, const std::string& stem = "ok") {
     std::vector<std::string> paths;
     for (int i = 0; i < n; ++i) paths.push_back(Copy("box.obj", fmt::format("{}{}.obj", stem, i)));
     return paths;
   }
-
-  fs::path dir_;
 };
 
 std::string RealReader() {

@@ -17,18 +17,12 @@
 namespace mdlc::testing {
 namespace {
 
-namespace fs = std::filesystem;
-
-class WarmCacheTest : public ::testing::Test {
+class WarmCacheTest : public MeshFolderTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           fmt::format("mdlc_warm_cache_{}_{}", ::getpid(),
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
+    MeshFolderTest::SetUp();
     derived_ = std::make_shared<mesh::DerivedMeshCache>((dir_ / "cache").string());
   }
-  void TearDown() override { fs::remove_all(dir_); }
 
   /// A compile's mesh cache on the test's derived-cache folder, reading in
   /// this process, with reading settings `settings`.
@@ -37,13 +31,7 @@ class WarmCacheTest : public ::testing::Test {
         [](const std::string& path) { return mesh::LoadMeshInProcess(path); }, derived_,
         settings);
   }
-  std::string Copy(const std::string& mesh, const std::string& name) {
-    const fs::path to = dir_ / name;
-    fs::copy_file(MeshPath(mesh), to, fs::copy_options::overwrite_existing);
-    return to.string();
-  }
 
-  fs::path dir_;
   std::shared_ptr<mesh::DerivedMeshCache> derived_;
 };
 
