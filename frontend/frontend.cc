@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <filesystem>
+
+#include "frontend/sdf/model_folder.h"
 #include "frontend/xacro/xacro.h"
 #include "frontend/xml/start_tags.h"
 #include "ir/load_report.h"
@@ -20,16 +23,25 @@ std::optional<Format> XacroFormat(FileId file, const SourceManager& sources) {
   return std::nullopt;
 }
 
-std::optional<ModelId> ReadModelFile(const std::string& path, FrontendContext& ctx,
+std::optional<ModelId> ReadModelFile(const std::string& given_path, FrontendContext& ctx,
                                      std::optional<Format> format) {
+  std::string path = given_path;
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    // a Gazebo model folder: its model.config names the file
+    std::optional<std::string> model_file = sdf::ModelFileInFolder(path, {}, ctx);
+    if (!model_file) return std::nullopt;
+    path = *model_file;
+    if (!format) format = FormatFromPath(path).value_or(Format::Sdf);
+  }
   // a .xacro's format is its root element's, known once the file is read
   const bool xacro_by_name = !format && xacro::IsXacroPath(path);
   if (!format && !xacro_by_name) {
     format = FormatFromPath(path);
     if (!format) {
       ctx.diags.Report(DiagKind::UnknownFormat, {},
-                       fmt::format("'{}': unknown file extension; expected .urdf, .sdf, .xml "
-                                   "(MJCF) or .dmd.yaml, or a format named ({})",
+                       fmt::format("'{}': unknown file extension; expected .urdf, .sdf, "
+                                   ".world, .xml (MJCF) or .dmd.yaml, or a format named ({})",
                                    path, kFormatNames));
       return std::nullopt;
     }

@@ -22,7 +22,7 @@ std::optional<Format> FormatFromPath(std::string_view path) {
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   auto ends_with = [&](std::string_view suffix) { return std::string_view(lower).ends_with(suffix); };
   if (ends_with(".urdf")) return Format::Urdf;
-  if (ends_with(".sdf")) return Format::Sdf;
+  if (ends_with(".sdf") || ends_with(".world")) return Format::Sdf;  // .world: Gazebo's worlds
   if (ends_with(".xml")) return Format::Mjcf;
   if (ends_with(".dmd.yaml")) return Format::Directives;
   return std::nullopt;

@@ -15,6 +15,7 @@
 #include <unordered_map>
 
 #include "frontend/assets/package_map.h"
+#include "frontend/sdf/model_folder.h"
 #include "frontend/sdf/sdf_reader_detail.h"
 #include "frontend/xml/trim.h"
 #include "ir/load_report.h"
@@ -39,57 +40,6 @@ bool EndsWith(std::string_view s, std::string_view suffix) {
 }
 }  // namespace
 
-// A directory URI names a Gazebo-style model folder: its model.config says
-// which file holds the model (the newest SDFormat version mdlc reads).
-std::optional<std::string> SdfReader::ModelFileInFolder(const std::string& dir, Loc loc) {
-  const std::string config = dir + "/model.config";
-  std::error_code ec;
-  if (!fs::exists(config, ec)) {
-    diags().Report(DiagKind::FileNotFound, loc,
-                   fmt::format("'{}' is a folder without a model.config naming its model file",
-                               dir));
-    return std::nullopt;
-  }
-  LoadError error;
-  auto file = ctx_.sources.LoadFile(config, loc, &error);
-  if (!file) {
-    ReportLoadError(diags(), loc, error, fmt::format("cannot read '{}'", config));
-    return std::nullopt;
-  }
-  std::shared_ptr<const xml::XmlDocument> doc = ParseXml(*file, ctx_);
-  if (!doc) return std::nullopt;
-  documents_.push_back(doc);
-  std::string best;
-  int best_version = -1;
-  for (auto e = doc->Root().FirstChild(); e; e = e.NextSibling()) {
-    if (e.Name() != "sdf") continue;
-    int version = 0;
-    if (auto v = e.Attribute("version"); v.present()) {
-      // "1.9" -> 109 (an unreadable version ranks lowest)
-      std::string_view t = v.value;
-      size_t dot = t.find('.');
-      if (dot != std::string_view::npos) {
-        version = std::atoi(std::string(t.substr(0, dot)).c_str()) * 100 +
-                  std::atoi(std::string(t.substr(dot + 1)).c_str());
-      }
-    }
-    if (version > 111) continue;  // newer than mdlc reads
-    const std::string text = e.Text();
-    const std::string_view trimmed = xml::Trim(text);
-    if (trimmed.empty()) continue;
-    if (version > best_version) {
-      best_version = version;
-      best = std::string(trimmed);
-    }
-  }
-  if (best.empty()) {
-    diags().Report(DiagKind::MissingElement, doc->Root().GetLoc(),
-                   "model.config names no <sdf> model file");
-    return std::nullopt;
-  }
-  return dir + "/" + best;
-}
-
 void SdfReader::ReadInclude(const xml::XmlElement& e, const SdfFile& file, ModelScope parent) {
   CheckChildren(e, {"uri", "name", "static", "pose", "placement_frame", "plugin"}, {});
   attrs_.WarnUnknownAttributes(e, {"merge"});
@@ -112,7 +62,7 @@ void SdfReader::ReadInclude(const xml::XmlElement& e, const SdfFile& file, Model
   if (!path) return;
   std::error_code ec;
   if (fs::is_directory(*path, ec)) {
-    path = ModelFileInFolder(*path, uri_loc);
+    path = ModelFileInFolder(*path, uri_loc, ctx_);
     if (!path) return;
   }
   // include cycles (SDF-033): the same file already on the include chain

@@ -238,7 +238,6 @@ class SdfReader {
   void ReadModelBody(const xml::XmlElement& e, ModelScope& s);
   void DrainPendingModels(size_t down_to);
   void ReadInclude(const xml::XmlElement& e, const SdfFile& file, ModelScope parent);
-  std::optional<std::string> ModelFileInFolder(const std::string& dir, Loc loc);
   void MergeModel(const xml::XmlElement& model, const SdfFile& file, ModelScope parent,
                   const ModelOverrides& overrides);
   void IncludeUrdf(FileId file, ModelScope parent, const ModelOverrides& overrides, bool merge);

@@ -14,7 +14,6 @@ namespace {
 struct AssetsFlags {
   CompileFlags compile;
   std::string output;
-  bool json = false;
 };
 
 int Run(const AssetsFlags& flags) {
@@ -24,7 +23,7 @@ int Run(const AssetsFlags& flags) {
   setup.adjust = [](Options& options) { options.skip_backend = true; };  // files known by then
   const CliCompile compiled = CompileForCli(flags.compile, setup);
   if (!compiled.result) return compiled.status;
-  const tools::AssetReport report = tools::ListAssets(*compiled.result, flags.json);
+  const tools::AssetReport report = tools::ListAssets(*compiled.result, flags.compile.output_format == "json");
   if (int status = WriteOutput(flags.output, report.text)) return status;
   return report.all_found && compiled.result->ok() ? 0 : 1;
 }
@@ -34,8 +33,9 @@ int Run(const AssetsFlags& flags) {
 Subcommand AddAssetsCommand(CLI::App& app) {
   auto flags = std::make_shared<AssetsFlags>();
   CLI::App* assets = app.add_subcommand("assets", "List every file a model uses, found or not");
+  flags->compile.output_formats = {"text", "json"};
   AddCompileFlags(assets, flags->compile);
-  assets->add_flag("--json", flags->json, "Print JSON instead of text");
+  AddJsonAlias(assets, flags->compile);
   assets->add_option("-o,--output", flags->output, "Write the output here instead of stdout");
   return {assets, [flags] { return Run(*flags); }};
 }

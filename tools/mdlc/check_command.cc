@@ -18,7 +18,6 @@ struct CheckFlags {
   CompileFlags compile;
   std::string output;
   int jobs = 1;
-  std::string format = "text";
   std::string skip_ok_from;
 };
 
@@ -27,9 +26,10 @@ int Run(const CheckFlags& flags) {
   if (int status = ToOptions(flags.compile, check.compile)) return status;
   check.paths = flags.compile.files;
   check.jobs = flags.jobs > 0 ? flags.jobs : static_cast<int>(std::thread::hardware_concurrency());
-  check.format = flags.format == "json"    ? tools::CheckFormat::JsonLines
-                 : flags.format == "sarif" ? tools::CheckFormat::Sarif
-                                           : tools::CheckFormat::Text;
+  const std::string& format = flags.compile.output_format;
+  check.format = format == "json"    ? tools::CheckFormat::JsonLines
+                 : format == "sarif" ? tools::CheckFormat::Sarif
+                                     : tools::CheckFormat::Text;
   check.skip_ok_from = flags.skip_ok_from;
   check.progress = isatty(STDERR_FILENO) && !isatty(STDOUT_FILENO);
   check.color = flags.compile.color == "always" ||
@@ -56,10 +56,11 @@ Subcommand AddCheckCommand(CLI::App& app) {
   auto flags = std::make_shared<CheckFlags>();
   CLI::App* check =
       app.add_subcommand("check", "Compile many models, each on its own, and report");
+  // json: JSON Lines; sarif: SARIF 2.1.0
+  flags->compile.output_formats = {"text", "json", "sarif"};
   AddCompileFlags(check, flags->compile);
+  AddJsonAlias(check, flags->compile);
   check->add_option("-j,--jobs", flags->jobs, "Compile this many files at once (0: one per core)");
-  check->add_option("--format", flags->format, "text, json (JSON Lines) or sarif (2.1.0)")
-      ->check(CLI::IsMember({"text", "json", "sarif"}));
   check->add_option("--skip-ok", flags->skip_ok_from,
                     "Skip the files an earlier --format=json report lists as ok");
   check->add_option("-o,--output", flags->output, "Write the report here instead of stdout");

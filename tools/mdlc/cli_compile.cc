@@ -4,11 +4,13 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <memory>
 #include <string_view>
 
+#include "cli_input.h"
 #include "diagnostic_stream.h"
 
 namespace mdlc::cli {
@@ -60,21 +62,54 @@ Result& KeepUntilExit(Result result) {
   return *kept;
 }
 
+bool IsOutputFormat(const CompileFlags& flags, const std::string& name) {
+  return std::find(flags.output_formats.begin(), flags.output_formats.end(), name) !=
+         flags.output_formats.end();
+}
+
 }  // namespace
 
 void AddCompileFlags(CLI::App* command, CompileFlags& flags) {
   command
       ->add_option("files", flags.files,
-                   "Model files (.urdf, .sdf, .xml, .dmd.yaml, .xacro), and NAME:=VALUE "
-                   "arguments for a .xacro")
+                   "Model files (.urdf, .sdf, .world, .xml, .dmd.yaml, .xacro), Gazebo model "
+                   "folders, '-' for standard input, and NAME:=VALUE arguments for a .xacro")
       ->required();
   command
       ->add_option("-x,--input-format", flags.input_format,
-                   "Read the files as this format whatever their names: urdf, sdf, mjcf or dmd")
+                   fmt::format("Read the files as this format whatever their names: {}",
+                               kInputFormatNames))
       ->check([](const std::string& name) {
-        return FormatFromName(name) ? std::string()
-                                    : fmt::format("unknown format '{}'; expected {}", name,
-                                                  kFormatNames);
+        return IsInputFormatName(name) ? std::string()
+                                       : fmt::format("unknown format '{}'; expected {}", name,
+                                                     kInputFormatNames);
+      });
+  if (flags.output_format.empty() && !flags.output_formats.empty()) {
+    flags.output_format = flags.output_formats.front();
+  }
+  std::string outputs;
+  for (const std::string& name : flags.output_formats) {
+    outputs += (outputs.empty() ? "" : ", ") + name;
+  }
+  command
+      ->add_option_function<std::vector<std::string>>(
+          "--format",
+          [&flags](const std::vector<std::string>& names) {
+            for (const std::string& name : names) {
+              (IsOutputFormat(flags, name) ? flags.output_format : flags.input_format) = name;
+            }
+          },
+          outputs.empty()
+              ? fmt::format("The files' format, whatever their names: {}", kInputFormatNames)
+              : fmt::format("The output ({}; default {}) or the files' format, whatever their "
+                            "names ({}); may be given twice",
+                            outputs, flags.output_formats.front(), kInputFormatNames))
+      ->allow_extra_args(false)
+      ->check([&flags, outputs](const std::string& name) {
+        return IsOutputFormat(flags, name) || IsInputFormatName(name)
+                   ? std::string()
+                   : fmt::format("unknown format '{}'; expected {}{}", name,
+                                 outputs.empty() ? "" : outputs + " or ", kInputFormatNames);
       });
   command->add_option("--diagnostics-format", flags.diagnostics_format, "text or json")
       ->check(CLI::IsMember({"text", "json"}));
@@ -113,6 +148,11 @@ void AddCompileFlags(CLI::App* command, CompileFlags& flags) {
                       "Keep derived mesh data here (default: $MDLC_CACHE_DIR, "
                       "$XDG_CACHE_HOME/mdlc or ~/.cache/mdlc)");
   command->add_flag("--no-cache", flags.no_cache, "Compute derived mesh data every time");
+}
+
+void AddJsonAlias(CLI::App* command, CompileFlags& flags) {
+  command->add_flag_callback(
+      "--json", [&flags] { flags.output_format = "json"; }, "The same as --format json");
 }
 
 int ToOptions(const CompileFlags& flags, Options& options) {
@@ -174,11 +214,15 @@ CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup) {
   }
 
   std::vector<Input> inputs;
-  const std::optional<Format> format =
-      flags.input_format.empty() ? std::nullopt : FormatFromName(flags.input_format);
   for (const std::string& file : flags.files) {
     if (file.find(":=") == std::string::npos || file.find(":=") == 0) {
-      inputs.push_back(Input::File(file, format));
+      std::string problem;
+      std::optional<Input> input = InputFor(file, flags.input_format, &problem);
+      if (!input) {
+        fmt::print(stderr, "mdlc: error: {}\n", problem);
+        return {1, nullptr};
+      }
+      inputs.push_back(std::move(*input));
     }
   }
   Result& result = KeepUntilExit(Compile(inputs, options));

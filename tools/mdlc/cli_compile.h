@@ -16,8 +16,16 @@ namespace mdlc::cli {
 
 /// The flags of every subcommand that compiles (AddCompileFlags).
 struct CompileFlags {
-  std::vector<std::string> files;
-  std::string input_format;  // -x: the files' format, whatever their names (empty: by name)
+  std::vector<std::string> files;  // '-' is standard input
+  /// -x, or --format naming an input format: the files' format, whatever
+  /// their names (empty: by name); urdf, sdf, mjcf, dmd or xacro.
+  std::string input_format;
+  /// What --format may name besides an input format: the subcommand's output
+  /// formats, its default first (none: --format names only input formats).
+  /// The two sets share no name, so one flag serves both: `--format json`,
+  /// `--format urdf`, or both at once.
+  std::vector<std::string> output_formats;
+  std::string output_format;  // the one asked for (--format, or --json)
   std::string diagnostics_format = "text";
   std::vector<std::string> warning_flags;  // -W<...>
   bool strict = false;
@@ -34,7 +42,11 @@ struct CompileFlags {
   bool no_cache = false;
 };
 
+/// Adds the compile flags; set flags.output_formats first.
 void AddCompileFlags(CLI::App* command, CompileFlags& flags);
+
+/// Adds `--json`, the older spelling of `--format json`.
+void AddJsonAlias(CLI::App* command, CompileFlags& flags);
 
 /// Sets `options` from the flags; 0, or the exit status of bad usage (2,
 /// reported).

@@ -84,7 +84,10 @@ int Run(const CompileCommandFlags& flags) {
     return WriteOutput(flags.output, ir::PrintModule(result.module(), result.sources(), print));
   }
   if (flags.emit == "none") return 0;
-  if (flags.emit == "summary") return WriteOutput(flags.output, tools::FormatSummary(result.model()));
+  // --format json asks for the machine-readable output: plant-json
+  if (flags.emit == "summary" && flags.compile.output_format != "json") {
+    return WriteOutput(flags.output, tools::FormatSummary(result.model()));
+  }
 
   backend::PlantJsonOptions json_options;
   json_options.force_mass_matrix = flags.mass_matrix;
@@ -96,6 +99,7 @@ int Run(const CompileCommandFlags& flags) {
 Subcommand AddCompileCommand(CLI::App& app) {
   auto flags = std::make_shared<CompileCommandFlags>();
   CLI::App* compile = app.add_subcommand("compile", "Compile robot model files into a plant");
+  flags->compile.output_formats = {"text", "json"};  // json: --emit=plant-json
   AddCompileFlags(compile, flags->compile);
   compile->add_option("--emit", flags->emit, "What to print: summary, ir, plant-json or none")
       ->check(CLI::IsMember({"summary", "ir", "plant-json", "none"}));

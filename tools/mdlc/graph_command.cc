@@ -1,6 +1,7 @@
 // graph_command.cc - `mdlc graph`: the kinematic or frame graph as Graphviz
 // DOT or JSON; rendered to .svg/.png/.pdf when Graphviz's dot is installed
-// (and never needing it otherwise).
+// (and never needing it otherwise). A model that failed to compile is drawn
+// as far as it compiled, after its errors; the exit status is then 1.
 #include <fmt/format.h>
 
 #include <cstdio>
@@ -8,6 +9,7 @@
 
 #include "cli_compile.h"
 #include "graph.h"
+#include "partial_model.h"
 #include "subcommands.h"
 
 namespace mdlc::cli {
@@ -17,7 +19,6 @@ struct GraphFlags {
   CompileFlags compile;
   std::string output;
   std::string kind = "kinematic";
-  std::string format = "dot";
 };
 
 /// `dot -T<format> -o OUT`, fed `text`; false (reported) when it fails.
@@ -38,18 +39,35 @@ bool RenderWithGraphviz(const std::string& text, const std::string& output) {
   return true;
 }
 
-int Run(const GraphFlags& flags) {
-  const CliCompile compiled = CompileForCli(flags.compile);
-  if (compiled.status) return compiled.status;
-  const backend::CompiledModel& model = compiled.result->model();
+int WriteGraph(const GraphFlags& flags, const backend::CompiledModel& model) {
   const auto kind =
       flags.kind == "frames" ? tools::GraphKind::Frames : tools::GraphKind::Kinematic;
-  if (flags.format == "json") return WriteOutput(flags.output, tools::FormatGraphJson(model, kind));
+  if (flags.compile.output_format == "json") {
+    return WriteOutput(flags.output, tools::FormatGraphJson(model, kind));
+  }
   const std::string dot = tools::FormatGraphDot(model, kind);
   for (const char* rendered : {".svg", ".png", ".pdf"}) {
     if (flags.output.ends_with(rendered)) return RenderWithGraphviz(dot, flags.output) ? 0 : 1;
   }
   return WriteOutput(flags.output, dot);
+}
+
+int Run(const GraphFlags& flags) {
+  CompileSetup setup;
+  setup.keep_failed = true;  // drawn as far as it compiled
+  const CliCompile compiled = CompileForCli(flags.compile, setup);
+  if (!compiled.result) return compiled.status;
+  const Result& result = *compiled.result;
+  const backend::CompiledModel* model = ModelAsFarAsCompiled(result);
+  int status = 0;
+  if (model) {
+    if (!result.ok()) {
+      fmt::print(stderr, "mdlc: note: graph of the model as far as it compiled; what the "
+                         "errors above name is left out\n");
+    }
+    status = WriteGraph(flags, *model);
+  }
+  return result.ok() ? status : ReportFailure(flags.compile, result);
 }
 
 }  // namespace
@@ -58,11 +76,10 @@ Subcommand AddGraphCommand(CLI::App& app) {
   auto flags = std::make_shared<GraphFlags>();
   CLI::App* graph =
       app.add_subcommand("graph", "Print the kinematic or frame graph (DOT, JSON)");
+  flags->compile.output_formats = {"dot", "json"};
   AddCompileFlags(graph, flags->compile);
   graph->add_option("--kind", flags->kind, "kinematic (default) or frames")
       ->check(CLI::IsMember({"kinematic", "frames"}));
-  graph->add_option("--format", flags->format, "dot (default) or json")
-      ->check(CLI::IsMember({"dot", "json"}));
   graph->add_option("-o,--output", flags->output,
                     "Write here instead of stdout; .svg, .png or .pdf render with Graphviz");
   return {graph, [flags] { return Run(*flags); }};

@@ -1,8 +1,14 @@
 // inspect_commands.cc - `mdlc tree` and `mdlc stats`: compile, then print
-// what a formatter makes of the model (text, or JSON with --json).
+// what a formatter makes of the model (text, or JSON with --format json).
+// A model that failed to compile is printed as far as it compiled (a mesh
+// in an unknown package leaves the tree whole), after its errors; the exit
+// status is then 1.
+#include <fmt/format.h>
+
 #include <memory>
 
 #include "cli_compile.h"
+#include "partial_model.h"
 #include "stats.h"
 #include "subcommands.h"
 #include "tree.h"
@@ -10,31 +16,52 @@
 namespace mdlc::cli {
 namespace {
 
-using Formatter = std::string (*)(const Result&);
+using Formatter = std::string (*)(const backend::CompiledModel&, const Result&);
 
 struct InspectFlags {
   CompileFlags compile;
   std::string output;
-  bool json = false;
 };
+
+int Inspect(const InspectFlags& flags, const char* name, Formatter format) {
+  CompileSetup setup;
+  setup.keep_failed = true;  // printed as far as it compiled
+  const CliCompile compiled = CompileForCli(flags.compile, setup);
+  if (!compiled.result) return compiled.status;
+  const Result& result = *compiled.result;
+  const backend::CompiledModel* model = ModelAsFarAsCompiled(result);
+  int status = 0;
+  if (model) {
+    if (!result.ok()) {
+      fmt::print(stderr,
+                 "mdlc: note: {} of the model as far as it compiled; what the errors "
+                 "above name is left out\n",
+                 name);
+    }
+    status = WriteOutput(flags.output, format(*model, result));
+  }
+  return result.ok() ? status : ReportFailure(flags.compile, result);
+}
 
 Subcommand AddInspectCommand(CLI::App& app, const char* name, const char* description,
                              Formatter text, Formatter json) {
   auto flags = std::make_shared<InspectFlags>();
   CLI::App* command = app.add_subcommand(name, description);
+  flags->compile.output_formats = {"text", "json"};
   AddCompileFlags(command, flags->compile);
-  command->add_flag("--json", flags->json, "Print JSON instead of text");
+  AddJsonAlias(command, flags->compile);
   command->add_option("-o,--output", flags->output, "Write the output here instead of stdout");
-  return {command, [flags, text, json] {
-            const CliCompile compiled = CompileForCli(flags->compile);
-            if (compiled.status) return compiled.status;
-            const Result& result = *compiled.result;
-            return WriteOutput(flags->output, flags->json ? json(result) : text(result));
+  return {command, [flags, name, text, json] {
+            return Inspect(*flags, name, flags->compile.output_format == "json" ? json : text);
           }};
 }
 
-std::string Tree(const Result& result) { return tools::FormatTree(result.model()); }
-std::string TreeJson(const Result& result) { return tools::FormatTreeJson(result.model()); }
+std::string Tree(const backend::CompiledModel& model, const Result&) {
+  return tools::FormatTree(model);
+}
+std::string TreeJson(const backend::CompiledModel& model, const Result&) {
+  return tools::FormatTreeJson(model);
+}
 
 }  // namespace
 

@@ -6,13 +6,18 @@
 //                        [--print-after=PASS] [--print-after-all] [--time-passes]
 //   mdlc convert FILE... --to urdf -o OUT [--copy-assets DIR] [--keep-package-uris]
 //                        [--fuse-fixed]
-//   mdlc tree FILE... [--json]      each model instance's kinematic tree
-//   mdlc stats FILE... [--json]     mass properties and counts
+//   mdlc tree FILE... [--format json] each model instance's kinematic tree
+//   mdlc stats FILE... [--format json] mass properties and counts
 //   mdlc graph FILE... [--kind kinematic|frames] [--format dot|json] [-o OUT(.dot|.svg|.png)]
-//   mdlc assets FILE... [--json]    every file the model uses, found or not
+//   mdlc assets FILE... [--format json] every file the model uses, found or not
 //   mdlc view FILE... -o model.html   the model in 3D, in one offline HTML page
 //   mdlc check PATH... [-j N] [--format text|json|sarif] [--skip-ok REPORT.jsonl]
 //   mdlc --list-passes
+//
+// FILE is a model file, a Gazebo model folder (its model.config names the
+// file) or '-' (standard input). --format names the output (text, json, ...)
+// or the input's format (urdf, sdf, mjcf, dmd, xacro; also -x); --json is
+// the older spelling of --format json.
 //
 // Each subcommand lives in its own file (subcommands.h); what the compiling
 // ones share is in cli_compile.h.
@@ -20,6 +25,8 @@
 // Exit status: 0 on success, 1 when any error was reported, 2 on bad usage.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+
+#include <filesystem>
 
 #include "mdlc/mdlc.h"
 #include "passes/pass_registry.h"
@@ -30,6 +37,8 @@ int main(int argc, char** argv) {
   mdlc::KeepFreedMemoryForReuse();  // one batch that exits when done
   CLI::App app{"mdlc - a model compiler for robotics (URDF, SDFormat, MJCF, Model Directives)"};
   app.set_version_flag("--version", fmt::format("mdlc {}", mdlc::kVersion));
+  // the usage line names the program as it was called, without its folder
+  if (argc > 0) app.name(std::filesystem::path(argv[0]).filename().string());
   app.require_subcommand(0, 1);
   bool list_passes = false;
   app.add_flag("--list-passes", list_passes, "List the registered passes and exit");

@@ -54,8 +54,8 @@ struct MeshUse {
 
 class Stats {
  public:
-  explicit Stats(const Result& result)
-      : model_(result.model()),
+  Stats(const backend::CompiledModel& model, const Result& result)
+      : model_(model),
         plant_(model_.plant),
         X_WB_(backend::BodyPosesInWorld(plant_, backend::DefaultPositions(plant_))),
         per_instance_(plant_.model_instances.size()) {
@@ -190,6 +190,8 @@ class Stats {
     for (size_t i = 0; i < meshes_.size(); ++i) {
       MeshUse& use = meshes_[i];
       use.size = sizes[i];
+      // a model printed as far as it compiled keeps meshes it did not find
+      if (use.mesh->resolved.empty()) use.size.error = "not found";
       for (Totals* t : {&per_instance_[use.geometry->model.index()], &total_}) {
         ++t->meshes;
         t->mesh_files.insert(use.mesh->resolved);
@@ -269,7 +271,11 @@ class Stats {
 
 }  // namespace
 
-std::string FormatStats(const Result& result) { return Stats(result).Text(); }
-std::string FormatStatsJson(const Result& result) { return Stats(result).Json(); }
+std::string FormatStats(const backend::CompiledModel& model, const Result& result) {
+  return Stats(model, result).Text();
+}
+std::string FormatStatsJson(const backend::CompiledModel& model, const Result& result) {
+  return Stats(model, result).Json();
+}
 
 }  // namespace mdlc::tools

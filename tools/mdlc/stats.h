@@ -16,7 +16,9 @@ namespace mdlc::tools {
 /// and shape, actuators, constraints and cameras; per mesh geometry, its
 /// file's vertex and triangle counts, and per instance and in total their
 /// sums (Result::MeshSizes: the meshes the compile read, the rest read now).
-std::string FormatStats(const Result& result);
-std::string FormatStatsJson(const Result& result);
+/// `model` is result.model(), or the part of it a failed compile made
+/// (partial_model.h).
+std::string FormatStats(const backend::CompiledModel& model, const Result& result);
+std::string FormatStatsJson(const backend::CompiledModel& model, const Result& result);
 
 }  // namespace mdlc::tools
