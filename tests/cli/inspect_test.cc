@@ -314,6 +314,50 @@ TEST_F(InspectTest, AssetsListsWhatWasFoundAndWhyTheRestWasNot) {
   EXPECT_EQ(Mdlc("assets " + kScara).status, 0);
 }
 
+TEST_F(InspectTest, AssetsListEachFileOnceWithMjcfTexturesAndNoManifests) {  // issue 58, item 8
+  // one mesh named two ways (package:// and a relative path), a package.xml
+  // that found the package
+  fs::create_directories(dir_ / "p");
+  Write("p/package.xml", "<package><name>p</name></package>");
+  fs::copy_file(fs::path(MDLC_TEST_MODELS) / "meshes" / "box.obj", dir_ / "p" / "box.obj");
+  const fs::path robot = Write("p/r.urdf", R"(<robot name="r">
+  <link name="a"><visual><geometry><mesh filename="package://p/box.obj"/></geometry></visual></link>
+  <link name="b"><visual><geometry><mesh filename="box.obj"/></geometry></visual></link>
+  <joint name="j" type="fixed"><parent link="a"/><child link="b"/></joint>
+</robot>)");
+  const Outcome urdf = Mdlc("assets --format json --package-path " + dir_.string() + " " +
+                            robot.string());
+  ASSERT_EQ(urdf.status, 0) << urdf.err;
+  const json list = json::parse(urdf.out);
+  ASSERT_EQ(list.size(), 2u) << urdf.out;  // the model and its one mesh; no package.xml
+  EXPECT_EQ(list[0]["kind"], "model");
+  EXPECT_EQ(list[1]["kind"], "mesh");
+  EXPECT_EQ(list[1]["uses"], 2);
+
+  // MJCF textures, found in the compiler's texturedir, or not found
+  fs::create_directories(dir_ / "tex");
+  Write("tex/wood.png", "not really a png");
+  const fs::path scene = Write("scene.xml", R"(<mujoco model="s">
+  <compiler texturedir="tex"/>
+  <asset>
+    <texture name="wood" type="2d" file="wood.png"/>
+    <texture name="sky" type="skybox" file="sky.png"/>
+    <material name="m" texture="wood"/>
+  </asset>
+  <worldbody><body name="b"><freejoint/><geom size="0.1" material="m"/></body></worldbody>
+</mujoco>)");
+  const Outcome mjcf = Mdlc("assets --format json " + scene.string());
+  EXPECT_EQ(mjcf.status, 1) << mjcf.err;  // sky.png is missing
+  const json textures = json::parse(mjcf.out);
+  ASSERT_EQ(textures.size(), 3u) << mjcf.out;
+  EXPECT_EQ(textures[1]["kind"], "texture");
+  EXPECT_EQ(textures[1]["uri"], "wood.png");
+  EXPECT_EQ(textures[1]["path"], (dir_ / "tex" / "wood.png").string());
+  EXPECT_EQ(textures[1]["bytes"], 16);
+  EXPECT_EQ(textures[2]["uri"], "sky.png");
+  EXPECT_EQ(textures[2]["error"], "not found");
+}
+
 // --- mdlc check ---
 
 class CheckTest : public InspectTest {

@@ -6,16 +6,18 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <variant>
 
 #include "backend/json_writer.h"
+#include "mjcf_file_assets.h"
 
 namespace mdlc::tools {
 namespace {
 namespace fs = std::filesystem;
 
 struct Asset {
-  std::string kind;  // model, mesh, texture
+  std::string kind;  // model, config (model.config), mesh, texture, hfield, skin
   std::string uri;   // as written
   std::string resolved;
   Loc loc;  // where it is first named
@@ -40,14 +42,24 @@ std::optional<uintmax_t> Size(const std::string& path) {
 std::vector<Asset> Collect(const Result& result) {
   std::vector<Asset> assets;
   const SourceManager& sources = result.sources();
+  std::set<std::string> model_files;  // a file included many times is read once
   for (size_t f = 0; f < sources.FileCount(); ++f) {
     const FileId id{static_cast<uint32_t>(f)};
-    assets.push_back({"model", sources.Path(id), sources.Path(id), sources.IncludedFrom(id), 1, {}});
+    const std::string& path = sources.Path(id);
+    // package.xml files are how packages were found, not part of the model
+    if (sources.IsExpansion(id) || fs::path(path).filename() == "package.xml" ||
+        !model_files.insert(path).second) {
+      continue;
+    }
+    const bool config = fs::path(path).filename() == "model.config";  // a Gazebo model folder's
+    assets.push_back({config ? "config" : "model", path, path, sources.IncludedFrom(id), 1, {}});
   }
-  std::map<std::pair<std::string, std::string>, size_t> index;  // (kind, uri) -> asset
+  // (kind, file) -> asset: one entry per file, however many URIs name it
+  std::map<std::pair<std::string, std::string>, size_t> index;
   auto add = [&](const std::string& kind, const std::string& uri, const std::string& resolved,
                  Loc loc) {
-    auto [it, inserted] = index.try_emplace({kind, uri}, assets.size());
+    const std::string& file = resolved.empty() ? uri : resolved;
+    auto [it, inserted] = index.try_emplace({kind, file}, assets.size());
     if (inserted) assets.push_back({kind, uri, resolved, loc, 0, {}});
     Asset& a = assets[it->second];
     ++a.uses;
@@ -62,9 +74,11 @@ std::vector<Asset> Collect(const Result& result) {
   for (const ir::Material& material : m.materials) {
     if (!material.texture.empty()) add("texture", material.texture, material.texture, material.loc);
   }
+  // what MJCF names and mdlc does not read: textures, height fields, skins
+  for (const MjcfFileAsset& a : MjcfFileAssets(sources)) add(a.kind, a.uri, a.resolved, a.loc);
   // what reported a file missing: a diagnostic where its URI is written
   for (Asset& a : assets) {
-    if (a.kind == "model") continue;
+    if (a.kind == "model" || a.kind == "config") continue;
     for (const Diagnostic& d : result.diagnostics()) {
       if (d.loc == a.loc && (d.kind == DiagKind::FileNotFound || d.kind == DiagKind::MissingAsset ||
                              d.kind == DiagKind::MalformedUri || d.severity == Severity::Error)) {
@@ -99,7 +113,7 @@ AssetReport ListAssets(const Result& result, bool json) {
       } else {
         w.Key("error").String(a.problem);
       }
-      if (a.kind != "model") w.Key("uses").Int(a.uses);
+      if (a.kind != "model" && a.kind != "config") w.Key("uses").Int(a.uses);
       w.EndObject();
     }
     w.EndArray();
