@@ -9,6 +9,7 @@
 #include "backend/inertia_scaled_gains.h"
 #include "backend/ref_check.h"
 #include "backend/topology.h"
+#include "ir/count_text.h"
 #include "ir/overloaded.h"
 
 namespace mdlc::backend {
@@ -211,8 +212,9 @@ class PlantBuilder {
     if (values.empty()) return ir::DofValues(static_cast<size_t>(joint.nv), fill);
     if (values.size() != static_cast<size_t>(joint.nv)) {
       diags_.Report(DiagKind::BadLimits, loc,
-                    fmt::format("joint '{}' has {} {} but {} degrees of freedom",
-                                plant_.ScopedName(joint), values.size(), what, joint.nv));
+                    fmt::format("joint '{}' has {} {} but {}", plant_.ScopedName(joint),
+                                values.size(), what,
+                                ir::CountOf(joint.nv, "degree of freedom", "degrees of freedom")));
       Fail();
     }
     return values;
@@ -224,8 +226,9 @@ class PlantBuilder {
     }
     if (!src.default_positions.empty()) {
       diags_.Report(DiagKind::BadValue, src.loc,
-                    fmt::format("joint '{}' has {} default positions but {} positions",
-                                plant_.ScopedName(joint), src.default_positions.size(), joint.nq));
+                    fmt::format("joint '{}' has {} but {}", plant_.ScopedName(joint),
+                                ir::CountOf(src.default_positions.size(), "default position"),
+                                ir::CountOf(joint.nq, "position")));
       Fail();
     }
     // zero, or the identity quaternion [w x y z] first; built whole, so the

@@ -10,6 +10,7 @@
 
 #include "frontend/xml/trim.h"
 #include "frontend/xml/xml_document.h"
+#include "ir/count_text.h"
 #include "ir/load_report.h"
 
 namespace mdlc::assets {
@@ -253,7 +254,7 @@ std::optional<std::string> UriToPath(std::string_view uri, const std::string& ba
           diag.Note(loc, "no packages are known: give --package-path DIR, --package NAME=DIR "
                          "or set ROS_PACKAGE_PATH or AMENT_PREFIX_PATH");
         } else {
-          diag.Note(loc, fmt::format("{} packages known; searched {}", packages.size(),
+          diag.Note(loc, fmt::format("{} known; searched {}", ir::CountOf(packages.size(), "package"),
                                      packages.searched().empty()
                                          ? std::string("no folders")
                                          : fmt::format("'{}'", fmt::join(packages.searched(), "', '"))));

@@ -40,7 +40,7 @@ class MeshCacheTest : public mdlc::cli_test::CliFixture {
   /// (hits, misses) from the --time-passes report.
   static std::pair<int, int> HitsAndMisses(const std::string& report) {
     std::smatch m;
-    const std::regex line("mesh cache: ([0-9]+) hits, ([0-9]+) misses");
+    const std::regex line("mesh cache: ([0-9]+) hits?, ([0-9]+) miss(es)?");
     if (!std::regex_search(report, m, line)) {
       ADD_FAILURE() << "no mesh cache line in:\n" << report;
       return {-1, -1};

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "frontend/model_naming.h"
+#include "ir/count_text.h"
 #include "frontend/xacro/xacro.h"
 #include "passes/mesh/in_process_reader.h"
 #include "passes/pass_registry.h"
@@ -79,8 +80,9 @@ bool Compilation::RunPasses() {
         meshes->files_read(), meshes->files_hashed(), meshes->facts_from_cache(),
         meshes->workers_started());
     if (derived_meshes) {
-      timing_report_ += fmt::format("  mesh cache: {} hits, {} misses ({})\n",
-                                    derived_meshes->hits(), derived_meshes->misses(),
+      timing_report_ += fmt::format("  mesh cache: {}, {} ({})\n",
+                                    ir::CountOf(derived_meshes->hits(), "hit"),
+                                    ir::CountOf(derived_meshes->misses(), "miss", "misses"),
                                     derived_meshes->directory());
     } else {
       timing_report_ += "  mesh cache: off\n";

@@ -11,6 +11,7 @@
 
 #include "backend/json_writer.h"
 #include "mjcf_file_assets.h"
+#include "ir/count_text.h"
 
 namespace mdlc::tools {
 namespace {
@@ -129,7 +130,7 @@ AssetReport ListAssets(const Result& result, bool json) {
     report.text += fmt::format("{:<8} {}{} [{}, {}]{}\n", a.kind, a.uri,
                                a.uri == a.resolved ? "" : " -> " + a.resolved,
                                Extension(a.resolved),
-                               size ? fmt::format("{} bytes", *size) : "size unknown",
+                               size ? ir::CountOf(*size, "byte") : "size unknown",
                                a.uses > 1 ? fmt::format(", used {} times", a.uses) : "");
   }
   return report;

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <thread>
 
@@ -38,7 +40,8 @@ int Run(const CheckFlags& flags) {
   if (!flags.output.empty() && flags.output != "-") {
     out = std::fopen(flags.output.c_str(), "wb");
     if (!out) {
-      fmt::print(stderr, "mdlc: error: cannot write '{}'\n", flags.output);
+      fmt::print(stderr, "mdlc: error: cannot write '{}': {}\n", flags.output,
+                 std::strerror(errno));
       return 1;
     }
   }

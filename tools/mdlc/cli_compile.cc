@@ -5,13 +5,18 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <memory>
 #include <string_view>
 
 #include "cli_input.h"
 #include "diagnostic_stream.h"
+#include "ir/count_text.h"
+#include "ir/source_manager.h"
+#include "repeated_warnings.h"
 
 namespace mdlc::cli {
 namespace {
@@ -33,6 +38,34 @@ bool ApplyWarningFlags(const CompileFlags& flags, DiagnosticPolicy& policy, std:
     }
   }
   return true;
+}
+
+// -fno-collapse shows every repeat of a warning; -fcollapse, the default,
+// shows the first of each and counts the rest
+bool CollapsesRepeats(const CompileFlags& flags) {
+  bool collapse = true;
+  for (const std::string& flag : flags.feature_flags) collapse = flag == "collapse";
+  return collapse;
+}
+
+// What the run's text diagnostics say at its end (FinishDiagnostics): the
+// compile whose counts end it, and the warnings shown once.
+struct RunDiagnostics {
+  const Result* result = nullptr;
+  RepeatedWarnings repeated;
+};
+RunDiagnostics& TheRun() {
+  static RunDiagnostics run;
+  return run;
+}
+
+// "file:line:col" as the diagnostic's own first line says it
+std::string LocationText(Loc loc, const SourceManager& sources) {
+  if (!loc.valid()) return "mdlc";
+  std::string out = sources.Path(loc.file);
+  if (loc.line) out += fmt::format(":{}", loc.line);
+  if (loc.line && loc.column) out += fmt::format(":{}", loc.column);
+  return out;
 }
 
 // --package NAME=DIR, --package-path DIR, and the ROS environment
@@ -115,7 +148,14 @@ void AddCompileFlags(CLI::App* command, CompileFlags& flags) {
       ->check(CLI::IsMember({"text", "json"}));
   command
       ->add_option("-W", flags.warning_flags,
-                   "-Werror: warnings are errors; -Werror=GROUP; -Wno-GROUP silences a group")
+                   "-Werror: warnings are errors; -Werror=GROUP; -Wno-GROUP silences a group "
+                   "(mdlc --list-warnings names the groups)")
+      ->allow_extra_args(false);
+  command
+      ->add_option("-f", flags.feature_flags,
+                   "-fno-collapse: show every repeat of a warning (by default the first is "
+                   "shown and a note at the end counts the rest)")
+      ->check(CLI::IsMember({"collapse", "no-collapse"}))
       ->allow_extra_args(false);
   command->add_flag("--strict", flags.strict, "Warnings are errors (Drake's strict parsing)");
   command->add_option("--max-errors", flags.max_errors,
@@ -200,13 +240,23 @@ CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup) {
       stream = std::make_shared<DiagnosticStream>([](std::string_view text) {
         std::fwrite(text.data(), 1, text.size(), stderr);
       });
-      options.on_diagnostic = [json, color, stream](const Diagnostic& d, const SourceManager& s) {
+    {
+      // JSON is never collapsed: its reader wants every diagnostic
+      const bool collapse = !json && CollapsesRepeats(flags);
+      options.on_diagnostic = [json, color, collapse, stream](const Diagnostic& d,
+                                                              const SourceManager& s) {
+        if (collapse && d.severity == Severity::Warning &&
+            !TheRun().repeated.FirstOfItsKind(InfoFor(d.kind).group, d.message,
+                                              LocationText(d.loc, s))) {
+          return;
+        }
         stream->Write(json ? FormatDiagnosticJson(d, s) + "\n" : FormatDiagnosticText(d, s, color));
       };
       break;
     case DiagnosticOutput::Collect:
       options.on_diagnostic = [&setup](const Diagnostic& d, const SourceManager&) {
         setup.collected->push_back(d);
+    }
       };
       break;
     case DiagnosticOutput::ErrorsAfter:
@@ -231,17 +281,29 @@ CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup) {
     for (const Diagnostic& d : result.diagnostics()) {
       if (d.severity == Severity::Error) fmt::print(stderr, "{}", result.FormatText(d));
     }
+  if (stream && !json) TheRun().result = &result;  // its counts end the run
   }
   if (!result.ok() && !setup.keep_failed) return {ReportFailure(flags, result), &result};
   return {0, &result};
 }
 
-int ReportFailure(const CompileFlags& flags, const Result& result) {
-  if (flags.diagnostics_format != "json") {
-    fmt::print(stderr, "{} error{} generated.\n", result.error_count(),
-               result.error_count() == 1 ? "" : "s");
+int ReportFailure(const CompileFlags&, const Result&) { return 1; }
+
+int FinishDiagnostics(int status) {
+  const RunDiagnostics& run = TheRun();
+  if (!run.result) return status;
+  std::string text = run.repeated.Notes();
+  // clang's closing line: the warnings and errors reported, shown or not
+  const size_t warnings = run.result->warning_count(), errors = run.result->error_count();
+  if (warnings && errors) {
+    text += fmt::format("{} and {} generated.\n", ir::CountOf(warnings, "warning"),
+                        ir::CountOf(errors, "error"));
+  } else if (warnings || errors) {
+    text += fmt::format("{} generated.\n", warnings ? ir::CountOf(warnings, "warning")
+                                                    : ir::CountOf(errors, "error"));
   }
-  return 1;
+  std::fwrite(text.data(), 1, text.size(), stderr);
+  return status;
 }
 
 int WriteOutput(const std::string& output, const std::string& text) {
@@ -252,9 +314,18 @@ int WriteOutput(const std::string& output, const std::string& text) {
   std::ofstream out(output, std::ios::binary);
   out << text;
   if (!out) {
-    fmt::print(stderr, "mdlc: error: cannot write '{}'\n", output);
+    fmt::print(stderr, "mdlc: error: cannot write '{}': {}\n", output,
+               errno ? std::strerror(errno) : "writing it failed");
+  errno = 0;
+    return 1;
+  if (!out) {
+    // the system's reason: no such directory, permission denied, ...
+    fmt::print(stderr, "mdlc: error: cannot write '{}': {}\n", output,
+               errno ? std::strerror(errno) : "the file cannot be opened");
     return 1;
   }
+  }
+  out.flush();
   return 0;
 }
 

@@ -28,6 +28,8 @@ struct CompileFlags {
   std::string output_format;  // the one asked for (--format, or --json)
   std::string diagnostics_format = "text";
   std::vector<std::string> warning_flags;  // -W<...>
+  /// -fno-collapse: show every repeat of a warning (RepeatedWarnings), -fcollapse: the default
+  std::vector<std::string> feature_flags;
   bool strict = false;
   size_t max_errors = 0;
   std::vector<std::string> limits;  // --limit NAME=VALUE
@@ -80,11 +82,17 @@ struct CliCompile {
 /// exits.
 CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup = {});
 
-/// "N errors generated." on standard error (not with JSON diagnostics, whose
-/// reader counts them); returns 1, the exit status of a failed compile.
+/// The exit status of a failed compile, 1; its count of errors is said at
+/// the end of the run (FinishDiagnostics).
 int ReportFailure(const CompileFlags& flags, const Result& result);
 
 /// Writes `text` to `output` (standard output when empty or '-'); 0, or 1
+/// The end of a run of the command line: the notes of the warnings that
+/// repeated and were not shown, then "N warnings and M errors generated." on
+/// standard error (text diagnostics only; a JSON reader counts them).
+/// Returns `status`; main calls it with the subcommand's exit status.
+int FinishDiagnostics(int status);
+
 /// (reported) when the file cannot be written.
 int WriteOutput(const std::string& output, const std::string& text);
 

@@ -13,6 +13,7 @@
 //   mdlc view FILE... -o model.html   the model in 3D, in one offline HTML page
 //   mdlc check PATH... [-j N] [--format text|json|sarif] [--skip-ok REPORT.jsonl]
 //   mdlc --list-passes
+//   mdlc --list-warnings            the diagnostic groups -W selects
 //
 // FILE is a model file, a Gazebo model folder (its model.config names the
 // file) or '-' (standard input). --format names the output (text, json, ...)
@@ -30,8 +31,10 @@
 
 #include "mdlc/mdlc.h"
 #include "passes/pass_registry.h"
+#include "cli_compile.h"
 #include "subcommands.h"
 #include "tools/driver/heap_policy.h"
+#include "warning_groups.h"
 
 int main(int argc, char** argv) {
   mdlc::KeepFreedMemoryForReuse();  // one batch that exits when done
@@ -42,6 +45,9 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);
   bool list_passes = false;
   app.add_flag("--list-passes", list_passes, "List the registered passes and exit");
+  bool list_warnings = false;
+  app.add_flag("--list-warnings", list_warnings,
+               "List the diagnostic groups that -W, -Wno- and -Werror= select, and exit");
 
   namespace cli = mdlc::cli;
   const cli::Subcommand subcommands[] = {
@@ -61,8 +67,13 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (list_warnings) {
+    fmt::print("{}", cli::ListWarningGroups());
+    return 0;
+  }
   for (const cli::Subcommand& subcommand : subcommands) {
-    if (subcommand.parser->parsed()) return subcommand.run();
+    // the end of the run counts the warnings and errors it reported
+    if (subcommand.parser->parsed()) return cli::FinishDiagnostics(subcommand.run());
   }
   fmt::print("{}", app.help());
   return 2;

@@ -11,6 +11,7 @@
 #include "backend/json_writer.h"
 #include "backend/kinematics.h"
 #include "backend/positions.h"
+#include "ir/count_text.h"
 
 namespace mdlc::tools {
 namespace {
@@ -110,8 +111,9 @@ class Stats {
     for (const MeshUse& use : meshes_) {
       out += fmt::format("mesh {} on {}: {}: ", use.geometry->name, BodyName(*use.geometry),
                          use.mesh->resolved);
-      out += use.size.ok() ? fmt::format("{} vertices, {} triangles\n", use.size.vertices,
-                                         use.size.triangles)
+      out += use.size.ok() ? fmt::format("{}, {}\n",
+                                         ir::CountOf(use.size.vertices, "vertex", "vertices"),
+                                         ir::CountOf(use.size.triangles, "triangle"))
                            : fmt::format("not readable ({})\n", use.size.error);
     }
     for (size_t m = 0; m < per_instance_.size(); ++m) {
@@ -221,9 +223,10 @@ class Stats {
   std::string Summary(const std::string& what, const Totals& t) const {
     const Eigen::Vector3d com = t.com();
     return fmt::format(
-        "{}: {} bodies, mass {} kg, com in world [{} {} {}]\n  joints: {}\n  geometries: {} "
+        "{}: {}, mass {} kg, com in world [{} {} {}]\n  joints: {}\n  geometries: {} "
         "(shapes: {})\n  meshes: {}\n  actuators {}, constraints {}, cameras {}\n",
-        what, t.bodies, t.mass, com.x(), com.y(), com.z(), Counts(t.joints), Counts(t.geometries),
+        what, ir::CountOf(t.bodies, "body", "bodies"), t.mass, com.x(), com.y(), com.z(),
+        Counts(t.joints), Counts(t.geometries),
         Counts(t.shapes), MeshCounts(t), t.actuators, t.constraints, t.cameras);
   }
 

@@ -4,6 +4,8 @@
 
 #include <map>
 
+#include "ir/count_text.h"
+
 namespace mdlc::tools {
 
 std::string FormatSummary(const backend::CompiledModel& model) {
@@ -20,8 +22,8 @@ std::string FormatSummary(const backend::CompiledModel& model) {
       }
     }
     for (const auto& j : plant.joints) joints += j.model.index() == m;
-    out += fmt::format("  {}: {} bodies, {} joints, mass {:.6g} kg\n", plant.model_instances[m],
-                       bodies, joints, mass);
+    out += fmt::format("  {}: {}, {}, mass {:.6g} kg\n", plant.model_instances[m],
+                       ir::CountOf(bodies, "body", "bodies"), ir::CountOf(joints, "joint"), mass);
   }
   double total_mass = 0;
   for (const auto& b : plant.bodies) total_mass += b.mass;

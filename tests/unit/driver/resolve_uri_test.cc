@@ -68,7 +68,7 @@ TEST_F(ResolveUriTest, WhatNamesNoFileSaysWhy) {
   ASSERT_EQ(unknown.messages.size(), 1u);
   EXPECT_NE(unknown.messages[0].find("error: unknown package 'gripper'"), std::string::npos)
       << unknown.messages[0];
-  EXPECT_NE(unknown.messages[0].find("note: 1 packages known; searched '" +
+  EXPECT_NE(unknown.messages[0].find("note: 1 package known; searched '" +
                                      (root_ / "ws").string() + "'"),
             std::string::npos)
       << unknown.messages[0];
