@@ -18,6 +18,8 @@
 // use it.
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <unordered_map>
 
@@ -114,6 +116,34 @@ std::optional<std::string> ResolveVisualOnly(const Reference& ref,
   return path;
 }
 
+/// The file beside `path` whose name differs from it only in case
+/// (Base_Collision.STL for base_collision.stl): the model was likely written
+/// on a file system that ignores case. Empty when there is none.
+std::string SameNameButCase(const std::string& path) {
+  const fs::path missing(path);
+  auto lower = [](std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return text;
+  };
+  const std::string wanted = lower(missing.filename().string());
+  std::error_code ec;
+  for (fs::directory_iterator it(missing.parent_path(), ec), end; !ec && it != end;
+       it.increment(ec)) {
+    if (lower(it->path().filename().string()) == wanted) return it->path().string();
+  }
+  return {};
+}
+
+/// A note naming the file that differs only in case, when there is one.
+void NoteCaseMismatch(InFlightDiagnostic& diag, Loc loc, const std::string& path) {
+  const std::string beside = SameNameButCase(path);
+  if (beside.empty()) return;
+  diag.Note(loc, fmt::format("did you mean '{}'? file names differ in case, and this file "
+                             "system tells them apart",
+                             fs::path(beside).filename().string()));
+}
+
 bool ResolveAssetsPass::Run(PassContext& ctx) {
   const assets::PackageMap& packages = ctx.packages;
   const size_t errors_before = ctx.diags.error_count();
@@ -164,16 +194,20 @@ bool ResolveAssetsPass::Run(PassContext& ctx) {
     if (path && fs::exists(*path, ec)) {
       resolved = fs::path(*path).lexically_normal().string();
     } else if (path && ref.needed_by) {
-      ctx.diags
-          .Report(DiagKind::FileNotFound, ref.needed_loc,
-                  fmt::format("'{}' resolves to '{}', which does not exist", ref.uri, *path))
-          .Note(ref.needed_geometry_loc, fmt::format("the plant reads this file: {}", *ref.needed_by));
+      auto diag = ctx.diags.Report(
+          DiagKind::FileNotFound, ref.needed_loc,
+          fmt::format("'{}' resolves to '{}', which does not exist", ref.uri, *path));
+      NoteCaseMismatch(diag, ref.needed_loc, *path);
+      diag.Note(ref.needed_geometry_loc,
+                fmt::format("the plant reads this file: {}", *ref.needed_by));
     } else if (path) {
       // COMMON-011, relaxed: nothing in the plant reads a visual mesh
-      ctx.diags.Report(DiagKind::MissingAsset, ref.loc,
-                       fmt::format("'{}' resolves to '{}', which does not exist; {} is kept "
-                                   "without its mesh file, which the plant never reads",
-                                   ref.uri, *path, Users(m, *ref.first_user, ref.users)));
+      auto diag = ctx.diags.Report(
+          DiagKind::MissingAsset, ref.loc,
+          fmt::format("'{}' resolves to '{}', which does not exist; {} is kept without its "
+                      "mesh file, which the plant never reads",
+                      ref.uri, *path, Users(m, *ref.first_user, ref.users)));
+      NoteCaseMismatch(diag, ref.loc, *path);
     }
     for (ir::Mesh* mesh : ref.meshes) mesh->resolved = resolved;
   }

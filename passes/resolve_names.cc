@@ -14,7 +14,9 @@
 // scope of model directives) name top-level instances ("a::x" in "a").
 #include <fmt/format.h>
 
+#include <set>
 #include <type_traits>
+#include <utility>
 #include <variant>
 
 #include "ir/overloaded.h"
@@ -23,6 +25,15 @@
 
 namespace mdlc::passes {
 namespace {
+
+// Which entities a "did you mean" draws on: tier 0 first, then tier 1; -1
+// never. The default: every entity of the instance, alike.
+struct AnyCandidate {
+  template <typename Entity>
+  int operator()(const Entity&) const {
+    return 0;
+  }
+};
 
 class ResolveNamesPass : public Pass {
  public:
@@ -34,10 +45,13 @@ class ResolveNamesPass : public Pass {
   bool Run(PassContext& ctx) override;
 
  private:
-  // `user` describes the referring entity; it is called only to report an error
-  template <typename IdT, typename Index, typename Table, typename User>
+  // `user` describes the referring entity; it is called only to report an
+  // error, as is `tier`, which ranks the suggestions (AnyCandidate)
+  template <typename IdT, typename Index, typename Table, typename User,
+            typename Tier = AnyCandidate>
   void Resolve(PassContext& ctx, ir::Ref<IdT>& ref, ModelId scope, const Index& index,
-               const Table& table, std::string_view kind, const User& user);
+               const Table& table, std::string_view kind, const User& user,
+               const Tier& tier = {});
   std::optional<ModelId> ScopeFor(PassContext& ctx, ModelId own, std::string_view scope) const;
   template <typename FrameIndex, typename BodyIndex>
   void ResolveFrame(PassContext& ctx, ir::FrameRef& ref, ModelId scope, const FrameIndex& frames,
@@ -57,10 +71,10 @@ std::optional<ModelId> ResolveNamesPass::ScopeFor(PassContext& ctx, ModelId own,
   return models_->Find(scope);
 }
 
-template <typename IdT, typename Index, typename Table, typename User>
+template <typename IdT, typename Index, typename Table, typename User, typename Tier>
 void ResolveNamesPass::Resolve(PassContext& ctx, ir::Ref<IdT>& ref, ModelId scope,
                                const Index& index, const Table& table, std::string_view kind,
-                               const User& user) {
+                               const User& user, const Tier& tier) {
   if (ref.resolved() || ref.name.empty()) return;
   ir::Module& m = ctx.module;
   std::string_view text = m.Text(ref.name);
@@ -92,13 +106,14 @@ void ResolveNamesPass::Resolve(PassContext& ctx, ir::Ref<IdT>& ref, ModelId scop
       DiagKind::UnknownReference, ref.loc,
       fmt::format("{} names unknown {} '{}': Could not find {} '{}' in model '{}'", user(),
                   kind, text, kind, split->element, m.ModelName(*model)));
-  std::vector<std::string_view> candidates;
+  std::vector<std::string_view> candidates[2];
   for (const auto& entity : table) {
-    if (entity.model == *model) candidates.push_back(m.Text(entity.name));
+    if (entity.model != *model) continue;
+    if (const int t = tier(entity); t >= 0) candidates[t].push_back(m.Text(entity.name));
   }
-  if (auto best = ClosestName(split->element, candidates)) {
-    diag.Note(ref.loc, fmt::format("did you mean '{}'?", *best));
-  }
+  std::optional<std::string> best = ClosestName(split->element, candidates[0]);
+  if (!best) best = ClosestName(split->element, candidates[1]);
+  if (best) diag.Note(ref.loc, fmt::format("did you mean '{}'?", *best));
 }
 
 // a frame reference names an explicit frame, or else a body's own frame
@@ -198,9 +213,20 @@ bool ResolveNamesPass::Run(PassContext& ctx) {
   auto described = [&](const char* what, Symbol name) {
     return [&m, what, name] { return fmt::format("{} '{}'", what, m.Text(name)); };
   };
+  // A joint's misspelled child is most likely a link no joint has as its
+  // child yet (an orphan), and never the joint's own parent: suggest those
+  // first, so "link3" next to "link1" (the parent) and "link2" (an orphan)
+  // suggests "link2".
+  std::set<std::pair<uint32_t, uint32_t>> child_names;  // (model, name) named as a child
+  for (const ir::Joint& j : m.joints) child_names.emplace(j.model.value, j.child.name.value);
   for (ir::Joint& j : m.joints) {
     Resolve(ctx, j.parent, j.model, bodies, m.bodies, "link", described("joint", j.name));
-    Resolve(ctx, j.child, j.model, bodies, m.bodies, "link", described("joint", j.name));
+    auto child_tier = [&child_names, &j](const ir::Body& b) {
+      if (b.name == j.parent.name) return -1;
+      return child_names.contains({b.model.value, b.name.value}) ? 1 : 0;
+    };
+    Resolve(ctx, j.child, j.model, bodies, m.bodies, "link", described("joint", j.name),
+            child_tier);
   }
   for (ir::Frame& f : m.frames) {
     Resolve(ctx, f.body, f.model, bodies, m.bodies, "link", described("frame", f.name));

@@ -12,6 +12,7 @@
 #include <absl/container/flat_hash_set.h>
 
 #include "frontend/mjcf/mjcf_reader_detail.h"
+#include "ir/scoped_name.h"
 
 namespace mdlc::frontend::mjcf {
 namespace {
@@ -87,6 +88,13 @@ const absl::flat_hash_map<std::string_view, KnownSet>& KnownAttributes() {
   return known;
 }
 
+// The names of an element's attributes in the schema's order, for a
+// suggestion that does not depend on a hash set's order.
+const List& OrderedAttributes(std::string_view schema_kind) {
+  static const auto lists = SchemaLists();
+  return lists.at(schema_kind);
+}
+
 }  // namespace
 
 void MjcfReader::CheckAttributes(const xml::XmlElement& e, std::string_view schema_kind) {
@@ -105,10 +113,14 @@ void MjcfReader::CheckAttributes(const xml::XmlElement& e, std::string_view sche
     if (!verdict->second) unknown.push_back(name);
   });
   for (std::string_view name : unknown) {
-    diags().Report(DiagKind::UnknownAttribute, e.Attribute(name).loc,
-                   fmt::format("'{}' is not an attribute of <{}> in MuJoCo's schema and is "
-                               "ignored (MuJoCo rejects it)",
-                               name, e.Name()));
+    const Loc loc = e.Attribute(name).loc;
+    auto diag = diags().Report(DiagKind::UnknownAttribute, loc,
+                               fmt::format("'{}' is not an attribute of <{}> in MuJoCo's schema "
+                                           "and is ignored (MuJoCo rejects it)",
+                                           name, e.Name()));
+    if (auto best = ir::ClosestName(name, OrderedAttributes(schema_kind))) {
+      diag.Note(loc, fmt::format("did you mean '{}'?", *best));
+    }
   }
 }
 

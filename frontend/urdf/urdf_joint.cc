@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "frontend/original_names.h"
 #include "frontend/urdf/urdf_reader_detail.h"
@@ -238,9 +239,11 @@ void UrdfReader::ReadAnyJoint(const xml::XmlElement& e, bool drake_element) {
           }
         }
       }
-      if (auto f = attrs_.Double(c, "friction"); f && *f != 0) {
+      if (auto f = attrs_.Double(c, "friction"); f && *f != 0 && !said_friction_) {
+        said_friction_ = true;
         diags().Report(DiagKind::UnsupportedAttribute, c.Attribute("friction").loc,
-                       "joint friction is not supported and is ignored");
+                       "joint friction is ignored: the plant holds no Coulomb friction in joints, "
+                       "only <dynamics damping> (said once per file)");
       }
       if (auto w = c.Attribute("coulomb_window"); w.present()) {
         diags().Report(DiagKind::UnsupportedAttribute, w.loc,
@@ -248,10 +251,21 @@ void UrdfReader::ReadAnyJoint(const xml::XmlElement& e, bool drake_element) {
       }
     } else if (tag == "mimic") {
       ReadMimic(c, joint);
-    } else if (tag == "calibration" || tag == "safety_controller") {
-      diags().Report(DiagKind::UnsupportedElement, c.GetLoc(),
-                     fmt::format("element <{}> in <{}> is not supported and is ignored",
-                                 tag, element));
+    } else if (tag == "calibration") {
+      if (!std::exchange(said_calibration_, true)) {
+        diags().Report(DiagKind::UnsupportedElement, c.GetLoc(),
+                       fmt::format("element <calibration> in <{}> is ignored: the plant holds "
+                                   "no encoder calibration (said once per file)",
+                                   element));
+      }
+    } else if (tag == "safety_controller") {
+      if (!std::exchange(said_safety_controller_, true)) {
+        diags().Report(DiagKind::UnsupportedElement, c.GetLoc(),
+                       fmt::format("element <safety_controller> in <{}> is ignored: the plant "
+                                   "holds no ROS safety controller, only the <limit> (said once "
+                                   "per file)",
+                                   element));
+      }
     } else if (auto it = std::find_if(std::begin(kTypeSpecificChildren),
                                       std::end(kTypeSpecificChildren),
                                       [&](const TypeSpecificChild& s) { return s.tag == tag; });
@@ -274,7 +288,14 @@ void UrdfReader::ReadAnyJoint(const xml::XmlElement& e, bool drake_element) {
 }
 
 void UrdfReader::ReadLimits(const xml::XmlElement& e, ir::Joint& joint, bool continuous) {
-  attrs_.WarnUnknownAttributes(e, {"lower", "upper", "velocity", "effort", "drake:acceleration"});
+  // a misspelled bound (uper=) leaves that side unbounded: the note says so
+  static constexpr std::string_view kUnbounded[] = {"the lower limit is -inf: unbounded",
+                                                    "the upper limit is +inf: unbounded"};
+  attrs_.WarnUnknownAttributes(
+      e, {"lower", "upper", "velocity", "effort", "drake:acceleration"},
+      continuous ? std::initializer_list<xml::AttributeReader::WhenAbsent>{}
+                 : std::initializer_list<xml::AttributeReader::WhenAbsent>{
+                       {"lower", kUnbounded[0]}, {"upper", kUnbounded[1]}});
   // joint limits may be infinite: that means "unbounded"
   auto lower = attrs_.Double(e, "lower", xml::Need::Optional, xml::Finite::NotRequired);
   auto upper = attrs_.Double(e, "upper", xml::Need::Optional, xml::Finite::NotRequired);

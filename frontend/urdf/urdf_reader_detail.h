@@ -97,6 +97,11 @@ class UrdfReader {
   absl::flat_hash_map<uint32_t, JointId> joint_ids_;  // by Symbol value
   std::vector<xml::XmlElement> transmissions_;  // read after every joint
   std::vector<xml::XmlElement> late_elements_;  // drake: model-level elements, read last
+  // ROS's standard settings the plant does not hold (<calibration>,
+  // <safety_controller>, <dynamics friction>, a transmission's name): said
+  // once per file, at the first, not on every joint of a 40-joint robot
+  bool said_calibration_ = false, said_safety_controller_ = false, said_friction_ = false,
+       said_transmission_name_ = false;
   // geometry names already used, keyed by (body, role, name); the value is
   // the last suffix tried for that name
   struct GeometryNameKey {

@@ -29,9 +29,11 @@ void UrdfReader::ReadTransmission(const xml::XmlElement& e) {
                                  el.Text()));
     }
   };
-  if (auto name = e.Attribute("name"); name.present()) {
+  if (auto name = e.Attribute("name"); name.present() && !said_transmission_name_) {
+    said_transmission_name_ = true;
     diags().Report(DiagKind::UnsupportedAttribute, name.loc,
-                   "attribute 'name' of <transmission> is not supported and is ignored");
+                   "attribute 'name' of <transmission> is ignored: the plant names the actuator "
+                   "by its <actuator name> (said once per file)");
   }
   // the type: a <type> child or the legacy attribute
   std::string type;

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "frontend/xml/trim.h"
+#include "ir/scoped_name.h"
 
 namespace mdlc::xml {
 
@@ -184,15 +185,28 @@ std::optional<bool> AttributeReader::Bool(const XmlElement& e, std::string_view 
 }
 
 void AttributeReader::WarnUnknownAttributes(const XmlElement& e,
-                                            std::initializer_list<std::string_view> known) {
+                                            std::initializer_list<std::string_view> known,
+                                            std::initializer_list<WhenAbsent> absent) {
   // compare names first; build the located attribute only for an unknown one
   e.ForEachAttributeName([&](std::string_view name) {
     for (std::string_view k : known) {
       if (SameName(k, name)) return;
     }
     if (name.starts_with("xmlns")) return;
-    diags_.Report(DiagKind::UnknownAttribute, e.Attribute(name).loc,
-                  fmt::format("unknown attribute '{}' on <{}> is ignored", name, e.Name()));
+    const Loc loc = e.Attribute(name).loc;
+    auto diag = diags_.Report(DiagKind::UnknownAttribute, loc,
+                              fmt::format("unknown attribute '{}' on <{}> is ignored", name,
+                                          e.Name()));
+    const std::optional<std::string> best = ir::ClosestName(name, std::vector(known));
+    if (!best) return;
+    // a misspelled attribute leaves the one meant unset: say what that means
+    std::string meaning;
+    for (const WhenAbsent& a : absent) {
+      if (a.attribute == *best && !e.Attribute(*best).present()) {
+        meaning = fmt::format(" (as written, {})", a.meaning);
+      }
+    }
+    diag.Note(loc, fmt::format("did you mean '{}'?{}", *best, meaning));
   });
 }
 

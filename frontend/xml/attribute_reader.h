@@ -46,8 +46,17 @@ class AttributeReader {
                                          Finite finite = Finite::Required);
   std::optional<bool> Bool(const XmlElement& e, std::string_view attr, Need need = Need::Optional);
 
-  /// Warns about attributes not in `known` (a misspelling, most likely).
-  void WarnUnknownAttributes(const XmlElement& e, std::initializer_list<std::string_view> known);
+  /// What an absent attribute means ("the upper limit is +inf"), said when
+  /// an unknown attribute looks like a misspelling of it.
+  struct WhenAbsent {
+    std::string_view attribute;
+    std::string_view meaning;
+  };
+  /// Warns about attributes not in `known` (a misspelling, most likely); a
+  /// note suggests the closest known one, and says what its absence means
+  /// when `absent` has it and the element does not write it.
+  void WarnUnknownAttributes(const XmlElement& e, std::initializer_list<std::string_view> known,
+                             std::initializer_list<WhenAbsent> absent = {});
 
   void ReportMissing(const XmlElement& e, std::string_view attr);
   /// Reads exactly `count` doubles into `out` (the common fixed-size case,
