@@ -414,6 +414,49 @@ TEST_F(CheckTest, SkipOkResumesFromAnEarlierReport) {
   EXPECT_NE(again.err.find("3 skipped as ok before"), std::string::npos) << again.err;
 }
 
+TEST_F(CheckTest, IncludedMjcfFilesAreFragmentsOfTheirModel) {  // issue 58, item 4; MJCF-001
+  // the fragment uses a default class of the including file: alone it is broken
+  std::ofstream(dir_ / "models" / "sub" / "scene.xml")
+      << "<mujoco model='scene'><default><default class='waist'><geom size='0.2'/></default>"
+         "</default><include file='waist.xml'/></mujoco>";
+  std::ofstream(dir_ / "models" / "sub" / "waist.xml")
+      << "<mujoco><worldbody><body name='w'><geom class='waist'/></body></worldbody></mujoco>";
+  Outcome r = Mdlc("check " + Models() + "/sub/scene.xml " + Models() + "/sub/waist.xml");
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("sub/waist.xml: fragment, included by " + Models() + "/sub/scene.xml\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("waist'"), std::string::npos) << r.out;  // no unknown-class error
+  EXPECT_NE(r.out.find("2 files: 1 ok, 0 with errors, 1 fragment of others"), std::string::npos)
+      << r.out;
+  // JSON Lines say it too
+  Outcome json_lines = Mdlc("check --format json " + Models() + "/sub/waist.xml " + Models() +
+                            "/sub/scene.xml");
+  EXPECT_NE(json_lines.out.find("\"included_by\":"), std::string::npos) << json_lines.out;
+}
+
+TEST_F(CheckTest, SummaryPrintsOnlyTheTotals) {
+  Outcome r = Mdlc("check --summary " + Models());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.out, "4 files: 3 ok, 1 with errors, 1 warning\n");
+}
+
+TEST_F(CheckTest, APackageFoundTwiceIsSaidOncePerRun) {  // COMMON-013
+  for (const char* copy : {"a", "b"}) {
+    fs::create_directories(dir_ / "pkgs" / copy);
+    std::ofstream(dir_ / "pkgs" / copy / "package.xml") << "<package><name>twice</name></package>";
+  }
+  Outcome r = Mdlc("check --package-path " + (dir_ / "pkgs").string() + " " + Models());
+  size_t said = 0;
+  for (size_t at = 0; (at = r.out.find("package 'twice' found again", at)) != std::string::npos;
+       ++at) {
+    ++said;
+  }
+  EXPECT_EQ(said, 1u) << r.out;
+  EXPECT_NE(r.out.find("good.urdf: ok\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("4 files: 3 ok, 1 with errors, 2 warnings\n"), std::string::npos) << r.out;
+}
+
 TEST_F(CheckTest, SarifForCodeHosts) {
   Outcome r = Mdlc("check --format sarif " + Models());
   const json sarif = json::parse(r.out);

@@ -8,6 +8,7 @@
 #include <condition_variable>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <set>
 #include <thread>
@@ -43,8 +44,28 @@ struct FileResult {
   size_t errors = 0, warnings = 0;
   std::string report;                     // text block or JSON line
   std::vector<std::string> sarif_results;  // SARIF result objects
+  /// The MJCF files this one's model includes (<include file=...>), each
+  /// with the file that includes it: fragments, never models of their own.
+  std::vector<std::pair<std::string, std::string>> includes;
+  /// What the package folders say, the same for every file (a package found
+  /// twice): reported once per run, not in each file's report.
+  std::vector<std::string> package_warnings;
   bool done = false;
 };
+
+/// A path as the walk and the compile's sources both name it.
+std::string SamePath(const std::string& path) {
+  std::error_code ec;
+  const fs::path canonical = fs::weakly_canonical(path, ec);
+  return (ec ? fs::path(path) : canonical).lexically_normal().string();
+}
+
+/// A warning about the package folders rather than the file: its place is a
+/// package.xml (a package found again under the package path).
+bool AboutThePackageFolders(const Diagnostic& d, const SourceManager& sources) {
+  return d.severity == Severity::Warning && d.loc.valid() &&
+         fs::path(sources.Path(d.loc.file)).filename() == "package.xml";
+}
 
 std::string Level(Severity s) {
   return s == Severity::Error ? "error" : s == Severity::Warning ? "warning" : "note";
@@ -79,12 +100,29 @@ std::string SarifResult(const Diagnostic& d, const SourceManager& sources,
 
 void CheckOne(const CheckOptions& options, const Options& compile, FileResult& r) {
   const Result result = Compile(Input::File(r.path), compile);
+  const SourceManager& sources = result.sources();
+  for (size_t f = 0; f < sources.FileCount(); ++f) {
+    const FileId id{static_cast<uint32_t>(f)};
+    const Loc from = sources.IncludedFrom(id);
+    if (from.valid() && !sources.IsExpansion(id) && sources.Path(id).ends_with(".xml") &&
+        sources.Path(from.file).ends_with(".xml")) {
+      r.includes.emplace_back(SamePath(sources.Path(id)), sources.Path(from.file));
+    }
+  }
+  std::vector<Diagnostic> diagnostics;  // the file's own
+  for (const Diagnostic& d : result.diagnostics()) {
+    if (AboutThePackageFolders(d, sources)) {
+      r.package_warnings.push_back(result.FormatText(d, options.color));
+    } else {
+      diagnostics.push_back(d);
+    }
+  }
   r.ok = result.ok();
   r.errors = result.error_count();
-  r.warnings = result.warning_count();
+  r.warnings = result.warning_count() - r.package_warnings.size();
   switch (options.format) {
     case CheckFormat::Text: {
-      for (const Diagnostic& d : result.diagnostics()) {
+      for (const Diagnostic& d : diagnostics) {
         r.report += result.FormatText(d, options.color);
       }
       r.report += fmt::format("{}: {}\n", r.path,
@@ -97,22 +135,35 @@ void CheckOne(const CheckOptions& options, const Options& compile, FileResult& r
       break;
     }
     case CheckFormat::JsonLines: {
-      std::string diagnostics;
-      for (const Diagnostic& d : result.diagnostics()) {
-        diagnostics += (diagnostics.empty() ? "" : ",") + result.FormatJson(d);
+      std::string json;
+      for (const Diagnostic& d : diagnostics) {
+        json += (json.empty() ? "" : ",") + result.FormatJson(d);
       }
       r.report = fmt::format("{{\"file\":{},\"ok\":{},\"errors\":{},\"warnings\":{},"
                              "\"diagnostics\":[{}]}}\n",
                              JsonString(r.path), r.ok ? "true" : "false", r.errors, r.warnings,
-                             diagnostics);
+                             json);
       break;
     }
     case CheckFormat::Sarif:
-      for (const Diagnostic& d : result.diagnostics()) {
+      for (const Diagnostic& d : diagnostics) {
         r.sarif_results.push_back(SarifResult(d, result.sources(), r.path));
       }
       break;
   }
+}
+
+/// `r` reported as what it is: a fragment of `includer`, checked as part of
+/// it (MuJoCo reads an included file only inside the model that includes it).
+void ReportAsFragment(const CheckOptions& options, const std::string& includer, FileResult& r) {
+  r.ok = true;
+  r.errors = r.warnings = 0;
+  r.sarif_results.clear();
+  r.report = options.format == CheckFormat::JsonLines
+                 ? fmt::format("{{\"file\":{},\"ok\":true,\"errors\":0,\"warnings\":0,"
+                               "\"diagnostics\":[],\"included_by\":{}}}\n",
+                               JsonString(r.path), JsonString(includer))
+                 : fmt::format("{}: fragment, included by {}\n", r.path, includer);
 }
 
 /// The files an earlier JSON Lines report lists as ok (each line starts
@@ -207,32 +258,60 @@ int RunCheck(const CheckOptions& options, const std::function<void(std::string_v
   std::vector<std::thread> workers;
   for (int j = 0; j < jobs; ++j) workers.emplace_back(work);
 
-  size_t ok = 0, failed = 0, skipped = 0, warnings = 0;
+  // every file is compiled before any is reported: a file is a fragment
+  // when any other includes it, which the last file may show
   for (size_t i = 0; i < results.size(); ++i) {
     {
       std::unique_lock lock(mutex);
       ready.wait(lock, [&] { return results[i].done; });
     }
-    FileResult& r = results[i];
     if (options.progress) {
-      fmt::print(stderr, "\r\033[K[{}/{}] {}", i + 1, results.size(), r.path);
+      fmt::print(stderr, "\r\033[K[{}/{}] {}", i + 1, results.size(), results[i].path);
       if (i + 1 == results.size()) fmt::print(stderr, "\r\033[K");
     }
+  }
+  for (std::thread& t : workers) t.join();
+
+  std::map<std::string, std::string> includer_of;  // the file that includes each
+  std::set<std::string> package_warnings;
+  for (const FileResult& r : results) {
+    for (const auto& [included, includer] : r.includes) {
+      includer_of.try_emplace(included, includer);
+    }
+  }
+  size_t ok = 0, failed = 0, skipped = 0, fragments = 0, warnings = 0;
+  std::string reports;
+  for (FileResult& r : results) {
     if (r.skipped) {
       ++skipped;
       continue;
     }
-    (r.ok ? ok : failed) += 1;
-    warnings += r.warnings;
-    if (options.format != CheckFormat::Sarif) write(r.report);
+    const auto includer = includer_of.find(SamePath(r.path));
+    if (includer != includer_of.end()) {
+      ReportAsFragment(options, includer->second, r);
+      ++fragments;
+    } else {
+      (r.ok ? ok : failed) += 1;
+      warnings += r.warnings;
+    }
+    // the package folders' warnings, once per run, before the first report
+    for (const std::string& w : r.package_warnings) {
+      if (package_warnings.insert(w).second) {
+        warnings += 1;
+        if (options.format == CheckFormat::Text && !options.summary_only) write(w);
+      }
+    }
+    if (options.format != CheckFormat::Sarif && !options.summary_only) write(r.report);
   }
-  for (std::thread& t : workers) t.join();
   if (options.format == CheckFormat::Sarif) write(Sarif(results));
 
-  const std::string summary =
-      fmt::format("{} file{}: {} ok, {} with errors, {} warning{}{}\n", files.size(),
-                  files.size() == 1 ? "" : "s", ok, failed, warnings, warnings == 1 ? "" : "s",
-                  skipped ? fmt::format(", {} skipped as ok before", skipped) : "");
+  const std::string summary = fmt::format(
+      "{} file{}: {} ok, {} with errors{}, {} warning{}{}\n", files.size(),
+      files.size() == 1 ? "" : "s", ok, failed,
+      fragments ? fmt::format(", {} fragment{} of others", fragments, fragments == 1 ? "" : "s")
+                : "",
+      warnings, warnings == 1 ? "" : "s",
+      skipped ? fmt::format(", {} skipped as ok before", skipped) : "");
   if (options.format == CheckFormat::Text) {
     write(summary);
   } else {

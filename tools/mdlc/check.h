@@ -24,6 +24,8 @@ struct CheckOptions {
   std::string skip_ok_from;
   bool progress = false;  // a progress line on standard error
   bool color = false;
+  /// Text: the totals only, no report per file (--summary).
+  bool summary_only = false;
 };
 
 /// The model files under `paths`: files as given, directories walked for
@@ -33,7 +35,10 @@ std::vector<std::string> FindModelFiles(const std::vector<std::string>& paths,
                                         std::vector<std::string>* unreadable);
 
 /// Runs the check, writing the report with `write`; returns the exit status
-/// (0 when no file has errors, 1 otherwise).
+/// (0 when no file has errors, 1 otherwise). A file that another file of the
+/// walk includes (an MJCF <include>) is reported as a fragment of it, not as
+/// a model; a warning about the package folders (a package found twice) is
+/// reported once, not with every file.
 int RunCheck(const CheckOptions& options, const std::function<void(std::string_view)>& write);
 
 }  // namespace mdlc::tools

@@ -21,6 +21,7 @@ struct CheckFlags {
   std::string output;
   int jobs = 1;
   std::string skip_ok_from;
+  bool summary_only = false;
 };
 
 int Run(const CheckFlags& flags) {
@@ -33,6 +34,7 @@ int Run(const CheckFlags& flags) {
                  : format == "sarif" ? tools::CheckFormat::Sarif
                                      : tools::CheckFormat::Text;
   check.skip_ok_from = flags.skip_ok_from;
+  check.summary_only = flags.summary_only;
   check.progress = isatty(STDERR_FILENO) && !isatty(STDOUT_FILENO);
   check.color = flags.compile.color == "always" ||
                 (flags.compile.color == "auto" && isatty(STDOUT_FILENO) && flags.output.empty());
@@ -66,6 +68,8 @@ Subcommand AddCheckCommand(CLI::App& app) {
   check->add_option("-j,--jobs", flags->jobs, "Compile this many files at once (0: one per core)");
   check->add_option("--skip-ok", flags->skip_ok_from,
                     "Skip the files an earlier --format=json report lists as ok");
+  check->add_flag("--summary", flags->summary_only,
+                  "Print only the totals, not the report of each file");
   check->add_option("-o,--output", flags->output, "Write the report here instead of stdout");
   return {check, [flags] { return Run(*flags); }};
 }
