@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "frontend/original_names.h"
+#include "frontend/unknown_element.h"
 #include "frontend/urdf/urdf_reader_detail.h"
 
 namespace mdlc::frontend::urdf {
@@ -277,8 +278,9 @@ void UrdfReader::ReadAnyJoint(const xml::XmlElement& e, bool drake_element) {
                                    tag, ir::JointTypeName(it->type), *type, *name));
       }
     } else {
-      diags().Report(DiagKind::UnknownElement, c.GetLoc(),
-                     fmt::format("unknown element <{}> in <{}> is ignored", tag, element));
+      ReportUnknownElement(diags(), c, element,
+                           {"origin", "parent", "child", "axis", "limit", "dynamics", "mimic",
+                            "calibration", "safety_controller"});
     }
   }
   const Symbol joint_name = joint.name;

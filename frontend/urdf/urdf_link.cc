@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "frontend/original_names.h"
+#include "frontend/unknown_element.h"
 #include "frontend/urdf/urdf_reader_detail.h"
 
 namespace mdlc::frontend::urdf {
@@ -91,8 +92,7 @@ void UrdfReader::ReadLink(const xml::XmlElement& e) {
                      fmt::format("element <{}> in <link> is not supported and is ignored",
                                  tag));
     } else {
-      diags().Report(DiagKind::UnknownElement, child.GetLoc(),
-                     fmt::format("unknown element <{}> in <link> is ignored", tag));
+      ReportUnknownElement(diags(), child, "link", {"inertial", "visual", "collision"});
     }
   }
 }
@@ -183,9 +183,10 @@ void UrdfReader::ReadGeometryElement(const xml::XmlElement& e, BodyId body, Symb
                      "element <verbose> in <collision> is not supported and is ignored");
     } else if (is_visual ? ReadVisualExtension(child, g) : ReadCollisionExtension(child, g)) {
       // a drake: extension, read
+    } else if (is_visual) {
+      ReportUnknownElement(diags(), child, tag, {"origin", "geometry", "material"});
     } else {
-      diags().Report(DiagKind::UnknownElement, child.GetLoc(),
-                     fmt::format("unknown element <{}> in <{}> is ignored", ctag, tag));
+      ReportUnknownElement(diags(), child, tag, {"origin", "geometry"});
     }
   }
   if (is_visual && !FinishVisual(e, g)) return;

@@ -7,6 +7,7 @@
 #include "frontend/drake_elements.h"
 #include "frontend/entity_capacity.h"
 #include "frontend/model_naming.h"
+#include "frontend/unknown_element.h"
 #include "frontend/urdf/urdf_reader_detail.h"
 
 namespace mdlc::frontend {
@@ -84,8 +85,8 @@ std::optional<ModelId> UrdfReader::Read() {
       diags().Report(DiagKind::UnknownElement, e.GetLoc(),
                      fmt::format("unknown element <{}> in <robot> is ignored", tag));
     } else {
-      diags().Report(DiagKind::UnknownElement, e.GetLoc(),
-                     fmt::format("unknown element <{}> in <robot> is ignored", tag));
+      ReportUnknownElement(diags(), e, "robot",
+                           {"link", "joint", "material", "transmission", "gazebo", "frame"});
     }
   }
   for (const auto& e : transmissions_) ReadTransmission(e);
