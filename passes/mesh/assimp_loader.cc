@@ -1,6 +1,7 @@
 #include "passes/mesh/assimp_loader.h"
 
 #include <assimp/config.h>
+#include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -52,14 +53,55 @@ struct PositionEqual {
 /// Vertex ids by position; a hash table, as a mesh file can hold millions.
 using WeldIndex = absl::flat_hash_map<PositionKey, int, PositionHash, PositionEqual>;
 
+/// The colour the file gives `material`: glTF's base colour, else the
+/// diffuse colour with the material's opacity; nullopt for one without a
+/// colour and for the materials assimp makes up for a file that names none:
+/// "DefaultMaterial" (OBJ, STL, COLLADA) or an unnamed white one (glTF, PLY).
+std::optional<Eigen::Vector4d> MaterialColor(const aiMaterial& material) {
+  aiString name;
+  material.Get(AI_MATKEY_NAME, name);
+  if (std::strcmp(name.C_Str(), AI_DEFAULT_MATERIAL_NAME) == 0) return std::nullopt;
+  aiColor4D color;
+  if (material.Get(AI_MATKEY_BASE_COLOR, color) != AI_SUCCESS) {
+    if (material.Get(AI_MATKEY_COLOR_DIFFUSE, color) != AI_SUCCESS) return std::nullopt;
+    float opacity = 1;
+    if (material.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) color.a = opacity;
+  }
+  if (name.length == 0 && color == aiColor4D(1, 1, 1, 1)) return std::nullopt;
+  // files hold anything; the reply carries channels in [0, 1]
+  const Eigen::Vector4d rgba(color.r, color.g, color.b, color.a);
+  return rgba.cwiseMax(0.0).cwiseMin(1.0);
+}
+
+/// Starts a colour run at the next triangle of `out` when the colour
+/// changes. A mesh without a colour of the file's own gets a grey run (a
+/// neighbour of coloured ones must not take their colour); runs are
+/// dropped at the end when no mesh had a colour.
+void AddColorRun(const std::optional<Eigen::Vector4d>& color, TriangleMesh& out) {
+  static const Eigen::Vector4d kNoColor(0.7, 0.7, 0.72, 1);
+  const Eigen::Vector4d rgba = color.value_or(kNoColor);
+  if (!out.colors.empty() && out.colors.back().rgba == rgba) return;
+  if (!out.colors.empty() && out.colors.back().first_triangle == out.triangles.size()) {
+    out.colors.back().rgba = rgba;  // the previous run got no triangle
+    return;
+  }
+  out.colors.push_back({out.triangles.size(), rgba});
+}
+
 /// Appends the triangles of `node` and its children, placed by the
 /// accumulated node transform, welding vertices by exact position (ids in
 /// the order positions first occur).
 void Collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent,
-             WeldIndex& index, TriangleMesh& out) {
+             WeldIndex& index, TriangleMesh& out, bool& any_color) {
   const aiMatrix4x4 world = parent * node.mTransformation;
   for (unsigned i = 0; i < node.mNumMeshes; ++i) {
     const aiMesh& m = *scene.mMeshes[node.mMeshes[i]];
+    std::optional<Eigen::Vector4d> color;
+    if (m.mMaterialIndex < scene.mNumMaterials) {
+      color = MaterialColor(*scene.mMaterials[m.mMaterialIndex]);
+    }
+    any_color |= color.has_value();
+    AddColorRun(color, out);
     std::vector<int> ids(m.mNumVertices);
     for (unsigned v = 0; v < m.mNumVertices; ++v) {
       const aiVector3D p = world * m.mVertices[v];
@@ -75,7 +117,7 @@ void Collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent
     }
   }
   for (unsigned c = 0; c < node.mNumChildren; ++c) {
-    Collect(scene, *node.mChildren[c], world, index, out);
+    Collect(scene, *node.mChildren[c], world, index, out, any_color);
   }
 }
 
@@ -171,8 +213,9 @@ MeshOrError ImportMesh(const std::string& path, const Limits& limits, const Mesh
   if (auto problem = FindBadFace(*scene)) {
     return {nullptr, fmt::format("cannot read mesh file '{}': {}", path, *problem)};
   }
-  // Triangulate polygons (quads, n-gons); no other processing: normals,
-  // texture coordinates and materials do not matter for geometry.
+  // Triangulate polygons (quads, n-gons); no other processing: normals and
+  // texture coordinates do not matter for geometry (materials give only
+  // the colours the viewer draws).
   scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType);
   if (!scene || !scene->mRootNode) {
     return {nullptr,
@@ -191,10 +234,16 @@ MeshOrError ImportMesh(const std::string& path, const Limits& limits, const Mesh
   WeldIndex index;
   index.reserve(vertices);
   mesh->vertices.reserve(vertices);
-  Collect(*scene, *scene->mRootNode, aiMatrix4x4(), index, *mesh);
+  bool any_color = false;
+  Collect(*scene, *scene->mRootNode, aiMatrix4x4(), index, *mesh, any_color);
   if (mesh->triangles.empty()) {
     return {nullptr, fmt::format("mesh file '{}' holds no triangles", path)};
   }
+  // a run after the last triangle (a mesh of points or lines at the end)
+  if (!mesh->colors.empty() && mesh->colors.back().first_triangle == mesh->triangles.size()) {
+    mesh->colors.pop_back();
+  }
+  if (!any_color) mesh->colors.clear();
   ReadAxes(path, axes, *mesh);
   return {std::move(mesh), {}};
 }

@@ -49,6 +49,34 @@ std::optional<MeshOrError> Fail(std::string* problem, std::string message) {
 
 constexpr std::string_view kColladaUpAxis = "collada-up-axis=";
 
+/// The colour runs that end a mesh reply: what is wrong with them, if
+/// anything (a count that is not what is left, runs out of order or past the
+/// triangles, a channel outside [0, 1]).
+std::optional<std::string> DecodeColors(Reader& in, uint64_t triangles,
+                                        std::vector<TriangleColor>& colors) {
+  constexpr size_t kRunBytes = sizeof(uint64_t) + 4 * sizeof(double);
+  uint64_t count = 0;
+  if (!in.Get(count) || !in.Holds(count, kRunBytes) || count * kRunBytes != in.left()) {
+    return "its size does not match its vertices, triangles and colours";
+  }
+  colors.resize(count);
+  for (uint64_t i = 0; i < count; ++i) {
+    TriangleColor& c = colors[i];
+    in.Get(c.first_triangle);
+    for (int k = 0; k < 4; ++k) in.Get(c.rgba[k]);
+    const bool ordered = i == 0 ? c.first_triangle == 0
+                                : c.first_triangle > colors[i - 1].first_triangle;
+    if (!ordered || c.first_triangle >= triangles) {
+      return fmt::format("its colour run {} starts at triangle {} of {}", i, c.first_triangle,
+                         triangles);
+    }
+    if (!(c.rgba.minCoeff() >= 0 && c.rgba.maxCoeff() <= 1)) {
+      return fmt::format("its colour run {} has a channel outside [0, 1]", i);
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::vector<std::string> EncodeMeshSettings(const Limits& limits, const MeshAxes& axes) {
@@ -110,6 +138,11 @@ std::string EncodeMeshReply(const MeshOrError& result) {
              m.vertices.size() * sizeof(Eigen::Vector3d));
   out.append(reinterpret_cast<const char*>(m.triangles.data()),
              m.triangles.size() * sizeof(Eigen::Vector3i));
+  Put(out, uint64_t{m.colors.size()});
+  for (const TriangleColor& c : m.colors) {
+    Put(out, c.first_triangle);
+    for (int k = 0; k < 4; ++k) Put(out, c.rgba[k]);
+  }
   return out;
 }
 
@@ -149,8 +182,10 @@ std::optional<MeshOrError> DecodeMeshReply(std::string_view bytes, std::string* 
   }
   const uint64_t vertex_bytes = vertices * 3 * sizeof(double);
   const uint64_t after_vertices = in.left() - vertex_bytes;
-  if (triangles > after_vertices / (3 * sizeof(int32_t)) ||
-      triangles * 3 * sizeof(int32_t) != after_vertices) {
+  // the triangles, then at least the colour count
+  const uint64_t triangle_bytes = triangles * 3 * sizeof(int32_t);
+  if (after_vertices < sizeof(uint64_t) ||
+      triangles > (after_vertices - sizeof(uint64_t)) / (3 * sizeof(int32_t))) {
     return Fail(problem, fmt::format("its size does not match {} vertices and {} triangles",
                                      vertices, triangles));
   }
@@ -163,8 +198,9 @@ std::optional<MeshOrError> DecodeMeshReply(std::string_view bytes, std::string* 
   std::memcpy(static_cast<void*>(mesh->vertices.data()), in.Take(vertex_bytes).data(),
               vertex_bytes);
   mesh->triangles.resize(triangles);
-  std::memcpy(static_cast<void*>(mesh->triangles.data()), in.Take(in.left()).data(),
-              after_vertices);
+  std::memcpy(static_cast<void*>(mesh->triangles.data()), in.Take(triangle_bytes).data(),
+              triangle_bytes);
+  if (auto bad = DecodeColors(in, triangles, mesh->colors)) return Fail(problem, *bad);
   for (size_t t = 0; t < triangles; ++t) {
     for (int k = 0; k < 3; ++k) {
       const int32_t index = mesh->triangles[t][k];

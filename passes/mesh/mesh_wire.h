@@ -16,7 +16,9 @@
 // Reply: "MDLCMESH", u32 version, u8 kind, then
 //   kind 0 (mesh):  u8 declared up axis, u8 turned to Z-up (0 or 1),
 //                   u64 vertex count V, u64 triangle count T,
-//                   3V float64 coordinates, 3T int32 vertex indices
+//                   3V float64 coordinates, 3T int32 vertex indices,
+//                   u64 colour count C, C times (u64 first triangle,
+//                   4 float64 RGBA), first triangles increasing and < T
 //   kind 1 (error): u8 over_limit, u64 length, the message's bytes
 #pragma once
 
@@ -31,7 +33,7 @@
 
 namespace mdlc::mesh {
 
-inline constexpr uint32_t kMeshWireVersion = 2;
+inline constexpr uint32_t kMeshWireVersion = 3;
 
 /// The part of a request that is not the file: every limit and the axes.
 /// What changes a read's result besides the file's bytes.

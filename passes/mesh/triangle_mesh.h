@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -16,6 +17,15 @@
 #include "passes/mesh/mesh_axes.h"
 
 namespace mdlc::mesh {
+
+/// The colour a mesh file gives a run of its triangles: the diffuse (glTF:
+/// base) colour of their material, RGBA in [0, 1]. The run goes from
+/// `first_triangle` to the next run's first triangle (or the end).
+struct TriangleColor {
+  uint64_t first_triangle = 0;
+  Eigen::Vector4d rgba;
+  bool operator==(const TriangleColor&) const = default;
+};
 
 struct TriangleMesh {
   std::vector<Eigen::Vector3d> vertices;
@@ -25,6 +35,10 @@ struct TriangleMesh {
   /// the vertices were turned from it to Z-up when read (mesh_axes.h).
   UpAxis declared_up = UpAxis::kNone;
   bool turned_to_z_up = false;
+  /// The file's material colours, in triangle order; empty when it names
+  /// none (an STL, an OBJ without .mtl), so the model's colour applies. For
+  /// drawing only: no computation reads them.
+  std::vector<TriangleColor> colors;
 
   bool empty() const { return triangles.empty(); }
   /// The three corners of triangle `t`.

@@ -268,6 +268,9 @@ std::vector<MeshTriangles> Result::ReadMeshes(const std::vector<std::string>& re
       [&](const std::string& path, const mesh::TriangleMesh& m, MeshTriangles& out) {
         out.vertices = m.vertices;
         out.triangles = m.triangles;
+        for (const mesh::TriangleColor& c : m.colors) {
+          out.colors.push_back({static_cast<size_t>(c.first_triangle), c.rgba});
+        }
         off_axis.Add(path, m.declared_up, m.turned_to_z_up);
       });
   if (axes_note) *axes_note = off_axis.Note();

@@ -35,6 +35,36 @@ INSTANTIATE_TEST_SUITE_P(Formats, MeshFormatTest,
                          ::testing::Values("box.obj", "box_ascii.stl", "box_binary.stl", "box.ply",
                                            "box.dae", "box.gltf"));
 
+// The files' material colours, for `mdlc view` (issue 58): OBJ's .mtl
+// (two materials, a run each), COLLADA's Phong diffuse, glTF's base colour;
+// a file without materials has none (the model's colour applies).
+TEST(MeshLoaderTest, MaterialColorsComeInTriangleRuns) {  // BEYOND-001
+  const std::string dir = std::string(MDLC_TEST_MODELS) + "/urdf/mesh_colors/";
+  const mesh::MeshOrError obj = mesh::LoadMesh(dir + "two_colors.obj");
+  ASSERT_TRUE(obj.ok()) << obj.error;
+  ASSERT_EQ(obj.mesh->colors.size(), 2u);
+  EXPECT_EQ(obj.mesh->colors[0].first_triangle, 0u);
+  EXPECT_EQ(obj.mesh->colors[1].first_triangle, 6u);
+  // red and green, in some order (assimp groups faces by material)
+  std::vector<Eigen::Vector4d> seen = {obj.mesh->colors[0].rgba, obj.mesh->colors[1].rgba};
+  if (seen[0].x() < seen[1].x()) std::swap(seen[0], seen[1]);
+  ExpectNear(seen[0], Eigen::Vector4d(0.9, 0.1, 0.1, 1), 1e-6, "red");
+  ExpectNear(seen[1], Eigen::Vector4d(0.1, 0.8, 0.2, 1), 1e-6, "green");
+  for (const auto& [file, rgba] : {std::pair{"blue.dae", Eigen::Vector4d(0.1, 0.2, 0.9, 1)},
+                                   std::pair{"yellow.gltf", Eigen::Vector4d(0.9, 0.8, 0.1, 1)}}) {
+    const mesh::MeshOrError m = mesh::LoadMesh(dir + file);
+    ASSERT_TRUE(m.ok()) << m.error;
+    ASSERT_EQ(m.mesh->colors.size(), 1u) << file;
+    EXPECT_EQ(m.mesh->colors[0].first_triangle, 0u);
+    ExpectNear(m.mesh->colors[0].rgba, rgba, 1e-6, file);
+  }
+  for (const char* plain : {"box.obj", "box.dae", "box.gltf", "box_binary.stl"}) {
+    const mesh::MeshOrError m = mesh::LoadMesh(MeshPath(plain));
+    ASSERT_TRUE(m.ok()) << m.error;
+    EXPECT_TRUE(m.mesh->colors.empty()) << plain;
+  }
+}
+
 TEST(MeshLoaderTest, MissingFileIsAnError) {  // BEYOND-001
   const mesh::MeshOrError m = mesh::LoadMesh(MeshPath("no_such_mesh.obj"));
   EXPECT_FALSE(m.ok());

@@ -64,6 +64,29 @@ TEST(MeshWireTest, TheFilesAxesComeBackAsSent) {  // issue 55, BEYOND-001
   }
 }
 
+TEST(MeshWireTest, TheFilesColorsComeBackAsSent) {  // issue 58, BEYOND-001
+  MeshOrError sent = Tetra();
+  auto mesh = std::make_shared<TriangleMesh>(*sent.mesh);
+  mesh->colors = {{0, {0.9, 0.1, 0.1, 1}}, {3, {0.1, 0.8, 0.2, 0.5}}};
+  sent.mesh = mesh;
+  std::string problem;
+  const std::optional<MeshOrError> got = Decode(EncodeMeshReply(sent), &problem);
+  ASSERT_TRUE(got) << problem;
+  EXPECT_EQ(got->mesh->colors, mesh->colors);
+  EXPECT_EQ(got->mesh->triangles, mesh->triangles);
+  // runs out of order, past the last triangle, or with a channel outside [0, 1]
+  const std::vector<std::vector<TriangleColor>> bad = {
+      {{1, {1, 0, 0, 1}}},
+      {{0, {1, 0, 0, 1}}, {0, {0, 1, 0, 1}}},
+      {{0, {1, 0, 0, 1}}, {4, {0, 1, 0, 1}}},
+      {{0, {1.5, 0, 0, 1}}}};
+  for (const std::vector<TriangleColor>& colors : bad) {
+    mesh->colors = colors;
+    EXPECT_FALSE(Decode(EncodeMeshReply(sent), &problem)) << colors.size();
+    EXPECT_NE(problem.find("colour run"), std::string::npos) << problem;
+  }
+}
+
 TEST(MeshWireTest, AnErrorComesBackWithItsLimitFlag) {  // issue 16
   for (const bool over_limit : {false, true}) {
     const MeshOrError sent{nullptr, "mesh file 'a.obj' holds no triangles", over_limit};

@@ -168,12 +168,21 @@ struct MeshSize {
   bool ok() const { return error.empty(); }
 };
 
+/// A run of a mesh's triangles in one colour of the file's materials
+/// (COLLADA, glTF, OBJ's .mtl): from first_triangle to the next run's first
+/// triangle (or the end); RGBA in [0, 1].
+struct MeshColor {
+  size_t first_triangle = 0;
+  Eigen::Vector4d rgba;
+};
+
 /// A mesh file's triangles as the compile reads them (Result::ReadMeshes):
 /// unscaled (the geometry's scale is not applied), glTF turned Z-up, COLLADA
 /// as Options::collada_up_axis says.
 struct MeshTriangles {
   std::vector<Eigen::Vector3d> vertices;
   std::vector<Eigen::Vector3i> triangles;
+  std::vector<MeshColor> colors;  // empty when the file names no colour
   std::string error;  // set when the file could not be read as a mesh
   bool ok() const { return error.empty(); }
 };
