@@ -14,7 +14,17 @@ For each model: write the page, open it (file://, no network) and check
   every coordinate, multi-dof joints (ball, universal, planar, floating)
   included, against Model.body_poses(q);
 - moving one joint's slider (a real input event) moves exactly the bodies
-  downstream of that joint, as the scene shows them.
+  downstream of that joint, as the scene shows them;
+- the page holds no absolute path of this machine (issue 58).
+Then, for the models it is given (issue 58):
+- mesh_colors.urdf: the mesh files' own colours (OBJ .mtl, COLLADA, glTF)
+  reach the page and its pixels;
+- free_ball.xml: `mdlc view --q` sets the configuration shown (equal to
+  plant-json's at the same --q), a value past a joint's limit is clamped in
+  the slider, its label and the bodies alike; a floating body's sliders are
+  x, y, z, roll, pitch, yaw, and dragging them sets q's quaternion; the
+  selected body's panel lies inside a 1280x800 window.
+Screenshots are kept in $MDLC_VIEW_SCREENSHOTS when it is set.
 The page runs the checks itself when opened as page.html#selftest=JSON and
 writes the results into <pre id="mdlc-selftest">, which --dump-dom prints.
 
@@ -53,7 +63,7 @@ def run_browser(browser, url, *extra):
     # SwiftShader gives WebGL without a GPU
     command = [browser, "--headless=new", "--no-sandbox", "--disable-gpu",
                "--enable-unsafe-swiftshader", "--use-angle=swiftshader",
-               "--window-size=1200,800", "--virtual-time-budget=10000",
+               "--window-size=1280,800", "--virtual-time-budget=10000",
                "--no-first-run", "--no-default-browser-check", *extra, url]
     done = subprocess.run(command, capture_output=True, text=True, timeout=120)
     return done.stdout
@@ -120,15 +130,54 @@ def check(condition, message):
         raise Failure(message)
 
 
-def test_model(mdlc, browser, model_path, work):
-    name = os.path.splitext(os.path.basename(model_path))[0]
-    page_path = os.path.join(work, name + ".html")
-    done = subprocess.run([mdlc, "view", model_path, "-o", page_path], capture_output=True, text=True)
+REPOSITORY = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def write_page(mdlc, model_path, page_path, *flags):
+    """`mdlc view` of the model into page_path: the page's text."""
+    done = subprocess.run([mdlc, "view", model_path, "-o", page_path, *flags],
+                          capture_output=True, text=True)
     if done.returncode != 0 and "without the viewer" in done.stderr:
         print(f"skipped: {done.stderr.strip()}")
         sys.exit(SKIP)
     check(done.returncode == 0, f"mdlc view {model_path} failed: {done.stderr}")
     page = open(page_path, encoding="utf-8").read()
+    # a page is passed around: it names files relative to the model's folder
+    for local in {os.path.dirname(os.path.abspath(model_path)), REPOSITORY, os.getcwd()}:
+        check(local not in page, f"{page_path} holds the local path {local}")
+    return page
+
+
+def selftest(browser, page_path, request, name):
+    """Opens the page with #selftest=request: the report it writes."""
+    url = "file://" + page_path + "#selftest=" + urllib.parse.quote(json.dumps(request))
+    dom = run_browser(browser, url, "--dump-dom")
+    errors = re.search(r'<pre id="mdlc-errors"[^>]*>(.*?)</pre>', dom, re.S)
+    check(not errors or not errors.group(1).strip(), f"{name}: the page reported errors: "
+          f"{errors.group(1) if errors else ''}")
+    # the last match: the viewer script's own text names the element too
+    matches = re.findall(r'<pre id="mdlc-selftest">([^<]*)</pre>', dom)
+    check(matches, f"{name}: the page did not finish its self-test (it never got to run?)")
+    try:
+        report = json.loads(html.unescape(matches[-1]))
+    except ValueError:
+        raise Failure(f"{name}: the self-test wrote no JSON: {matches[-1][:300]}")
+    check(report["errors"] == [], f"{name}: errors in the page: {report['errors']}")
+    check('data-ready="true"' in dom, f"{name}: the page did not finish building its scene")
+    return report
+
+
+def screenshot(browser, url, png, name):
+    """A screenshot of the page at url, kept at png: (width, height, channels, rows)."""
+    run_browser(browser, url, f"--screenshot={png}")
+    check(os.path.exists(png), f"{name}: no screenshot")
+    return png_pixels(png)
+
+
+def test_model(mdlc, browser, model_path, work, shots):
+    name = os.path.splitext(os.path.basename(model_path))[0]
+    page_path = os.path.join(work, name + ".html")
+    page = write_page(mdlc, model_path, page_path)
     model = embedded_model(page)
     bodies, joints = model["bodies"], model["joints"]
     movable = [j for j in (joints[i] for i in model["joint_order"]) if j["nq"] == 1]
@@ -185,20 +234,7 @@ def test_model(mdlc, browser, model_path, work):
                  for _ in range(3)] if mdlc_python else []
 
     request = {"qs": qs + random_qs, "slider": slider["scoped_name"], "value": slider_value}
-    url = "file://" + page_path + "#selftest=" + urllib.parse.quote(json.dumps(request))
-    dom = run_browser(browser, url, "--dump-dom")
-    errors = re.search(r'<pre id="mdlc-errors"[^>]*>(.*?)</pre>', dom, re.S)
-    check(not errors or not errors.group(1).strip(), f"{name}: the page reported errors: "
-          f"{errors.group(1) if errors else ''}")
-    # the last match: the viewer script's own text names the element too
-    matches = re.findall(r'<pre id="mdlc-selftest">([^<]*)</pre>', dom)
-    check(matches, f"{name}: the page did not finish its self-test (it never got to run?)")
-    try:
-        report = json.loads(html.unescape(matches[-1]))
-    except ValueError:
-        raise Failure(f"{name}: the self-test wrote no JSON: {matches[-1][:300]}")
-    check(report["errors"] == [], f"{name}: errors in the page: {report['errors']}")
-    check('data-ready="true"' in dom, f"{name}: the page did not finish building its scene")
+    report = selftest(browser, page_path, request, name)
 
     # the page's poses against plant-json's, body by body
     worst = 0.0
@@ -232,10 +268,8 @@ def test_model(mdlc, browser, model_path, work):
           f"{name}: moving {slider['scoped_name']} moved {report['moved']}, expected {expected_moved}")
 
     # a screenshot: the 3D view (right of the side panel) is not one colour
-    png = os.path.join(work, name + ".png")
-    run_browser(browser, "file://" + page_path, f"--screenshot={png}")
-    check(os.path.exists(png), f"{name}: no screenshot")
-    width, height, channels, rows = png_pixels(png)
+    png = os.path.join(shots, name + ".png")
+    width, height, channels, rows = screenshot(browser, "file://" + page_path, png, name)
     colours = set()
     for row in rows[::4]:
         for x in range(400, width, 4):
@@ -246,6 +280,109 @@ def test_model(mdlc, browser, model_path, work):
           f"{len(random_qs)} random ones against body_poses, worst pose error "
           f"{worst:.1e}; slider {slider['scoped_name']} moved {len(report['moved'])} bodies; "
           f"screenshot {width}x{height} with {len(colours)} colours in the 3D view")
+    if name == "mesh_colors":
+        check_mesh_colors(model, channels, rows)
+    if name == "free_ball":
+        check_configuration(mdlc, browser, model_path, work, shots)
+
+
+def check_mesh_colors(model, channels, rows):
+    """The files' material colours in the page's data and on screen."""
+    runs = {os.path.basename(m["path"]): [[round(x, 6) for x in run] for run in m["colors"]]
+            for m in model["meshes"]}
+    expected = {"two_colors.obj": [[0, 0.9, 0.1, 0.1, 1], [6, 0.1, 0.8, 0.2, 1]],
+                "blue.dae": [[0, 0.1, 0.2, 0.9, 1]], "yellow.gltf": [[0, 0.9, 0.8, 0.1, 1]]}
+    check(runs == expected, f"mesh_colors: the page's colour runs are {runs}, not {expected}")
+    # lit, the faces keep their hue: count the pixels of each in the 3D view
+    hues = {"red": 0, "green": 0, "blue": 0, "yellow": 0}
+    for row in rows:
+        for x in range(400, len(row) // channels):
+            r, g, b = row[x * channels:x * channels + 3]
+            if r > 140 and g < 90 and b < 90:
+                hues["red"] += 1
+            elif g > 110 and r < 100 and b < 110:
+                hues["green"] += 1
+            elif b > 140 and r < 100 and g < 130:
+                hues["blue"] += 1
+            elif r > 140 and g > 120 and b < 80:
+                hues["yellow"] += 1
+    check(min(hues.values()) >= 100, f"mesh_colors: pixels by hue {hues}: a file's colour "
+          "is missing from the screenshot")
+    print(f"ok mesh_colors: the files' colours reach the page; pixels by hue {hues}")
+
+
+def rpy_quaternion(roll, pitch, yaw):
+    cr, sr = math.cos(roll / 2), math.sin(roll / 2)
+    cp, sp = math.cos(pitch / 2), math.sin(pitch / 2)
+    cy, sy = math.cos(yaw / 2), math.sin(yaw / 2)
+    return [cr * cp * cy + sr * sp * sy, sr * cp * cy - cr * sp * sy,
+            cr * sp * cy + sr * cp * sy, cr * cp * sy - sr * sp * cy]
+
+
+def check_configuration(mdlc, browser, model_path, work, shots):
+    """--q, clamping, floating sliders and the selection panel (free_ball.xml)."""
+    name = "free_ball --q"
+    page_path = os.path.join(work, "free_ball_q.html")
+    # jaw_hinge's range is [-10, 30] degrees: 1 rad is past it
+    model = embedded_model(write_page(mdlc, model_path, page_path, "--q", "jaw_hinge=1.0",
+                                      "--q", "shoulder_slide=0.03"))
+    # free joints are named after their bodies, as in Drake
+    drag = [["box", "x", 0.3], ["box", "roll", 0.5], ["box", "pitch", 0.2], ["box", "yaw", -0.4]]
+    report = selftest(browser, page_path, {"qs": [], "drag": drag, "select": "lid"}, name)
+    opened = report["opened"]
+    sliders = {(s["joint"].split("::")[-1], s["coordinate"]): s for s in opened["sliders"]}
+    for joint in ("box", "torso"):  # <joint type="free"> and <freejoint/>
+        coordinates = [c for j, c in sliders if j == joint]
+        check(coordinates == ["x", "y", "z", "roll", "pitch", "yaw"],
+              f"{name}: the floating joint's sliders are {coordinates}")
+    check(not any(c.startswith("q") for _, c in sliders), f"{name}: quaternion sliders shown")
+
+    joints = {j["name"]: j for j in model["joints"]}
+    jaw, upper = joints["jaw_hinge"], math.radians(30)
+    jaw_slider = sliders[("jaw_hinge", "")]
+    check(abs(jaw_slider["value"] - upper) < 1e-12 and jaw_slider["label"] == f"{upper:.3f}"
+          and jaw_slider["clamped"] and abs(opened["q"][jaw["q_start"]] - upper) < 1e-12,
+          f"{name}: jaw_hinge=1.0 past its limit {upper} shows {jaw_slider}, q "
+          f"{opened['q'][jaw['q_start']]}")
+    others = [k for k, s in sliders.items() if s["clamped"] and k != ("jaw_hinge", "")]
+    check(not others, f"{name}: sliders within their ranges are marked clamped: {others}")
+    slide = sliders[("shoulder_slide", "")]
+    check(slide["label"] == "0.030" and not slide["clamped"] and
+          opened["q"][joints["shoulder_slide"]["q_start"]] == 0.03,
+          f"{name}: shoulder_slide=0.03 shows {slide}")
+    # the bodies shown on opening are plant-json's at the same (clamped) --q
+    plant = json.loads(subprocess.run(
+        [mdlc, "compile", model_path, "--emit=plant-json", "--q", f"jaw_hinge={upper!r}",
+         "--q", "shoulder_slide=0.03"], capture_output=True, text=True, check=True).stdout)
+    worst = 0.0
+    for b, expected in enumerate(plant["bodies"], start=1):
+        R = rotation_of(expected["X_WB"]["q"])
+        got = opened["shown"][b]
+        worst = max([worst] + [abs(x - y) for x, y in zip(got["R"], R)] +
+                    [abs(x - y) for x, y in zip(got["p"], expected["X_WB"]["p"])])
+    check(worst <= TOLERANCE, f"{name}: the opened page differs from plant-json by {worst:g}")
+
+    # dragging x, roll, pitch, yaw sets q's translation and quaternion
+    box = joints["box"]
+    dragged = report["dragged"]["q"][box["q_start"]:box["q_start"] + 7]
+    wanted = rpy_quaternion(0.5, 0.2, -0.4)
+    sign = 1 if sum(a * b for a, b in zip(dragged[:4], wanted)) > 0 else -1
+    error = max(abs(sign * a - b) for a, b in zip(dragged[:4], wanted))
+    check(error < 1e-12 and dragged[4] == 0.3, f"{name}: dragged box to q {dragged}, "
+          f"expected quaternion {wanted} and x 0.3")
+
+    selection = report["selection"]
+    # a 1280x800 window (its viewport a little shorter: the browser's own bars)
+    check(selection["width"] == 1280 and selection["left"] >= 0 and
+          selection["top"] >= 0 and selection["right"] <= selection["width"] and
+          selection["bottom"] <= selection["height"] and "lid" in selection["text"],
+          f"{name}: the selected body's panel is not inside the window: {selection}")
+    png = os.path.join(shots, "free_ball_selected.png")
+    screenshot(browser, "file://" + page_path + "#select=lid", png, name)
+    print(f"ok {name}: opened as plant-json at --q (error {worst:.1e}), jaw_hinge clamped to "
+          f"{upper:.4f}; box dragged by x, roll, pitch, yaw; selection panel at "
+          f"({selection['left']:.0f}, {selection['top']:.0f})-({selection['right']:.0f}, "
+          f"{selection['bottom']:.0f}); screenshot {png}")
 
 
 def main():
@@ -259,9 +396,11 @@ def main():
         return SKIP
     failures = 0
     with tempfile.TemporaryDirectory() as work:
+        shots = os.environ.get("MDLC_VIEW_SCREENSHOTS") or work
+        os.makedirs(shots, exist_ok=True)
         for model in models:
             try:
-                test_model(mdlc, browser, model, work)
+                test_model(mdlc, browser, model, work, shots)
             except Failure as failure:
                 print(f"FAIL {failure}")
                 failures += 1

@@ -8,6 +8,7 @@
 
 #include "ir/printer.h"
 #include "cli_compile.h"
+#include "q_flag.h"
 #include "subcommands.h"
 #include "summary.h"
 #include "verify_diagnostics.h"
@@ -29,22 +30,6 @@ struct CompileCommandFlags {
   bool verify_diagnostics = false;
   bool no_locations = false;
 };
-
-// --q JOINT=VALUE, each into (JOINT, VALUE); false on a malformed one
-bool ParseJointPositions(const std::vector<std::string>& q, Options& options) {
-  for (const std::string& assignment : q) {
-    const size_t eq = assignment.rfind('=');
-    char* end = nullptr;
-    const double value =
-        eq == std::string::npos ? 0 : std::strtod(assignment.c_str() + eq + 1, &end);
-    if (eq == std::string::npos || end == assignment.c_str() + eq + 1 || *end != '\0') {
-      fmt::print(stderr, "mdlc: error: --q expects JOINT=VALUE, got '{}'\n", assignment);
-      return false;
-    }
-    options.joint_positions.emplace_back(assignment.substr(0, eq), value);
-  }
-  return true;
-}
 
 int Run(const CompileCommandFlags& flags) {
   Options joint_positions;
@@ -104,8 +89,7 @@ Subcommand AddCompileCommand(CLI::App& app) {
   compile->add_option("--emit", flags->emit, "What to print: summary, ir, plant-json or none")
       ->check(CLI::IsMember({"summary", "ir", "plant-json", "none"}));
   compile->add_option("-o,--output", flags->output, "Write the output here instead of stdout");
-  compile->add_option("--q", flags->q, "Set a 1-dof joint's position: JOINT=VALUE (repeatable)")
-      ->allow_extra_args(false);
+  AddJointPositionsFlag(compile, flags->q);
   compile
       ->add_option("--print-after", flags->print_after, "Print the IR after this pass (repeatable)")
       ->allow_extra_args(false);

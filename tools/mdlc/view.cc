@@ -5,6 +5,8 @@
 //   title, notes[]            what the page should say: what it cannot show, and
 //                             what it did with COLLADA meshes not declared Z-up
 //   num_positions, joint_order[]            the plant's q layout
+//   q0[]                      the configuration the page opens in: the default
+//                             positions with --q applied
 //   bodies[]   name, scoped_name, model, mass, com, inertia (3x3, row-major),
 //              parent, joint (inbound; -1 for the world), level, source
 //   joints[]   name, scoped_name, type, parent, child, X_PF, X_CM, axis,
@@ -13,7 +15,10 @@
 //   frames[]   name, body, X_BF
 //   geometries[] name, body, X_BG, shape {type, ...}, roles[], rgba, mesh
 //   meshes[]   path, vertices (base64 little-endian Float32 xyz, unscaled),
-//              triangles (base64 little-endian Uint32)
+//              triangles (base64 little-endian Uint32), colors[] (the file's
+//              material colours: [first triangle, r, g, b, a] per run)
+// File paths (sources, meshes, notes) are relative to the model's folder
+// (page_paths.h): the page holds no absolute path of this machine.
 // Transforms are {"R": 9 numbers row-major, "p": 3 numbers}, at full
 // precision, so the page's forward kinematics reproduce the plant's.
 #include "view.h"
@@ -31,6 +36,7 @@
 
 #include "backend/json_writer.h"
 #include "ir/module.h"
+#include "page_paths.h"
 
 #ifdef MDLC_HAVE_VIEWER
 namespace mdlc::tools::viewer {
@@ -99,12 +105,21 @@ void Numbers(JsonWriter& w, std::span<const double> values) {
   w.EndArray();
 }
 
-std::string Where(const Result& result, Loc loc) {
+std::string Where(const Result& result, const PagePaths& paths, Loc loc) {
   if (!loc.valid()) return "";
-  return fmt::format("{}:{}:{}", result.sources().Path(loc.file), loc.line, loc.column);
+  return fmt::format("{}:{}:{}", paths.Show(result.sources().Path(loc.file)), loc.line,
+                     loc.column);
 }
 
-void Shape(JsonWriter& w, const ir::Shape& shape, int mesh) {
+/// A mesh's URI as the page shows it: a file path or file:// URI as a path
+/// relative to the model's folder, any other URI (package://) as written.
+std::string ShownUri(const std::string& uri, const PagePaths& paths) {
+  if (uri.starts_with("file://")) return paths.Show(uri.substr(7));
+  if (uri.starts_with("/")) return paths.Show(uri);
+  return uri;
+}
+
+void Shape(JsonWriter& w, const ir::Shape& shape, int mesh, const PagePaths& paths) {
   w.BeginObject().Key("type").String(ir::ShapeTypeName(shape));
   if (const auto* box = std::get_if<ir::Box>(&shape)) {
     w.Key("size");
@@ -118,7 +133,7 @@ void Shape(JsonWriter& w, const ir::Shape& shape, int mesh) {
   } else if (const auto* ellipsoid = std::get_if<ir::Ellipsoid>(&shape)) {
     w.Key("a").Number(ellipsoid->a).Key("b").Number(ellipsoid->b).Key("c").Number(ellipsoid->c);
   } else if (const auto* m = std::get_if<ir::Mesh>(&shape)) {
-    w.Key("uri").String(m->uri).Key("scale");
+    w.Key("uri").String(ShownUri(m->uri, paths)).Key("scale");
     Vector(w, m->scale);
     w.Key("mesh").Int(mesh);
   }
@@ -179,7 +194,9 @@ bool ViewerAvailable() {
 #endif
 }
 
-std::string ViewModelJson(const Result& result, const std::string& title) {
+std::string ViewModelJson(const Result& result, const std::string& title,
+                          const std::string& model_file) {
+  const PagePaths paths(model_file);
   const backend::Plant& plant = result.plant();
   const backend::SceneGraph& scene = result.scene_graph();
   const ir::Module& module = result.module();
@@ -194,6 +211,9 @@ std::string ViewModelJson(const Result& result, const std::string& title) {
   w.Key("joint_order").BeginArray(JsonWriter::Layout::Compact);
   for (JointId id : plant.joint_order) w.Int(id.index());
   w.EndArray();
+  const Eigen::VectorXd q0 = result.DefaultPositions();
+  w.Key("q0");
+  Numbers(w, std::span<const double>(q0.data(), static_cast<size_t>(q0.size())));
 
   w.Key("bodies").BeginArray();
   for (size_t b = 0; b < plant.bodies.size(); ++b) {
@@ -211,7 +231,7 @@ std::string ViewModelJson(const Result& result, const std::string& title) {
     w.Key("parent").Int(body.parent.valid() ? body.parent.index() : -1);
     w.Key("joint").Int(body.inbound_joint.valid() ? body.inbound_joint.index() : -1);
     w.Key("level").Int(body.level);
-    w.Key("source").String(b < module.bodies.size() ? Where(result, module.bodies[b].loc) : "");
+    w.Key("source").String(b < module.bodies.size() ? Where(result, paths, module.bodies[b].loc) : "");
     w.EndObject();
   }
   w.EndArray();
@@ -237,7 +257,7 @@ std::string ViewModelJson(const Result& result, const std::string& title) {
     w.Key("default");
     Numbers(w, joint.default_positions);
     w.Key("pitch").Number(joint.screw_thread_pitch);
-    w.Key("source").String(j < module.joints.size() ? Where(result, module.joints[j].loc) : "");
+    w.Key("source").String(j < module.joints.size() ? Where(result, paths, module.joints[j].loc) : "");
     if (joint.type == ir::JointType::Curvilinear) {
       // the page does not follow the path; it shows the joint where it rests
       w.Key("X_FM");
@@ -288,7 +308,7 @@ std::string ViewModelJson(const Result& result, const std::string& title) {
       if (auto it = mesh_index.find(m->resolved); it != mesh_index.end()) mesh = it->second;
       if (mesh < 0 && unshown.insert(m->resolved.empty() ? m->uri : m->resolved).second) {
         const auto at = std::find(mesh_paths.begin(), mesh_paths.end(), m->resolved);
-        notes.push_back(fmt::format("mesh '{}' is not shown: {}", m->uri,
+        notes.push_back(fmt::format("mesh '{}' is not shown: {}", ShownUri(m->uri, paths),
                                     at == mesh_paths.end() ? "it was not found"
                                                            : read[at - mesh_paths.begin()].error));
       }
@@ -298,7 +318,7 @@ std::string ViewModelJson(const Result& result, const std::string& title) {
     w.Key("X_BG");
     Pose(w, g.X_BG);
     w.Key("shape");
-    Shape(w, g.shape, mesh);
+    Shape(w, g.shape, mesh, paths);
     w.Key("roles").BeginArray(JsonWriter::Layout::Compact);
     if (g.roles & ir::kIllustrationRole) w.String("illustration");
     if (g.roles & ir::kProximityRole) w.String("proximity");
@@ -321,20 +341,29 @@ std::string ViewModelJson(const Result& result, const std::string& title) {
     for (const Eigen::Vector3i& t : m->triangles) {
       for (int k = 0; k < 3; ++k) AppendLittleEndian(triangles, static_cast<uint32_t>(t[k]));
     }
-    w.BeginObject().Key("path").String(path);
+    w.BeginObject().Key("path").String(paths.Show(path));
     w.Key("vertices").String(Base64(vertices)).Key("triangles").String(Base64(triangles));
+    w.Key("colors").BeginArray();
+    for (const MeshColor& c : m->colors) {
+      w.BeginArray(JsonWriter::Layout::Compact).Int(static_cast<int64_t>(c.first_triangle));
+      for (int k = 0; k < 4; ++k) w.Number(c.rgba[k]);
+      w.EndArray();
+    }
+    w.EndArray();
     w.EndObject();
   }
   w.EndArray();
 
   w.Key("notes").BeginArray();
-  for (const std::string& note : notes) w.String(note);
+  // a reader's error names the file it could not read by its full path
+  for (const std::string& note : notes) w.String(paths.Scrub(note, mesh_paths));
   w.EndArray();
   w.EndObject();
   return w.Take();
 }
 
-std::string ViewPage(const Result& result, const std::string& title) {
+std::string ViewPage(const Result& result, const std::string& title,
+                     const std::string& model_file) {
 #ifdef MDLC_HAVE_VIEWER
   // three.js and OrbitControls travel as base64 text: the viewer turns them
   // into module URLs of their own (blob:), which file:// pages may import
@@ -369,8 +398,14 @@ h1 {{ font-size: 15px; margin: 0 0 6px; }} h2 {{ font-size: 13px; margin: 10px 0
   gap: 4px; align-items: center; }} .slider span {{ overflow: hidden; text-overflow: ellipsis; }}
 #tree ul {{ list-style: none; padding-left: 12px; margin: 0; }}
 #tree .body {{ cursor: pointer; }} #tree .body.selected {{ background: #ffe28a; }}
-#tree .joint {{ color: #666; }} #toggles {{ display: flex; flex-wrap: wrap; gap: 2px 10px; }} #toggles label {{ white-space: nowrap; }} #info {{ white-space: pre; overflow-x: auto; font-family: monospace;
-  font-size: 11px; background: #fff; border: 1px solid #ddd; padding: 4px; }}
+#tree .joint {{ color: #666; }} #toggles {{ display: flex; flex-wrap: wrap; gap: 2px 10px; }} #toggles label {{ white-space: nowrap; }}
+/* the selection floats over the 3D view, so it is in sight however long the tree */
+#selection {{ position: absolute; top: 8px; right: 8px; z-index: 1; max-width: min(480px, 70%);
+  max-height: calc(100% - 16px); overflow: auto; box-sizing: border-box; padding: 4px 8px;
+  background: rgba(255, 255, 255, 0.9); border: 1px solid #ccc; }}
+#selection h2 {{ margin: 2px 0 4px; }}
+#info {{ white-space: pre; font-family: monospace; font-size: 11px; }}
+.slider .clamped {{ color: #a33; }}
 </style>
 </head>
 <body>
@@ -384,10 +419,10 @@ h1 {{ font-size: 15px; margin: 0 0 6px; }} h2 {{ font-size: 13px; margin: 10px 0
 <div id="sliders"></div>
 <h2>Kinematic tree</h2>
 <div id="tree"></div>
-<h2>Selected body</h2>
-<div id="info">click a body in the tree or the view</div>
 </div>
-<div id="view"></div>
+<div id="view">
+<div id="selection"><h2>Selected body</h2><div id="info">click a body in the tree or the view</div></div>
+</div>
 <script type="application/json" id="mdlc-model">{model}</script>
 <script type="text/plain" id="mdlc-three">{three}</script>
 <script type="text/plain" id="mdlc-orbit-controls">{orbit}</script>
@@ -398,13 +433,14 @@ h1 {{ font-size: 15px; margin: 0 0 6px; }} h2 {{ font-size: 13px; margin: 10px 0
 </html>
 )",
       fmt::arg("title", EscapeHtml(title)),
-      fmt::arg("model", EscapeForScript(ViewModelJson(result, title))),
+      fmt::arg("model", EscapeForScript(ViewModelJson(result, title, model_file))),
       fmt::arg("three", Base64(viewer::kThreeJs)),
       fmt::arg("orbit", Base64(viewer::kOrbitControlsJs)),
       fmt::arg("viewer", EscapeForScript(viewer::kViewerJs)));
 #else
   (void)result;
   (void)title;
+  (void)model_file;
   return "";
 #endif
 }

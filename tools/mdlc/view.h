@@ -20,11 +20,14 @@ bool ViewerAvailable();
 
 /// The model as the JSON the page embeds: bodies, joints, frames,
 /// geometries and meshes (see view.cc). Mesh files that cannot be read are
-/// left out, each with a note in "notes".
-std::string ViewModelJson(const Result& result, const std::string& title);
+/// left out, each with a note in "notes". File paths are written relative
+/// to the folder of `model_file`, the first file on the command line.
+std::string ViewModelJson(const Result& result, const std::string& title,
+                          const std::string& model_file);
 
 /// The whole page: `title`, the model JSON, three.js and the viewer script.
 /// Precondition: ViewerAvailable() and result.has_model().
-std::string ViewPage(const Result& result, const std::string& title);
+std::string ViewPage(const Result& result, const std::string& title,
+                     const std::string& model_file);
 
 }  // namespace mdlc::tools

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "cli_compile.h"
+#include "q_flag.h"
 #include "subcommands.h"
 #include "view.h"
 
@@ -15,6 +16,7 @@ namespace {
 struct ViewFlags {
   CompileFlags compile;
   std::string output;
+  std::vector<std::string> q;  // --q JOINT=VALUE: the configuration the page opens in
 };
 
 int Run(const ViewFlags& flags) {
@@ -23,14 +25,23 @@ int Run(const ViewFlags& flags) {
                        "embedded at build time and needs npm then); rebuild with npm installed\n");
     return 1;
   }
-  const CliCompile compiled = CompileForCli(flags.compile);
+  Options joint_positions;
+  if (!ParseJointPositions(flags.q, joint_positions)) return 2;
+  CompileSetup setup;
+  setup.adjust = [&](Options& options) {
+    options.joint_positions = joint_positions.joint_positions;
+  };
+  const CliCompile compiled = CompileForCli(flags.compile, setup);
   if (compiled.status) return compiled.status;
   std::string title;
   for (const std::string& file : flags.compile.files) {
     if (!title.empty()) title += ", ";
     title += file.substr(file.find_last_of('/') + 1);
   }
-  return WriteOutput(flags.output, tools::ViewPage(*compiled.result, title));
+  return WriteOutput(flags.output, tools::ViewPage(*compiled.result, title,
+                                                     flags.compile.files.empty()
+                                                         ? std::string()
+                                                         : flags.compile.files.front()));
 }
 
 }  // namespace
@@ -41,6 +52,7 @@ Subcommand AddViewCommand(CLI::App& app) {
       app.add_subcommand("view", "Write the model as one offline HTML page to view in 3D");
   AddCompileFlags(view, flags->compile);
   view->add_option("-o,--output", flags->output, "The page to write (model.html)")->required();
+  AddJointPositionsFlag(view, flags->q);
   return {view, [flags] { return Run(*flags); }};
 }
 

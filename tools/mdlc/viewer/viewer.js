@@ -5,7 +5,8 @@
 // kinematics: X_WC = X_WP * X_PF * X_FM(q) * X_CM^-1 with X_FM(q) per joint
 // type exactly as backend/kinematics.cc computes it, in double precision.
 // The page exposes window.mdlcBodyPoses(q) (X_WB of every body) and
-// window.mdlcSetPositions(q) so that tests can hold it to the plant; opened
+// window.mdlcSetPositions(q) so that tests can hold it to the plant; it opens
+// in model.q0 (the default positions with mdlc view --q applied); opened
 // as model.html#selftest=JSON it runs those checks and writes the results
 // into the pre element "mdlc-selftest" (tests/cli/view_test.py).
 
@@ -77,6 +78,19 @@ function quaternionRotation(w, x, y, z) {
   return [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
           2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
           2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)];
+}
+
+// the roll, pitch, yaw (fixed axes, as rotationFromRpy) of a rotation; pitch
+// in [-pi/2, pi/2]
+function rpyOfRotation(R) {
+  return [Math.atan2(R[7], R[8]), Math.asin(Math.max(-1, Math.min(1, -R[6]))), Math.atan2(R[3], R[0])];
+}
+// the unit quaternion [w, x, y, z] of rotationFromRpy(roll, pitch, yaw)
+function quaternionOfRpy(roll, pitch, yaw) {
+  const cr = Math.cos(roll / 2), sr = Math.sin(roll / 2), cp = Math.cos(pitch / 2);
+  const sp = Math.sin(pitch / 2), cy = Math.cos(yaw / 2), sy = Math.sin(yaw / 2);
+  return [cr * cp * cy + sr * sp * sy, sr * cp * cy - cr * sp * sy,
+          cr * sp * cy + sr * cp * sy, cr * cp * sy - sr * sp * cy];
 }
 
 // X_FM(q) per joint type (backend/kinematics.cc JointPose)
@@ -151,10 +165,26 @@ const meshGeometries = model.meshes.map((m) => {
   const geometry = new THREE.BufferGeometry();
   geometry.setAttribute('position',
                         new THREE.BufferAttribute(base64Array(m.vertices, Float32Array), 3));
-  geometry.setIndex(new THREE.BufferAttribute(base64Array(m.triangles, Uint32Array), 1));
+  const triangles = base64Array(m.triangles, Uint32Array);
+  geometry.setIndex(new THREE.BufferAttribute(triangles, 1));
   geometry.computeVertexNormals();
+  // the file's colour runs [first triangle, r, g, b, a] as draw groups, one
+  // material each (used where the geometry is drawn in the file's colours)
+  const runs = m.colors ?? [];
+  runs.forEach((run, i) => {
+    const end = i + 1 < runs.length ? runs[i + 1][0] : triangles.length / 3;
+    geometry.addGroup(3 * run[0], 3 * (end - run[0]), i);
+  });
   return geometry;
 });
+function material(rgba, doubleSided) {
+  return new THREE.MeshStandardMaterial({
+    color: new THREE.Color().setRGB(rgba[0], rgba[1], rgba[2], THREE.SRGBColorSpace),
+    opacity: rgba[3], transparent: rgba[3] < 1, roughness: 0.7, metalness: 0.05,
+    side: doubleSided ? THREE.DoubleSide : THREE.FrontSide,
+  });
+}
+const materialsOf = (object) => (Array.isArray(object.material) ? object.material : [object.material]);
 
 // Drake's shapes in their frame G: cylinders and capsules along z, box by
 // full size, ellipsoid by semi-axes, half space the z <= 0 side of z = 0
@@ -190,12 +220,12 @@ for (const g of model.geometries) {
   if (!geometry) continue;
   const proximityOnly = !g.roles.includes('illustration') && g.roles.includes('proximity');
   const rgba = g.rgba ?? (proximityOnly ? [0.95, 0.55, 0.15, 0.45] : [0.7, 0.7, 0.72, 1]);
-  const material = new THREE.MeshStandardMaterial({
-    color: new THREE.Color().setRGB(rgba[0], rgba[1], rgba[2], THREE.SRGBColorSpace),
-    opacity: rgba[3], transparent: rgba[3] < 1, roughness: 0.7, metalness: 0.05,
-    side: g.shape.type === 'half_space' || geometry.index ? THREE.DoubleSide : THREE.FrontSide,
-  });
-  const object = new THREE.Mesh(geometry, material);
+  const doubleSided = g.shape.type === 'half_space' || Boolean(geometry.index);
+  // a mesh file's own colours win over the model's, as in Drake and RViz;
+  // collision geometry keeps its one colour, to tell it apart
+  const runs = g.shape.mesh >= 0 ? model.meshes[g.shape.mesh].colors ?? [] : [];
+  const object = new THREE.Mesh(geometry, runs.length && !proximityOnly
+    ? runs.map((run) => material(run.slice(1), doubleSided)) : material(rgba, doubleSided));
   object.matrixAutoUpdate = false;
   object.matrix.copy(matrixOf(g.X_BG));
   if (shapeMatrix) object.matrix.multiply(shapeMatrix);
@@ -223,7 +253,7 @@ const instances = new Set(model.bodies.filter((b) => b.parent >= 0).map((b) => b
 const label = (entity) => (instances.size === 1 ? entity.name : entity.scoped_name);
 
 // ---- positions, sliders and the poses shown
-let q = defaultPositions();
+let q = (model.q0 ?? defaultPositions()).slice();
 function show() {
   const X_WB = bodyPoses(q);
   X_WB.forEach((X, b) => bodyGroups[b].matrix.copy(matrixOf(X)));
@@ -255,57 +285,114 @@ camera.far = size * 100;
 controls.target.copy(center);
 controls.update();
 
+// ---- sliders: one per coordinate a person moves. Each maps to q entries
+// one to one, except a quaternion floating joint's: it gets x, y, z, roll,
+// pitch, yaw (a quaternion's components are no coordinates to drag), the
+// angles held by the page and turned into q's quaternion
 const sliders = [];
 const sliderBox = document.getElementById('sliders');
 const coordinateNames = {
   universal: ['x', 'y'], ball: ['roll', 'pitch', 'yaw'], planar: ['x', 'y', 'theta'],
-  quaternion_floating: ['qw', 'qx', 'qy', 'qz', 'x', 'y', 'z'],
   rpy_floating: ['roll', 'pitch', 'yaw', 'x', 'y', 'z'],
 };
-function range(joint, k) {
-  const translational = joint.type === 'prismatic' ||
-      (joint.type === 'planar' && k < 2) ||
-      (joint.type === 'quaternion_floating' && k >= 4) || (joint.type === 'rpy_floating' && k >= 3);
-  if (joint.type === 'quaternion_floating' && k < 4) return [-1, 1];
-  // limits are per velocity; they match the positions wherever nq == nv
-  const nv = joint.lower.length;
-  let lo = joint.nq === nv ? joint.lower[k] : null, hi = joint.nq === nv ? joint.upper[k] : null;
-  const span = translational ? Math.max(1, size) : Math.PI;
-  if (lo === null || !Number.isFinite(lo)) lo = -span;
-  if (hi === null || !Number.isFinite(hi)) hi = span;
-  return [lo, hi];
+const floatingRpy = new Map();  // quaternion floating joint id -> [roll, pitch, yaw]
+function syncFloatingRpy() {
+  model.joints.forEach((joint, id) => {
+    if (joint.type !== 'quaternion_floating') return;
+    const s = joint.q_start;
+    floatingRpy.set(id, rpyOfRotation(quaternionRotation(q[s], q[s + 1], q[s + 2], q[s + 3])));
+  });
 }
+// a joint's coordinates: name, read(), write(value), the q entry's limit index
+// (null: no limit of its own) and whether it is a length
+function coordinatesOf(joint, id) {
+  const s = joint.q_start;
+  const entry = (k, name, translational) => ({
+    name, translational, limit: k,
+    read: () => q[s + k], write: (value) => { q[s + k] = value; },
+  });
+  if (joint.type === 'quaternion_floating') {
+    const angle = (k, name) => ({
+      name, translational: false, limit: null,
+      read: () => floatingRpy.get(id)[k],
+      write: (value) => {
+        const rpy = floatingRpy.get(id);
+        rpy[k] = value;
+        quaternionOfRpy(...rpy).forEach((x, i) => { q[s + i] = x; });
+      },
+    });
+    return [entry(4, 'x', true), entry(5, 'y', true), entry(6, 'z', true),
+            angle(0, 'roll'), angle(1, 'pitch'), angle(2, 'yaw')];
+  }
+  const names = coordinateNames[joint.type] ?? [];
+  const all = Array.from({ length: joint.nq }, (_, k) => entry(k, names[k],
+    joint.type === 'prismatic' || (joint.type === 'planar' && k < 2) ||
+    (joint.type === 'rpy_floating' && k >= 3)));
+  // translation first, as for the quaternion floating joint
+  return joint.type === 'rpy_floating' ? [...all.slice(3), ...all.slice(0, 3)] : all;
+}
+// a coordinate's slider range: its joint's limits where finite (the slider
+// holds q to them), else a span that fits the model and widens to any value
+function rangeOf(joint, c) {
+  // limits are per velocity; they match the positions wherever nq == nv
+  const limited = c.limit !== null && joint.nq === joint.lower.length;
+  let lo = limited ? joint.lower[c.limit] : null, hi = limited ? joint.upper[c.limit] : null;
+  const span = c.translational ? Math.max(1, size) : Math.PI;
+  const loFixed = lo !== null && Number.isFinite(lo), hiFixed = hi !== null && Number.isFinite(hi);
+  return { lo: loFixed ? lo : -span, hi: hiFixed ? hi : span, loFixed, hiFixed };
+}
+// puts q into the sliders: a value past a limit is clamped there, in q too,
+// so that the label, the slider and the bodies shown say the same
+function syncSliders() {
+  syncFloatingRpy();
+  for (const slider of sliders) {
+    const { input, value, coordinate, range } = slider;
+    const wanted = coordinate.read();
+    if (!range.loFixed && wanted < Number(input.min)) input.min = wanted;
+    if (!range.hiFixed && wanted > Number(input.max)) input.max = wanted;
+    // clamped here, not by the input: its value reads back rounded
+    const held = Math.min(Math.max(wanted, Number(input.min)), Number(input.max));
+    input.value = held;
+    if (held !== wanted) coordinate.write(held);
+    value.textContent = held.toFixed(3);
+    value.classList.toggle('clamped', held !== wanted);
+    value.title = held !== wanted ? `${wanted} is past the joint's limit: shown at ${held}` : '';
+  }
+}
+syncFloatingRpy();
 for (const id of model.joint_order) {
   const joint = model.joints[id];
-  for (let k = 0; k < joint.nq; ++k) {
-    const index = joint.q_start + k;
-    const [lo, hi] = range(joint, k);
+  for (const coordinate of coordinatesOf(joint, id)) {
+    const range = rangeOf(joint, coordinate);
     const row = document.createElement('label');
     row.className = 'slider';
     const name = document.createElement('span');
-    const coordinate = coordinateNames[joint.type]?.[k];
-    name.textContent = label(joint) + (coordinate ? `.${coordinate}` : '');
-    name.title = `${joint.scoped_name}: ${joint.type} joint, q[${index}]` + (joint.source ? `, ${joint.source}` : '') +
+    name.textContent = label(joint) + (coordinate.name ? `.${coordinate.name}` : '');
+    const where = coordinate.limit === null ? 'its quaternion' : `q[${joint.q_start + coordinate.limit}]`;
+    name.title = `${joint.scoped_name}: ${joint.type} joint, ${where}` + (joint.source ? `, ${joint.source}` : '') +
                  (joint.type === 'curvilinear' ? ' (shown at rest)' : '');
     const input = document.createElement('input');
     input.type = 'range';
-    input.min = lo; input.max = hi; input.step = (hi - lo) / 1000;
-    input.value = q[index];
+    input.min = range.lo; input.max = range.hi;
+    input.step = 'any';  // a step would round q to its grid
     input.dataset.joint = joint.scoped_name;
-    input.dataset.index = index;
+    input.dataset.coordinate = coordinate.name ?? '';
     const value = document.createElement('span');
-    value.textContent = q[index].toFixed(3);
     input.addEventListener('input', () => {
-      q[index] = Number(input.value);
-      value.textContent = q[index].toFixed(3);
+      coordinate.write(Number(input.value));
+      value.textContent = Number(input.value).toFixed(3);
+      value.classList.remove('clamped');
+      value.title = '';
       show();
       showSelection();
     });
     row.append(name, input, value);
     sliderBox.append(row);
-    sliders.push(input);
+    sliders.push({ input, value, coordinate, range });
   }
 }
+syncSliders();
+show();
 if (sliders.length === 0) sliderBox.textContent = 'no joint moves';
 
 // role toggles: illustration shown unless there is none, then proximity
@@ -400,9 +487,11 @@ function select(index) {
   selected = index;
   treeItems.get(index)?.classList.add('selected');
   for (const group of bodyGroups) {
-    group.traverse((o) => { if (o.material?.emissive) o.material.emissive.setHex(0); });
+      group.traverse((o) => { if (o.isMesh) for (const m of materialsOf(o)) m.emissive?.setHex(0); });
   }
-  bodyGroups[index].traverse((o) => { if (o.material?.emissive) o.material.emissive.setHex(0x553300); });
+  bodyGroups[index].traverse((o) => {
+    if (o.isMesh) for (const m of materialsOf(o)) m.emissive?.setHex(0x553300);
+  });
   showSelection();
 }
 const raycaster = new THREE.Raycaster();
@@ -450,7 +539,7 @@ window.mdlcModel = model;
 window.mdlcBodyPoses = (positions) => bodyPoses(positions);
 window.mdlcSetPositions = (positions) => {
   q = positions.slice();
-  sliders.forEach((input) => { input.value = q[Number(input.dataset.index)]; });
+  syncSliders();
   show();
 };
 // the poses the scene shows, from three.js' own matrices
@@ -459,24 +548,54 @@ window.mdlcShownPoses = () => bodyGroups.map((group) => {
   return { R: [e[0], e[4], e[8], e[1], e[5], e[9], e[2], e[6], e[10]], p: [e[12], e[13], e[14]] };
 });
 
-// #selftest={"qs": [[...], ...], "slider": JOINT, "value": x}: poses at each
-// q, then the shown poses before and after moving one slider with a real
-// input event, written into the page for a headless browser to dump
+// #selftest={"qs": [[...], ...], "slider": JOINT, "value": x, "drag":
+// [[JOINT, COORDINATE, x], ...], "select": BODY}: poses at each q; the
+// configuration shown on opening (q, poses, each slider's value and label);
+// the shown poses before and after moving one slider with a real input
+// event; q and the shown poses after dragging the sliders named; where the
+// selected body's panel lies in the window. Written into the page for a
+// headless browser to dump.
+const sliderState = () => sliders.map(({ input, value }) => ({
+  joint: input.dataset.joint, coordinate: input.dataset.coordinate, value: Number(input.value),
+  label: value.textContent, clamped: value.classList.contains('clamped'),
+  min: Number(input.min), max: Number(input.max),
+}));
 const selftest = /^#selftest=(.*)$/.exec(window.location.hash);
 if (selftest) {
   const request = JSON.parse(decodeURIComponent(selftest[1]));
   const report = { poses: request.qs.map((positions) => bodyPoses(positions)) };
+  const opened = q.slice();
+  report.opened = { q: opened, shown: window.mdlcShownPoses(), sliders: sliderState() };
+  if (request.drag !== undefined) {
+    for (const [joint, coordinate, x] of request.drag) {
+      // the joint by scoped name or its own
+      const named = (s) => s.input.dataset.joint === joint || s.input.dataset.joint.endsWith(`::${joint}`);
+      const input = sliders.find((s) => named(s) && s.input.dataset.coordinate === coordinate)?.input;
+      if (!input) throw new Error(`no slider ${joint}.${coordinate}`);
+      input.value = x;
+      input.dispatchEvent(new Event('input'));
+    }
+    report.dragged = { q: q.slice(), shown: window.mdlcShownPoses(), sliders: sliderState() };
+    window.mdlcSetPositions(opened);
+  }
+  if (request.select !== undefined) {
+    select(model.bodies.findIndex((b) => b.scoped_name === request.select || b.name === request.select));
+    const box = document.getElementById('selection').getBoundingClientRect();
+    report.selection = { left: box.left, top: box.top, right: box.right, bottom: box.bottom,
+                         width: window.innerWidth, height: window.innerHeight,
+                         text: document.getElementById('info').textContent };
+  }
   if (request.slider !== undefined) {
-    window.mdlcSetPositions(defaultPositions());
+    window.mdlcSetPositions(opened);
     const before = window.mdlcShownPoses();
-    const input = sliders.find((s) => s.dataset.joint === request.slider);
+    const input = sliders.find((s) => s.input.dataset.joint === request.slider).input;
     input.value = request.value;
     input.dispatchEvent(new Event('input'));
     const after = window.mdlcShownPoses();
     report.moved = model.bodies.map((b) => b.scoped_name).filter((name, i) =>
       Math.max(...after[i].R.map((x, k) => Math.abs(x - before[i].R[k])),
                ...after[i].p.map((x, k) => Math.abs(x - before[i].p[k]))) > 1e-9);
-    window.mdlcSetPositions(defaultPositions());
+    window.mdlcSetPositions(opened);
   }
   report.errors = window.mdlcErrors ?? [];
   const pre = document.createElement('pre');
