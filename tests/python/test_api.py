@@ -252,10 +252,15 @@ class Diagnostics(unittest.TestCase):
         self.assertIn("the mesh reader crashed (signal 11, SIGSEGV)", error.message)
         self.assertTrue(error.file.endswith("mesh_geoms.xml"))
 
-    def test_missing_file_is_a_compile_error(self):
-        with self.assertRaises(mdlc.CompileError) as caught:
-            mdlc.compile("no/such/robot.urdf")
-        self.assertIn("no/such/robot.urdf", caught.exception.diagnostics[0].message)
+    def test_missing_file_is_a_file_not_found_error(self):  # issue 58
+        # as open() reports it: errno, strerror and the file name, not a model error
+        for path in ("no/such/robot.urdf", pathlib.Path("no/such/robot.sdf")):
+            with self.assertRaises(FileNotFoundError) as caught:
+                mdlc.compile(path)
+            self.assertEqual(caught.exception.filename, os.fspath(path))
+            self.assertNotIsInstance(caught.exception, mdlc.CompileError)
+        with self.assertRaises(FileNotFoundError):
+            mdlc.compile([str(EXAMPLES / "urdf/scara_arm.urdf"), "missing.urdf"])
 
 
 class Packages(unittest.TestCase):
@@ -288,6 +293,95 @@ class ResolveUri(unittest.TestCase):  # COMMON-010, COMMON-011
         with self.assertRaises(FileNotFoundError) as caught:
             mdlc.resolve_uri("package://mdlc_examples/missing.obj", package_paths=[EXAMPLES])
         self.assertIn("which does not exist", str(caught.exception))
+
+
+TWO_ARMS = PENDULUM.replace('<robot name="pendulum">', '<robot name="left">')
+
+
+class FirstHour(unittest.TestCase):  # issue 58: what a new user types at the prompt
+    def test_every_entity_list_is_indexed_by_name(self):
+        model = mdlc.compile(str(EXAMPLES / "urdf/scara_arm.urdf"))
+        for entities in (model.bodies, model.joints, model.frames, model.geometries,
+                         model.actuators):
+            self.assertIsInstance(entities, mdlc.EntityList)
+            names, scoped_names = [e.name for e in entities], entities.names()
+            for entity, scoped in zip(entities, scoped_names):
+                if scoped_names.count(scoped) == 1:
+                    self.assertEqual(repr(entities[scoped]), repr(entity))
+                if names.count(entity.name) == 1 and entity.name not in scoped_names:
+                    self.assertEqual(repr(entities[entity.name]), repr(entity))
+        forearm = model.bodies["forearm"]
+        self.assertEqual(forearm.scoped_name, "scara_arm::forearm")
+        self.assertIs(type(model.bodies["scara_arm::forearm"]), mdlc.Body)
+        self.assertEqual(model.bodies["scara_arm::forearm"].index, forearm.index)
+        self.assertEqual(model.joints["elbow"].child, "scara_arm::forearm")
+        self.assertIn("elbow", model.joints)
+        self.assertNotIn("knee", model.joints)
+        self.assertIsNone(model.joints.get("knee"))
+        self.assertEqual(model.bodies[0].name, "world")  # positions still index
+        self.assertIsInstance(model.bodies[1:], mdlc.EntityList)
+        with self.assertRaises(KeyError) as caught:
+            model.joints["elbw"]
+        self.assertIn("did you mean 'elbow'", str(caught.exception))
+        with self.assertRaises(KeyError) as caught:
+            model.constraints["anything"]
+        self.assertIn("no constraint named 'anything'", str(caught.exception))
+
+    def test_a_name_two_instances_share_needs_its_scope(self):
+        model = mdlc.compile([PENDULUM, TWO_ARMS], format="urdf")
+        with self.assertRaises(KeyError) as caught:
+            model.bodies["arm"]
+        self.assertIn("pendulum::arm", str(caught.exception))
+        self.assertIn("left::arm", str(caught.exception))
+        self.assertEqual(model.bodies["left::arm"].model_instance, "left")
+
+    def test_reprs_say_what_tells_entities_apart(self):
+        model = mdlc.compile(str(EXAMPLES / "urdf/scara_arm.urdf"))
+        self.assertRegex(repr(model), r"^<mdlc.Model 'scara_arm': \d+ bodies, \d+ joints, "
+                                      r"\d+ geometries, nq=\d+ nv=\d+>$")
+        body = model.bodies["forearm"]
+        self.assertEqual(repr(body), f"<mdlc.Body 'scara_arm::forearm' index={body.index} "
+                                     f"mass={body.mass:.6g} joint 'scara_arm::elbow'>")
+        # joints are in the plant's order, not q's: each says where its q is
+        for joint in model.joints:
+            where = f"q[{joint.q_start}]" if joint.nq == 1 else \
+                f"q[{joint.q_start}:{joint.q_start + joint.nq}]" if joint.nq else "no q"
+            self.assertEqual(repr(joint), f"<mdlc.Joint '{joint.scoped_name}' {joint.type} "
+                                          f"{where} {joint.parent} -> {joint.child}>")
+        self.assertIn("on 'scara_arm::", repr(model.geometries[0]))
+        self.assertIn(" q=[", repr(model.body_poses()[1]))
+
+    def test_the_namespace_holds_the_api_only(self):
+        public = {name for name in dir(mdlc) if not name.startswith("_")}
+        self.assertNotIn("os", public)
+        self.assertEqual(public, set(mdlc.__all__))
+
+    def test_a_zero_quaternion_is_rejected(self):
+        model = mdlc.compile(ROOT / "tests/models/mjcf/oracle/free_ball.xml")
+        floating = next(j for j in model.joints if j.type == "quaternion_floating")
+        q = model.default_positions()
+        q[floating.q_start:floating.q_start + 4] = 0
+        for evaluate in (model.body_poses, model.mass_matrix, model.to_json):
+            with self.assertRaises(ValueError) as caught:
+                evaluate(q)
+            self.assertIn(f"the quaternion [w, x, y, z] of joint '{floating.scoped_name}', "
+                          f"is zero", str(caught.exception))
+        # any other length is a rotation, as in Drake
+        q[floating.q_start] = 2
+        self.assertEqual(len(model.body_poses(q)), len(model.bodies))
+
+    def test_collada_up_axis_is_a_keyword(self):  # issue 55, BEYOND-001
+        text = f"""<mujoco model="axes">
+  <asset><mesh name="m" file="{ROOT}/tests/models/meshes/box_y_up.dae"/></asset>
+  <worldbody><body name="b"><freejoint/><geom type="mesh" mesh="m"/></body></worldbody>
+</mujoco>"""
+        # the box's center (1.5, 0.25, 1.25), written in Y_UP axes, is (x, z, -y)
+        as_written = mdlc.compile(text, format="mjcf")
+        np.testing.assert_allclose(as_written.bodies["b"].com, [1.5, 1.25, -0.25], atol=1e-12)
+        applied = mdlc.compile(text, format="mjcf", collada_up_axis="apply")
+        np.testing.assert_allclose(applied.bodies["b"].com, [1.5, 0.25, 1.25], atol=1e-12)
+        with self.assertRaises(ValueError):
+            mdlc.compile(text, format="mjcf", collada_up_axis="sideways")
 
 
 class Version(unittest.TestCase):

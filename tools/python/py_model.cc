@@ -5,6 +5,11 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
 #include <span>
 #include <variant>
 
@@ -189,14 +194,46 @@ Model MakeModel(std::shared_ptr<const Result> result, py::list diagnostics) {
 
 namespace {
 
-// q defaults to the model's default configuration
-Eigen::VectorXd PositionsOr(const Model& m, const std::optional<Eigen::VectorXd>& q) {
-  return q ? *q : m.result->DefaultPositions();
+// A floating joint's quaternion of zero length is no rotation: normalizing
+// it would divide by zero, and taking it as the identity would hide a bug in
+// the caller's q. A q of the wrong size is left to the plant's own check.
+void CheckQuaternions(const Model& m, const Eigen::VectorXd& q) {
+  if (q.size() != m.result->plant().num_positions) return;
+  for (const Joint& j : m.joints) {
+    if (j.type != "quaternion_floating") continue;
+    const double norm = q.segment<4>(j.q_start).norm();
+    if (norm == 0 || !std::isfinite(norm)) {
+      throw py::value_error(fmt::format(
+          "q[{}:{}], the quaternion [w, x, y, z] of joint '{}', {}; a rotation needs a "
+          "nonzero finite quaternion (the identity is [1, 0, 0, 0])",
+          j.q_start, j.q_start + 4, j.scoped_name, norm == 0 ? "is zero" : "is not finite"));
+    }
+  }
 }
 
-template <typename T>
-std::string Repr(const char* kind, const T& entity) {
-  return std::string("<mdlc.") + kind + " '" + entity.name + "'>";
+// q defaults to the model's default configuration
+Eigen::VectorXd PositionsOr(const Model& m, const std::optional<Eigen::VectorXd>& q) {
+  if (!q) return m.result->DefaultPositions();
+  CheckQuaternions(m, *q);
+  return *q;
+}
+
+std::string Number(double x) { return fmt::format("{:.6g}", x); }
+
+std::string Vector(const Eigen::Ref<const Eigen::VectorXd>& v) {
+  std::string out = "[";
+  for (Eigen::Index i = 0; i < v.size(); ++i) out += (i ? ", " : "") + Number(v[i]);
+  return out + "]";
+}
+
+// "<mdlc.Kind 'instance::name' details>": the scoped name, as a lookup by
+// name (model.bodies['...']) takes it, and what tells entities apart
+std::string Repr(const char* kind, const std::string& scoped_name, const std::string& details) {
+  return fmt::format("<mdlc.{} '{}'{}{}>", kind, scoped_name, details.empty() ? "" : " ",
+                     details);
+}
+std::string Scoped(const std::string& instance, const std::string& name) {
+  return instance.empty() ? name : instance + "::" + name;
 }
 
 }  // namespace
@@ -208,8 +245,7 @@ void BindModel(py::module_& m) {
       .def_readonly("q", &Pose::q)
       .def_property_readonly("matrix", &Pose::matrix, "The 4x4 homogeneous transform")
       .def("__repr__", [](const Pose& p) {
-        return "<mdlc.Pose p=[" + std::to_string(p.p.x()) + ", " + std::to_string(p.p.y()) +
-               ", " + std::to_string(p.p.z()) + "]>";
+        return "<mdlc.Pose p=" + Vector(p.p) + " q=" + Vector(p.q) + ">";
       });
 
   py::class_<Body>(m, "Body")
@@ -224,7 +260,11 @@ void BindModel(py::module_& m) {
       .def_readonly("parent", &Body::parent)
       .def_readonly("joint", &Body::joint, "The joint whose child this body is")
       .def_readonly("index", &Body::index, "Its index in Model.bodies and body_poses()")
-      .def("__repr__", [](const Body& b) { return Repr("Body", b); });
+      .def("__repr__", [](const Body& b) {
+        return Repr("Body", b.scoped_name,
+                    fmt::format("index={} mass={}{}", b.index, Number(b.mass),
+                                b.joint ? " joint '" + *b.joint + "'" : ""));
+      });
 
   py::class_<Joint>(m, "Joint")
       .def_readonly("name", &Joint::name)
@@ -249,7 +289,15 @@ void BindModel(py::module_& m) {
       .def_readonly("nq", &Joint::nq)
       .def_readonly("v_start", &Joint::v_start)
       .def_readonly("nv", &Joint::nv)
-      .def("__repr__", [](const Joint& j) { return Repr("Joint", j); });
+      .def("__repr__", [](const Joint& j) {
+        // where its positions are in q: plant.joints are in the plant's
+        // joint order, not in q order
+        const std::string q = j.nq == 0   ? "no q"
+                              : j.nq == 1 ? fmt::format("q[{}]", j.q_start)
+                                          : fmt::format("q[{}:{}]", j.q_start, j.q_start + j.nq);
+        return Repr("Joint", j.scoped_name,
+                    fmt::format("{} {} {} -> {}", j.type, q, j.parent, j.child));
+      });
 
   py::class_<Frame>(m, "Frame")
       .def_readonly("name", &Frame::name)
@@ -257,7 +305,9 @@ void BindModel(py::module_& m) {
       .def_readonly("body", &Frame::body)
       .def_readonly("X_BF", &Frame::X_BF)
       .def_readonly("unnamed", &Frame::unnamed)
-      .def("__repr__", [](const Frame& f) { return Repr("Frame", f); });
+      .def("__repr__", [](const Frame& f) {
+        return Repr("Frame", Scoped(f.model_instance, f.name), "on '" + f.body + "'");
+      });
 
   py::class_<Geometry>(m, "Geometry")
       .def_readonly("name", &Geometry::name)
@@ -269,7 +319,12 @@ void BindModel(py::module_& m) {
       .def_readonly("shape_parameters", &Geometry::shape_parameters)
       .def_readonly("properties", &Geometry::properties)
       .def_readonly("unnamed", &Geometry::unnamed)
-      .def("__repr__", [](const Geometry& g) { return Repr("Geometry", g); });
+      .def("__repr__", [](const Geometry& g) {
+        std::string roles;
+        for (const std::string& r : g.roles) roles += (roles.empty() ? "" : ",") + r;
+        return Repr("Geometry", Scoped(g.model_instance, g.name),
+                    fmt::format("{} on '{}' ({})", g.shape, g.body, roles));
+      });
 
   py::class_<Actuator>(m, "Actuator")
       .def_readonly("name", &Actuator::name)
@@ -281,13 +336,18 @@ void BindModel(py::module_& m) {
       .def_readonly("kp", &Actuator::kp)
       .def_readonly("kd", &Actuator::kd)
       .def_readonly("unnamed", &Actuator::unnamed)
-      .def("__repr__", [](const Actuator& a) { return Repr("Actuator", a); });
+      .def("__repr__", [](const Actuator& a) {
+        return Repr("Actuator", Scoped(a.model_instance, a.name),
+                    fmt::format("on '{}' effort_limit={}", a.joint, Number(a.effort_limit)));
+      });
 
   py::class_<Constraint>(m, "Constraint")
       .def_readonly("type", &Constraint::type)
       .def_readonly("model_instance", &Constraint::model_instance)
       .def_readonly("parameters", &Constraint::parameters)
-      .def("__repr__", [](const Constraint& c) { return "<mdlc.Constraint " + c.type + ">"; });
+      .def("__repr__", [](const Constraint& c) {
+        return "<mdlc.Constraint " + c.type + " in '" + c.model_instance + "'>";
+      });
 
   py::class_<Camera>(m, "Camera")
       .def_readonly("name", &Camera::name)
@@ -298,12 +358,17 @@ void BindModel(py::module_& m) {
       .def_readonly("height", &Camera::height)
       .def_readonly("fov_y", &Camera::fov_y)
       .def_readonly("unnamed", &Camera::unnamed)
-      .def("__repr__", [](const Camera& c) { return Repr("Camera", c); });
+      .def("__repr__", [](const Camera& c) {
+        return Repr("Camera", Scoped(c.model_instance, c.name),
+                    fmt::format("on '{}' {}x{}", c.body, c.width, c.height));
+      });
 
   py::class_<Model>(m, "Model", "A compiled model: the plant, its scene graph and cameras")
       .def_readonly("model_instances", &Model::model_instances)
       .def_readonly("bodies", &Model::bodies, "Every body, by index; bodies[0] is the world")
-      .def_readonly("joints", &Model::joints)
+      .def_readonly("joints", &Model::joints,
+                    "Every joint, in the plant's joint order (as plant-json lists them); "
+                    "each joint's q_start and nq say where its positions are in q")
       .def_readonly("frames", &Model::frames)
       .def_readonly("geometries", &Model::geometries)
       .def_readonly("actuators", &Model::actuators)
@@ -370,7 +435,26 @@ void BindModel(py::module_& m) {
             return m.result->PlantJson(PositionsOr(m, q), options);
           },
           py::arg("q") = py::none(), py::arg("full_mass_matrix") = false,
-          "plant-json (schema mdlc-plant/1) at q");
+          "plant-json (schema mdlc-plant/1) at q")
+      .def("__repr__", [](const Model& m) {
+        const backend::Plant& plant = m.result->plant();
+        // the instances that hold a body: the world's own is no model
+        std::vector<std::string> instances;
+        for (const Body& b : m.bodies) {
+          if (b.is_world) continue;
+          if (std::find(instances.begin(), instances.end(), b.model_instance) == instances.end()) {
+            instances.push_back(b.model_instance);
+          }
+        }
+        const auto count = [](size_t n, const char* one, const char* many) {
+          return fmt::format("{} {}", n, n == 1 ? one : many);
+        };
+        return fmt::format("<mdlc.Model '{}': {}, {}, {}, nq={} nv={}>",
+                           fmt::join(instances, ", "), count(m.bodies.size() - 1, "body", "bodies"),
+                           count(m.joints.size(), "joint", "joints"),
+                           count(m.geometries.size(), "geometry", "geometries"),
+                           plant.num_positions, plant.num_velocities);
+      });
 }
 
 }  // namespace mdlc::python

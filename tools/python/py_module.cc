@@ -143,8 +143,15 @@ PYBIND11_MODULE(_mdlc, m) {
          const std::vector<std::string>& error_warnings, std::optional<std::string> model_name,
          bool auto_rename, const std::vector<std::pair<std::string, double>>& joint_positions,
          const std::vector<std::string>& limits, const std::string& mesh_reader,
-         const std::vector<std::pair<std::string, std::string>>& xacro_args) {
+         const std::vector<std::pair<std::string, std::string>>& xacro_args,
+         const std::string& collada_up_axis) {
         Options options;
+        if (collada_up_axis == "apply") {
+          options.collada_up_axis = ColladaUpAxis::Apply;
+        } else if (collada_up_axis != "as-written") {
+          throw py::value_error("unknown collada_up_axis '" + collada_up_axis +
+                                "'; expected 'as-written' or 'apply'");
+        }
         if (mesh_reader == "in-process") {
           options.mesh_reader = MeshReader::InProcess;
         } else if (mesh_reader != "process") {
@@ -165,7 +172,7 @@ PYBIND11_MODULE(_mdlc, m) {
       py::arg("use_ros_package_path"), py::arg("strict"), py::arg("disabled_warnings"),
       py::arg("error_warnings"), py::arg("model_name"), py::arg("auto_rename"),
       py::arg("joint_positions"), py::arg("limits"), py::arg("mesh_reader"),
-      py::arg("xacro_args"));
+      py::arg("xacro_args"), py::arg("collada_up_axis"));
 
   m.def(
       "_expand_xacro",
