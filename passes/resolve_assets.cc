@@ -144,6 +144,17 @@ void NoteCaseMismatch(InFlightDiagnostic& diag, Loc loc, const std::string& path
                              fs::path(beside).filename().string()));
 }
 
+/// A note naming a later copy of the package that has the file, when the
+/// package path holds two and the one used lacks it (COMMON-013).
+void NoteShadowedCopy(InFlightDiagnostic& diag, Loc loc, const std::string& uri,
+                      const assets::PackageMap& packages) {
+  const std::optional<std::string> copy = packages.ShadowedCopyHolding(uri);
+  if (!copy) return;
+  diag.Note(loc, fmt::format("'{}' is in another copy of the package, which the package path "
+                             "holds too but the first copy found shadows",
+                             *copy));
+}
+
 bool ResolveAssetsPass::Run(PassContext& ctx) {
   const assets::PackageMap& packages = ctx.packages;
   const size_t errors_before = ctx.diags.error_count();
@@ -198,6 +209,7 @@ bool ResolveAssetsPass::Run(PassContext& ctx) {
           DiagKind::FileNotFound, ref.needed_loc,
           fmt::format("'{}' resolves to '{}', which does not exist", ref.uri, *path));
       NoteCaseMismatch(diag, ref.needed_loc, *path);
+      NoteShadowedCopy(diag, ref.needed_loc, ref.uri, packages);
       diag.Note(ref.needed_geometry_loc,
                 fmt::format("the plant reads this file: {}", *ref.needed_by));
     } else if (path) {
@@ -208,6 +220,7 @@ bool ResolveAssetsPass::Run(PassContext& ctx) {
                       "mesh file, which the plant never reads",
                       ref.uri, *path, Users(m, *ref.first_user, ref.users)));
       NoteCaseMismatch(diag, ref.loc, *path);
+      NoteShadowedCopy(diag, ref.loc, ref.uri, packages);
     }
     for (ir::Mesh* mesh : ref.meshes) mesh->resolved = resolved;
   }

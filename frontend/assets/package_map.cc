@@ -89,6 +89,7 @@ void PackageMap::AddFromManifest(const ManifestFile& manifest, SourceManager& so
           fmt::format("package '{}' found again at '{}'; keeping the first, at '{}'", text,
                       normal, it->second.path));
       if (it->second.defined_at.valid()) diag.Note(it->second.defined_at, "first defined here");
+      it->second.shadowed.push_back(normal);
     }
     return;
   }
@@ -138,6 +139,23 @@ void PackageMap::PopulateFromAmentPrefixes(std::string_view prefixes) {
 const PackageMap::Package* PackageMap::Find(std::string_view name) const {
   auto it = packages_.find(name);
   return it == packages_.end() ? nullptr : &it->second;
+}
+
+std::optional<std::string> PackageMap::ShadowedCopyHolding(std::string_view uri) const {
+  for (std::string_view scheme : {"package://", "model://"}) {
+    if (!uri.starts_with(scheme)) continue;
+    const std::string_view rest = uri.substr(scheme.size());
+    const size_t slash = rest.find('/');
+    if (slash == std::string_view::npos) return std::nullopt;
+    const Package* package = Find(rest.substr(0, slash));
+    if (!package) return std::nullopt;
+    for (const std::string& copy : package->shadowed) {
+      std::error_code ec;
+      const fs::path file = fs::path(copy) / rest.substr(slash + 1);
+      if (fs::exists(file, ec)) return file.lexically_normal().string();
+    }
+  }
+  return std::nullopt;
 }
 
 namespace {

@@ -28,6 +28,9 @@ class PackageMap {
     std::string path;                       // the package's directory
     std::optional<std::string> deprecated;  // message of a <deprecated> export
     Loc defined_at;                         // its package.xml, when scanned
+    /// Other folders with a package.xml of the same name, found later and
+    /// not used (COMMON-013): where a file missing from `path` may be.
+    std::vector<std::string> shadowed;
   };
 
   /// Adds `name` at `path`. A different path for a known name is an error
@@ -57,6 +60,9 @@ class PackageMap {
   void PopulateFromAmentPrefixes(std::string_view prefixes);
 
   const Package* Find(std::string_view name) const;
+  /// For a `package://NAME/FILE` or `model://NAME/FILE` URI whose FILE is
+  /// not in the package's folder: FILE in a shadowed copy that has it.
+  std::optional<std::string> ShadowedCopyHolding(std::string_view uri) const;
   size_t size() const { return packages_.size(); }
   const std::map<std::string, Package, std::less<>>& packages() const { return packages_; }
   /// Folders scanned so far, for "searched in" notes.

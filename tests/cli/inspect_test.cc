@@ -457,6 +457,23 @@ TEST_F(CheckTest, APackageFoundTwiceIsSaidOncePerRun) {  // COMMON-013
   EXPECT_NE(r.out.find("4 files: 3 ok, 1 with errors, 2 warnings\n"), std::string::npos) << r.out;
 }
 
+TEST_F(CheckTest, AFileMissingFromTheFirstCopyOfAPackageNamesTheCopyThatHasIt) {  // COMMON-013
+  for (const char* copy : {"a", "b"}) {
+    fs::create_directories(dir_ / "pkgs" / copy);
+    std::ofstream(dir_ / "pkgs" / copy / "package.xml") << "<package><name>twice</name></package>";
+  }
+  fs::copy_file(fs::path(MDLC_TEST_MODELS) / "meshes" / "box.obj", dir_ / "pkgs" / "b" / "box.obj");
+  const fs::path robot = Write("r.urdf", R"(<robot name="r"><link name="a"><collision>
+<geometry><mesh filename="package://twice/box.obj"/></geometry></collision></link></robot>)");
+  Outcome r = Mdlc("check --package-path " + (dir_ / "pkgs").string() + " " + robot.string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.out.find("note: '" + (dir_ / "pkgs" / "b" / "box.obj").string() +
+                       "' is in another copy of the package, which the package path holds too "
+                       "but the first copy found shadows"),
+            std::string::npos)
+      << r.out;
+}
+
 TEST_F(CheckTest, SarifForCodeHosts) {
   Outcome r = Mdlc("check --format sarif " + Models());
   const json sarif = json::parse(r.out);
