@@ -112,7 +112,9 @@ BodyItems Collect(MjcfReader& r, const xml::XmlElement& body, const std::string&
       r.WarnOnce(e.GetLoc(), DiagKind::UnsupportedElement, is_world ? "worldbody" : "body", tag);
     } else {
       r.WarnOnce(e.GetLoc(), DiagKind::UnknownElement, is_world ? "worldbody" : "body", tag,
-                 "is not a MuJoCo element and is ignored (MuJoCo rejects it)");
+                 "is not a MuJoCo element and is ignored (MuJoCo rejects it)",
+                 {"body", "geom", "joint", "freejoint", "site", "camera", "inertial", "frame",
+                  "light", "composite", "flexcomp", "attach", "replicate", "plugin"});
     }
   }
   return items;

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "frontend/mjcf/mjcf_reader_detail.h"
+#include "ir/scoped_name.h"
 
 namespace mdlc::frontend::mjcf {
 namespace {
@@ -216,13 +217,18 @@ int MjcfReader::ClassFor(const xml::XmlElement& e, std::string_view childclass) 
 }
 
 void MjcfReader::WarnOnce(Loc loc, DiagKind kind, std::string_view element, std::string_view name,
-                          std::string_view why) {
+                          std::string_view why, std::initializer_list<std::string_view> known) {
   warn_key.assign(element).append(1, '\n').append(name);
   if (!warned.insert(warn_key).second) return;
   const bool is_element = kind == DiagKind::UnsupportedElement || kind == DiagKind::UnknownElement;
-  diags().Report(kind, loc,
-                 is_element ? fmt::format("element <{}> in <{}> {}", name, element, why)
-                            : fmt::format("attribute '{}' of <{}> {}", name, element, why));
+  auto diag = diags().Report(kind, loc,
+                             is_element
+                                 ? fmt::format("element <{}> in <{}> {}", name, element, why)
+                                 : fmt::format("attribute '{}' of <{}> {}", name, element, why));
+  if (auto best = ir::ClosestName(name, std::vector(known))) {
+    diag.Note(loc, is_element ? fmt::format("did you mean <{}>?", *best)
+                              : fmt::format("did you mean '{}'?", *best));
+  }
 }
 
 void MjcfReader::WarnUnsupported(const xml::XmlElement& e, std::string_view what) {

@@ -25,6 +25,7 @@
 #pragma once
 
 #include <functional>
+#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <span>
@@ -188,9 +189,12 @@ struct MjcfReader {
 
   // --- mjcf_defaults.cc ---
   /// One warning per (element kind, name): an attribute or child element
-  /// MuJoCo knows that the plant cannot hold (`why` says what happens).
+  /// MuJoCo knows that the plant cannot hold (`why` says what happens). For
+  /// a name MuJoCo does not know, `known` lists the ones it does, and a note
+  /// suggests the closest (<gemo>: did you mean <geom>?).
   void WarnOnce(Loc loc, DiagKind kind, std::string_view element, std::string_view name,
-                std::string_view why = "is not supported and is ignored");
+                std::string_view why = "is not supported and is ignored",
+                std::initializer_list<std::string_view> known = {});
   /// Warns about attributes of `e` outside MuJoCo's schema for it (a
   /// misspelling, most likely; MuJoCo itself rejects them).
   void CheckAttributes(const xml::XmlElement& e, std::string_view schema_kind);
