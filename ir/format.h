@@ -11,8 +11,9 @@ enum class Format { Urdf, Sdf, Mjcf, Directives };
 /// "URDF", "SDFormat", "MJCF", "Model Directives".
 std::string_view FormatName(Format format);
 
-/// The format a path names by its extension (case-insensitive): .urdf, .sdf,
-/// .xml (MJCF), .dmd.yaml. nullopt for anything else.
+/// The format a path names by its extension (case-insensitive): .urdf, .sdf
+/// or .world (Gazebo's worlds), .xml (MJCF), .dmd.yaml. nullopt for anything
+/// else.
 std::optional<Format> FormatFromPath(std::string_view path);
 
 /// The format a user names (`mdlc -x NAME`, Python's format=): urdf; sdf or
