@@ -3,8 +3,12 @@
 // an inboard joint a floating joint to the world (URDF-017, as Drake's plant
 // does at Finalize).
 //
+// With --fixed-base (CreateFixedBaseKinematicTreePass) such a body is welded
+// to the world at its default pose instead: a URDF arm whose root link no
+// joint holds stays where it is, as MuJoCo's and ROS's readers keep it.
+//
 // Reads: resolved joint parent/child ids. Writes: new quaternion_floating
-// joints (unnamed, named after their body). Afterwards the verifier's Tree
+// joints, or welds with --fixed-base (unnamed, named after their body). Afterwards the verifier's Tree
 // level holds. Iterative throughout: chains of any depth are fine.
 #include <fmt/format.h>
 
@@ -12,6 +16,7 @@
 
 #include <absl/container/flat_hash_set.h>
 
+#include "passes/build_kinematic_tree.h"
 #include "passes/floating_joint.h"
 #include "passes/pass_registry.h"
 
@@ -20,6 +25,8 @@ namespace {
 
 class BuildKinematicTreePass : public Pass {
  public:
+  explicit BuildKinematicTreePass(bool weld_free_bodies = false)
+      : weld_free_bodies_(weld_free_bodies) {}
   std::string_view name() const override { return "build-kinematic-tree"; }
   std::string_view description() const override {
     return "Check the joints form a tree and add floating joints for free bodies";
@@ -37,6 +44,7 @@ class BuildKinematicTreePass : public Pass {
   // every joint's (model, name): a free body's joint name is checked against
   // it, not against every joint (which made a world of N free models O(N^2))
   absl::flat_hash_set<uint64_t> joint_names_;
+  const bool weld_free_bodies_;
 };
 
 bool BuildKinematicTreePass::Run(PassContext& ctx) {
@@ -153,13 +161,27 @@ void BuildKinematicTreePass::AddFloatingJoint(PassContext& ctx, BodyId body) {
     }));
   }
   joint_names_.insert(Key(b.model, symbol));
-  m.Add(MakeFloatingJoint(m, symbol, b.loc, ir::kWorldBody, {}, body, {}, b.default_pose));
+  ir::Joint joint =
+      MakeFloatingJoint(m, symbol, b.loc, ir::kWorldBody, {}, body, {}, b.default_pose);
+  if (weld_free_bodies_) {
+    // the weld holds the body where the floating joint's default pose put it
+    joint.type = ir::JointType::Weld;
+    joint.X_PF = b.default_pose.value_or(Transform());
+    joint.limits = ir::JointLimits::Unbounded(0);
+    joint.damping = {};
+    joint.default_positions = {};
+  }
+  m.Add(std::move(joint));
 }
 
 }  // namespace
 
 std::unique_ptr<Pass> CreateBuildKinematicTreePass() {
   return std::make_unique<BuildKinematicTreePass>();
+}
+
+std::unique_ptr<Pass> CreateFixedBaseKinematicTreePass() {
+  return std::make_unique<BuildKinematicTreePass>(/*weld_free_bodies=*/true);
 }
 
 }  // namespace mdlc::passes

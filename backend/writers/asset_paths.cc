@@ -3,9 +3,15 @@
 
 #include <fmt/format.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <system_error>
+
+#include "passes/mesh/mesh_cache.h"
+#include "passes/mesh/mesh_export.h"
+#include "passes/mesh/vtk_surface.h"
 
 namespace mdlc::writers {
 namespace fs = std::filesystem;
@@ -52,8 +58,67 @@ std::optional<std::string> AssetPaths::Name(const std::string& uri, const std::s
     if (!copy) return std::nullopt;
     file = *copy;
   }
+  return Relative(file);
+}
+
+std::string AssetPaths::Relative(const fs::path& file) const {
   fs::path relative = file.lexically_relative(output_dir_);
   return (relative.empty() ? file : relative).generic_string();
+}
+
+std::optional<std::string> AssetPaths::NameMesh(const std::string& uri,
+                                                const std::string& resolved, Loc loc,
+                                                const MeshTarget& target) {
+  if (resolved.empty()) return Name(uri, resolved, loc);
+  std::error_code ec;
+  const fs::path file = fs::weakly_canonical(fs::absolute(resolved, ec), ec);
+  const std::string why = target.why_not(file);
+  if (why.empty()) return Name(uri, resolved, loc);
+  const bool kept_uri = options_.keep_package_uris && uri.starts_with("package://");
+  if (options_.copy_assets_dir && !kept_uri) {
+    if (auto obj = ObjCopy(file, loc)) return Relative(*obj);
+    return Name(uri, resolved, loc);  // UnconvertibleMesh() says why
+  }
+  if (unreadable_reported_.insert(file).second) {
+    diags_.Report(DiagKind::Lossy, loc,
+                  fmt::format("mesh '{}' is named as it is, but {}; {}--copy-assets writes "
+                              "an OBJ of it that {} reads",
+                              uri, why, kept_uri ? "without --keep-package-uris, " : "",
+                              target.reader));
+  }
+  return Name(uri, resolved, loc);
+}
+
+std::optional<std::string> AssetPaths::UnconvertibleMesh(const std::string& resolved) const {
+  if (resolved.empty()) return std::nullopt;
+  std::error_code ec;
+  auto it = unconvertible_.find(fs::weakly_canonical(fs::absolute(resolved, ec), ec));
+  if (it == unconvertible_.end()) return std::nullopt;
+  return it->second;
+}
+
+std::optional<fs::path> AssetPaths::ObjCopy(const fs::path& file, Loc loc) {
+  if (auto it = obj_copies_.find(file); it != obj_copies_.end()) return it->second;
+  if (unconvertible_.count(file)) return std::nullopt;
+  // the triangles the compile read (its limits, its up-axis handling)
+  mesh::MeshOrError mesh;
+  if (mesh::IsVtk(file.string())) {
+    // a tetrahedral volume (Drake's compliant and deformable geometry),
+    // which no mesh reader of mdlc's reads: its boundary surface
+    mesh = mesh::ReadVtkSurface(file.string());
+  } else if (options_.meshes) {
+    mesh = options_.meshes->Get(file.string());
+  } else {
+    mesh::MeshCache defaults;
+    mesh = defaults.Get(file.string());
+  }
+  if (!mesh.ok()) {
+    unconvertible_[file] = mesh.error;
+    return std::nullopt;
+  }
+  auto copy = WriteCopy(mesh::ObjText(*mesh.mesh), file, ".obj", loc);
+  if (copy) obj_copies_[file] = *copy;
+  return copy;
 }
 
 std::optional<fs::path> AssetPaths::Copy(const fs::path& file, Loc loc) {
@@ -64,23 +129,34 @@ std::optional<fs::path> AssetPaths::Copy(const fs::path& file, Loc loc) {
                   fmt::format("cannot read '{}' to copy it", file.generic_string()));
     return std::nullopt;
   }
+  auto copy = WriteCopy(*bytes, file, file.extension().string(), loc);
+  if (copy) copies_[file] = *copy;
+  return copy;
+}
+
+std::optional<fs::path> AssetPaths::WriteCopy(const std::string& bytes,
+                                              const fs::path& named_after,
+                                              const std::string& extension, Loc loc) {
   std::error_code ec;
   const fs::path dir = fs::weakly_canonical(fs::absolute(*options_.copy_assets_dir, ec), ec);
-  auto& by_content = copies_by_content_[*bytes];
+  auto& by_content = copies_by_content_[bytes];
   if (by_content.empty()) {
     fs::create_directories(dir, ec);
-    by_content = dir / fmt::format("{}-{:016x}{}", file.stem().string(), ContentHash(*bytes),
-                                   file.extension().string());
+    by_content = dir / fmt::format("{}-{:016x}{}", named_after.stem().string(),
+                                   ContentHash(bytes), extension);
+    errno = 0;
     std::ofstream out(by_content, std::ios::binary);
-    out << *bytes;
+    out << bytes;
+    out.flush();
     if (!out) {
+      // the system's reason (no such directory, permission denied, disk full)
       diags_.Report(DiagKind::FileNotFound, loc,
-                    fmt::format("cannot write the copy '{}'", by_content.generic_string()));
+                    fmt::format("cannot write the copy '{}': {}", by_content.generic_string(),
+                                errno ? std::strerror(errno) : "the file cannot be written"));
       by_content.clear();
       return std::nullopt;
     }
   }
-  copies_[file] = by_content;
   return by_content;
 }
 

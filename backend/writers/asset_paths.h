@@ -3,17 +3,32 @@
 // written model loads from wherever it is written; with --copy-assets, copies
 // of the files (one per distinct content) in a folder of the user's; with
 // --keep-package-uris, package:// URIs as the source wrote them.
+//
+// A mesh file the target cannot read (MuJoCo reads STL, OBJ and MSH only)
+// is, with --copy-assets, written as an OBJ of the triangles mdlc read from
+// it (passes/mesh/mesh_export.h), so the target loads the shape the plant
+// has; without --copy-assets it is named as it is, with a -Wlossy warning
+// per file saying the target cannot read it. A mesh mdlc cannot read either
+// (an empty file) is left to the writer, which drops its geometry.
 #pragma once
 
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 
 #include "backend/writers/writer.h"
 #include "ir/diagnostics.h"
 
 namespace mdlc::writers {
+
+/// Which mesh files a target reads.
+struct MeshTarget {
+  const char* reader;  // "MuJoCo"
+  /// Empty when the reader reads `file`, else why not ("MuJoCo reads ...").
+  std::string (*why_not)(const std::filesystem::path& file);
+};
 
 class AssetPaths {
  public:
@@ -23,15 +38,36 @@ class AssetPaths {
   /// resolved to `resolved` (empty when it did not resolve). nullopt after
   /// reporting a file that could not be copied.
   std::optional<std::string> Name(const std::string& uri, const std::string& resolved, Loc loc);
+  /// As Name(), for a mesh file that `target` may not read: with
+  /// --copy-assets, one it cannot read is named by an OBJ copy; without, it
+  /// is reported once.
+  std::optional<std::string> NameMesh(const std::string& uri, const std::string& resolved,
+                                      Loc loc, const MeshTarget& target);
+  /// Why NameMesh could not write the mesh `resolved` in a format the
+  /// target reads (mdlc cannot read it either); nullopt when it could, or
+  /// was not asked to. The writer drops the geometry: the target would
+  /// refuse the whole model.
+  std::optional<std::string> UnconvertibleMesh(const std::string& resolved) const;
 
  private:
   std::optional<std::filesystem::path> Copy(const std::filesystem::path& file, Loc loc);
+  /// The OBJ copy of the mesh `file`; nullopt when mdlc cannot read it
+  /// (UnconvertibleMesh says why) or the copy cannot be written (reported).
+  std::optional<std::filesystem::path> ObjCopy(const std::filesystem::path& file, Loc loc);
+  /// `bytes` in the copy folder as STEM-HASH.EXT (one file per content).
+  std::optional<std::filesystem::path> WriteCopy(const std::string& bytes,
+                                                 const std::filesystem::path& named_after,
+                                                 const std::string& extension, Loc loc);
+  std::string Relative(const std::filesystem::path& file) const;
 
   const WriteOptions& options_;
   DiagnosticEngine& diags_;
   std::filesystem::path output_dir_;
   std::map<std::filesystem::path, std::filesystem::path> copies_;    // original -> copy
   std::map<std::string, std::filesystem::path> copies_by_content_;  // content -> copy
+  std::map<std::filesystem::path, std::filesystem::path> obj_copies_;  // original -> OBJ
+  std::map<std::filesystem::path, std::string> unconvertible_;        // original -> why
+  std::set<std::filesystem::path> unreadable_reported_;
 };
 
 }  // namespace mdlc::writers

@@ -3,12 +3,45 @@
 // <camera> (mjcf_writer_detail.h).
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
+#include <fstream>
 #include <variant>
 
 #include "backend/writers/mjcf_writer_detail.h"
 #include "ir/overloaded.h"
+#include "passes/mesh/mesh_export.h"
 
 namespace mdlc::writers::mjcf {
+namespace {
+
+// MuJoCo 3.3.8 reads binary STL (up to 200000 faces), OBJ and MSH meshes
+constexpr uint32_t kMujocoMaxStlFaces = 200000;
+
+std::string WhyMujocoCannotRead(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".obj" || ext == ".msh") return "";
+  if (ext != ".stl") return "MuJoCo reads STL, OBJ and MSH meshes only";
+  std::ifstream in(file, std::ios::binary);
+  std::string head(84, '\0');
+  in.read(head.data(), head.size());
+  head.resize(in.gcount());
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(file, ec);
+  const auto faces = ec ? std::nullopt : mesh::BinaryStlTriangleCount(head, size);
+  if (!faces) return "MuJoCo reads binary STL only, and this one is ASCII";
+  if (*faces > kMujocoMaxStlFaces) {
+    return fmt::format("MuJoCo reads at most {} faces from an STL file and it has {}",
+                       kMujocoMaxStlFaces, *faces);
+  }
+  return "";
+}
+
+constexpr MeshTarget kMujoco{"MuJoCo", WhyMujocoCannotRead};
+
+}  // namespace
 
 void MjcfWriter::WriteMeshAssets() {
   bool open = false;
@@ -18,8 +51,12 @@ void MjcfWriter::WriteMeshAssets() {
     const Loc loc = GeometryLoc(i);
     const auto* mesh = std::get_if<ir::Mesh>(&g.shape);
     if (!mesh) continue;
-    const std::optional<std::string> file =
-        assets_.Name(mesh->uri, mesh->resolved, mesh->uri_loc.valid() ? mesh->uri_loc : loc);
+    const std::optional<std::string> file = assets_.NameMesh(
+        mesh->uri, mesh->resolved, mesh->uri_loc.valid() ? mesh->uri_loc : loc, kMujoco);
+    if (auto why = assets_.UnconvertibleMesh(mesh->resolved)) {
+      unconvertible_meshes_[i] = *why;
+      continue;
+    }
     const std::string scale =
         mesh->scale != Eigen::Vector3d::Ones() ? VectorText(mesh->scale) : std::string();
     auto [it, added] =
@@ -46,6 +83,13 @@ void MjcfWriter::WriteGeometry(size_t index, const backend::SceneGeometry& g, Lo
   const bool visual = g.roles & (ir::kIllustrationRole | ir::kPerceptionRole);
   const bool collision = g.roles & ir::kProximityRole;
   if (!visual && !collision) return;
+  if (auto it = unconvertible_meshes_.find(index); it != unconvertible_meshes_.end()) {
+    diags_.Report(DiagKind::Lossy, loc,
+                  fmt::format("geometry '{}' is dropped: MuJoCo cannot read its mesh '{}', "
+                              "and mdlc cannot write it as OBJ ({})",
+                              g.name, std::get<ir::Mesh>(g.shape).uri, it->second));
+    return;
+  }
   if (visual && (g.roles & (ir::kIllustrationRole | ir::kPerceptionRole)) !=
                     (ir::kIllustrationRole | ir::kPerceptionRole)) {
     diags_.Report(DiagKind::Lossy, loc,

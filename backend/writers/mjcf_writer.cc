@@ -50,6 +50,7 @@
 // lists the files that write the rest.
 #include <fmt/format.h>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <algorithm>
 
@@ -66,6 +67,7 @@ std::string QuatText(const Eigen::Matrix3d& R) {
 std::string MjcfWriter::Write() {
   names_.ReportFlattening(m_, "MJCF model", diags_);
   ReportLayout();
+  NoteFreeUrdfRoots();
   ChooseLinkFrames();
   PrepareConstraintSites();
   out_.Open("mujoco").Attr("model", names_.model_name());
@@ -116,6 +118,31 @@ void MjcfWriter::ChooseLinkFrames() {
     if (kind == Kind::Free) X_BL_[b] = j.X_CM;
     if (kind == Kind::Ball) X_BL_[b] = Transform::FromRotation(j.X_CM.R);
   }
+}
+
+void MjcfWriter::NoteFreeUrdfRoots() {
+  // the floating joints the compiler gave to URDF links that no joint holds
+  std::vector<JointId> free;
+  for (size_t j = 0; j < plant_.joints.size(); ++j) {
+    const PlantJoint& joint = plant_.joints[j];
+    if (joint.unnamed && KindOf(joint) == Kind::Free &&
+        m_.models[joint.model.index()].format == ir::SourceFormat::Urdf) {
+      free.push_back(JointId(j));
+    }
+  }
+  if (free.empty()) return;
+  const PlantJoint& first = plant_.joint(free[0]);
+  diags_.Report(DiagKind::FreeBase, BodyLoc(first.child),
+                fmt::format("root link '{}' of URDF model '{}' has no joint to the world, so "
+                            "the plant floats it (Drake's rule) and the MJCF gives it a free "
+                            "joint{}: it falls in MuJoCo, whose own URDF import would fix it; "
+                            "--fixed-base welds {} to the world",
+                            plant_.body(first.child).name,
+                            m_.ModelName(first.model),
+                            free.size() > 1
+                                ? fmt::format(" (as {} more such links)", free.size() - 1)
+                                : "",
+                            free.size() > 1 ? "them" : "it"));
 }
 
 void MjcfWriter::ReportLayout() {
@@ -254,14 +281,16 @@ void MjcfWriter::WriteInertial(BodyId body) {
   const Eigen::Vector3d p = X_LB * layout_.p_BoBcm_B[i];
   const Eigen::Matrix3d I = X_LB.R * layout_.I_BBcm_B[i] * X_LB.R.transpose();
   out_.Open("inertial").Attr("pos", p).Attr("mass", layout_.mass[i]);
-  // both read exactly; MuJoCo rejects a fullinertia without positive
-  // eigenvalues (a massless body's zero), not the same diaginertia
   if (I(0, 1) == 0 && I(0, 2) == 0 && I(1, 2) == 0) {
     out_.Attr("diaginertia", Eigen::Vector3d(I.diagonal()));
   } else {
-    out_.Attr("fullinertia", VectorText((Eigen::VectorXd(6) << I(0, 0), I(1, 1), I(2, 2),
-                                         I(0, 1), I(0, 2), I(1, 2))
-                                            .finished()));
+    // the principal axes, found here in double precision: MuJoCo
+    // diagonalises a fullinertia itself with an iteration that stops early
+    // (mjuu_eig3), leaving entries off by up to 1e-5 of their size
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal(I);
+    Eigen::Matrix3d R = principal.eigenvectors();
+    if (R.determinant() < 0) R.col(2) = -R.col(2);  // a rotation, not a reflection
+    out_.Attr("quat", QuatText(R)).Attr("diaginertia", Eigen::Vector3d(principal.eigenvalues()));
   }
   out_.Close();
 }

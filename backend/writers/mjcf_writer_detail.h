@@ -77,6 +77,10 @@ class MjcfWriter : FlatWriterBase {
   /// made between an MJCF body's stacked joints comes back as it was) and
   /// fused (--fuse-fixed, a note per body).
   void ReportLayout();
+  /// A note when a URDF's root link floats: the plant floats a link no joint
+  /// holds (Drake's rule), so the MJCF gives it a free joint, where MuJoCo's
+  /// own URDF import would have fixed it (--fixed-base welds it instead).
+  void NoteFreeUrdfRoots();
   Eigen::Vector3d PointInLink(BodyId body, const Eigen::Vector3d& p_BP) const {
     return InLink(body, Transform::FromTranslation(p_BP)).p;
   }
@@ -218,6 +222,9 @@ class MjcfWriter : FlatWriterBase {
   std::vector<Transform> X_BL_;
   std::map<size_t, std::vector<BodyId>> children_;
   std::map<size_t, std::string> mesh_names_;
+  // geometries whose mesh MuJoCo cannot read and mdlc could not convert:
+  // not written (MuJoCo refuses a model naming such a file), with why
+  std::map<size_t, std::string> unconvertible_meshes_;
   // MJCF gives each kind of element one namespace for the whole model
   UniqueNames geom_names_, site_names_, camera_names_;
   std::map<size_t, std::vector<std::pair<std::string, Transform>>> extra_sites_;

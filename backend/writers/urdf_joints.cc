@@ -15,6 +15,19 @@ void UrdfWriter::WriteJoint(JointId id) {
   const PlantJoint& j = plant_.joint(id);
   const Loc loc = JointLoc(id);
   if (IsFloating(j)) {
+    // plain URDF is one tree for urdfdom: the free link hangs from its
+    // parent by a floating joint, which Drake and mdlc read as no joint
+    // (URDF-012), so the link is free as before. The joint's name is not a
+    // body's, where Drake's reader names the free body's own joint.
+    if (plain_ && (!IsFreeRoot(j) || floats_free_roots_)) {
+      out_.Open("joint")
+          .Attr("name", BodyName(j.child) + "_floating")
+          .Attr("type", "floating");
+      Origin(InLink(j.parent, j.X_PF));
+      out_.Open("parent").Attr("link", BodyName(j.parent)).Close();
+      out_.Open("child").Attr("link", BodyName(j.child)).Close();
+      out_.Close();
+    }
     if (!IsFreeRoot(j)) {
       diags_.Report(DiagKind::Lossy, loc,
                     fmt::format("floating joint '{}' has a parent other than the world, "
@@ -48,9 +61,21 @@ void UrdfWriter::WriteJoint(JointId id) {
       break;
     case ir::JointType::Prismatic: s = {"joint", "prismatic"}; break;
     case ir::JointType::Planar: s = {"joint", "planar"}; break;
-    case ir::JointType::Ball: s = {"drake:joint", "ball"}; break;
-    case ir::JointType::Universal: s = {"drake:joint", "universal"}; break;
-    case ir::JointType::Screw: s = {"drake:joint", "screw"}; break;
+    case ir::JointType::Ball:
+    case ir::JointType::Universal:
+    case ir::JointType::Screw:
+      if (!plain_) {
+        s = {"drake:joint", ir::JointTypeName(j.type)};
+        break;
+      }
+      // urdfdom passes over <drake:joint>, which would leave its child a
+      // second root
+      diags_.Report(DiagKind::Lossy, loc,
+                    fmt::format("{} joint '{}' has no plain URDF type; it is written as a "
+                                "fixed joint at its zero position",
+                                ir::JointTypeName(j.type), j.name));
+      s = {"joint", "fixed"};
+      break;
     default:
       diags_.Report(DiagKind::Lossy, loc,
                     fmt::format("{} joint '{}' has no URDF form; it is written as a fixed "
@@ -91,6 +116,14 @@ bool UrdfWriter::IsIdentityPose(const PlantJoint& j) {
 void UrdfWriter::Dynamics(const PlantJoint& j, Loc loc) {
   if (j.damping.empty() ||
       std::all_of(j.damping.begin(), j.damping.end(), [](double d) { return d == 0; })) {
+    return;
+  }
+  if (j.type == ir::JointType::Planar && plain_) {
+    // urdfdom reads one damping value, Drake three for a planar joint
+    diags_.Report(DiagKind::Lossy, loc,
+                  fmt::format("the damping of planar joint '{}' is not written: plain URDF's "
+                              "readers take one value, Drake's three",
+                              j.name));
     return;
   }
   if (j.type == ir::JointType::Planar) {

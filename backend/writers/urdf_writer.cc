@@ -17,6 +17,12 @@
 //   actuators -> <transmission>; ball and distance constraints, tendons,
 //   bushings and spring-dampers -> their drake: elements; collision filters
 //   -> one <drake:collision_filter_group> per filtered body pair.
+// Plain URDF (--plain, for urdfdom and ROS): one root link, so free bodies
+// beside the world or beside each other hang from a "world" link by
+// <joint type="floating">, as does a floating joint whose parent is not the
+// world; capsules and ellipsoids become the cylinder and sphere that bound
+// them, and ball, universal and screw joints fixed joints (-Wlossy). Drake's
+// other elements stay: urdfdom passes over elements it does not know.
 // Several model instances become one robot whose names carry their
 // instance ("arm/link1"; a nested instance "arm::hand" gives "arm/hand/link1").
 // A link, joint, frame or actuator whose written name does not give back its
@@ -45,7 +51,8 @@ std::string UrdfWriter::Write() {
   names_.ReportFlattening(m_, "URDF robot", diags_);
   out_.Open("robot").Attr("name", names_.model_name());
   out_.Attr("xmlns:drake", "http://drake.mit.edu");
-  if (NeedsWorldLink()) WriteLink(ir::kWorldBody);
+  floats_free_roots_ = FloatsFreeRoots();
+  if (NeedsWorldLink() || floats_free_roots_) WriteLink(ir::kWorldBody);
   for (size_t b = 1; b < plant_.bodies.size(); ++b) WriteLink(BodyId(b));
   for (size_t j = 0; j < plant_.joints.size(); ++j) WriteJoint(JointId(j));
   WriteFrames();
@@ -70,6 +77,13 @@ bool UrdfWriter::NeedsWorldLink() const {
     if (f.body.index() == 0 && !f.unnamed) return true;
   }
   return false;
+}
+
+bool UrdfWriter::FloatsFreeRoots() const {
+  if (!plain_) return false;
+  size_t free_roots = 0;
+  for (const PlantJoint& j : plant_.joints) free_roots += IsFreeRoot(j) ? 1 : 0;
+  return free_roots > 1 || (free_roots == 1 && NeedsWorldLink());
 }
 
 void UrdfWriter::WriteLink(BodyId body) {
@@ -147,6 +161,12 @@ void UrdfWriter::WriteGeometry(const backend::SceneGeometry& g, Loc loc) {
 
 void UrdfWriter::Shape(const backend::SceneGeometry& g, Loc loc, bool collision) {
   out_.Open("geometry");
+  if (plain_ && (std::holds_alternative<ir::Capsule>(g.shape) ||
+                 std::holds_alternative<ir::Ellipsoid>(g.shape))) {
+    PlainShape(g, loc);
+    out_.Close();
+    return;
+  }
   std::visit(ir::Overloaded{
                  [&](const ir::Box& s) { out_.Open("box").Attr("size", s.size).Close(); },
                  [&](const ir::Sphere& s) {
@@ -178,6 +198,25 @@ void UrdfWriter::Shape(const backend::SceneGeometry& g, Loc loc, bool collision)
              },
              g.shape);
   out_.Close();
+}
+
+void UrdfWriter::PlainShape(const backend::SceneGeometry& g, Loc loc) {
+  if (const auto* c = std::get_if<ir::Capsule>(&g.shape)) {
+    const double length = c->length + 2 * c->radius;
+    diags_.Report(DiagKind::Lossy, loc,
+                  fmt::format("capsule '{}' is written as the cylinder that bounds it (radius "
+                              "{}, length {}): plain URDF has no capsule",
+                              g.name, c->radius, length));
+    out_.Open("cylinder").Attr("radius", c->radius).Attr("length", length).Close();
+    return;
+  }
+  const auto& e = std::get<ir::Ellipsoid>(g.shape);
+  const double radius = std::max({e.a, e.b, e.c});
+  diags_.Report(DiagKind::Lossy, loc,
+                fmt::format("ellipsoid '{}' is written as the sphere that bounds it (radius "
+                            "{}): plain URDF has no ellipsoid",
+                            g.name, radius));
+  out_.Open("sphere").Attr("radius", radius).Close();
 }
 
 void UrdfWriter::Material(const backend::SceneGeometry& g, Loc loc) {

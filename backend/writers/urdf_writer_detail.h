@@ -33,7 +33,7 @@ class UrdfWriter : FlatWriterBase {
  public:
   UrdfWriter(const backend::CompiledModel& model, const ir::Module& module,
              const WriteOptions& options, DiagnosticEngine& diags)
-      : FlatWriterBase(model, module, options, diags) {}
+      : FlatWriterBase(model, module, options, diags), plain_(options.plain) {}
 
   std::string Write();
 
@@ -58,6 +58,10 @@ class UrdfWriter : FlatWriterBase {
   // -- links
 
   bool NeedsWorldLink() const;
+  /// Plain URDF (--plain) holds one tree: when the free bodies and the
+  /// world would be several roots, the world link is written with a
+  /// floating joint to each free body.
+  bool FloatsFreeRoots() const;
   static bool IsFreeRoot(const PlantJoint& j) { return IsFloating(j) && j.parent.index() == 0; }
 
   void WriteLink(BodyId body);
@@ -67,6 +71,8 @@ class UrdfWriter : FlatWriterBase {
   void WriteGeometry(const backend::SceneGeometry& g, Loc loc);
 
   void Shape(const backend::SceneGeometry& g, Loc loc, bool collision);
+  /// Plain URDF: a capsule or ellipsoid as the primitive that bounds it.
+  void PlainShape(const backend::SceneGeometry& g, Loc loc);
 
   void Material(const backend::SceneGeometry& g, Loc loc);
 
@@ -117,6 +123,8 @@ class UrdfWriter : FlatWriterBase {
 
   void WriteCameras();
 
+  const bool plain_;  // WriteOptions::plain
+  bool floats_free_roots_ = false;
   std::set<size_t> mimicked_, mimic_written_;
   UniqueNames frame_names_;  // links' and frames' names
 };

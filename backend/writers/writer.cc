@@ -14,6 +14,11 @@ std::optional<std::string> Write(const backend::CompiledModel& model, const ir::
                              "body",
                              FormatName(options.to)));
   }
+  if (options.plain && options.to != Format::Urdf) {
+    diags.Report(DiagKind::UnsupportedValue, Loc{},
+                 fmt::format("--plain applies to URDF output; the {} writer has one dialect",
+                             FormatName(options.to)));
+  }
   std::optional<std::string> text;
   switch (options.to) {
     case Format::Urdf:

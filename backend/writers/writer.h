@@ -18,6 +18,10 @@
 #include "ir/format.h"
 #include "ir/module.h"
 
+namespace mdlc::mesh {
+class MeshCache;
+}
+
 namespace mdlc::writers {
 
 struct WriteOptions {
@@ -27,13 +31,20 @@ struct WriteOptions {
   /// (empty: the current directory).
   std::filesystem::path output;
   /// Copy every mesh into this folder (one copy per distinct content) and
-  /// name the copies instead of the originals.
+  /// name the copies instead of the originals; a mesh the target cannot
+  /// read is written as an OBJ of the triangles mdlc read (asset_paths.h).
   std::optional<std::filesystem::path> copy_assets_dir;
+  /// The compile's meshes, read as it read them (its limits and up-axis
+  /// handling), for those OBJ copies; null: read with the default settings.
+  mesh::MeshCache* meshes = nullptr;
   /// Keep package:// URIs as written instead of naming the files.
   bool keep_package_uris = false;
   /// MJCF: fuse each body welded to its parent (not the world) into it
   /// (mjcf_layout.h); the other writers keep every body.
   bool fuse_fixed = false;
+  /// URDF: plain URDF for urdfdom and ROS (urdf_writer.cc): one root link,
+  /// Drake's shapes and joints approximated; the other writers ignore it.
+  bool plain = false;
 };
 
 /// The model in `options.to`; nullopt after an error was reported (an

@@ -509,6 +509,49 @@ TEST_F(CliTest, ConvertNamesMeshesFromTheOutputAndCopiesThemOnce) {
   EXPECT_EQ(back.status, 0) << back.err;
 }
 
+// --plain, --fixed-base (issue 58): plain URDF for urdfdom; a URDF root link
+// that floats is said in a note when converted to MJCF, and --fixed-base
+// welds it (on convert and compile alike).
+TEST_F(CliTest, ConvertPlainUrdfAndFixedBase) {
+  Outcome plain = Mdlc("convert " + Write("losses.xml", kMjcfWithLosses).string() + " -o " +
+                       (dir_ / "plain.urdf").string() + " --plain");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  const std::string urdf = ReadFile(dir_ / "plain.urdf");
+  EXPECT_EQ(urdf.find("drake:capsule"), std::string::npos) << urdf;
+  EXPECT_NE(urdf.find("<cylinder radius=\"0.1\" length=\"0.6"), std::string::npos) << urdf;
+  EXPECT_NE(plain.err.find("capsule 'shell' is written as the cylinder that bounds it"),
+            std::string::npos)
+      << plain.err;
+  Outcome not_urdf = Mdlc("convert " + (dir_ / "losses.xml").string() + " -o " +
+                          (dir_ / "plain.sdf").string() + " --plain");
+  EXPECT_NE(not_urdf.err.find("--plain applies to URDF output"), std::string::npos)
+      << not_urdf.err;
+
+  const fs::path arm = Write("arm.urdf", R"(<robot name="arm">
+  <link name="base"><inertial><mass value="4"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <joint name="shoulder" type="continuous"><parent link="base"/><child link="upper"/><axis xyz="0 0 1"/></joint>
+  <link name="upper"><inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial></link>
+</robot>
+)");
+  Outcome floating = Mdlc("convert " + arm.string() + " -o " + (dir_ / "arm.xml").string());
+  ASSERT_EQ(floating.status, 0) << floating.err;
+  EXPECT_NE(floating.err.find("arm.urdf:2:3: note: root link 'base' of URDF model 'arm' has no "
+                              "joint to the world"),
+            std::string::npos)
+      << floating.err;
+  EXPECT_NE(floating.err.find("--fixed-base welds it to the world [-Wjoint]"), std::string::npos)
+      << floating.err;
+  EXPECT_NE(ReadFile(dir_ / "arm.xml").find("<freejoint"), std::string::npos);
+  Outcome fixed =
+      Mdlc("convert --fixed-base " + arm.string() + " -o " + (dir_ / "arm_fixed.xml").string());
+  ASSERT_EQ(fixed.status, 0) << fixed.err;
+  EXPECT_EQ(fixed.err.find("note: root link"), std::string::npos) << fixed.err;
+  EXPECT_EQ(ReadFile(dir_ / "arm_fixed.xml").find("<freejoint"), std::string::npos);
+  Outcome compiled = Mdlc("compile --fixed-base " + arm.string());
+  ASSERT_EQ(compiled.status, 0) << compiled.err;
+  EXPECT_NE(compiled.out.find("positions: 1, velocities: 1"), std::string::npos) << compiled.out;
+}
+
 // --mesh-reader (issue 16): meshes read in a child process (the default)
 // or in mdlc's own give the same plant; --time-passes names the reader.
 TEST_F(CliTest, MeshReaderFlag) {  // issue 16

@@ -31,6 +31,7 @@
 
 #include "../corpus/shared_corpus.h"
 #include "mdlc/mdlc.h"
+#include "passes/mesh/mesh_loader.h"
 
 namespace mdlc {
 namespace {
@@ -160,13 +161,28 @@ Transform MjcfLinkFrame(const backend::PlantJoint& j) {
 }
 
 /// The geometry a writer drops (with a -Wlossy warning): half spaces in
-/// URDF, geometry on the world in SDFormat, none in MJCF.
+/// URDF, geometry on the world in SDFormat, an unreadable mesh in MJCF.
 using Drops = bool (*)(const backend::SceneGeometry& g);
 bool UrdfDrops(const backend::SceneGeometry& g) {
   return std::holds_alternative<ir::HalfSpace>(g.shape);
 }
 bool SdfDrops(const backend::SceneGeometry& g) { return g.body.index() == 0; }
-bool DropsNothing(const backend::SceneGeometry&) { return false; }  // MJCF
+bool DropsNothing(const backend::SceneGeometry&) { return false; }
+/// MJCF, with --copy-assets: a mesh geometry whose file neither MuJoCo nor
+/// mdlc reads (in the corpus: an empty COLLADA file, glTF files without
+/// their .bin), as MuJoCo refuses a model naming such a file; every other
+/// mesh is written as one it reads.
+bool MjcfDrops(const backend::SceneGeometry& g) {
+  const auto* mesh = std::get_if<ir::Mesh>(&g.shape);
+  if (!mesh || mesh->resolved.empty()) return false;
+  std::string ext = fs::path(mesh->resolved).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".obj" || ext == ".stl" || ext == ".msh" || ext == ".vtk") return false;
+  static std::map<std::string, bool> unreadable;  // each file read once
+  auto [it, added] = unreadable.emplace(mesh->resolved, false);
+  if (added) it->second = !mesh::LoadMesh(mesh->resolved).ok();
+  return it->second;
+}
 
 /// The formats `mdlc convert` writes; a new writer adds its line here.
 struct Target {
@@ -184,13 +200,24 @@ struct Target {
   /// meshes (MuJoCo's reference loads a model's folder, not its mesh paths
   /// that reach up and out of it).
   bool own_folder;
+  /// URDF: plain URDF (--plain), which urdfdom reads: one root link, Drake's
+  /// shapes and joints approximated.
+  bool plain = false;
 };
 constexpr Target kTargets[] = {
     {Format::Urdf, "urdf", "Urdf", UrdfLinkFrame, false, UrdfDrops, "half space", false, false},
     {Format::Sdf, "sdf", "Sdf", SdfLinkFrame, true, SdfDrops, "on the world is dropped", false,
      false},
-    {Format::Mjcf, "xml", "Mjcf", MjcfLinkFrame, false, DropsNothing, "", true, true},
+    {Format::Mjcf, "xml", "Mjcf", MjcfLinkFrame, false, MjcfDrops,
+     "is dropped: MuJoCo cannot read its mesh", true, true},
+    {Format::Urdf, "urdf", "PlainUrdf", UrdfLinkFrame, false, UrdfDrops, "half space", false,
+     false, true},
 };
+// The corpus is converted once per target, as a user loading the result in
+// the target's reference would: URDF as plain URDF (urdfdom reads the files,
+// tests/convert/CMakeLists.txt); Drake's URDF dialect is compared on the
+// project's own models (OwnRoundTrip) and the hand-made models below.
+constexpr Target kCorpusTargets[] = {kTargets[3], kTargets[1], kTargets[2]};
 
 /// The converted model against the original; failures are gtest failures.
 class Comparison {
@@ -385,6 +412,7 @@ Outcome RoundTrip(const ModelCase& mc, const Target& to, const fs::path& dir) {
   }
   convert.to = to.format;
   convert.output = out.string();
+  convert.plain = to.plain;
   const std::optional<std::string> text = a.Convert(convert);
   EXPECT_TRUE(text) << Messages(a);
   if (!text) return Outcome::Compared;
@@ -445,7 +473,7 @@ TEST_P(CorpusRoundTrip, Converts) {
   RunSuite(CorpusModels(format), to, fmt::format("corpus {}", format));
 }
 INSTANTIATE_TEST_SUITE_P(Corpus, CorpusRoundTrip,
-                         ::testing::Combine(::testing::ValuesIn(kTargets),
+                         ::testing::Combine(::testing::ValuesIn(kCorpusTargets),
                                             ::testing::Values("urdf", "sdf", "mjcf", "dmd")),
                          [](const auto& info) {
                            return fmt::format("{}_from_{}", std::get<0>(info.param).name,

@@ -6,6 +6,7 @@
 #include "ir/count_text.h"
 #include "frontend/xacro/xacro.h"
 #include "passes/mesh/in_process_reader.h"
+#include "passes/build_kinematic_tree.h"
 #include "passes/pass_registry.h"
 
 namespace mdlc {
@@ -55,11 +56,18 @@ bool Compilation::RunFrontends() {
 
 bool Compilation::RunPasses() {
   passes::PassManager pm(options.instrumentation);
+  // --fixed-base: the tree is built with free bodies welded, not floating
+  auto create = [&](std::string_view name) {
+    if (options.fixed_base && name == "build-kinematic-tree") {
+      return passes::CreateFixedBaseKinematicTreePass();
+    }
+    return passes::CreatePass(name);
+  };
   if (options.pipeline.empty()) {
-    pm.AddDefaultPipeline();
+    for (const auto& info : passes::RegisteredPasses()) pm.AddPass(create(info.name));
   } else {
     for (const std::string& name : options.pipeline) {
-      auto pass = passes::CreatePass(name);
+      auto pass = create(name);
       if (!pass) {
         diags.Report(DiagKind::UnknownReference, {},
                      fmt::format("unknown pass '{}' (see --list-passes)", name));

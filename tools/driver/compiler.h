@@ -40,6 +40,9 @@ struct CompileOptions {
   mesh::MeshReading mesh_reading = mesh::MeshReading::kChildProcess;
   /// How they are turned Z-up (Options::collada_up_axis).
   mesh::MeshAxes mesh_axes;
+  /// Weld free bodies to the world instead of floating them
+  /// (Options::fixed_base).
+  bool fixed_base = false;
 };
 
 class Compilation {

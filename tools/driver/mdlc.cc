@@ -140,6 +140,7 @@ Result Compile(const std::vector<Input>& inputs, const Options& options) {
   c->options.instrumentation.time_passes = options.time_passes;
   c->options.instrumentation.verify_each = options.verify_each;
   c->options.skip_backend = options.skip_backend;
+  c->options.fixed_base = options.fixed_base;
   c->sources.set_limits(options.limits);
   c->options.mesh_reading = options.mesh_reader == MeshReader::InProcess
                                 ? mesh::MeshReading::kInProcess
@@ -287,6 +288,8 @@ std::optional<std::string> Result::Convert(const ConvertOptions& options) {
   if (options.copy_assets_dir) write.copy_assets_dir = *options.copy_assets_dir;
   write.keep_package_uris = options.keep_package_uris;
   write.fuse_fixed = options.fuse_fixed;
+  write.plain = options.plain;
+  write.meshes = compilation_->meshes.get();
   return writers::Write(*compilation_->model, compilation_->module, write, compilation_->diags);
 }
 

@@ -178,6 +178,9 @@ void AddCompileFlags(CLI::App* command, CompileFlags& flags) {
   command->add_option("--model-name", flags.model_name, "Name the model instance this");
   command->add_flag("--auto-rename", flags.auto_rename,
                     "Rename a model whose name is taken to NAME_1, NAME_2, ...");
+  command->add_flag("--fixed-base", flags.fixed_base,
+                    "Weld each free root body to the world at its default pose instead of "
+                    "floating it");
   command->add_option("--package-path", flags.package_paths, "Search DIR for package.xml files")
       ->allow_extra_args(false);
   command->add_option("--package", flags.packages, "Define package NAME=DIR")
@@ -214,6 +217,7 @@ int ToOptions(const CompileFlags& flags, Options& options) {
       flags.collada_up_axis == "apply" ? ColladaUpAxis::Apply : ColladaUpAxis::AsWritten;
   options.model_name = flags.model_name;
   options.auto_rename = flags.auto_rename;
+  options.fixed_base = flags.fixed_base;
   for (const std::string& word : flags.files) {
     // xacro's NAME:=VALUE arguments sit among the files, as on xacro's command line
     if (const size_t at = word.find(":="); at != std::string::npos && at > 0) {

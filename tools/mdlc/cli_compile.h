@@ -37,6 +37,7 @@ struct CompileFlags {
   std::string collada_up_axis = "as-written";  // --collada-up-axis
   std::optional<std::string> model_name;
   bool auto_rename = false;
+  bool fixed_base = false;  // --fixed-base
   std::vector<std::string> package_paths;
   std::vector<std::string> packages;
   std::string color = "auto";

@@ -17,6 +17,7 @@ struct ConvertFlags {
   std::string copy_assets_dir;
   bool keep_package_uris = false;
   bool fuse_fixed = false;
+  bool plain = false;
 };
 
 /// The target: --to, or the output file's extension.
@@ -48,6 +49,7 @@ int Run(const ConvertFlags& flags) {
   if (!flags.copy_assets_dir.empty()) convert.copy_assets_dir = flags.copy_assets_dir;
   convert.keep_package_uris = flags.keep_package_uris;
   convert.fuse_fixed = flags.fuse_fixed;
+  convert.plain = flags.plain;
   // Result::Convert reports why it could not write the model as diagnostics
   const std::optional<std::string> text = result.Convert(convert);
   if (!result.ok() || !text) return ReportFailure(flags.compile, result);
@@ -68,11 +70,15 @@ Subcommand AddConvertCommand(CLI::App& app) {
       ->add_option("-o,--output", flags->output, "Write the converted model here ('-': stdout)")
       ->required();
   convert->add_option("--copy-assets", flags->copy_assets_dir,
-                      "Copy the meshes into DIR (one copy per distinct content) and name them");
+                      "Copy the meshes into DIR (one copy per distinct content) and name them; "
+                      "a mesh the target cannot read is written as OBJ");
   convert->add_flag("--keep-package-uris", flags->keep_package_uris,
                     "Keep package:// URIs as written instead of naming the files");
   convert->add_flag("--fuse-fixed", flags->fuse_fixed,
                     "MJCF: fuse each body welded to its parent into it");
+  convert->add_flag("--plain", flags->plain,
+                    "URDF: plain URDF that urdfdom and ROS read (one root link; Drake's shapes "
+                    "and joints approximated)");
   return {convert, [flags] { return Run(*flags); }};
 }
 

@@ -123,6 +123,12 @@ struct Options {
   /// applied by Result::DefaultPositions; an unknown name is an error.
   std::vector<std::pair<std::string, double>> joint_positions;
 
+  // -- the base
+  /// Weld each body that no joint holds to the world at its default pose,
+  /// instead of giving it a floating joint (Drake's rule, the default): a
+  /// fixed-base arm stays fixed (`--fixed-base`).
+  bool fixed_base = false;
+
   // -- the pipeline
   /// Pass names to run instead of the default pipeline (`--passes`).
   std::vector<std::string> passes;
@@ -195,8 +201,13 @@ struct ConvertOptions {
   /// to its folder (empty: the current directory).
   std::string output;
   /// Copy every mesh into this folder (one copy per distinct content) and
-  /// name the copies.
+  /// name the copies; a mesh the target cannot read (MJCF: other than STL,
+  /// OBJ or MSH) is written as an OBJ of the triangles mdlc read.
   std::optional<std::string> copy_assets_dir;
+  /// URDF only: plain URDF that urdfdom and ROS read (`--plain`): one root
+  /// link, with a floating joint to each free body, and Drake's shapes and
+  /// joints approximated (-Wlossy).
+  bool plain = false;
   /// Keep package:// URIs as the source wrote them.
   bool keep_package_uris = false;
   /// MJCF only: fuse each body welded to its parent (not to the world) into
