@@ -9,6 +9,7 @@
 #include "frontend/entity_capacity.h"
 #include "frontend/model_naming.h"
 #include "frontend/sdf/sdf_reader_detail.h"
+#include "ir/scoped_name.h"
 
 namespace mdlc::frontend {
 
@@ -193,6 +194,7 @@ void SdfReader::CheckChildren(const xml::XmlElement& e,
 }
 
 void SdfReader::ReportUnknownChild(const xml::XmlElement& e, const xml::XmlElement& child,
+                                   std::span<const std::string_view> known,
                                    std::span<const std::string_view> unsupported) {
   std::string_view tag = child.Name();
   if (Listed(unsupported, tag)) {
@@ -203,8 +205,14 @@ void SdfReader::ReportUnknownChild(const xml::XmlElement& e, const xml::XmlEleme
     diags().Report(DiagKind::UnknownElement, child.GetLoc(),
                    fmt::format("unsupported element <{}> in <{}> is ignored", tag, e.Name()));
   } else if (tag.find(':') == std::string_view::npos) {
-    diags().Report(DiagKind::UnknownSdfElement, child.GetLoc(),
-                   fmt::format("<{}> is not an SDFormat element of <{}>", tag, e.Name()));
+    auto diag = diags().Report(DiagKind::UnknownSdfElement, child.GetLoc(),
+                               fmt::format("<{}> is not an SDFormat element of <{}>", tag,
+                                           e.Name()));
+    std::vector<std::string_view> candidates(known.begin(), known.end());
+    candidates.insert(candidates.end(), unsupported.begin(), unsupported.end());
+    if (auto best = ir::ClosestName(tag, candidates)) {
+      diag.Note(child.GetLoc(), fmt::format("did you mean <{}>?", *best));
+    }
   }
   // other namespaces (gazebo:, ignition:, ...) belong to other tools (SDF-001)
 }

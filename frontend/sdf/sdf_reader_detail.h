@@ -155,7 +155,7 @@ class SdfReader {
   void CheckChild(const xml::XmlElement& e, const xml::XmlElement& child,
                   std::span<const std::string_view> known,
                   std::span<const std::string_view> unsupported) {
-    if (!Listed(known, child.Name())) ReportUnknownChild(e, child, unsupported);
+    if (!Listed(known, child.Name())) ReportUnknownChild(e, child, known, unsupported);
   }
   static bool Listed(std::span<const std::string_view> names, std::string_view tag) {
     for (std::string_view name : names) {
@@ -163,7 +163,10 @@ class SdfReader {
     }
     return false;
   }
+  /// `known` and `unsupported` are what `e` may have: a child that is
+  /// neither gets the closest of them as a suggestion.
   void ReportUnknownChild(const xml::XmlElement& e, const xml::XmlElement& child,
+                          std::span<const std::string_view> known,
                           std::span<const std::string_view> unsupported);
 
   // --- sdf_link.cc ---
