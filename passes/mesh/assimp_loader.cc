@@ -12,6 +12,7 @@
 #include <array>
 #include <bit>
 #include <cctype>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -68,8 +69,12 @@ std::optional<Eigen::Vector4d> MaterialColor(const aiMaterial& material) {
     if (material.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) color.a = opacity;
   }
   if (name.length == 0 && color == aiColor4D(1, 1, 1, 1)) return std::nullopt;
+  // assimp holds floats: each channel as the shortest decimal that names
+  // the float, which is what the file wrote (0.9, not 0.899999976)
+  const auto decimal = [](float x) { return std::strtod(fmt::format("{}", x).c_str(), nullptr); };
+  const Eigen::Vector4d rgba(decimal(color.r), decimal(color.g), decimal(color.b),
+                             decimal(color.a));
   // files hold anything; the reply carries channels in [0, 1]
-  const Eigen::Vector4d rgba(color.r, color.g, color.b, color.a);
   return rgba.cwiseMax(0.0).cwiseMin(1.0);
 }
 
