@@ -474,6 +474,15 @@ TEST_F(CheckTest, AFileMissingFromTheFirstCopyOfAPackageNamesTheCopyThatHasIt) {
       << r.out;
 }
 
+TEST_F(CheckTest, FormatNamesTheFilesFormat) {  // COMMON-005
+  const fs::path robot = Write("robot.description", "<robot name='r'><link name='a'/></robot>");
+  EXPECT_EQ(Mdlc("check " + robot.string()).status, 1);  // unknown extension
+  Outcome r = Mdlc("check --format urdf " + robot.string());
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("robot.description: ok\n"), std::string::npos) << r.out;
+  EXPECT_EQ(Mdlc("check --format xacro " + robot.string()).status, 2);
+}
+
 TEST_F(CheckTest, SarifForCodeHosts) {
   Outcome r = Mdlc("check --format sarif " + Models());
   const json sarif = json::parse(r.out);

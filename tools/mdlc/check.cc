@@ -99,7 +99,7 @@ std::string SarifResult(const Diagnostic& d, const SourceManager& sources,
 }
 
 void CheckOne(const CheckOptions& options, const Options& compile, FileResult& r) {
-  const Result result = Compile(Input::File(r.path), compile);
+  const Result result = Compile(Input::File(r.path, options.input_format), compile);
   const SourceManager& sources = result.sources();
   for (size_t f = 0; f < sources.FileCount(); ++f) {
     const FileId id{static_cast<uint32_t>(f)};

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ enum class CheckFormat { Text, JsonLines, Sarif };
 struct CheckOptions {
   std::vector<std::string> paths;  // files and directories
   Options compile;                 // each file is compiled with these
+  std::optional<Format> input_format;  // -x, --format: each file's (unset: by its name)
   int jobs = 1;
   CheckFormat format = CheckFormat::Text;
   /// A JSON Lines report of an earlier run: files it lists as ok are skipped.

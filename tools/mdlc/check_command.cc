@@ -28,6 +28,15 @@ int Run(const CheckFlags& flags) {
   tools::CheckOptions check;
   if (int status = ToOptions(flags.compile, check.compile)) return status;
   check.paths = flags.compile.files;
+  if (flags.compile.input_format == "xacro") {
+    // a .xacro is told by its name, and a walk finds none
+    fmt::print(stderr, "mdlc: error: check reads xacro files by their names (.xacro); "
+                       "--format xacro names the format of one file for the other commands\n");
+    return 2;
+  }
+  if (!flags.compile.input_format.empty()) {
+    check.input_format = FormatFromName(flags.compile.input_format);
+  }
   check.jobs = flags.jobs > 0 ? flags.jobs : static_cast<int>(std::thread::hardware_concurrency());
   const std::string& format = flags.compile.output_format;
   check.format = format == "json"    ? tools::CheckFormat::JsonLines
