@@ -256,11 +256,11 @@ CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup) {
         }
         stream->Write(json ? FormatDiagnosticJson(d, s) + "\n" : FormatDiagnosticText(d, s, color));
       };
+    }
       break;
     case DiagnosticOutput::Collect:
       options.on_diagnostic = [&setup](const Diagnostic& d, const SourceManager&) {
         setup.collected->push_back(d);
-    }
       };
       break;
     case DiagnosticOutput::ErrorsAfter:
@@ -281,11 +281,11 @@ CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup) {
   }
   Result& result = KeepUntilExit(Compile(inputs, options));
   if (stream) stream->Finish();
+  if (stream && !json) TheRun().result = &result;  // its counts end the run
   if (setup.diagnostics == DiagnosticOutput::ErrorsAfter) {
     for (const Diagnostic& d : result.diagnostics()) {
       if (d.severity == Severity::Error) fmt::print(stderr, "{}", result.FormatText(d));
     }
-  if (stream && !json) TheRun().result = &result;  // its counts end the run
   }
   if (!result.ok() && !setup.keep_failed) return {ReportFailure(flags, result), &result};
   return {0, &result};
@@ -315,21 +315,21 @@ int WriteOutput(const std::string& output, const std::string& text) {
     std::fwrite(text.data(), 1, text.size(), stdout);
     return 0;
   }
-  std::ofstream out(output, std::ios::binary);
-  out << text;
-  if (!out) {
-    fmt::print(stderr, "mdlc: error: cannot write '{}': {}\n", output,
-               errno ? std::strerror(errno) : "writing it failed");
   errno = 0;
-    return 1;
+  std::ofstream out(output, std::ios::binary);
   if (!out) {
     // the system's reason: no such directory, permission denied, ...
     fmt::print(stderr, "mdlc: error: cannot write '{}': {}\n", output,
                errno ? std::strerror(errno) : "the file cannot be opened");
     return 1;
   }
-  }
+  out << text;
   out.flush();
+  if (!out) {
+    fmt::print(stderr, "mdlc: error: cannot write '{}': {}\n", output,
+               errno ? std::strerror(errno) : "writing it failed");
+    return 1;
+  }
   return 0;
 }
 

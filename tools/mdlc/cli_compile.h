@@ -87,13 +87,13 @@ CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup = 
 /// the end of the run (FinishDiagnostics).
 int ReportFailure(const CompileFlags& flags, const Result& result);
 
-/// Writes `text` to `output` (standard output when empty or '-'); 0, or 1
 /// The end of a run of the command line: the notes of the warnings that
 /// repeated and were not shown, then "N warnings and M errors generated." on
 /// standard error (text diagnostics only; a JSON reader counts them).
 /// Returns `status`; main calls it with the subcommand's exit status.
 int FinishDiagnostics(int status);
 
+/// Writes `text` to `output` (standard output when empty or '-'); 0, or 1
 /// (reported) when the file cannot be written.
 int WriteOutput(const std::string& output, const std::string& text);
 
