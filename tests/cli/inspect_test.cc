@@ -483,6 +483,16 @@ TEST_F(CheckTest, FormatNamesTheFilesFormat) {  // COMMON-005
   EXPECT_EQ(Mdlc("check --format xacro " + robot.string()).status, 2);
 }
 
+TEST_F(CheckTest, AWalkFindsGazeboWorlds) {
+  fs::create_directories(dir_ / "worlds");
+  std::ofstream(dir_ / "worlds" / "empty.world")
+      << "<sdf version='1.9'><world name='w'><model name='m'><static>true</static>"
+         "<link name='l'/></model></world></sdf>";
+  Outcome r = Mdlc("check " + (dir_ / "worlds").string());
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("empty.world: ok"), std::string::npos) << r.out;
+}
+
 TEST_F(CheckTest, SarifForCodeHosts) {
   Outcome r = Mdlc("check --format sarif " + Models());
   const json sarif = json::parse(r.out);

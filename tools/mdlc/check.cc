@@ -30,7 +30,8 @@ bool IsMjcf(const fs::path& file) {
 
 bool IsModelFile(const fs::path& file) {
   const std::string name = file.filename().string();
-  if (name.ends_with(".urdf") || name.ends_with(".sdf") || name.ends_with(".dmd.yaml")) {
+  if (name.ends_with(".urdf") || name.ends_with(".sdf") || name.ends_with(".world") ||
+      name.ends_with(".dmd.yaml")) {
     return true;
   }
   return name.ends_with(".xml") && IsMjcf(file);

@@ -31,7 +31,7 @@ struct CheckOptions {
 };
 
 /// The model files under `paths`: files as given, directories walked for
-/// .urdf, .sdf, .dmd.yaml and MJCF .xml files (those whose root is
+/// .urdf, .sdf, .world (Gazebo's), .dmd.yaml and MJCF .xml files (those whose root is
 /// <mujoco>), in sorted order.
 std::vector<std::string> FindModelFiles(const std::vector<std::string>& paths,
                                         std::vector<std::string>* unreadable);
