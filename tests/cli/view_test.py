@@ -174,10 +174,26 @@ def screenshot(browser, url, png, name):
     return png_pixels(png)
 
 
+# what a model's page is opened with beyond the common checks (issue 58), so
+# that they cost no browser run of their own: free_ball.xml opens at a --q
+# (jaw_hinge's range is [-10, 30] degrees: 1 rad is past it), drags its free
+# body's sliders (free joints are named after their bodies, as in Drake) and
+# selects a body
+EXTRAS = {
+    "free_ball": {
+        "flags": ["--q", "jaw_hinge=1.0", "--q", "shoulder_slide=0.03"],
+        "request": {"drag": [["box", "x", 0.3], ["box", "roll", 0.5], ["box", "pitch", 0.2],
+                             ["box", "yaw", -0.4]], "select": "lid"},
+        "hash": "#select=lid",
+    },
+}
+
+
 def test_model(mdlc, browser, model_path, work, shots):
     name = os.path.splitext(os.path.basename(model_path))[0]
+    extras = EXTRAS.get(name, {})
     page_path = os.path.join(work, name + ".html")
-    page = write_page(mdlc, model_path, page_path)
+    page = write_page(mdlc, model_path, page_path, *extras.get("flags", []))
     model = embedded_model(page)
     bodies, joints = model["bodies"], model["joints"]
     movable = [j for j in (joints[i] for i in model["joint_order"]) if j["nq"] == 1]
@@ -233,7 +249,8 @@ def test_model(mdlc, browser, model_path, work, shots):
     random_qs = [[generator.uniform(-1.5, 1.5) for _ in range(model["num_positions"])]
                  for _ in range(3)] if mdlc_python else []
 
-    request = {"qs": qs + random_qs, "slider": slider["scoped_name"], "value": slider_value}
+    request = {"qs": qs + random_qs, "slider": slider["scoped_name"], "value": slider_value,
+               **extras.get("request", {})}
     report = selftest(browser, page_path, request, name)
 
     # the page's poses against plant-json's, body by body
@@ -269,7 +286,8 @@ def test_model(mdlc, browser, model_path, work, shots):
 
     # a screenshot: the 3D view (right of the side panel) is not one colour
     png = os.path.join(shots, name + ".png")
-    width, height, channels, rows = screenshot(browser, "file://" + page_path, png, name)
+    width, height, channels, rows = screenshot(browser, "file://" + page_path +
+                                               extras.get("hash", ""), png, name)
     colours = set()
     for row in rows[::4]:
         for x in range(400, width, 4):
@@ -283,7 +301,7 @@ def test_model(mdlc, browser, model_path, work, shots):
     if name == "mesh_colors":
         check_mesh_colors(model, channels, rows)
     if name == "free_ball":
-        check_configuration(mdlc, browser, model_path, work, shots)
+        check_configuration(mdlc, model_path, model, report, png)
 
 
 def check_mesh_colors(model, channels, rows):
@@ -319,16 +337,10 @@ def rpy_quaternion(roll, pitch, yaw):
             cr * sp * cy + sr * cp * sy, cr * cp * sy - sr * sp * cy]
 
 
-def check_configuration(mdlc, browser, model_path, work, shots):
-    """--q, clamping, floating sliders and the selection panel (free_ball.xml)."""
+def check_configuration(mdlc, model_path, model, report, png):
+    """--q, clamping, floating sliders and the selection panel (free_ball.xml,
+    opened and driven as EXTRAS says)."""
     name = "free_ball --q"
-    page_path = os.path.join(work, "free_ball_q.html")
-    # jaw_hinge's range is [-10, 30] degrees: 1 rad is past it
-    model = embedded_model(write_page(mdlc, model_path, page_path, "--q", "jaw_hinge=1.0",
-                                      "--q", "shoulder_slide=0.03"))
-    # free joints are named after their bodies, as in Drake
-    drag = [["box", "x", 0.3], ["box", "roll", 0.5], ["box", "pitch", 0.2], ["box", "yaw", -0.4]]
-    report = selftest(browser, page_path, {"qs": [], "drag": drag, "select": "lid"}, name)
     opened = report["opened"]
     sliders = {(s["joint"].split("::")[-1], s["coordinate"]): s for s in opened["sliders"]}
     for joint in ("box", "torso"):  # <joint type="free"> and <freejoint/>
@@ -377,8 +389,6 @@ def check_configuration(mdlc, browser, model_path, work, shots):
           selection["top"] >= 0 and selection["right"] <= selection["width"] and
           selection["bottom"] <= selection["height"] and "lid" in selection["text"],
           f"{name}: the selected body's panel is not inside the window: {selection}")
-    png = os.path.join(shots, "free_ball_selected.png")
-    screenshot(browser, "file://" + page_path + "#select=lid", png, name)
     print(f"ok {name}: opened as plant-json at --q (error {worst:.1e}), jaw_hinge clamped to "
           f"{upper:.4f}; box dragged by x, roll, pitch, yaw; selection panel at "
           f"({selection['left']:.0f}, {selection['top']:.0f})-({selection['right']:.0f}, "

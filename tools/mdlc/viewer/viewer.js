@@ -303,17 +303,18 @@ function syncFloatingRpy() {
     floatingRpy.set(id, rpyOfRotation(quaternionRotation(q[s], q[s + 1], q[s + 2], q[s + 3])));
   });
 }
-// a joint's coordinates: name, read(), write(value), the q entry's limit index
-// (null: no limit of its own) and whether it is a length
+// a joint's coordinates: name, read(), write(value), offset (its q entry
+// within the joint's, which also indexes the joint's limits; null for a
+// quaternion's angles) and whether it is a length
 function coordinatesOf(joint, id) {
   const s = joint.q_start;
   const entry = (k, name, translational) => ({
-    name, translational, limit: k,
+    name, translational, offset: k,
     read: () => q[s + k], write: (value) => { q[s + k] = value; },
   });
   if (joint.type === 'quaternion_floating') {
     const angle = (k, name) => ({
-      name, translational: false, limit: null,
+      name, translational: false, offset: null,
       read: () => floatingRpy.get(id)[k],
       write: (value) => {
         const rpy = floatingRpy.get(id);
@@ -335,8 +336,8 @@ function coordinatesOf(joint, id) {
 // holds q to them), else a span that fits the model and widens to any value
 function rangeOf(joint, c) {
   // limits are per velocity; they match the positions wherever nq == nv
-  const limited = c.limit !== null && joint.nq === joint.lower.length;
-  let lo = limited ? joint.lower[c.limit] : null, hi = limited ? joint.upper[c.limit] : null;
+  const limited = c.offset !== null && joint.nq === joint.lower.length;
+  const lo = limited ? joint.lower[c.offset] : null, hi = limited ? joint.upper[c.offset] : null;
   const span = c.translational ? Math.max(1, size) : Math.PI;
   const loFixed = lo !== null && Number.isFinite(lo), hiFixed = hi !== null && Number.isFinite(hi);
   return { lo: loFixed ? lo : -span, hi: hiFixed ? hi : span, loFixed, hiFixed };
@@ -368,7 +369,7 @@ for (const id of model.joint_order) {
     row.className = 'slider';
     const name = document.createElement('span');
     name.textContent = label(joint) + (coordinate.name ? `.${coordinate.name}` : '');
-    const where = coordinate.limit === null ? 'its quaternion' : `q[${joint.q_start + coordinate.limit}]`;
+    const where = coordinate.offset === null ? 'its quaternion' : `q[${joint.q_start + coordinate.offset}]`;
     name.title = `${joint.scoped_name}: ${joint.type} joint, ${where}` + (joint.source ? `, ${joint.source}` : '') +
                  (joint.type === 'curvilinear' ? ' (shown at rest)' : '');
     const input = document.createElement('input');
