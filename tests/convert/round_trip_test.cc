@@ -215,9 +215,16 @@ constexpr Target kTargets[] = {
 };
 // The corpus is converted once per target, as a user loading the result in
 // the target's reference would: URDF as plain URDF (urdfdom reads the files,
-// tests/convert/CMakeLists.txt); Drake's URDF dialect is compared on the
-// project's own models (OwnRoundTrip) and the hand-made models below.
-constexpr Target kCorpusTargets[] = {kTargets[3], kTargets[1], kTargets[2]};
+// tests/convert/CMakeLists.txt), and also in Drake's URDF dialect, which
+// keeps what plain URDF approximates, compared but not given to urdfdom
+// (its files go to a folder of their own, DialectFolder).
+constexpr Target kCorpusTargets[] = {kTargets[3], kTargets[0], kTargets[1], kTargets[2]};
+
+/// Where a target's converted files go inside the output folder: Drake's
+/// URDF dialect apart from the plain URDF that urdfdom loads.
+fs::path DialectFolder(const fs::path& dir, const Target& to) {
+  return to.format == Format::Urdf && !to.plain ? dir / "drake_urdf" : dir;
+}
 
 /// The converted model against the original; failures are gtest failures.
 class Comparison {
@@ -402,7 +409,8 @@ Outcome RoundTrip(const ModelCase& mc, const Target& to, const fs::path& dir) {
   options.package_paths = {Corpus().string()};
   Result a = Compile(Input::File(mc.path.string()), options);
   if (!a.ok()) return Outcome::Rejected;  // which models are rejected is the corpus tests'
-  fs::path out = dir / OutputName(mc, to.extension);
+  fs::path out = DialectFolder(dir, to) / OutputName(mc, to.extension);
+  fs::create_directories(out.parent_path());
   ConvertOptions convert;
   if (to.own_folder) {
     const fs::path folder = dir / to.extension / out.stem();
