@@ -9,9 +9,6 @@
 #include <iterator>
 #include <system_error>
 
-#include "passes/mesh/mesh_cache.h"
-#include "passes/mesh/mesh_export.h"
-#include "passes/mesh/vtk_surface.h"
 
 namespace mdlc::writers {
 namespace fs = std::filesystem;
@@ -75,7 +72,7 @@ std::optional<std::string> AssetPaths::NameMesh(const std::string& uri,
   const std::string why = target.why_not(file);
   if (why.empty()) return Name(uri, resolved, loc);
   const bool kept_uri = options_.keep_package_uris && uri.starts_with("package://");
-  if (options_.copy_assets_dir && !kept_uri) {
+  if (options_.copy_assets_dir && !kept_uri && options_.meshes) {
     if (auto obj = ObjCopy(file, loc)) return Relative(*obj);
     return Name(uri, resolved, loc);  // UnconvertibleMesh() says why
   }
@@ -101,22 +98,12 @@ std::optional<fs::path> AssetPaths::ObjCopy(const fs::path& file, Loc loc) {
   if (auto it = obj_copies_.find(file); it != obj_copies_.end()) return it->second;
   if (unconvertible_.count(file)) return std::nullopt;
   // the triangles the compile read (its limits, its up-axis handling)
-  mesh::MeshOrError mesh;
-  if (mesh::IsVtk(file.string())) {
-    // a tetrahedral volume (Drake's compliant and deformable geometry),
-    // which no mesh reader of mdlc's reads: its boundary surface
-    mesh = mesh::ReadVtkSurface(file.string());
-  } else if (options_.meshes) {
-    mesh = options_.meshes->Get(file.string());
-  } else {
-    mesh::MeshCache defaults;
-    mesh = defaults.Get(file.string());
-  }
-  if (!mesh.ok()) {
-    unconvertible_[file] = mesh.error;
+  const ObjOrError obj = options_.meshes->ObjFor(file);
+  if (!obj.ok()) {
+    unconvertible_[file] = obj.error;
     return std::nullopt;
   }
-  auto copy = WriteCopy(mesh::ObjText(*mesh.mesh), file, ".obj", loc);
+  auto copy = WriteCopy(obj.obj, file, ".obj", loc);
   if (copy) obj_copies_[file] = *copy;
   return copy;
 }

@@ -6,8 +6,8 @@
 //
 // A mesh file the target cannot read (MuJoCo reads STL, OBJ and MSH only)
 // is, with --copy-assets, written as an OBJ of the triangles mdlc read from
-// it (passes/mesh/mesh_export.h), so the target loads the shape the plant
-// has; without --copy-assets it is named as it is, with a -Wlossy warning
+// it (WriteOptions::meshes, mesh_transcoder.h), so the target loads the
+// shape the plant has; without --copy-assets it is named as it is, with a -Wlossy warning
 // per file saying the target cannot read it. A mesh mdlc cannot read either
 // (an empty file) is left to the writer, which drops its geometry.
 #pragma once

@@ -10,7 +10,7 @@
 
 #include "backend/writers/mjcf_writer_detail.h"
 #include "ir/overloaded.h"
-#include "passes/mesh/mesh_export.h"
+#include "backend/writers/stl_header.h"
 
 namespace mdlc::writers::mjcf {
 namespace {
@@ -30,7 +30,7 @@ std::string WhyMujocoCannotRead(const std::filesystem::path& file) {
   head.resize(in.gcount());
   std::error_code ec;
   const auto size = std::filesystem::file_size(file, ec);
-  const auto faces = ec ? std::nullopt : mesh::BinaryStlTriangleCount(head, size);
+  const auto faces = ec ? std::nullopt : BinaryStlTriangleCount(head, size);
   if (!faces) return "MuJoCo reads binary STL only, and this one is ASCII";
   if (*faces > kMujocoMaxStlFaces) {
     return fmt::format("MuJoCo reads at most {} faces from an STL file and it has {}",

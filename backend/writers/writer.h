@@ -14,13 +14,10 @@
 #include <string>
 
 #include "backend/compiled_model.h"
+#include "backend/writers/mesh_transcoder.h"
 #include "ir/diagnostics.h"
 #include "ir/format.h"
 #include "ir/module.h"
-
-namespace mdlc::mesh {
-class MeshCache;
-}
 
 namespace mdlc::writers {
 
@@ -34,9 +31,10 @@ struct WriteOptions {
   /// name the copies instead of the originals; a mesh the target cannot
   /// read is written as an OBJ of the triangles mdlc read (asset_paths.h).
   std::optional<std::filesystem::path> copy_assets_dir;
-  /// The compile's meshes, read as it read them (its limits and up-axis
-  /// handling), for those OBJ copies; null: read with the default settings.
-  mesh::MeshCache* meshes = nullptr;
+  /// Gives those OBJ copies, from the meshes as the compile read them (its
+  /// limits and up-axis handling); null: such a mesh is named as it is,
+  /// with the warning given without --copy-assets.
+  MeshTranscoder* meshes = nullptr;
   /// Keep package:// URIs as written instead of naming the files.
   bool keep_package_uris = false;
   /// MJCF: fuse each body welded to its parent (not the world) into it

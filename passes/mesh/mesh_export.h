@@ -10,10 +10,7 @@
 // geom has one rgba, and it computes its own normals).
 #pragma once
 
-#include <cstdint>
-#include <optional>
 #include <string>
-#include <string_view>
 
 #include "passes/mesh/triangle_mesh.h"
 
@@ -22,9 +19,5 @@ namespace mdlc::mesh {
 /// `mesh` as Wavefront OBJ text: one `v` line per vertex (shortest text that
 /// reads back as the same double) and one `f` line per triangle (1-based).
 std::string ObjText(const TriangleMesh& mesh);
-
-/// The number of triangles a binary STL file declares in its header; nullopt
-/// when `head` (the file's first 84 bytes or more) is not one (ASCII STL).
-std::optional<uint32_t> BinaryStlTriangleCount(std::string_view head, uint64_t file_size);
 
 }  // namespace mdlc::mesh

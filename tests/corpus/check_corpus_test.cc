@@ -23,14 +23,15 @@ using nlohmann::json;
 using mdlc::corpus_test::Corpus;
 
 /// The model files check.h says a folder walk finds, found here without
-/// mdlc: .urdf, .sdf and .dmd.yaml files, and .xml files with a <mujoco>
+/// mdlc: .urdf, .sdf, .world and .dmd.yaml files, and .xml files with a <mujoco>
 /// root near their start, in sorted path order.
 std::vector<std::string> ModelFiles(const fs::path& root) {
   std::vector<std::string> files;
   for (const auto& entry : fs::recursive_directory_iterator(root)) {
     if (!entry.is_regular_file()) continue;
     const std::string name = entry.path().filename().string();
-    bool model = name.ends_with(".urdf") || name.ends_with(".sdf") || name.ends_with(".dmd.yaml");
+    bool model = name.ends_with(".urdf") || name.ends_with(".sdf") || name.ends_with(".world") ||
+                 name.ends_with(".dmd.yaml");
     if (!model && name.ends_with(".xml")) {
       std::ifstream in(entry.path(), std::ios::binary);
       std::string head(4096, '\0');

@@ -250,9 +250,9 @@ constexpr Expectation kSdf[] = {
    "COMMON-007: 'bad' in a pose is no number"},
   {"sdformat/test/sdf/bad_syntax_vector.sdf", false, "<gravity> must hold 3 numbers",
    "COMMON-007: 'bad' in <gravity> is no number"},
-  {"sdformat/test/sdf/box_bad_test.world", false, "unknown file extension",
-   "COMMON-005: .world is no model extension; the error is about the file name, so it has no "
-   "line", false},
+  {"sdformat/test/sdf/box_bad_test.world", false, "missing required attribute 'name'",
+   "SDF-002: <link> without name (a .world file is SDFormat for mdlc, where Drake refuses the "
+   "extension: README, deliberate differences)"},
   {"sdformat/test/sdf/empty_invalid.sdf", false, "<sdf> root element",
    "COMMON-006: the root is <sdfgarbage>"},
   {"sdformat/test/sdf/empty_noversion.sdf", false, "missing required attribute 'version'",

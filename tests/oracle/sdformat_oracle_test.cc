@@ -841,8 +841,6 @@ constexpr KnownDisagreement kKnownDisagreements[] = {
     {"sdformat/test/integration/model/model_without_top_level/model.sdf",
      "SDF-002: a file with no <model> or <world> is an error (libsdformat 12 accepts an empty "
      "<sdf>)"},
-    {"sdformat/test/sdf/box_plane_low_friction_test.world",
-     "COMMON: the format is chosen by extension and .world is not one of them (Drake agrees)"},
     {"drake/multibody/parsing/test/sdf_parser_test/negative_damping_joint.sdf",
      "SDF-013: negative joint damping is an error"},
     {"sdformat/test/integration/model/model_with_custom_elements/model.sdf",

@@ -13,7 +13,7 @@
 #include "frontend/assets/package_scan.h"
 #include "frontend/xacro/xacro.h"
 #include "tools/driver/compiler.h"
-#include "frontend/xacro/xacro.h"
+#include "tools/driver/obj_transcoder.h"
 
 namespace mdlc {
 
@@ -289,7 +289,8 @@ std::optional<std::string> Result::Convert(const ConvertOptions& options) {
   write.keep_package_uris = options.keep_package_uris;
   write.fuse_fixed = options.fuse_fixed;
   write.plain = options.plain;
-  write.meshes = compilation_->meshes.get();
+  ObjTranscoder meshes(*compilation_->meshes);
+  write.meshes = &meshes;
   return writers::Write(*compilation_->model, compilation_->module, write, compilation_->diags);
 }
 

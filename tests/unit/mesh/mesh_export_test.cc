@@ -2,7 +2,8 @@
 // file mdlc writes for a target that cannot read the original (MuJoCo and
 // COLLADA, glTF or PLY) reads back as exactly the triangles mdlc read from
 // the original, and a binary STL's declared face count is read from its
-// header (MuJoCo refuses an STL of more than 200000 faces).
+// header (backend/writers/stl_header.h; MuJoCo refuses an STL of more than
+// 200000 faces).
 #include "passes/mesh/mesh_export.h"
 
 #include <gtest/gtest.h>
@@ -12,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "backend/writers/stl_header.h"
 #include "passes/mesh/in_process_reader.h"
 #include "tests/unit/mesh/mesh_test_util.h"
 
@@ -74,10 +76,10 @@ TEST_F(MeshExportTest, BinaryStlTriangleCountComesFromTheHeader) {
     return s.str();
   };
   const std::string binary = head(MeshPath("box_binary.stl"));
-  EXPECT_EQ(mesh::BinaryStlTriangleCount(binary, binary.size()), 12u);
+  EXPECT_EQ(writers::BinaryStlTriangleCount(binary, binary.size()), 12u);
   const std::string ascii = head(MeshPath("box_ascii.stl"));
-  EXPECT_EQ(mesh::BinaryStlTriangleCount(ascii, ascii.size()), std::nullopt);
-  EXPECT_EQ(mesh::BinaryStlTriangleCount("solid", 5), std::nullopt);  // too short
+  EXPECT_EQ(writers::BinaryStlTriangleCount(ascii, ascii.size()), std::nullopt);
+  EXPECT_EQ(writers::BinaryStlTriangleCount("solid", 5), std::nullopt);  // too short
 }
 
 }  // namespace
