@@ -53,21 +53,10 @@ int WriteGraph(const GraphFlags& flags, const backend::CompiledModel& model) {
 }
 
 int Run(const GraphFlags& flags) {
-  CompileSetup setup;
-  setup.keep_failed = true;  // drawn as far as it compiled
-  const CliCompile compiled = CompileForCli(flags.compile, setup);
-  if (!compiled.result) return compiled.status;
-  const Result& result = *compiled.result;
-  const backend::CompiledModel* model = ModelAsFarAsCompiled(result);
-  int status = 0;
-  if (model) {
-    if (!result.ok()) {
-      fmt::print(stderr, "mdlc: note: graph of the model as far as it compiled; what the "
-                         "errors above name is left out\n");
-    }
-    status = WriteGraph(flags, *model);
-  }
-  return result.ok() ? status : ReportFailure(flags.compile, result);
+  return PrintAsFarAsCompiled(flags.compile, "graph",
+                              [&](const backend::CompiledModel& model, const Result&) {
+                                return WriteGraph(flags, model);
+                              });
 }
 
 }  // namespace

@@ -3,8 +3,6 @@
 // A model that failed to compile is printed as far as it compiled (a mesh
 // in an unknown package leaves the tree whole), after its errors; the exit
 // status is then 1.
-#include <fmt/format.h>
-
 #include <memory>
 
 #include "cli_compile.h"
@@ -24,23 +22,10 @@ struct InspectFlags {
 };
 
 int Inspect(const InspectFlags& flags, const char* name, Formatter format) {
-  CompileSetup setup;
-  setup.keep_failed = true;  // printed as far as it compiled
-  const CliCompile compiled = CompileForCli(flags.compile, setup);
-  if (!compiled.result) return compiled.status;
-  const Result& result = *compiled.result;
-  const backend::CompiledModel* model = ModelAsFarAsCompiled(result);
-  int status = 0;
-  if (model) {
-    if (!result.ok()) {
-      fmt::print(stderr,
-                 "mdlc: note: {} of the model as far as it compiled; what the errors "
-                 "above name is left out\n",
-                 name);
-    }
-    status = WriteOutput(flags.output, format(*model, result));
-  }
-  return result.ok() ? status : ReportFailure(flags.compile, result);
+  return PrintAsFarAsCompiled(flags.compile, name,
+                              [&](const backend::CompiledModel& model, const Result& result) {
+                                return WriteOutput(flags.output, format(model, result));
+                              });
 }
 
 Subcommand AddInspectCommand(CLI::App& app, const char* name, const char* description,

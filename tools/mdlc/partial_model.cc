@@ -1,6 +1,10 @@
 // partial_model.cc - see partial_model.h.
 #include "partial_model.h"
 
+#include <fmt/format.h>
+
+#include <cstdio>
+
 #include "backend/backend.h"
 #include "ir/verifier.h"
 
@@ -16,6 +20,28 @@ const backend::CompiledModel* ModelAsFarAsCompiled(const Result& result) {
   static std::optional<backend::CompiledModel> partial;  // a command prints one model
   partial = backend::Instantiate(result.module(), unreported);
   return partial ? &*partial : nullptr;
+}
+
+int PrintAsFarAsCompiled(
+    const CompileFlags& flags, const char* what,
+    const std::function<int(const backend::CompiledModel&, const Result&)>& print) {
+  CompileSetup setup;
+  setup.keep_failed = true;  // printed as far as it compiled
+  const CliCompile compiled = CompileForCli(flags, setup);
+  if (!compiled.result) return compiled.status;
+  const Result& result = *compiled.result;
+  const backend::CompiledModel* model = ModelAsFarAsCompiled(result);
+  int status = 0;
+  if (model) {
+    if (!result.ok()) {
+      fmt::print(stderr,
+                 "mdlc: note: {} of the model as far as it compiled; what the errors "
+                 "above name is left out\n",
+                 what);
+    }
+    status = print(*model, result);
+  }
+  return result.ok() ? status : ReportFailure(flags, result);
 }
 
 }  // namespace mdlc::cli

@@ -4,8 +4,10 @@
 // reported and exit status 1.
 #pragma once
 
+#include <functional>
 #include <optional>
 
+#include "cli_compile.h"
 #include "mdlc/mdlc.h"
 
 namespace mdlc::cli {
@@ -17,5 +19,12 @@ namespace mdlc::cli {
 /// null when it is not. Meshes that were not found are kept without a file;
 /// mass properties the failed passes would have computed are missing.
 const backend::CompiledModel* ModelAsFarAsCompiled(const Result& result);
+
+/// What tree, stats and graph share: compiles the flags' files, hands
+/// `print` the model as far as it compiled (with a note on standard error
+/// naming `what` when the compile failed), and returns the exit status:
+/// print's when the compile succeeded, else 1 after "N errors generated."
+int PrintAsFarAsCompiled(const CompileFlags& flags, const char* what,
+                         const std::function<int(const backend::CompiledModel&, const Result&)>& print);
 
 }  // namespace mdlc::cli
