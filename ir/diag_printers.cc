@@ -4,18 +4,20 @@
 #include <string>
 
 #include "ir/diagnostics.h"
+#include "ir/location_text.h"
 #include "ir/source_manager.h"
 
 namespace mdlc {
-namespace {
 
-std::string LocPrefix(Loc loc, const SourceManager& sources) {
+std::string LocationText(Loc loc, const SourceManager& sources) {
   if (!loc.valid()) return "mdlc";
   std::string out = sources.Path(loc.file);
   if (loc.line) out += fmt::format(":{}", loc.line);
   if (loc.line && loc.column) out += fmt::format(":{}", loc.column);
   return out;
 }
+
+namespace {
 
 // the source line and a caret under the column (tabs kept so the caret lines up)
 void AppendSnippet(std::string& out, Loc loc, const SourceManager& sources) {
@@ -35,7 +37,7 @@ void AppendIncludeChain(std::string& out, Loc loc, const SourceManager& sources)
   if (!loc.valid()) return;
   for (Loc from = sources.IncludedFrom(loc.file); from.valid();
        from = sources.IncludedFrom(from.file)) {
-    out += fmt::format("in file included from {}:\n", LocPrefix(from, sources));
+    out += fmt::format("in file included from {}:\n", LocationText(from, sources));
   }
 }
 
@@ -47,7 +49,7 @@ void AppendExpansionNotes(std::string& out, Loc loc, const SourceManager& source
   for (FileId file = loc.file; file.valid() && sources.IsExpansion(file) && shown < kMaxShown;
        ++shown) {
     const Loc at = sources.ExpandedAt(file);
-    out += fmt::format("{}: note: {}\n", LocPrefix(at, sources), sources.ExpansionNote(file));
+    out += fmt::format("{}: note: {}\n", LocationText(at, sources), sources.ExpansionNote(file));
     AppendSnippet(out, at, sources);
     file = at.file;
   }
@@ -100,16 +102,16 @@ std::string FormatDiagnosticText(const Diagnostic& diag, const SourceManager& so
     flag = fmt::format(" [-W{}]", info.group);
   }
   if (color) {
-    out += fmt::format("\033[1m{}: {}{}:\033[0m\033[1m {}{}\033[0m\n", LocPrefix(diag.loc, sources),
+    out += fmt::format("\033[1m{}: {}{}:\033[0m\033[1m {}{}\033[0m\n", LocationText(diag.loc, sources),
                        sev_color, SeverityName(diag.severity), diag.message, flag);
   } else {
-    out += fmt::format("{}: {}: {}{}\n", LocPrefix(diag.loc, sources),
+    out += fmt::format("{}: {}: {}{}\n", LocationText(diag.loc, sources),
                        SeverityName(diag.severity), diag.message, flag);
   }
   AppendSnippet(out, diag.loc, sources);
   AppendExpansionNotes(out, diag.loc, sources);
   for (const auto& note : diag.notes) {
-    out += fmt::format("{}: note: {}\n", LocPrefix(note.loc, sources), note.message);
+    out += fmt::format("{}: note: {}\n", LocationText(note.loc, sources), note.message);
     AppendSnippet(out, note.loc, sources);
   }
   return out;

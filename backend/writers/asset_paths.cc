@@ -69,7 +69,10 @@ std::optional<std::string> AssetPaths::NameMesh(const std::string& uri,
   if (resolved.empty()) return Name(uri, resolved, loc);
   std::error_code ec;
   const fs::path file = fs::weakly_canonical(fs::absolute(resolved, ec), ec);
-  const std::string why = target.why_not(file);
+  // asked once per file: a target's verdict may read the file's header
+  auto [verdict, first] = target_verdicts_.try_emplace(file);
+  if (first) verdict->second = target.why_not(file);
+  const std::string& why = verdict->second;
   if (why.empty()) return Name(uri, resolved, loc);
   const bool kept_uri = options_.keep_package_uris && uri.starts_with("package://");
   if (options_.copy_assets_dir && !kept_uri && options_.meshes) {

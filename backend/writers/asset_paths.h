@@ -67,6 +67,7 @@ class AssetPaths {
   std::map<std::string, std::filesystem::path> copies_by_content_;  // content -> copy
   std::map<std::filesystem::path, std::filesystem::path> obj_copies_;  // original -> OBJ
   std::map<std::filesystem::path, std::string> unconvertible_;        // original -> why
+  std::map<std::filesystem::path, std::string> target_verdicts_;      // original -> why_not
   std::set<std::filesystem::path> unreadable_reported_;
 };
 

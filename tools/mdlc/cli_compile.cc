@@ -15,6 +15,7 @@
 #include "cli_input.h"
 #include "diagnostic_stream.h"
 #include "ir/count_text.h"
+#include "ir/location_text.h"
 #include "ir/source_manager.h"
 #include "repeated_warnings.h"
 
@@ -57,15 +58,6 @@ struct RunDiagnostics {
 RunDiagnostics& TheRun() {
   static RunDiagnostics run;
   return run;
-}
-
-// "file:line:col" as the diagnostic's own first line says it
-std::string LocationText(Loc loc, const SourceManager& sources) {
-  if (!loc.valid()) return "mdlc";
-  std::string out = sources.Path(loc.file);
-  if (loc.line) out += fmt::format(":{}", loc.line);
-  if (loc.line && loc.column) out += fmt::format(":{}", loc.column);
-  return out;
 }
 
 // --package NAME=DIR, --package-path DIR, and the ROS environment
@@ -241,10 +233,10 @@ CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup) {
   std::shared_ptr<DiagnosticStream> stream;
   switch (setup.diagnostics) {
     case DiagnosticOutput::Stream:
+    {
       stream = std::make_shared<DiagnosticStream>([](std::string_view text) {
         std::fwrite(text.data(), 1, text.size(), stderr);
       });
-    {
       // JSON is never collapsed: its reader wants every diagnostic
       const bool collapse = !json && CollapsesRepeats(flags);
       options.on_diagnostic = [json, color, collapse, stream](const Diagnostic& d,
@@ -256,8 +248,8 @@ CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup) {
         }
         stream->Write(json ? FormatDiagnosticJson(d, s) + "\n" : FormatDiagnosticText(d, s, color));
       };
-    }
       break;
+    }
     case DiagnosticOutput::Collect:
       options.on_diagnostic = [&setup](const Diagnostic& d, const SourceManager&) {
         setup.collected->push_back(d);
