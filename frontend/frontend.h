@@ -10,7 +10,7 @@
 #include <vector>
 #include <string>
 
-#include "frontend/assets/package_map.h"
+#include "ir/assets/package_map.h"
 #include "frontend/xml/document_cache.h"
 #include "ir/diagnostics.h"
 #include "ir/format.h"

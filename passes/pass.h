@@ -9,7 +9,7 @@
 #include <memory>
 #include <string_view>
 
-#include "frontend/assets/package_map.h"
+#include "ir/assets/package_map.h"
 #include "ir/diagnostics.h"
 #include "ir/module.h"
 #include "ir/source_manager.h"

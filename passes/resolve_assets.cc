@@ -23,7 +23,7 @@
 #include <filesystem>
 #include <unordered_map>
 
-#include "frontend/assets/package_map.h"
+#include "ir/assets/package_map.h"
 #include "passes/pass_registry.h"
 
 namespace mdlc::passes {

@@ -20,7 +20,7 @@
 #include "frontend/frontend.h"
 #include "frontend/xacro/xacro.h"
 #include "frontend/model_naming.h"
-#include "frontend/assets/package_map.h"
+#include "ir/assets/package_map.h"
 #include "ir/load_report.h"
 #include "ir/scoped_name.h"
 

@@ -14,7 +14,7 @@
 #include <filesystem>
 #include <unordered_map>
 
-#include "frontend/assets/package_map.h"
+#include "ir/assets/package_map.h"
 #include "frontend/sdf/model_folder.h"
 #include "frontend/sdf/sdf_reader_detail.h"
 #include "frontend/xml/trim.h"

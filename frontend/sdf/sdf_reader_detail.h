@@ -28,7 +28,7 @@
 #include <absl/container/flat_hash_map.h>
 
 #include "frontend/frontend.h"
-#include "frontend/assets/package_map.h"
+#include "ir/assets/package_map.h"
 #include "frontend/xml/attribute_reader.h"
 #include "frontend/xml/xml_document.h"
 

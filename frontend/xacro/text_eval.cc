@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "frontend/assets/package_map.h"
+#include "ir/assets/package_map.h"
 #include "frontend/pyexpr/builtins.h"
 #include "frontend/pyexpr/number_text.h"
 #include "frontend/pyexpr/yaml_values.h"

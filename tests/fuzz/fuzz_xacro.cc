@@ -31,7 +31,7 @@
 #include <string>
 #include <string_view>
 
-#include "frontend/assets/package_map.h"
+#include "ir/assets/package_map.h"
 #include "frontend/xacro/xacro.h"
 #include "frontend/xml/xml_document.h"
 #include "ir/diagnostics.h"

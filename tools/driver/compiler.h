@@ -19,7 +19,7 @@
 
 #include "backend/backend.h"
 #include "frontend/frontend.h"
-#include "frontend/assets/package_map.h"
+#include "ir/assets/package_map.h"
 #include "ir/diagnostics.h"
 #include "ir/module.h"
 #include "ir/source_manager.h"

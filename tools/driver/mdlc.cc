@@ -10,7 +10,7 @@
 #include "backend/mass_matrix.h"
 #include "backend/positions.h"
 #include "backend/writers/writer.h"
-#include "frontend/assets/package_scan.h"
+#include "ir/assets/package_scan.h"
 #include "frontend/xacro/xacro.h"
 #include "tools/driver/compiler.h"
 #include "tools/driver/obj_transcoder.h"

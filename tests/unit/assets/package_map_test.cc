@@ -1,5 +1,5 @@
 // PackageMap and URI resolution (COMMON-010..014).
-#include "frontend/assets/package_map.h"
+#include "ir/assets/package_map.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>

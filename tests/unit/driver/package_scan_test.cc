@@ -12,7 +12,7 @@
 #include <variant>
 #include <vector>
 
-#include "frontend/assets/package_scan.h"
+#include "ir/assets/package_scan.h"
 #include "mdlc/mdlc.h"
 
 namespace mdlc {

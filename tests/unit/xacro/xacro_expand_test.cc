@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "frontend/assets/package_map.h"
+#include "ir/assets/package_map.h"
 #include "frontend/xacro/macro_params.h"
 #include "frontend/xacro/xacro.h"
 #include "frontend/xml/xml_document.h"

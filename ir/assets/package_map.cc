@@ -1,4 +1,4 @@
-#include "frontend/assets/package_map.h"
+#include "ir/assets/package_map.h"
 
 #include <fmt/format.h>
 
@@ -8,8 +8,7 @@
 #include <filesystem>
 #include <system_error>
 
-#include "frontend/xml/trim.h"
-#include "frontend/xml/xml_document.h"
+#include "ir/assets/package_manifest.h"
 #include "ir/count_text.h"
 #include "ir/load_report.h"
 
@@ -43,12 +42,20 @@ bool PackageMap::Add(const std::string& name, const std::string& path, Diagnosti
 }
 
 namespace {
-// The package a parsed package.xml names: its <package> root's <name>,
-// trimmed; nullopt when the root is not <package> or the name is empty.
-std::optional<std::string> ManifestPackageName(xml::XmlElement root) {
-  if (root.Name() != "package") return std::nullopt;
-  xml::XmlElement name = root.Child("name");
-  std::string text(xml::Trim(name ? name.Text() : std::string()));
+// `s` without XML's white space (space, tab, newline, carriage return)
+// around it, as the format readers trim text.
+std::string_view TrimXmlSpace(std::string_view s) {
+  auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+  while (!s.empty() && space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && space(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+// The package a package.xml names: its <package> root's <name>, trimmed;
+// nullopt when the root is not <package> or the name is empty.
+std::optional<std::string> ManifestPackageName(const PackageManifest& manifest) {
+  if (manifest.root != "package") return std::nullopt;
+  std::string text(TrimXmlSpace(manifest.name ? *manifest.name : std::string()));
   if (text.empty()) return std::nullopt;
   return text;
 }
@@ -64,28 +71,24 @@ void PackageMap::AddFromManifest(const ManifestFile& manifest, SourceManager& so
     ReportLoadError(diags, {}, error, fmt::format("cannot read '{}'", manifest.path));
     return;
   }
-  auto doc = xml::XmlDocument::Parse(*file, sources, diags);
-  if (!doc) return;
-  xml::XmlElement root = doc->Root();
-  const std::optional<std::string> named = ManifestPackageName(root);
+  const std::optional<PackageManifest> read = ReadPackageManifest(*file, sources, diags);
+  if (!read) return;
+  const std::optional<std::string> named = ManifestPackageName(*read);
   if (!named) {
-    diags.Report(DiagKind::MissingElement, root.GetLoc(),
+    diags.Report(DiagKind::MissingElement, read->root_at,
                  "package.xml must be a <package> with a non-empty <name>");
     return;
   }
   const std::string& text = *named;
-  xml::XmlElement name = root.Child("name");
-  std::optional<std::string> deprecated;
-  if (auto exp = root.Child("export")) {
-    if (auto dep = exp.Child("deprecated")) deprecated = dep.Text();
-  }
+  const Loc name_at = read->name_at;
+  std::optional<std::string> deprecated = read->deprecated;
   const std::string& normal = manifest.dir;
   auto it = packages_.find(text);
   if (it != packages_.end()) {
     if (it->second.path != normal) {
       // the first one found wins (COMMON-013)
       auto diag = diags.Report(
-          DiagKind::RenamedDuplicate, name.GetLoc(),
+          DiagKind::RenamedDuplicate, name_at,
           fmt::format("package '{}' found again at '{}'; keeping the first, at '{}'", text,
                       normal, it->second.path));
       if (it->second.defined_at.valid()) diag.Note(it->second.defined_at, "first defined here");
@@ -93,7 +96,7 @@ void PackageMap::AddFromManifest(const ManifestFile& manifest, SourceManager& so
     }
     return;
   }
-  packages_.emplace(text, Package{normal, std::move(deprecated), name.GetLoc()});
+  packages_.emplace(text, Package{normal, std::move(deprecated), name_at});
 }
 
 void PackageMap::PopulateFromFolder(const std::string& root, SourceManager& sources,
@@ -219,8 +222,8 @@ std::optional<fs::path> EnclosingPackageNamed(std::string_view name, const std::
       SourceManager sources;
       DiagnosticEngine quiet;
       if (auto file = sources.LoadFile(manifest.string())) {
-        if (auto doc = xml::XmlDocument::Parse(*file, sources, quiet)) {
-          if (ManifestPackageName(doc->Root()) == name) return dir;
+        if (auto read = ReadPackageManifest(*file, sources, quiet)) {
+          if (ManifestPackageName(*read) == name) return dir;
         }
       }
     }

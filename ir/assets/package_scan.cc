@@ -1,5 +1,5 @@
 // package_scan.cc - see package_scan.h.
-#include "frontend/assets/package_scan.h"
+#include "ir/assets/package_scan.h"
 
 #include <algorithm>
 #include <filesystem>

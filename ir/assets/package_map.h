@@ -16,7 +16,7 @@
 #include <string_view>
 #include <vector>
 
-#include "frontend/assets/package_scan.h"
+#include "ir/assets/package_scan.h"
 #include "ir/diagnostics.h"
 #include "ir/source_manager.h"
 
