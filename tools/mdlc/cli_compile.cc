@@ -17,28 +17,22 @@
 #include "ir/count_text.h"
 #include "ir/location_text.h"
 #include "ir/source_manager.h"
+#include "mdlc/option_names.h"
 #include "repeated_warnings.h"
 
 namespace mdlc::cli {
 namespace {
 
-// -Werror, -Werror=GROUP, -Wno-GROUP, -WGROUP (enable: the default)
-bool ApplyWarningFlags(const CompileFlags& flags, DiagnosticPolicy& policy, std::string* bad) {
+// --strict, --max-errors, and each -W flag: -Werror, -Werror=GROUP,
+// -Wno-GROUP, -WGROUP (enabled: the default); a group no diagnostic has is
+// an error (option_names.h), not a flag that quietly does nothing
+std::optional<std::string> ApplyWarningFlags(const CompileFlags& flags, DiagnosticPolicy& policy) {
   policy.warnings_as_errors = flags.strict;
   policy.max_errors = flags.max_errors;
   for (const std::string& flag : flags.warning_flags) {
-    if (flag == "error") {
-      policy.warnings_as_errors = true;
-    } else if (flag.starts_with("error=")) {
-      policy.error_groups.insert(flag.substr(6));
-    } else if (flag.starts_with("no-")) {
-      policy.disabled_groups.insert(flag.substr(3));
-    } else if (flag.empty()) {
-      *bad = "-W needs a value";
-      return false;
-    }
+    if (auto problem = ApplyWarningFlag(policy, flag, "-W" + flag)) return problem;
   }
-  return true;
+  return std::nullopt;
 }
 
 // -fno-collapse shows every repeat of a warning; -fcollapse, the default,
@@ -157,16 +151,15 @@ void AddCompileFlags(CLI::App* command, CompileFlags& flags) {
                       "include-depth, model-depth, mesh-vertices, mesh-seconds, macro-depth, "
                       "expansion-nodes (see the README)")
       ->allow_extra_args(false);
+  // the values of these two are checked by ToOptions, which suggests a near one
   command
       ->add_option("--mesh-reader", flags.mesh_reader,
                    "Read mesh files in a child process (process, the default: a crash of the "
-                   "mesh importer is an error about the file) or in-process")
-      ->check(CLI::IsMember({"process", "in-process"}));
+                   "mesh importer is an error about the file) or in-process");
   command
       ->add_option("--collada-up-axis", flags.collada_up_axis,
                    "COLLADA meshes: as-written (the default, as RViz and Gazebo show them) or "
-                   "apply (turn a file's declared X_UP or Y_UP to Z-up)")
-      ->check(CLI::IsMember({"as-written", "apply"}));
+                   "apply (turn a file's declared X_UP or Y_UP to Z-up)");
   command->add_option("--model-name", flags.model_name, "Name the model instance this");
   command->add_flag("--auto-rename", flags.auto_rename,
                     "Rename a model whose name is taken to NAME_1, NAME_2, ...");
@@ -191,22 +184,20 @@ void AddJsonAlias(CLI::App* command, CompileFlags& flags) {
 }
 
 int ToOptions(const CompileFlags& flags, Options& options) {
-  std::string bad;
-  if (!ApplyWarningFlags(flags, options.diagnostics, &bad)) {
-    fmt::print(stderr, "mdlc: error: {}\n", bad);
+  std::optional<std::string> problem = ApplyWarningFlags(flags, options.diagnostics);
+  for (const std::string& setting : flags.limits) {
+    if (!problem) problem = ApplyLimitSetting(options.limits, setting, "--limit");
+  }
+  if (!problem) problem = ParseMeshReader(flags.mesh_reader, "--mesh-reader", options.mesh_reader);
+  if (!problem) {
+    problem = ParseColladaUpAxis(flags.collada_up_axis, "--collada-up-axis",
+                                 options.collada_up_axis);
+  }
+  if (problem) {
+    fmt::print(stderr, "mdlc: error: {}\n", *problem);
     return 2;
   }
   if (!ParsePackages(flags, options)) return 2;
-  for (const std::string& setting : flags.limits) {
-    if (auto problem = SetLimit(options.limits, setting)) {
-      fmt::print(stderr, "mdlc: error: --limit: {}\n", *problem);
-      return 2;
-    }
-  }
-  options.mesh_reader =
-      flags.mesh_reader == "in-process" ? MeshReader::InProcess : MeshReader::Process;
-  options.collada_up_axis =
-      flags.collada_up_axis == "apply" ? ColladaUpAxis::Apply : ColladaUpAxis::AsWritten;
   options.model_name = flags.model_name;
   options.auto_rename = flags.auto_rename;
   options.fixed_base = flags.fixed_base;

@@ -5,8 +5,11 @@
 
 #include <cstdlib>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "ir/printer.h"
+#include "mdlc/option_names.h"
 #include "cli_compile.h"
 #include "q_flag.h"
 #include "subcommands.h"
@@ -31,9 +34,24 @@ struct CompileCommandFlags {
   bool no_locations = false;
 };
 
+// --passes and --print-after name passes; a misspelt one would run a
+// pipeline that fails on it, or print nothing, so it is bad usage instead
+bool CheckPassNames(const CompileCommandFlags& flags) {
+  std::optional<std::string> problem;
+  for (const std::string& name : flags.passes) {
+    if (!problem) problem = CheckPassName(name, "--passes");
+  }
+  for (const std::string& name : flags.print_after) {
+    if (!problem) problem = CheckPassName(name, "--print-after");
+  }
+  if (problem) fmt::print(stderr, "mdlc: error: {}\n", *problem);
+  return !problem;
+}
+
 int Run(const CompileCommandFlags& flags) {
   Options joint_positions;
   if (!ParseJointPositions(flags.q, joint_positions)) return 2;
+  if (!CheckPassNames(flags)) return 2;
 
   std::vector<Diagnostic> collected;
   CompileSetup setup;

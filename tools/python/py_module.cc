@@ -1,15 +1,19 @@
-// py_module.cc - the extension module mdlc._mdlc: compile(), expand_xacro()
-// and Diagnostic.
+// py_module.cc - the extension module mdlc._mdlc: compile() (its options by
+// keyword, checked as the command line checks its flags), expand_xacro() and
+// Diagnostic.
 // The package mdlc (mdlc/__init__.py) wraps it with the Python-facing API:
 // argument handling and the CompileError exception.
 #include <pybind11/eigen.h>
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "mdlc/option_names.h"
 #include "py_model.h"
 
 namespace mdlc::python {
@@ -46,6 +50,138 @@ std::optional<Format> ParseFormat(const std::optional<std::string>& name) {
   if (auto format = FormatFromName(*name)) return format;
   if (*name == "dmd.yaml") return Format::Directives;  // accepted since the module's first release
   throw py::value_error("unknown format '" + *name + "'; expected " + std::string(kFormatNames));
+}
+
+// -- the keyword options of mdlc.compile(), checked by the same code as the
+// command line's flags (mdlc/option_names.h)
+
+std::string TypeName(py::handle value) {
+  return py::str(value.get_type().attr("__name__")).cast<std::string>();
+}
+
+[[noreturn]] void WrongType(const std::string& function, const std::string& keyword,
+                            const std::string& expected, py::handle value) {
+  throw py::type_error(function + ": " + keyword + " expects " + expected + ", got " +
+                       TypeName(value));
+}
+
+void Check(const std::optional<std::string>& problem) {
+  if (problem) throw py::value_error(*problem);
+}
+
+// a str, or os.PathLike for a path
+std::string Text(const std::string& function, const std::string& keyword, py::handle value,
+                 bool path = false) {
+  if (path && !py::isinstance<py::str>(value) && py::hasattr(value, "__fspath__")) {
+    return Text(function, keyword, py::module_::import("os").attr("fspath")(value));
+  }
+  if (!py::isinstance<py::str>(value)) WrongType(function, keyword, path ? "a path" : "a str", value);
+  return value.cast<std::string>();
+}
+
+// a list (or tuple, or other iterable) of str; a single str is one item,
+// not its letters
+std::vector<std::string> TextList(const std::string& function, const std::string& keyword,
+                                  py::handle value, bool paths = false) {
+  if (py::isinstance<py::str>(value) || (paths && py::hasattr(value, "__fspath__"))) {
+    return {Text(function, keyword, value, paths)};
+  }
+  if (!py::isinstance<py::iterable>(value)) WrongType(function, keyword, "a list", value);
+  std::vector<std::string> out;
+  for (py::handle item : value) out.push_back(Text(function, keyword, item, paths));
+  return out;
+}
+
+py::dict Dict(const std::string& function, const std::string& keyword, py::handle value) {
+  if (!py::isinstance<py::dict>(value)) WrongType(function, keyword, "a dict", value);
+  return py::reinterpret_borrow<py::dict>(value);
+}
+
+template <typename T>
+T Value(const std::string& function, const std::string& keyword, py::handle value,
+        const std::string& expected) {
+  if constexpr (std::is_same_v<T, bool>) {
+    if (!py::isinstance<py::bool_>(value)) WrongType(function, keyword, expected, value);
+  }
+  try {
+    return value.cast<T>();
+  } catch (const py::cast_error&) {
+    WrongType(function, keyword, expected, value);
+  }
+}
+
+// Sets the option `keyword` names; ValueError for an unknown keyword or
+// value (with the nearest known name), TypeError for a value of the wrong
+// type. None leaves an option at its default.
+void ApplyKeyword(Options& options, const std::string& function, const std::string& keyword,
+                  py::handle value) {
+  Check(CheckOptionKeyword(keyword, function));
+  if (value.is_none()) return;
+  const auto& f = function;
+  const auto& k = keyword;
+  if (k == "packages") {
+    for (auto [name, dir] : Dict(f, k, value)) {
+      options.packages.emplace_back(Text(f, k, name), Text(f, k, dir, true));
+    }
+    std::sort(options.packages.begin(), options.packages.end());
+  } else if (k == "package_paths") {
+    options.package_paths = TextList(f, k, value, true);
+  } else if (k == "use_ros_package_path") {
+    options.use_ros_package_path = Value<bool>(f, k, value, "a bool");
+  } else if (k == "strict") {
+    // strict=False does not undo warnings=["error"]
+    if (Value<bool>(f, k, value, "a bool")) options.diagnostics.warnings_as_errors = true;
+  } else if (k == "warnings") {  // the text of -W flags: "error", "no-joint", ...
+    for (const std::string& flag : TextList(f, k, value)) {
+      Check(ApplyWarningFlag(options.diagnostics, flag, "warnings (-W" + flag + ")"));
+    }
+  } else if (k == "disabled_warnings") {
+    for (const std::string& group : TextList(f, k, value)) {
+      Check(ApplyWarningFlag(options.diagnostics, "no-" + group, k));
+    }
+  } else if (k == "error_warnings") {
+    for (const std::string& group : TextList(f, k, value)) {
+      Check(ApplyWarningFlag(options.diagnostics, "error=" + group, k));
+    }
+  } else if (k == "max_errors") {
+    options.diagnostics.max_errors = Value<size_t>(f, k, value, "a count");
+  } else if (k == "model_name") {
+    options.model_name = Text(f, k, value);
+  } else if (k == "auto_rename") {
+    options.auto_rename = Value<bool>(f, k, value, "a bool");
+  } else if (k == "fixed_base") {
+    options.fixed_base = Value<bool>(f, k, value, "a bool");
+  } else if (k == "joint_positions") {
+    for (auto [name, position] : Dict(f, k, value)) {
+      options.joint_positions.emplace_back(Text(f, k, name),
+                                           Value<double>(f, k, position, "numbers"));
+    }
+  } else if (k == "limits") {  // {"file_size": "64M"}: --limit file-size=64M
+    for (auto [name, limit] : Dict(f, k, value)) {
+      std::string setting = Text(f, k, name);
+      std::replace(setting.begin(), setting.end(), '_', '-');
+      Check(ApplyLimitSetting(options.limits, setting + "=" + py::str(limit).cast<std::string>(),
+                              k));
+    }
+  } else if (k == "mesh_reader") {
+    Check(ParseMeshReader(Text(f, k, value), k, options.mesh_reader));
+  } else if (k == "collada_up_axis") {
+    Check(ParseColladaUpAxis(Text(f, k, value), k, options.collada_up_axis));
+  } else if (k == "xacro_args") {
+    for (auto [name, text] : Dict(f, k, value)) {
+      if (!py::isinstance<py::str>(name) || !py::isinstance<py::str>(text)) {
+        throw py::type_error(f + ": xacro arguments map str to str, got " + TypeName(name) +
+                             " -> " + TypeName(text) + " for " +
+                             py::repr(name).cast<std::string>());
+      }
+      options.xacro_args.emplace_back(name.cast<std::string>(), text.cast<std::string>());
+    }
+  } else if (k == "cache_dir") {
+    options.mesh_cache_dir = Text(f, k, value, true);
+  } else {
+    // CompileOptionNames() has a keyword this function does not set
+    throw py::value_error(f + ": the option '" + k + "' is not available from Python");
+  }
 }
 
 // Compiles; returns (model or None, [Diagnostic, ...]). The GIL is released
@@ -88,15 +224,15 @@ py::tuple ExpandXacroForPython(const std::string& path, Options options) {
   return py::make_tuple(*expansion.xml, diagnostics);
 }
 
-// The options compile() and expand_xacro() share: packages, xacro
-// arguments, diagnostics and limits.
+// The options of expand_xacro(): packages, xacro arguments, strictness and
+// limits (compile() takes its options by keyword: ApplyKeyword).
 void SetCommonOptions(Options& options,
                       const std::vector<std::pair<std::string, std::string>>& packages,
                       const std::vector<std::string>& package_paths, bool use_ros_package_path,
                       const std::vector<std::pair<std::string, std::string>>& xacro_args,
                       bool strict, const std::vector<std::string>& limits) {
   for (const std::string& setting : limits) {
-    if (auto problem = SetLimit(options.limits, setting)) throw py::value_error(*problem);
+    Check(ApplyLimitSetting(options.limits, setting, "limits"));
   }
   options.packages = packages;
   options.package_paths = package_paths;
@@ -133,46 +269,27 @@ PYBIND11_MODULE(_mdlc, m) {
 
   BindModel(m);
 
+  // (inputs: [(path, text or None)], format or None, {keyword: value},
+  // function): the options by the keywords of mdlc.compile, each checked
+  // by name and value (ApplyKeyword); `function` names the caller in errors
   m.def(
       "_compile",
       [](const std::vector<std::pair<std::string, std::optional<std::string>>>& inputs,
-         const std::optional<std::string>& format,
-         const std::vector<std::pair<std::string, std::string>>& packages,
-         const std::vector<std::string>& package_paths, bool use_ros_package_path, bool strict,
-         const std::vector<std::string>& disabled_warnings,
-         const std::vector<std::string>& error_warnings, std::optional<std::string> model_name,
-         bool auto_rename, const std::vector<std::pair<std::string, double>>& joint_positions,
-         const std::vector<std::string>& limits, const std::string& mesh_reader,
-         const std::vector<std::pair<std::string, std::string>>& xacro_args,
-         const std::string& collada_up_axis) {
+         const std::optional<std::string>& format, const py::dict& keywords,
+         const std::string& function) {
         Options options;
-        if (collada_up_axis == "apply") {
-          options.collada_up_axis = ColladaUpAxis::Apply;
-        } else if (collada_up_axis != "as-written") {
-          throw py::value_error("unknown collada_up_axis '" + collada_up_axis +
-                                "'; expected 'as-written' or 'apply'");
+        for (auto [keyword, value] : keywords) {
+          ApplyKeyword(options, function, py::str(keyword).cast<std::string>(), value);
         }
-        if (mesh_reader == "in-process") {
-          options.mesh_reader = MeshReader::InProcess;
-        } else if (mesh_reader != "process") {
-          throw py::value_error("unknown mesh_reader '" + mesh_reader +
-                                "'; expected 'process' or 'in-process'");
-        }
-        SetCommonOptions(options, packages, package_paths, use_ros_package_path, xacro_args,
-                         strict, limits);
-        options.diagnostics.disabled_groups.insert(disabled_warnings.begin(),
-                                                   disabled_warnings.end());
-        options.diagnostics.error_groups.insert(error_warnings.begin(), error_warnings.end());
-        options.model_name = std::move(model_name);
-        options.auto_rename = auto_rename;
-        options.joint_positions = joint_positions;
         return CompileForPython(inputs, format, std::move(options));
       },
-      py::arg("inputs"), py::arg("format"), py::arg("packages"), py::arg("package_paths"),
-      py::arg("use_ros_package_path"), py::arg("strict"), py::arg("disabled_warnings"),
-      py::arg("error_warnings"), py::arg("model_name"), py::arg("auto_rename"),
-      py::arg("joint_positions"), py::arg("limits"), py::arg("mesh_reader"),
-      py::arg("xacro_args"), py::arg("collada_up_axis"));
+      py::arg("inputs"), py::arg("format"), py::arg("options"), py::arg("function"));
+
+  m.def("_option_names", [] {
+    std::vector<std::string> names;
+    for (const OptionName& o : CompileOptionNames()) names.emplace_back(o.keyword);
+    return names;
+  }, "The keywords mdlc.compile takes");
 
   m.def(
       "_expand_xacro",

@@ -2,6 +2,8 @@
 
     import mdlc
     model = mdlc.compile("robot.urdf")
+    model = mdlc.compile("robot.urdf", strict=True, disabled_warnings=["inertia"])
+    model = mdlc.compile_string(urdf_text, format="urdf")   # text in memory
     arm = mdlc.compile("arm.urdf.xacro", xacro_args={"prefix": "left_"})
     xml = mdlc.expand_xacro("arm.urdf.xacro", {"prefix": "left_"})  # the URDF text
     M = model.mass_matrix()                 # numpy, nv x nv, at the default q
@@ -11,6 +13,12 @@
 
 A model with errors raises CompileError, which carries every diagnostic;
 warnings are in model.diagnostics (strict=True makes them errors).
+
+compile() and compile_string() take their options by keyword, the command
+line's flags with '_' for '-' (mdlc.OPTION_NAMES lists them). mdlc checks
+every name as the command line does: a misspelt keyword, warning group or
+limit raises ValueError with the nearest known name, instead of being
+ignored.
 """
 
 import difflib as _difflib
@@ -22,7 +30,9 @@ from ._mdlc import (Actuator, Body, Camera, Constraint, Diagnostic, Frame, Geome
                     Model, Pose)
 
 __version__ = _mdlc.__version__
-__all__ = ["compile", "expand_xacro", "resolve_uri", "CompileError", "EntityList", "Model",
+#: The keywords compile() and compile_string() take.
+OPTION_NAMES = tuple(_mdlc._option_names())
+__all__ = ["compile", "compile_string", "OPTION_NAMES", "expand_xacro", "resolve_uri", "CompileError", "EntityList", "Model",
            "Body", "Joint", "Frame", "Geometry", "Actuator", "Constraint", "Camera", "Pose",
            "Diagnostic"]
 
@@ -117,35 +127,43 @@ class CompileError(Exception):
 
 
 def _looks_like_text(source):
-    # model text has markup or several lines; a path has neither
+    # compile(text) is the older spelling of compile_string(text): model text
+    # has markup or several lines; a path has neither
     stripped = source.lstrip()
     return stripped.startswith("<") or "\n" in source or stripped.startswith("directives:")
 
 
-def compile(source, format=None, *, name=None, packages=None, package_paths=(),
-            use_ros_package_path=False, strict=False, disabled_warnings=(),
-            error_warnings=(), model_name=None, auto_rename=False, joint_positions=None,
-            limits=None, mesh_reader="process", xacro_args=None,
-            collada_up_axis="as-written"):
+def compile(source, format=None, *, name=None, **options):
     """Compiles one model, or several into one plant, and returns a Model.
 
-    source: a path (str or os.PathLike), model text (str with markup), or a
-        list of those.
+    source: a path (str or os.PathLike), or a list of paths. (Model text is
+        still taken, as in earlier releases, when it has markup or several
+        lines; compile_string says so outright.)
     format: 'urdf', 'sdf', 'mjcf' or 'directives'; default: from the file
-        extension (for text: from `name`'s extension).
-    name: for text, the name diagnostics print and relative paths resolve
-        against (default: 'model.' + the format's extension, in the current
-        directory).
-    packages: {name: directory} for package:// URIs; package_paths: folders
-        searched for package.xml; use_ros_package_path: also use the ROS
-        environment (ROS_PACKAGE_PATH, and the ament index of each
-        AMENT_PREFIX_PATH prefix).
-    strict: warnings are errors. disabled_warnings / error_warnings: -W groups
-        silenced / made errors.
-    model_name, auto_rename: as --model-name and --auto-rename.
-    joint_positions: {joint name: value} applied by default_positions().
+        extension.
+    name: for text, as compile_string's.
+
+    The options, by keyword only, are the command line's flags with '_' for
+    '-'. mdlc's own code checks each name and value, as the command line
+    checks its flags: an unknown keyword, warning group, limit or value
+    raises ValueError naming the nearest known one ("unknown keyword
+    'strcit' for mdlc.compile; did you mean 'strict'?"); a value of the
+    wrong type raises TypeError. None leaves an option at its default.
+
+    packages: {name: directory} for package:// URIs (--package);
+        package_paths: folders searched for package.xml (--package-path);
+        use_ros_package_path: also use the ROS environment (ROS_PACKAGE_PATH,
+        and the ament index of each AMENT_PREFIX_PATH prefix).
+    strict: warnings are errors (--strict). warnings: -W flags as text,
+        e.g. ["error", "no-joint", "error=names"]. disabled_warnings /
+        error_warnings: -W groups silenced / made errors (-Wno-GROUP,
+        -Werror=GROUP); `mdlc --list-warnings` lists the groups.
+        max_errors: stop reporting after this many errors (0: no limit).
+    model_name, auto_rename, fixed_base: as --model-name, --auto-rename and
+        --fixed-base.
+    joint_positions: {joint name: value} applied by default_positions() (--q).
     limits: {limit name: value} as --limit NAME=VALUE, e.g. {"depth": 500,
-        "file_size": "64M"}; ValueError for an unknown name or a bad value.
+        "file_size": "64M"}.
     mesh_reader: 'process' (read each mesh file in a child process, so that
         a crash of the mesh importer is a diagnostic, not the interpreter's
         crash) or 'in-process'; as --mesh-reader.
@@ -157,6 +175,8 @@ def compile(source, format=None, *, name=None, packages=None, package_paths=(),
     collada_up_axis: 'as-written' (COLLADA meshes read in the axes their
         vertices are written in, as Drake reads them) or 'apply' (turned
         from the <up_axis> the file declares to Z-up); as --collada-up-axis.
+    cache_dir: keep derived mesh data (convex hulls, mass properties) in
+        this folder between compiles (--cache-dir; default: no cache).
 
     The model's entity lists (bodies, joints, ...) are EntityLists, indexed
     by position and by name. Raises FileNotFoundError when a path names no
@@ -175,12 +195,35 @@ def compile(source, format=None, *, name=None, packages=None, package_paths=(),
             inputs.append((name or _default_name(format), s))
         else:
             raise TypeError(f"mdlc.compile: expected a path or model text, got {type(s).__name__}")
-    model, diagnostics = _mdlc._compile(
-        inputs, format, sorted((packages or {}).items()), [_os.fspath(p) for p in package_paths],
-        use_ros_package_path, strict, list(disabled_warnings), list(error_warnings), model_name,
-        auto_rename, list((joint_positions or {}).items()),
-        _limit_settings(limits), mesh_reader, _xacro_args("compile", xacro_args),
-        collada_up_axis)
+    return _compiled(_mdlc._compile(inputs, format, options, "mdlc.compile"))
+
+
+def compile_string(text, format=None, *, name=None, **options):
+    """Compiles model text held in memory and returns a Model, as compile()
+    compiles a file; nothing decides from the text whether it is a path.
+
+    text: the model (str), or a list of texts compiled into one plant.
+    format: 'urdf', 'sdf', 'mjcf' or 'directives'; default: from `name`'s
+        extension.
+    name: the name diagnostics print and relative paths (meshes, includes)
+        resolve against: text named "robots/arm.urdf" finds "meshes/a.obj"
+        in "robots/meshes/" (default: 'model.' + the format's extension, in
+        the current directory). A name ending in .xacro is expanded first.
+    options: the keywords of compile(), checked the same way.
+
+        model = mdlc.compile_string(urdf_text, format="urdf", strict=True)
+    """
+    texts = text if isinstance(text, (list, tuple)) else [text]
+    for t in texts:
+        if not isinstance(t, str):
+            raise TypeError(f"mdlc.compile_string: expected model text (str), got "
+                            f"{type(t).__name__}")
+    inputs = [(name or _default_name(format, "mdlc.compile_string"), t) for t in texts]
+    return _compiled(_mdlc._compile(inputs, format, options, "mdlc.compile_string"))
+
+
+def _compiled(outcome):
+    model, diagnostics = outcome
     if model is None:
         raise CompileError(diagnostics)
     return model
@@ -251,7 +294,7 @@ _EXTENSIONS = {"urdf": ".urdf", "sdf": ".sdf", "sdformat": ".sdf", "mjcf": ".xml
                "mujoco": ".xml", "directives": ".dmd.yaml", "dmd": ".dmd.yaml"}
 
 
-def _default_name(format):
+def _default_name(format, function="mdlc.compile"):
     if format is None:
-        raise ValueError("mdlc.compile: model text needs format= (or a name= with an extension)")
+        raise ValueError(f"{function}: model text needs format= (or a name= with an extension)")
     return "model" + _EXTENSIONS.get(format, "")
