@@ -48,7 +48,7 @@ set(may_use_tools/driver
     "ir;ir/assets;frontend/xml;frontend/pyexpr;frontend/xacro;frontend;passes/mesh;passes;backend;backend/writers;tools/driver/include")
 # the command line: the public API, and the IR and plant it hands out; the
 # MJCF texture list of `mdlc assets` reads XML itself
-set(may_use_tools/mdlc "ir;frontend/xml;passes;backend;tools/driver/include;tools/driver")
+set(may_use_tools/mdlc "ir;frontend/xml;backend;tools/driver/include;tools/driver")
 set(may_use_tools/python "ir;backend;tools/driver/include")
 set(may_use_examples "tools/driver/include")
 

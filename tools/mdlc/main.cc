@@ -30,7 +30,7 @@
 #include <filesystem>
 
 #include "mdlc/mdlc.h"
-#include "passes/pass_registry.h"
+#include "mdlc/pass_list.h"
 #include "cli_compile.h"
 #include "subcommands.h"
 #include "tools/driver/heap_policy.h"
@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : 2;
   }
   if (list_passes) {
-    for (const auto& info : mdlc::passes::RegisteredPasses()) {
+    for (const mdlc::PassListing& info : mdlc::PassList()) {
       fmt::print("  {:<24} {}\n", info.name, info.description);
     }
     return 0;
