@@ -13,11 +13,25 @@
 // properties are about the body's center of mass and expressed in the body
 // frame. Generalized positions q and velocities v are laid out joint by joint
 // in `joint_order` (tree order: by tree level, and in IR order within a level).
+//
+// Adding a plant entity kind or a field (after the IR's, ir/entities.h):
+//   here (or scene_graph.h)     the struct
+//   build_plant.cc (or build_scene_graph.cc)   IR -> plant
+//   plant_json.cc, plant_json.md   plant-json and its contract (mdlc-plant/1)
+//   tools/python/py_model.{h,cc}   the Python model
+//   tools/mdlc/view.cc          only what the viewer draws
+//   entity_index.cc             what the writers look up by body or joint
+// Driven from one place, nothing else to change:
+//   a force element's field     its VisitFields (below): plant-json and Python
+//   a shape field, a role       ir/shape_parameters.h, ir::kGeometryRoleNames
+// Then add it to tests/models/every_entity/, which test_every_entity.py
+// compares across `--emit=ir`, plant-json and Python.
 #pragma once
 
 #include <Eigen/Core>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -123,22 +137,52 @@ struct PlantConstraint {
   ir::ConstraintType type() const { return static_cast<ir::ConstraintType>(payload.index()); }
 };
 
-// Force elements, with references resolved.
+// Force elements, with references resolved. Each describes its fields once,
+// in VisitFields: visit(name, value) per field, in the order plant-json and
+// Python's Model.force_elements write them, with a value that is a double,
+// an Eigen::Vector3d, a std::string, a BodyId or a JointId (the outputs write
+// ids as scoped names). A field added to a force element is added to its
+// VisitFields and reaches both outputs; ForceElementTypeName names the kind.
 struct LinearBushingRpy {
   std::string frameA, frameC;  // scoped frame names
   Eigen::Vector3d torque_stiffness = Eigen::Vector3d::Zero();
   Eigen::Vector3d torque_damping = Eigen::Vector3d::Zero();
   Eigen::Vector3d force_stiffness = Eigen::Vector3d::Zero();
   Eigen::Vector3d force_damping = Eigen::Vector3d::Zero();
+  template <typename Visit>
+  void VisitFields(Visit&& visit) const {
+    visit("frameA", frameA);
+    visit("frameC", frameC);
+    visit("torque_stiffness", torque_stiffness);
+    visit("torque_damping", torque_damping);
+    visit("force_stiffness", force_stiffness);
+    visit("force_damping", force_damping);
+  }
 };
 struct LinearSpringDamper {
   BodyId body_A, body_B;
   Eigen::Vector3d p_AP = Eigen::Vector3d::Zero(), p_BQ = Eigen::Vector3d::Zero();
   double free_length = 0, stiffness = 0, damping = 0;
+  template <typename Visit>
+  void VisitFields(Visit&& visit) const {
+    visit("body_A", body_A);
+    visit("p_AP", p_AP);
+    visit("body_B", body_B);
+    visit("p_BQ", p_BQ);
+    visit("free_length", free_length);
+    visit("stiffness", stiffness);
+    visit("damping", damping);
+  }
 };
 struct JointSpring {  // revolute_spring or prismatic_spring, by the joint's type
   JointId joint;
   double nominal = 0, stiffness = 0;
+  template <typename Visit>
+  void VisitFields(Visit&& visit) const {
+    visit("joint", joint);
+    visit("nominal", nominal);
+    visit("stiffness", stiffness);
+  }
 };
 using ForceElement = std::variant<LinearBushingRpy, LinearSpringDamper, JointSpring>;
 
@@ -174,5 +218,15 @@ struct Plant {
     return model_instances.Scoped(j.model, j.name);
   }
 };
+
+/// A force element's kind as plant-json and Python name it: a joint spring is
+/// a prismatic_spring on a prismatic joint and a revolute_spring otherwise.
+inline std::string_view ForceElementTypeName(const Plant& plant, const ForceElement& element) {
+  if (std::holds_alternative<LinearBushingRpy>(element)) return "linear_bushing_rpy";
+  if (std::holds_alternative<LinearSpringDamper>(element)) return "linear_spring_damper";
+  const JointSpring& spring = std::get<JointSpring>(element);
+  return plant.joint(spring.joint).type == ir::JointType::Prismatic ? "prismatic_spring"
+                                                                     : "revolute_spring";
+}
 
 }  // namespace mdlc::backend

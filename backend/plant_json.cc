@@ -10,6 +10,7 @@
 #include "backend/kinematics.h"
 #include "backend/mass_matrix.h"
 #include "ir/overloaded.h"
+#include "ir/shape_parameters.h"
 
 namespace mdlc::backend {
 
@@ -52,9 +53,8 @@ class PlantJsonEmitter {
     List("constraints", plant_.constraints, [&](const PlantConstraint& c) { Constraint(c); });
     List("cameras", scene_.cameras, [&](const SceneCamera& c) { Camera(c); });
     Dofs();
-    List("force_elements", plant_.force_elements, [&](const ForceElement& f) {
-      std::visit([&](const auto& element) { ForceElementEntry(element); }, f);
-    });
+    List("force_elements", plant_.force_elements,
+         [&](const ForceElement& f) { ForceElementEntry(f); });
     w_.Key("gravity");
     Vector(plant_.gravity);
     w_.Key("time_step").Number(plant_.time_step);
@@ -214,9 +214,7 @@ class PlantJsonEmitter {
     NameAndInstance(g.name, g.model);
     w_.Key("body").String(BodyName(g.body));
     w_.Key("roles").BeginArray();
-    if (g.roles & ir::kProximityRole) w_.String("proximity");
-    if (g.roles & ir::kIllustrationRole) w_.String("illustration");
-    if (g.roles & ir::kPerceptionRole) w_.String("perception");
+    ir::ForEachRoleName(g.roles, [&](std::string_view role) { w_.String(role); });
     w_.EndArray();
     w_.Key("shape");
     Shape(g.shape);
@@ -235,30 +233,20 @@ class PlantJsonEmitter {
   void Shape(const ir::Shape& shape) {
     w_.BeginObject();
     w_.Key("type").String(ir::ShapeTypeName(shape));
-    std::visit(
-        [&](const auto& s) {
-          using S = std::decay_t<decltype(s)>;
-          if constexpr (std::is_same_v<S, ir::Box>) {
-            w_.Key("size");
-            Vector(s.size);
-          } else if constexpr (std::is_same_v<S, ir::Sphere>) {
-            w_.Key("radius").Number(s.radius);
-          } else if constexpr (std::is_same_v<S, ir::Cylinder> || std::is_same_v<S, ir::Capsule>) {
-            w_.Key("radius").Number(s.radius);
-            w_.Key("length").Number(s.length);
-          } else if constexpr (std::is_same_v<S, ir::Ellipsoid>) {
-            w_.Key("a").Number(s.a);
-            w_.Key("b").Number(s.b);
-            w_.Key("c").Number(s.c);
-          } else if constexpr (std::is_same_v<S, ir::Mesh>) {
-            w_.Key("uri").String(s.uri);
-            w_.Key("scale");
-            Vector(s.scale);
-          }  // HalfSpace: the type alone
-        },
-        shape);
+    ir::VisitShapeParameters(shape, [&](std::string_view name, const auto& value) {
+      w_.Key(name);
+      Value(value);
+    });
     w_.EndObject();
   }
+
+  // a shape parameter's or a force element field's value (their
+  // VisitShapeParameters and VisitFields)
+  void Value(double x) { w_.Number(x); }
+  void Value(const Eigen::Vector3d& v) { Vector(v); }
+  void Value(const std::string& s) { w_.String(s); }
+  void Value(BodyId body) { w_.String(BodyName(body)); }
+  void Value(JointId joint) { w_.String(JointName(joint)); }
 
   void PropertyValue(const ir::PropertyValue& value) {
     std::visit(
@@ -363,42 +351,18 @@ class PlantJsonEmitter {
     w_.EndObject();
   }
 
-  void ForceElementEntry(const LinearBushingRpy& e) {
+  // its fields come from its VisitFields (plant.h)
+  void ForceElementEntry(const ForceElement& f) {
     w_.BeginObject();
-    w_.Key("type").String("linear_bushing_rpy");
-    w_.Key("frameA").String(e.frameA);
-    w_.Key("frameC").String(e.frameC);
-    w_.Key("torque_stiffness");
-    Vector(e.torque_stiffness);
-    w_.Key("torque_damping");
-    Vector(e.torque_damping);
-    w_.Key("force_stiffness");
-    Vector(e.force_stiffness);
-    w_.Key("force_damping");
-    Vector(e.force_damping);
-    w_.EndObject();
-  }
-  void ForceElementEntry(const LinearSpringDamper& e) {
-    w_.BeginObject();
-    w_.Key("type").String("linear_spring_damper");
-    w_.Key("body_A").String(BodyName(e.body_A));
-    w_.Key("p_AP");
-    Vector(e.p_AP);
-    w_.Key("body_B").String(BodyName(e.body_B));
-    w_.Key("p_BQ");
-    Vector(e.p_BQ);
-    w_.Key("free_length").Number(e.free_length);
-    w_.Key("stiffness").Number(e.stiffness);
-    w_.Key("damping").Number(e.damping);
-    w_.EndObject();
-  }
-  void ForceElementEntry(const JointSpring& e) {
-    const bool prismatic = plant_.joint(e.joint).type == ir::JointType::Prismatic;
-    w_.BeginObject();
-    w_.Key("type").String(prismatic ? "prismatic_spring" : "revolute_spring");
-    w_.Key("joint").String(JointName(e.joint));
-    w_.Key("nominal").Number(e.nominal);
-    w_.Key("stiffness").Number(e.stiffness);
+    w_.Key("type").String(ForceElementTypeName(plant_, f));
+    std::visit(
+        [&](const auto& element) {
+          element.VisitFields([&](std::string_view name, const auto& value) {
+            w_.Key(name);
+            Value(value);
+          });
+        },
+        f);
     w_.EndObject();
   }
 

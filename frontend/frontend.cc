@@ -17,10 +17,7 @@ std::optional<Format> XacroFormat(FileId file, const SourceManager& sources) {
   if (start == std::string_view::npos) return std::nullopt;
   const size_t end = text.find_first_of(" \t\r\n/>", start + 1);
   const std::string_view root = text.substr(start + 1, end == std::string_view::npos ? end : end - start - 1);
-  if (root == "robot") return Format::Urdf;
-  if (root == "sdf") return Format::Sdf;
-  if (root == "mujoco") return Format::Mjcf;
-  return std::nullopt;
+  return FormatFromRootElement(root);
 }
 
 std::optional<ModelId> ReadModelFile(const std::string& given_path, FrontendContext& ctx,

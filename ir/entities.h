@@ -7,6 +7,24 @@
 // of the element that declared it.
 //
 // Units are SI and angles radians everywhere: frontends normalise on the way in.
+//
+// Adding an entity kind or a field: the places that decide something.
+//   here                      the struct (a payload kind: its variant and type enum)
+//   ir/module.h, ir/ids.h     a new kind's table and id
+//   frontend/                 each reader that fills it (urdf/, sdf/, mjcf/,
+//                             directives/, drake_elements.cc for drake: tags)
+//   passes/resolve_names.cc   its references (Ref<>, FrameRef)
+//   ir/verifier.cc            what a well-formed one is
+//   ir/printer.cc             `--emit=ir` (and the golden files, tests/golden)
+//   backend/plant.h           the plant's copy: see the checklist there
+//   backend/writers/          each format that can write it
+// Driven from one place, nothing else to change:
+//   a geometry role           kGeometryRoleNames: the role names of every output
+//   a shape or shape field    ir/shape_parameters.h: plant-json, `mdlc view`, Python
+//   a format's names          ir/format.h
+// tests/models/every_entity/ holds one of every kind the plant holds: add the
+// new kind or field there, and tests/python/test_every_entity.py fails until
+// `--emit=ir`, plant-json and the Python model all show it.
 #pragma once
 
 #include <Eigen/Core>
@@ -14,6 +32,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -232,6 +251,28 @@ enum GeometryRole : uint8_t {
   kIllustrationRole = 2,
   kPerceptionRole = 4,
 };
+
+/// Every role bit with the name every output gives it (`--emit=ir`,
+/// plant-json, `mdlc view`, Python), in the order they list a geometry's
+/// roles. A new role is added here and nowhere else.
+struct GeometryRoleName {
+  GeometryRole role;
+  std::string_view name;
+};
+inline constexpr std::array<GeometryRoleName, 3> kGeometryRoleNames = {{
+    {kProximityRole, "proximity"},
+    {kIllustrationRole, "illustration"},
+    {kPerceptionRole, "perception"},
+}};
+
+/// Calls fn(name) for each role set in `roles` (GeometryRole bits), in
+/// kGeometryRoleNames order.
+template <typename Fn>
+void ForEachRoleName(uint8_t roles, Fn&& fn) {
+  for (const GeometryRoleName& r : kGeometryRoleNames) {
+    if (roles & r.role) fn(r.name);
+  }
+}
 
 /// A value in a geometry's property map.
 using PropertyValue = std::variant<bool, double, std::string, std::vector<double>,

@@ -36,4 +36,11 @@ std::optional<Format> FormatFromName(std::string_view name) {
   return std::nullopt;
 }
 
+std::optional<Format> FormatFromRootElement(std::string_view element) {
+  if (element == "robot") return Format::Urdf;
+  if (element == "sdf") return Format::Sdf;
+  if (element == "mujoco") return Format::Mjcf;
+  return std::nullopt;
+}
+
 }  // namespace mdlc

@@ -20,6 +20,10 @@ std::optional<Format> FormatFromPath(std::string_view path);
 /// sdformat; mjcf or mujoco; dmd or directives. nullopt for anything else.
 std::optional<Format> FormatFromName(std::string_view name);
 
+/// The format an XML document's root element names: robot (URDF), sdf
+/// (SDFormat), mujoco (MJCF). nullopt for any other element.
+std::optional<Format> FormatFromRootElement(std::string_view element);
+
 /// The names FormatFromName takes, for messages: "urdf, sdf, mjcf or dmd".
 inline constexpr std::string_view kFormatNames = "urdf, sdf, mjcf or dmd";
 

@@ -286,10 +286,10 @@ std::string Printer::Run() {
   for (size_t i = 0; i < m_.geometries.size(); ++i) {
     const Geometry& g = m_.geometries[i];
     std::string roles;
-    if (g.roles & kProximityRole) roles += "proximity,";
-    if (g.roles & kIllustrationRole) roles += "illustration,";
-    if (g.roles & kPerceptionRole) roles += "perception,";
-    if (!roles.empty()) roles.pop_back();
+    ForEachRoleName(g.roles, [&](std::string_view role) {
+      if (!roles.empty()) roles += ',';
+      roles += role;
+    });
     out_ += fmt::format("  geometry #{} {} model={} body={} roles={} {} X_BG={}", i, Name(g.name),
                         Model(g.model), BodyRef(g.body), roles, Shape(g.shape), Pose(g.X_BG));
     if (g.rgba) out_ += " rgba=" + Vec(*g.rgba);
@@ -394,6 +394,14 @@ std::string Printer::Run() {
         },
         f.payload);
     out_ += Where(f.loc) + "\n";
+  }
+  for (size_t i = 0; i < m_.cameras.size(); ++i) {
+    const Camera& c = m_.cameras[i];
+    out_ += fmt::format("  camera #{} {} model={} body={} X_BC={} size={}x{} fov_y={}", i,
+                        Name(c.name), Model(c.model), BodyRef(c.body), Pose(c.X_BC), c.width,
+                        c.height, Num(c.fov_y));
+    if (c.unnamed) out_ += " unnamed";
+    out_ += Where(c.loc) + "\n";
   }
   PrintInertiaScaledGains();
   PrintFrameGraph();

@@ -8,6 +8,8 @@
 #include <iterator>
 #include <sstream>
 
+#include "ir/format.h"
+
 namespace mdlc::cli {
 namespace {
 
@@ -23,10 +25,7 @@ std::optional<Format> FormatFromContent(std::string_view text) {
       ++at;
       continue;
     }
-    if (rest.starts_with("robot")) return Format::Urdf;
-    if (rest.starts_with("sdf")) return Format::Sdf;
-    if (rest.starts_with("mujoco")) return Format::Mjcf;
-    return std::nullopt;
+    return FormatFromRootElement(rest.substr(0, rest.find_first_of(" \t\r\n/>")));
   }
   if (text.find("directives:") != std::string_view::npos) return Format::Directives;
   return std::nullopt;

@@ -23,10 +23,7 @@ struct ConvertFlags {
 /// The target: --to, or the output file's extension.
 std::optional<Format> Target(const ConvertFlags& flags) {
   if (!flags.to.empty()) {
-    return flags.to == "urdf"   ? std::optional(Format::Urdf)
-           : flags.to == "sdf"  ? std::optional(Format::Sdf)
-           : flags.to == "mjcf" ? std::optional(Format::Mjcf)
-                                : std::nullopt;
+    return FormatFromName(flags.to);  // --to takes urdf, sdf or mjcf only
   }
   if (!flags.output.empty() && flags.output != "-") return FormatFromPath(flags.output);
   return std::nullopt;

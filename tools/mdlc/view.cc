@@ -36,6 +36,8 @@
 
 #include "backend/json_writer.h"
 #include "ir/module.h"
+#include "ir/overloaded.h"
+#include "ir/shape_parameters.h"
 #include "page_paths.h"
 
 #ifdef MDLC_HAVE_VIEWER
@@ -119,24 +121,22 @@ std::string ShownUri(const std::string& uri, const PagePaths& paths) {
   return uri;
 }
 
+// The shape's parameters as plant-json writes them (ir/shape_parameters.h),
+// but a mesh's uri as the page shows it; then the page's own extra, a mesh's
+// index in `meshes` (-1: not shown).
 void Shape(JsonWriter& w, const ir::Shape& shape, int mesh, const PagePaths& paths) {
   w.BeginObject().Key("type").String(ir::ShapeTypeName(shape));
-  if (const auto* box = std::get_if<ir::Box>(&shape)) {
-    w.Key("size");
-    Vector(w, box->size);
-  } else if (const auto* sphere = std::get_if<ir::Sphere>(&shape)) {
-    w.Key("radius").Number(sphere->radius);
-  } else if (const auto* cylinder = std::get_if<ir::Cylinder>(&shape)) {
-    w.Key("radius").Number(cylinder->radius).Key("length").Number(cylinder->length);
-  } else if (const auto* capsule = std::get_if<ir::Capsule>(&shape)) {
-    w.Key("radius").Number(capsule->radius).Key("length").Number(capsule->length);
-  } else if (const auto* ellipsoid = std::get_if<ir::Ellipsoid>(&shape)) {
-    w.Key("a").Number(ellipsoid->a).Key("b").Number(ellipsoid->b).Key("c").Number(ellipsoid->c);
-  } else if (const auto* m = std::get_if<ir::Mesh>(&shape)) {
-    w.Key("uri").String(ShownUri(m->uri, paths)).Key("scale");
-    Vector(w, m->scale);
-    w.Key("mesh").Int(mesh);
-  }
+  ir::VisitShapeParameters(shape, ir::Overloaded{
+                                      [&](std::string_view name, double x) { w.Key(name).Number(x); },
+                                      [&](std::string_view name, const Eigen::Vector3d& v) {
+                                        w.Key(name);
+                                        Vector(w, v);
+                                      },
+                                      [&](std::string_view name, const std::string& uri) {
+                                        w.Key(name).String(ShownUri(uri, paths));
+                                      },
+                                  });
+  if (std::holds_alternative<ir::Mesh>(shape)) w.Key("mesh").Int(mesh);
   w.EndObject();
 }
 
@@ -320,9 +320,7 @@ std::string ViewModelJson(const Result& result, const std::string& title,
     w.Key("shape");
     Shape(w, g.shape, mesh, paths);
     w.Key("roles").BeginArray(JsonWriter::Layout::Compact);
-    if (g.roles & ir::kIllustrationRole) w.String("illustration");
-    if (g.roles & ir::kProximityRole) w.String("proximity");
-    if (g.roles & ir::kPerceptionRole) w.String("perception");
+    ir::ForEachRoleName(g.roles, [&](std::string_view role) { w.String(role); });
     w.EndArray();
     if (auto rgba = Diffuse(g)) {
       w.Key("rgba");

@@ -14,6 +14,7 @@
 #include <variant>
 
 #include "ir/overloaded.h"
+#include "ir/shape_parameters.h"
 
 namespace mdlc::python {
 namespace py = pybind11;
@@ -51,36 +52,41 @@ class Names {
 
 std::vector<std::string> RoleNames(uint8_t roles) {
   std::vector<std::string> names;
-  if (roles & ir::kProximityRole) names.emplace_back("proximity");
-  if (roles & ir::kIllustrationRole) names.emplace_back("illustration");
-  if (roles & ir::kPerceptionRole) names.emplace_back("perception");
+  ir::ForEachRoleName(roles, [&](std::string_view role) { names.emplace_back(role); });
   return names;
 }
 
-py::dict ShapeParameters(const ir::Shape& shape) {
+// A shape parameter's or a force element field's value, as Python holds it;
+// ids become scoped names, as plant-json writes them
+py::object Value(double x, const Names&) { return py::cast(x); }
+py::object Value(const Eigen::Vector3d& v, const Names&) { return py::cast(Eigen::Vector3d(v)); }
+py::object Value(const std::string& s, const Names&) { return py::cast(s); }
+py::object Value(BodyId body, const Names& names) { return py::cast(names.body(body)); }
+py::object Value(JointId joint, const Names& names) { return py::cast(names.joint(joint)); }
+
+// plant-json's parameters (ir/shape_parameters.h), and Python's own extra: a
+// mesh's resolved file path
+py::dict ShapeParameters(const ir::Shape& shape, const Names& names) {
   py::dict d;
-  std::visit(
-      [&](const auto& s) {
-        using S = std::decay_t<decltype(s)>;
-        if constexpr (std::is_same_v<S, ir::Box>) {
-          d["size"] = Eigen::Vector3d(s.size);
-        } else if constexpr (std::is_same_v<S, ir::Sphere>) {
-          d["radius"] = s.radius;
-        } else if constexpr (std::is_same_v<S, ir::Cylinder> || std::is_same_v<S, ir::Capsule>) {
-          d["radius"] = s.radius;
-          d["length"] = s.length;
-        } else if constexpr (std::is_same_v<S, ir::Ellipsoid>) {
-          d["a"] = s.a;
-          d["b"] = s.b;
-          d["c"] = s.c;
-        } else if constexpr (std::is_same_v<S, ir::Mesh>) {
-          d["uri"] = s.uri;
-          d["path"] = s.resolved;
-          d["scale"] = Eigen::Vector3d(s.scale);
-        }
-      },
-      shape);
+  ir::VisitShapeParameters(shape, [&](std::string_view name, const auto& value) {
+    d[py::str(std::string(name))] = Value(value, names);
+  });
+  if (const auto* mesh = std::get_if<ir::Mesh>(&shape)) d["path"] = mesh->resolved;
   return d;
+}
+
+// the fields its VisitFields (backend/plant.h) lists, as plant-json writes them
+ForceElement MakeForceElement(const backend::Plant& plant, const backend::ForceElement& f,
+                              const Names& names) {
+  ForceElement out{std::string(backend::ForceElementTypeName(plant, f)), {}};
+  std::visit(
+      [&](const auto& element) {
+        element.VisitFields([&](std::string_view name, const auto& value) {
+          out.parameters[py::str(std::string(name))] = Value(value, names);
+        });
+      },
+      f);
+  return out;
 }
 
 py::dict Properties(const std::vector<ir::Property>& properties) {
@@ -174,7 +180,7 @@ Model MakeModel(std::shared_ptr<const Result> result, py::list diagnostics) {
     m.geometries.push_back(Geometry{g.name, names.instance(g.model), names.body(g.body),
                                     MakePose(g.X_BG), RoleNames(g.roles),
                                     std::string(ir::ShapeTypeName(g.shape)),
-                                    ShapeParameters(g.shape), Properties(g.properties),
+                                    ShapeParameters(g.shape, names), Properties(g.properties),
                                     g.unnamed});
   }
   for (const backend::PlantActuator& a : plant.actuators) {
@@ -188,6 +194,9 @@ Model MakeModel(std::shared_ptr<const Result> result, py::list diagnostics) {
   for (const backend::SceneCamera& c : scene.cameras) {
     m.cameras.push_back(Camera{c.name, names.instance(c.model), names.body(c.body),
                                MakePose(c.X_BC), c.width, c.height, c.fov_y, c.unnamed});
+  }
+  for (const backend::ForceElement& f : plant.force_elements) {
+    m.force_elements.push_back(MakeForceElement(plant, f, names));
   }
   return m;
 }
@@ -349,6 +358,11 @@ void BindModel(py::module_& m) {
         return "<mdlc.Constraint " + c.type + " in '" + c.model_instance + "'>";
       });
 
+  py::class_<ForceElement>(m, "ForceElement")
+      .def_readonly("type", &ForceElement::type)
+      .def_readonly("parameters", &ForceElement::parameters)
+      .def("__repr__", [](const ForceElement& f) { return "<mdlc.ForceElement " + f.type + ">"; });
+
   py::class_<Camera>(m, "Camera")
       .def_readonly("name", &Camera::name)
       .def_readonly("model_instance", &Camera::model_instance)
@@ -374,6 +388,8 @@ void BindModel(py::module_& m) {
       .def_readonly("actuators", &Model::actuators)
       .def_readonly("constraints", &Model::constraints)
       .def_readonly("cameras", &Model::cameras)
+      .def_readonly("force_elements", &Model::force_elements,
+                    "Springs, dampers and bushings, as plant-json lists them")
       .def_readonly("diagnostics", &Model::diagnostics, "Warnings the compile reported")
       .def_property_readonly("num_positions",
                              [](const Model& m) { return m.result->plant().num_positions; })

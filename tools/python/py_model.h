@@ -79,6 +79,11 @@ struct Constraint {
   pybind11::dict parameters;  // as plant-json's constraint object, minus "type"
 };
 
+struct ForceElement {
+  std::string type;           // linear_bushing_rpy, linear_spring_damper, revolute_spring, ...
+  pybind11::dict parameters;  // as plant-json's force element object, minus "type"
+};
+
 struct Camera {
   std::string name, model_instance, body;
   Pose X_BC;  // Drake's camera frame: +z forward, +x right, +y down
@@ -98,6 +103,7 @@ struct Model {
   std::vector<Actuator> actuators;
   std::vector<Constraint> constraints;
   std::vector<Camera> cameras;
+  std::vector<ForceElement> force_elements;
   pybind11::list diagnostics;  // warnings and notes (errors raise instead)
 };
 
