@@ -46,9 +46,9 @@ set(may_use_backend/writers "ir;backend")
 set(may_use_tools/driver/include "ir;backend")
 set(may_use_tools/driver
     "ir;ir/assets;frontend/xml;frontend/pyexpr;frontend/xacro;frontend;passes/mesh;passes;backend;backend/writers;tools/driver/include")
-# the command line: the public API, and the IR and plant it hands out; the
-# MJCF texture list of `mdlc assets` reads XML itself
-set(may_use_tools/mdlc "ir;frontend/xml;backend;tools/driver/include;tools/driver")
+# the command line: the public API, the IR and plant it hands out, and the
+# driver's own headers (heap policy, MJCF file assets)
+set(may_use_tools/mdlc "ir;backend;tools/driver/include;tools/driver")
 set(may_use_tools/python "ir;backend;tools/driver/include")
 set(may_use_examples "tools/driver/include")
 

@@ -10,8 +10,8 @@
 #include <variant>
 
 #include "backend/json_writer.h"
-#include "mjcf_file_assets.h"
 #include "ir/count_text.h"
+#include "tools/driver/mjcf_file_assets.h"
 
 namespace mdlc::tools {
 namespace {

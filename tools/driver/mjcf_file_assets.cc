@@ -1,5 +1,5 @@
 // mjcf_file_assets.cc - see mjcf_file_assets.h.
-#include "mjcf_file_assets.h"
+#include "tools/driver/mjcf_file_assets.h"
 
 #include <filesystem>
 #include <map>

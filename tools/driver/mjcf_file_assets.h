@@ -1,6 +1,8 @@
 // mjcf_file_assets.h - the files an MJCF model names that mdlc does not
 // read into its IR (textures, height fields, skins), for `mdlc assets`: a
-// user packaging a model needs them all the same.
+// user packaging a model needs them all the same. It lives with the driver,
+// which may read XML (frontend/xml), so the command line needs no frontend
+// header of its own.
 #pragma once
 
 #include <string>
