@@ -21,8 +21,9 @@
 //   tools/python/py_model.{h,cc}   the Python model
 //   tools/mdlc/view.cc          only what the viewer draws
 //   entity_index.cc             what the writers look up by body or joint
-// Driven from one place, nothing else to change:
-//   a force element's field     its VisitFields (below): plant-json and Python
+// Driven from one place (plant_json.md still names a new key):
+//   a constraint's or force element's field   its VisitFields (below):
+//                               plant-json and Python
 //   a shape field, a role       ir/shape_parameters.h, ir::kGeometryRoleNames
 // Then add it to tests/models/every_entity/, which test_every_entity.py
 // compares across `--emit=ir`, plant-json and Python.
@@ -105,28 +106,71 @@ struct PlantActuator {
 };
 
 // Constraints: the IR's (ir::CouplerConstraint, ...) with references
-// resolved to ids.
+// resolved to ids. Like the force elements below, each lists its fields once
+// in VisitFields, for plant-json and Python's Constraint.parameters; a value
+// may also be a Transform, a std::vector<double> or a std::vector<JointId>.
 struct CouplerConstraint {  // q0 = gear_ratio * q1 + offset (joint0 follows)
   JointId joint0, joint1;
   double gear_ratio = 1, offset = 0;
+  template <typename Visit>
+  void VisitFields(Visit&& visit) const {
+    visit("joint0", joint0);
+    visit("joint1", joint1);
+    visit("gear_ratio", gear_ratio);
+    visit("offset", offset);
+  }
 };
 struct BallConstraint {  // P (on A) and Q (on B) coincide
   BodyId body_A, body_B;
   Eigen::Vector3d p_AP = Eigen::Vector3d::Zero(), p_BQ = Eigen::Vector3d::Zero();
+  template <typename Visit>
+  void VisitFields(Visit&& visit) const {
+    visit("body_A", body_A);
+    visit("body_B", body_B);
+    visit("p_AP", p_AP);
+    visit("p_BQ", p_BQ);
+  }
 };
 struct DistanceConstraint {  // |p_PQ| = distance
   BodyId body_A, body_B;
   Eigen::Vector3d p_AP = Eigen::Vector3d::Zero(), p_BQ = Eigen::Vector3d::Zero();
   double distance = 0, stiffness = 0, damping = 0;
+  template <typename Visit>
+  void VisitFields(Visit&& visit) const {
+    visit("body_A", body_A);
+    visit("body_B", body_B);
+    visit("p_AP", p_AP);
+    visit("p_BQ", p_BQ);
+    visit("distance", distance);
+    visit("stiffness", stiffness);
+    visit("damping", damping);
+  }
 };
 struct WeldConstraint {  // frames P (on A) and Q (on B) coincide
   BodyId body_A, body_B;
   Transform X_AP, X_BQ;
+  template <typename Visit>
+  void VisitFields(Visit&& visit) const {
+    visit("body_A", body_A);
+    visit("body_B", body_B);
+    visit("X_AP", X_AP);
+    visit("X_BQ", X_BQ);
+  }
 };
 struct TendonConstraint {  // lower <= sum a_i q_i + offset <= upper
   std::vector<JointId> joints;
   std::vector<double> a;
   double offset = 0, lower = 0, upper = 0, stiffness = 0, damping = 0;
+  template <typename Visit>
+  void VisitFields(Visit&& visit) const {
+    visit("joints", joints);
+    visit("a", a);
+    visit("offset", offset);
+    visit("lower", lower);
+    visit("upper", upper);
+    visit("stiffness", stiffness);
+    visit("damping", damping);
+  }
 };
 /// Alternatives in the order of ir::ConstraintType.
 using ConstraintPayload = std::variant<CouplerConstraint, BallConstraint, DistanceConstraint,

@@ -9,7 +9,6 @@
 #include "backend/json_writer.h"
 #include "backend/kinematics.h"
 #include "backend/mass_matrix.h"
-#include "ir/overloaded.h"
 #include "ir/shape_parameters.h"
 
 namespace mdlc::backend {
@@ -240,13 +239,29 @@ class PlantJsonEmitter {
     w_.EndObject();
   }
 
-  // a shape parameter's or a force element field's value (their
-  // VisitShapeParameters and VisitFields)
+  // a member per field of a constraint or force element (its VisitFields)
+  template <typename Entity>
+  void Fields(const Entity& entity) {
+    entity.VisitFields([&](std::string_view name, const auto& value) {
+      w_.Key(name);
+      Value(value);
+    });
+  }
+
+  // a shape parameter's, a constraint's or a force element's field's value
+  // (their VisitShapeParameters and VisitFields)
   void Value(double x) { w_.Number(x); }
   void Value(const Eigen::Vector3d& v) { Vector(v); }
   void Value(const std::string& s) { w_.String(s); }
   void Value(BodyId body) { w_.String(BodyName(body)); }
   void Value(JointId joint) { w_.String(JointName(joint)); }
+  void Value(const Transform& X) { Pose(X); }
+  void Value(const std::vector<double>& values) { Numbers(values); }
+  void Value(const std::vector<JointId>& joints) {
+    w_.BeginArray();
+    for (JointId j : joints) w_.String(JointName(j));
+    w_.EndArray();
+  }
 
   void PropertyValue(const ir::PropertyValue& value) {
     std::visit(
@@ -284,57 +299,12 @@ class PlantJsonEmitter {
     w_.EndObject();
   }
 
+  // its fields come from its VisitFields (plant.h)
   void Constraint(const PlantConstraint& c) {
     w_.BeginObject();
     w_.Key("type").String(ir::ConstraintTypeName(c.type()));
     w_.Key("model_instance").String(Instance(c.model));
-    auto bodies_and_points = [&](BodyId body_A, BodyId body_B, const Eigen::Vector3d& p_AP,
-                                 const Eigen::Vector3d& p_BQ) {
-      w_.Key("body_A").String(BodyName(body_A));
-      w_.Key("body_B").String(BodyName(body_B));
-      w_.Key("p_AP");
-      Vector(p_AP);
-      w_.Key("p_BQ");
-      Vector(p_BQ);
-    };
-    std::visit(ir::Overloaded{
-                   [&](const CouplerConstraint& k) {
-                     w_.Key("joint0").String(JointName(k.joint0));
-                     w_.Key("joint1").String(JointName(k.joint1));
-                     w_.Key("gear_ratio").Number(k.gear_ratio);
-                     w_.Key("offset").Number(k.offset);
-                   },
-                   [&](const BallConstraint& k) {
-                     bodies_and_points(k.body_A, k.body_B, k.p_AP, k.p_BQ);
-                   },
-                   [&](const DistanceConstraint& k) {
-                     bodies_and_points(k.body_A, k.body_B, k.p_AP, k.p_BQ);
-                     w_.Key("distance").Number(k.distance);
-                     w_.Key("stiffness").Number(k.stiffness);
-                     w_.Key("damping").Number(k.damping);
-                   },
-                   [&](const WeldConstraint& k) {
-                     w_.Key("body_A").String(BodyName(k.body_A));
-                     w_.Key("body_B").String(BodyName(k.body_B));
-                     w_.Key("X_AP");
-                     Pose(k.X_AP);
-                     w_.Key("X_BQ");
-                     Pose(k.X_BQ);
-                   },
-                   [&](const TendonConstraint& k) {
-                     w_.Key("joints").BeginArray();
-                     for (JointId j : k.joints) w_.String(JointName(j));
-                     w_.EndArray();
-                     w_.Key("a");
-                     Numbers(k.a);
-                     w_.Key("offset").Number(k.offset);
-                     w_.Key("lower").Number(k.lower);
-                     w_.Key("upper").Number(k.upper);
-                     w_.Key("stiffness").Number(k.stiffness);
-                     w_.Key("damping").Number(k.damping);
-                   },
-               },
-               c.payload);
+    std::visit([&](const auto& k) { Fields(k); }, c.payload);
     w_.EndObject();
   }
 
@@ -355,14 +325,7 @@ class PlantJsonEmitter {
   void ForceElementEntry(const ForceElement& f) {
     w_.BeginObject();
     w_.Key("type").String(ForceElementTypeName(plant_, f));
-    std::visit(
-        [&](const auto& element) {
-          element.VisitFields([&](std::string_view name, const auto& value) {
-            w_.Key(name);
-            Value(value);
-          });
-        },
-        f);
+    std::visit([&](const auto& element) { Fields(element); }, f);
     w_.EndObject();
   }
 

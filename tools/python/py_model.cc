@@ -13,7 +13,6 @@
 #include <span>
 #include <variant>
 
-#include "ir/overloaded.h"
 #include "ir/shape_parameters.h"
 
 namespace mdlc::python {
@@ -56,13 +55,20 @@ std::vector<std::string> RoleNames(uint8_t roles) {
   return names;
 }
 
-// A shape parameter's or a force element field's value, as Python holds it;
-// ids become scoped names, as plant-json writes them
+// A shape parameter's, a constraint's or a force element's field's value, as
+// Python holds it; ids become scoped names, as plant-json writes them
 py::object Value(double x, const Names&) { return py::cast(x); }
 py::object Value(const Eigen::Vector3d& v, const Names&) { return py::cast(Eigen::Vector3d(v)); }
 py::object Value(const std::string& s, const Names&) { return py::cast(s); }
 py::object Value(BodyId body, const Names& names) { return py::cast(names.body(body)); }
 py::object Value(JointId joint, const Names& names) { return py::cast(names.joint(joint)); }
+py::object Value(const Transform& X, const Names&) { return py::cast(MakePose(X)); }
+py::object Value(const std::vector<double>& v, const Names&) { return py::cast(ToVector(v)); }
+py::object Value(const std::vector<JointId>& joints, const Names& names) {
+  py::list list;
+  for (JointId j : joints) list.append(names.joint(j));
+  return list;
+}
 
 // plant-json's parameters (ir/shape_parameters.h), and Python's own extra: a
 // mesh's resolved file path
@@ -75,17 +81,20 @@ py::dict ShapeParameters(const ir::Shape& shape, const Names& names) {
   return d;
 }
 
-// the fields its VisitFields (backend/plant.h) lists, as plant-json writes them
+// a constraint's or force element's fields, by its VisitFields (backend/plant.h)
+template <typename Entity>
+py::dict Fields(const Entity& entity, const Names& names) {
+  py::dict d;
+  entity.VisitFields([&](std::string_view name, const auto& value) {
+    d[py::str(std::string(name))] = Value(value, names);
+  });
+  return d;
+}
+
 ForceElement MakeForceElement(const backend::Plant& plant, const backend::ForceElement& f,
                               const Names& names) {
   ForceElement out{std::string(backend::ForceElementTypeName(plant, f)), {}};
-  std::visit(
-      [&](const auto& element) {
-        element.VisitFields([&](std::string_view name, const auto& value) {
-          out.parameters[py::str(std::string(name))] = Value(value, names);
-        });
-      },
-      f);
+  std::visit([&](const auto& element) { out.parameters = Fields(element, names); }, f);
   return out;
 }
 
@@ -97,51 +106,10 @@ py::dict Properties(const std::vector<ir::Property>& properties) {
   return d;
 }
 
+// the fields its VisitFields (backend/plant.h) lists, as plant-json writes them
 Constraint MakeConstraint(const backend::PlantConstraint& c, const Names& names) {
   Constraint out{std::string(ir::ConstraintTypeName(c.type())), names.instance(c.model), {}};
-  py::dict& d = out.parameters;
-  auto bodies_and_points = [&](BodyId body_A, BodyId body_B, const Eigen::Vector3d& p_AP,
-                               const Eigen::Vector3d& p_BQ) {
-    d["body_A"] = names.body(body_A);
-    d["body_B"] = names.body(body_B);
-    d["p_AP"] = Eigen::Vector3d(p_AP);
-    d["p_BQ"] = Eigen::Vector3d(p_BQ);
-  };
-  std::visit(ir::Overloaded{
-                 [&](const backend::CouplerConstraint& k) {
-                   d["joint0"] = names.joint(k.joint0);
-                   d["joint1"] = names.joint(k.joint1);
-                   d["gear_ratio"] = k.gear_ratio;
-                   d["offset"] = k.offset;
-                 },
-                 [&](const backend::BallConstraint& k) {
-                   bodies_and_points(k.body_A, k.body_B, k.p_AP, k.p_BQ);
-                 },
-                 [&](const backend::DistanceConstraint& k) {
-                   bodies_and_points(k.body_A, k.body_B, k.p_AP, k.p_BQ);
-                   d["distance"] = k.distance;
-                   d["stiffness"] = k.stiffness;
-                   d["damping"] = k.damping;
-                 },
-                 [&](const backend::WeldConstraint& k) {
-                   d["body_A"] = names.body(k.body_A);
-                   d["body_B"] = names.body(k.body_B);
-                   d["X_AP"] = MakePose(k.X_AP);
-                   d["X_BQ"] = MakePose(k.X_BQ);
-                 },
-                 [&](const backend::TendonConstraint& k) {
-                   py::list joints;
-                   for (JointId j : k.joints) joints.append(names.joint(j));
-                   d["joints"] = joints;
-                   d["a"] = ToVector(k.a);
-                   d["offset"] = k.offset;
-                   d["lower"] = k.lower;
-                   d["upper"] = k.upper;
-                   d["stiffness"] = k.stiffness;
-                   d["damping"] = k.damping;
-                 },
-             },
-             c.payload);
+  std::visit([&](const auto& k) { out.parameters = Fields(k, names); }, c.payload);
   return out;
 }
 
