@@ -1,5 +1,6 @@
 """Every entity kind the plant holds, in all three of mdlc's full views of a
-model: `mdlc compile --emit=ir`, plant-json and the Python model.
+model: `mdlc compile --emit=ir`, plant-json and the Python model; and the
+shapes and roles `mdlc view` draws.
 
 tests/models/every_entity/ holds one of each kind (each joint type, shape,
 role, constraint, force element; frames, actuators, cameras, collision
@@ -18,6 +19,7 @@ import os
 import pathlib
 import re
 import subprocess
+import tempfile
 import unittest
 
 import numpy as np
@@ -35,7 +37,8 @@ JOINT_TYPES = {"weld", "revolute", "prismatic", "ball", "universal", "planar", "
 SHAPES = {"box", "sphere", "cylinder", "capsule", "ellipsoid", "half_space", "mesh", "convex"}
 ROLES = {"proximity", "illustration", "perception"}
 CONSTRAINTS = {"coupler", "ball", "distance", "weld", "tendon"}
-FORCE_ELEMENTS = {"linear_bushing_rpy", "linear_spring_damper", "revolute_spring"}
+FORCE_ELEMENTS = {"linear_bushing_rpy", "linear_spring_damper", "revolute_spring",
+                  "prismatic_spring"}
 
 # plant-json keys the Python object spells differently, per list
 PYTHON_NAME = {
@@ -179,6 +182,28 @@ class EveryEntity(unittest.TestCase):
                 if k != "type":
                     self.assertIn(f" {IR_KEY.get(k, k)}=", line)
         self.assertTrue(self.ir_lines("collision_filter_group"))
+
+    def test_the_viewer_draws_shapes_as_plant_json_gives_them(self):
+        with tempfile.TemporaryDirectory() as work:
+            page_path = pathlib.Path(work) / "page.html"
+            done = subprocess.run(
+                [os.environ["MDLC_BINARY"], "view", str(MODEL), "--package-path", str(MODEL_DIR),
+                 "-o", str(page_path)], capture_output=True, text=True)
+            if done.returncode != 0 and "without the viewer" in done.stderr:
+                self.skipTest(done.stderr.strip())
+            self.assertEqual(done.returncode, 0, done.stderr)
+            page = page_path.read_text(encoding="utf-8")
+        match = re.search(r'<script type="application/json" id="mdlc-model">(.*?)</script>', page,
+                          re.S)
+        view = json.loads(match.group(1))
+        self.assertEqual(len(view["geometries"]), len(self.plant["geometries"]))
+        for shown, entry in zip(view["geometries"], self.plant["geometries"]):
+            with self.subTest(geometry=entry["name"]):
+                self.assertEqual(shown["name"], entry["name"])
+                self.assertEqual(set(shown["roles"]), set(entry["roles"]))
+                # the page's own extra: which of its meshes draws a mesh shape
+                shape = {k: v for k, v in shown["shape"].items() if k != "mesh"}
+                self.assertEqual(shape, entry["shape"])
 
 
 if __name__ == "__main__":
