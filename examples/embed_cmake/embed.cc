@@ -8,6 +8,7 @@
 // is plain data (backend/plant.h); poses and the mass matrix at any
 // configuration are methods of the Result.
 #include <mdlc/mdlc.h>
+#include <mdlc/kinematics.h>
 
 #include <cstdio>
 #include <iostream>
@@ -37,8 +38,8 @@ bool Report(const mdlc::Result& result, const char* what) {
 
 void PrintModel(const mdlc::Result& result, const char* what) {
   const mdlc::backend::Plant& plant = result.plant();
-  const Eigen::VectorXd q = result.DefaultPositions();
-  const std::vector<mdlc::Transform> X_WB = result.BodyPoses(q);
+  const Eigen::VectorXd q = mdlc::DefaultPositions(result);
+  const std::vector<mdlc::Transform> X_WB = mdlc::BodyPoses(result, q);
   std::printf("%s: bodies %zu, positions %d, velocities %d\n", what, plant.bodies.size() - 1,
               plant.num_positions, plant.num_velocities);
   for (mdlc::BodyId id : plant.body_order) {
@@ -50,7 +51,7 @@ void PrintModel(const mdlc::Result& result, const char* what) {
   }
   // M(q) is nv x nv; print it only when it is small
   if (plant.num_velocities > 12) return;
-  const Eigen::MatrixXd M = result.MassMatrix(q);
+  const Eigen::MatrixXd M = mdlc::MassMatrix(result, q);
   std::printf("  mass matrix at the default configuration (%ld x %ld):\n",
               static_cast<long>(M.rows()), static_cast<long>(M.cols()));
   for (Eigen::Index r = 0; r < M.rows(); ++r) {

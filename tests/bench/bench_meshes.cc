@@ -51,6 +51,7 @@
 #include <vector>
 
 #include "bench_main.h"
+#include "mdlc/ir.h"
 #include "mdlc/mdlc.h"
 #include "mesh_model_gen.h"
 #include "tools/driver/heap_policy.h"
@@ -196,7 +197,7 @@ const Survey& SurveyOf(const ModelSpec& spec) {
   s.cache_entries = CountFiles(cache);
   fs::remove_all(cache);
   std::set<std::string> files;
-  for (const ir::Geometry& g : r.module().geometries) {
+  for (const ir::Geometry& g : mdlc::IrModule(r).geometries) {
     if (const auto* mesh = std::get_if<ir::Mesh>(&g.shape); mesh && !mesh->resolved.empty()) {
       files.insert(mesh->resolved);
     }

@@ -23,7 +23,10 @@
 #include <set>
 #include <variant>
 
+#include "mdlc/convert.h"
+#include "mdlc/kinematics.h"
 #include "mdlc/mdlc.h"
+#include "mdlc/meshes.h"
 
 namespace mdlc {
 namespace {
@@ -49,9 +52,17 @@ std::string Messages(const Result& r) {
   return out;
 }
 
-std::vector<const Diagnostic*> Find(const Result& r, DiagKind kind, std::string_view text) {
+/// The compile's diagnostics, then a conversion's of its Result.
+std::string Messages(const Result& r, const ConvertOutput& converted) {
+  std::string out = Messages(r);
+  for (const Diagnostic& d : converted.diagnostics) out += r.FormatText(d);
+  return out;
+}
+
+std::vector<const Diagnostic*> Find(const std::vector<Diagnostic>& diagnostics, DiagKind kind,
+                                    std::string_view text) {
   std::vector<const Diagnostic*> out;
-  for (const Diagnostic& d : r.diagnostics()) {
+  for (const Diagnostic& d : diagnostics) {
     if (d.kind == kind && d.message.find(text) != std::string::npos) out.push_back(&d);
   }
   return out;
@@ -122,9 +133,11 @@ TEST(MjcfMeshes, CopyAssetsWritesMeshesMujocoCannotReadAsObj) {
   convert.to = Format::Mjcf;
   convert.output = (dir.path() / "meshes.xml").string();
   convert.copy_assets_dir = (dir.path() / "assets").string();
-  const std::optional<std::string> text = source.Convert(convert);
-  ASSERT_TRUE(text) << Messages(source);
-  EXPECT_TRUE(Find(source, DiagKind::Lossy, "mesh").empty()) << Messages(source);
+  const ConvertOutput converted = mdlc::Convert(source, convert);
+  const std::optional<std::string>& text = converted.text;
+  ASSERT_TRUE(text) << Messages(source, converted);
+  EXPECT_TRUE(Find(converted.diagnostics, DiagKind::Lossy, "mesh").empty())
+      << Messages(source, converted);
   for (const char* ext : {".dae", ".gltf", ".ply"}) {
     EXPECT_EQ(Count(*text, ext), 0u) << ext << "\n" << *text;
   }
@@ -154,8 +167,8 @@ TEST(MjcfMeshes, CopyAssetsWritesMeshesMujocoCannotReadAsObj) {
     ASSERT_TRUE(original.count(g.name));
     const auto& [file, scale] = original[g.name];
     EXPECT_EQ(m.scale, scale);
-    const std::vector<MeshTriangles> a = source.ReadMeshes({file});
-    const std::vector<MeshTriangles> b = back.ReadMeshes({m.resolved});
+    const std::vector<MeshTriangles> a = mdlc::ReadMeshes(source, {file});
+    const std::vector<MeshTriangles> b = mdlc::ReadMeshes(back, {m.resolved});
     ASSERT_TRUE(a[0].ok() && b[0].ok()) << a[0].error << b[0].error;
     SCOPED_TRACE(file + " -> " + m.resolved);
     EXPECT_EQ(Surface(a[0]), Surface(b[0]));
@@ -177,9 +190,11 @@ TEST(MjcfMeshes, WithoutCopyAssetsEachUnreadableMeshIsWarnedOnce) {
   ConvertOptions convert;
   convert.to = Format::Mjcf;
   convert.output = (dir.path() / "meshes.xml").string();
-  ASSERT_TRUE(source.Convert(convert)) << Messages(source);
-  const auto warned = Find(source, DiagKind::Lossy, "MuJoCo reads STL, OBJ and MSH meshes only");
-  ASSERT_EQ(warned.size(), 3u) << Messages(source);  // dae (twice named), gltf, ply
+  const ConvertOutput converted = mdlc::Convert(source, convert);
+  ASSERT_TRUE(converted.text) << Messages(source, converted);
+  const auto warned =
+      Find(converted.diagnostics, DiagKind::Lossy, "MuJoCo reads STL, OBJ and MSH meshes only");
+  ASSERT_EQ(warned.size(), 3u) << Messages(source, converted);  // dae (twice named), gltf, ply
   EXPECT_NE(warned[0]->message.find("box.dae"), std::string::npos) << warned[0]->message;
   EXPECT_NE(warned[0]->message.find("--copy-assets writes an OBJ of it that MuJoCo reads"),
             std::string::npos)
@@ -222,8 +237,9 @@ TEST(PlainUrdf, OneRootLinkAndNoDrakeShapesOrJoints) {
   convert.to = Format::Urdf;
   convert.plain = true;
   convert.output = (dir.path() / "scene.urdf").string();
-  const std::optional<std::string> text = source.Convert(convert);
-  ASSERT_TRUE(text) << Messages(source);
+  const ConvertOutput converted = mdlc::Convert(source, convert);
+  const std::optional<std::string>& text = converted.text;
+  ASSERT_TRUE(text) << Messages(source, converted);
   EXPECT_EQ(Count(*text, "drake:capsule"), 0u) << *text;
   EXPECT_EQ(Count(*text, "drake:ellipsoid"), 0u) << *text;
   EXPECT_EQ(Count(*text, "drake:joint"), 0u) << *text;
@@ -242,13 +258,13 @@ TEST(PlainUrdf, OneRootLinkAndNoDrakeShapesOrJoints) {
     if (!children.count(l)) roots.push_back(l);
   }
   EXPECT_EQ(roots, std::vector<std::string>{"world"}) << *text;
-  EXPECT_EQ(Find(source, DiagKind::Lossy, "capsule 'pill' is written as the cylinder").size(),
-            1u)
-      << Messages(source);
-  EXPECT_EQ(Find(source, DiagKind::Lossy, "ellipsoid 'egg' is written as the sphere").size(), 1u)
-      << Messages(source);
-  EXPECT_EQ(Find(source, DiagKind::Lossy, "ball joint 'neck' has no plain URDF type").size(), 1u)
-      << Messages(source);
+  const std::vector<Diagnostic>& lossy = converted.diagnostics;
+  EXPECT_EQ(Find(lossy, DiagKind::Lossy, "capsule 'pill' is written as the cylinder").size(), 1u)
+      << Messages(source, converted);
+  EXPECT_EQ(Find(lossy, DiagKind::Lossy, "ellipsoid 'egg' is written as the sphere").size(), 1u)
+      << Messages(source, converted);
+  EXPECT_EQ(Find(lossy, DiagKind::Lossy, "ball joint 'neck' has no plain URDF type").size(), 1u)
+      << Messages(source, converted);
   EXPECT_NE(text->find("<cylinder radius=\"0.1\" length=\"0.6000000000000001\""),
             std::string::npos)
       << *text;  // 0.4 + 2 * 0.1
@@ -263,7 +279,8 @@ TEST(PlainUrdf, OneRootLinkAndNoDrakeShapesOrJoints) {
 
   // without --plain: Drake's dialect, as before
   convert.plain = false;
-  const std::optional<std::string> drake = source.Convert(convert);
+  const ConvertOutput converted_drake = mdlc::Convert(source, convert);
+  const std::optional<std::string>& drake = converted_drake.text;
   ASSERT_TRUE(drake);
   EXPECT_EQ(Count(*drake, "<drake:capsule"), 1u);
   EXPECT_EQ(Count(*drake, "<drake:joint"), 1u);
@@ -295,11 +312,12 @@ TEST(FixedBase, UrdfRootFloatingInMjcfGetsANote) {
   ConvertOptions convert;
   convert.to = Format::Mjcf;
   convert.output = (dir.path() / "arm.xml").string();
-  const std::optional<std::string> text = source.Convert(convert);
+  const ConvertOutput converted = mdlc::Convert(source, convert);
+  const std::optional<std::string>& text = converted.text;
   ASSERT_TRUE(text);
   EXPECT_EQ(Count(*text, "<freejoint"), 1u) << *text;
-  const auto notes = Find(source, DiagKind::FreeBase, "root link 'base'");
-  ASSERT_EQ(notes.size(), 1u) << Messages(source);
+  const auto notes = Find(converted.diagnostics, DiagKind::FreeBase, "root link 'base'");
+  ASSERT_EQ(notes.size(), 1u) << Messages(source, converted);
   EXPECT_NE(notes[0]->message.find("--fixed-base welds it"), std::string::npos)
       << notes[0]->message;
   EXPECT_NE(source.FormatText(*notes[0]).find("arm.urdf:2:3: note:"), std::string::npos)
@@ -308,8 +326,10 @@ TEST(FixedBase, UrdfRootFloatingInMjcfGetsANote) {
   convert.to = Format::Sdf;
   convert.output = (dir.path() / "arm.sdf").string();
   Result again = CompileText(kArm, dir.path() / "arm.urdf");
-  ASSERT_TRUE(again.Convert(convert));
-  EXPECT_TRUE(Find(again, DiagKind::FreeBase, "").empty()) << Messages(again);
+  const ConvertOutput converted_again = mdlc::Convert(again, convert);
+  ASSERT_TRUE(converted_again.text);
+  EXPECT_TRUE(Find(converted_again.diagnostics, DiagKind::FreeBase, "").empty())
+      << Messages(again, converted_again);
 }
 
 // --fixed-base welds the root link to the world where it is: the MJCF has no
@@ -326,8 +346,8 @@ TEST(FixedBase, WeldsEachFreeRootToTheWorld) {
   }
   EXPECT_TRUE(welded);
   Result floating = CompileText(kArm, dir.path() / "arm.urdf");
-  const Eigen::MatrixXd M = source.MassMatrix(source.DefaultPositions());
-  const Eigen::MatrixXd M_free = floating.MassMatrix(floating.DefaultPositions());
+  const Eigen::MatrixXd M = mdlc::MassMatrix(source, mdlc::DefaultPositions(source));
+  const Eigen::MatrixXd M_free = mdlc::MassMatrix(floating, mdlc::DefaultPositions(floating));
   ASSERT_EQ(M.rows(), 1);
   // the shoulder's entry is the same as in the floating arm's matrix
   EXPECT_NEAR(M(0, 0), M_free(6, 6), 1e-12);
@@ -335,10 +355,12 @@ TEST(FixedBase, WeldsEachFreeRootToTheWorld) {
   ConvertOptions convert;
   convert.to = Format::Mjcf;
   convert.output = (dir.path() / "arm.xml").string();
-  const std::optional<std::string> text = source.Convert(convert);
+  const ConvertOutput converted = mdlc::Convert(source, convert);
+  const std::optional<std::string>& text = converted.text;
   ASSERT_TRUE(text);
   EXPECT_EQ(Count(*text, "<freejoint"), 0u) << *text;
-  EXPECT_TRUE(Find(source, DiagKind::FreeBase, "").empty()) << Messages(source);
+  EXPECT_TRUE(Find(converted.diagnostics, DiagKind::FreeBase, "").empty())
+      << Messages(source, converted);
   // a body with a pose of its own (SDFormat) is welded where it is
   const std::string sdf = R"(<sdf version="1.9"><model name="m">
   <link name="box"><pose>1 2 3 0 0 0.5</pose>
@@ -347,7 +369,7 @@ TEST(FixedBase, WeldsEachFreeRootToTheWorld) {
 )";
   Result box = CompileText(sdf, dir.path() / "box.sdf", options);
   ASSERT_EQ(box.plant().num_positions, 0);
-  const auto X_WB = box.BodyPoses(box.DefaultPositions());
+  const auto X_WB = mdlc::BodyPoses(box, mdlc::DefaultPositions(box));
   EXPECT_TRUE(X_WB.back().p.isApprox(Eigen::Vector3d(1, 2, 3), 1e-15)) << X_WB.back().p;
 }
 

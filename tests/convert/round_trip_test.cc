@@ -30,6 +30,9 @@
 #include <sstream>
 
 #include "../corpus/shared_corpus.h"
+#include "ir/module.h"
+#include "mdlc/convert.h"
+#include "mdlc/kinematics.h"
 #include "mdlc/mdlc.h"
 #include "passes/mesh/mesh_loader.h"
 
@@ -119,6 +122,13 @@ std::string Messages(const Result& r) {
   return out;
 }
 
+/// The compile's diagnostics, then a conversion's of its Result.
+std::string Messages(const Result& r, const std::vector<Diagnostic>& converted) {
+  std::string out = Messages(r);
+  for (const Diagnostic& d : converted) out += r.FormatText(d);
+  return out;
+}
+
 bool Near(double a, double b, double scale) {
   return std::abs(a - b) <= kTolerance * std::max(1.0, scale);
 }
@@ -134,9 +144,10 @@ Eigen::VectorXd RandomPositions(const backend::Plant& plant, std::mt19937& rng) 
   return q;
 }
 
-size_t CountLossy(const Result& r, std::string_view text) {
+/// The -Wlossy warnings among a conversion's diagnostics that hold `text`.
+size_t CountLossy(const std::vector<Diagnostic>& converted, std::string_view text) {
   size_t n = 0;
-  for (const Diagnostic& d : r.diagnostics()) {
+  for (const Diagnostic& d : converted) {
     n += d.kind == DiagKind::Lossy && d.message.find(text) != std::string::npos;
   }
   return n;
@@ -229,8 +240,10 @@ fs::path DialectFolder(const fs::path& dir, const Target& to) {
 /// The converted model against the original; failures are gtest failures.
 class Comparison {
  public:
-  Comparison(const Result& a, const Result& b, const Target& to)
-      : a_(a), b_(b), pa_(a.plant()), pb_(b.plant()), to_(to) {}
+  /// `converted`: the diagnostics of the conversion of a into b.
+  Comparison(const Result& a, const Result& b, const std::vector<Diagnostic>& converted,
+             const Target& to)
+      : a_(a), b_(b), converted_(converted), pa_(a.plant()), pb_(b.plant()), to_(to) {}
 
   /// False when the kinematic structure could not be mapped.
   bool MapStructure(std::string* why) {
@@ -297,8 +310,8 @@ class Comparison {
 
   void CompareAt(const Eigen::VectorXd& q, const std::string& label) {
     const Eigen::VectorXd qb = MapPositions(q);
-    const auto X_WA = a_.BodyPoses(q);
-    const auto X_WB = b_.BodyPoses(qb);
+    const auto X_WA = mdlc::BodyPoses(a_, q);
+    const auto X_WB = mdlc::BodyPoses(b_, qb);
     for (size_t i = 1; i < pa_.bodies.size(); ++i) {
       // the converted body's frame, as the target's writer places it
       Transform expected = X_WA[i];
@@ -317,8 +330,8 @@ class Comparison {
                         << got.p.transpose();
       if (!same) return;
     }
-    const Eigen::MatrixXd Ma = a_.MassMatrix(q);
-    const Eigen::MatrixXd Mb = b_.MassMatrix(qb);
+    const Eigen::MatrixXd Ma = mdlc::MassMatrix(a_, q);
+    const Eigen::MatrixXd Mb = mdlc::MassMatrix(b_, qb);
     ASSERT_EQ(Ma.rows(), Mb.rows());
     if (Ma.size() == 0) return;  // nothing moves
     const std::vector<int> v = VelocityMap();
@@ -345,7 +358,7 @@ class Comparison {
     size_t n_dropped = 0;
     for (const auto& g : sa.geometries) n_dropped += to_.drops(g) ? 1 : 0;
     if (n_dropped > 0) {
-      EXPECT_GT(CountLossy(a_, to_.drop_warning), 0u);
+      EXPECT_GT(CountLossy(converted_, to_.drop_warning), 0u);
     }
     EXPECT_EQ(count(sb, ir::kProximityRole, DropsNothing),
               count(sa, ir::kProximityRole, to_.drops));
@@ -362,7 +375,7 @@ class Comparison {
     std::set<std::pair<size_t, size_t>> fa, fb;
     for (const auto& [x, y] : sa.collision_filters.Pairs(pa_)) {
       if (!to_.writes_world_filters && (x.index() == 0 || y.index() == 0)) {
-        EXPECT_GT(CountLossy(a_, "and the world is dropped"), 0u);
+        EXPECT_GT(CountLossy(converted_, "and the world is dropped"), 0u);
         continue;
       }
       const size_t mx = body_map_[x.index()].index(), my = body_map_[y.index()].index();
@@ -379,7 +392,7 @@ class Comparison {
         const size_t mx = body_map_[x.index()].index(), my = body_map_[y.index()].index();
         const std::pair<size_t, size_t> pair{std::min(mx, my), std::max(mx, my)};
         if (fb.count(pair)) continue;
-        EXPECT_GT(CountLossy(a_, "different top-level models"), 0u);
+        EXPECT_GT(CountLossy(converted_, "different top-level models"), 0u);
         fa.erase(pair);
       }
     }
@@ -395,6 +408,7 @@ class Comparison {
  private:
   const Result& a_;
   const Result& b_;
+  const std::vector<Diagnostic>& converted_;
   const backend::Plant& pa_;
   const backend::Plant& pb_;
   const Target& to_;
@@ -421,8 +435,9 @@ Outcome RoundTrip(const ModelCase& mc, const Target& to, const fs::path& dir) {
   convert.to = to.format;
   convert.output = out.string();
   convert.plain = to.plain;
-  const std::optional<std::string> text = a.Convert(convert);
-  EXPECT_TRUE(text) << Messages(a);
+  const ConvertOutput converted = mdlc::Convert(a, convert);
+  const std::optional<std::string>& text = converted.text;
+  EXPECT_TRUE(text) << Messages(a, converted.diagnostics);
   if (!text) return Outcome::Compared;
   std::ofstream(out) << *text;
   Result b = Compile(Input::File(out.string()));
@@ -431,16 +446,16 @@ Outcome RoundTrip(const ModelCase& mc, const Target& to, const fs::path& dir) {
                       << *text;
   if (!b.ok()) return Outcome::Compared;
 
-  Comparison cmp(a, b, to);
+  Comparison cmp(a, b, converted.diagnostics, to);
   std::string why;
   if (!cmp.MapStructure(&why)) {
     // only a conversion that said it changed the structure may do so
-    const bool reported = CountLossy(a, "joint") > 0;
+    const bool reported = CountLossy(converted.diagnostics, "joint") > 0;
     EXPECT_TRUE(reported) << "structure changed without a -Wlossy warning: " << why;
     return Outcome::Approximated;
   }
   std::mt19937 rng(20261126);
-  cmp.CompareAt(a.DefaultPositions(), "default q");
+  cmp.CompareAt(mdlc::DefaultPositions(a), "default q");
   for (int k = 0; k < 3; ++k) cmp.CompareAt(RandomPositions(a.plant(), rng), fmt::format("q #{}", k));
   cmp.CompareGeometryAndFilters();
   return Outcome::Compared;
@@ -497,13 +512,14 @@ INSTANTIATE_TEST_SUITE_P(Corpus, CorpusRoundTrip,
 struct Conversion {
   Result source;
   std::optional<std::string> text;
+  std::vector<Diagnostic> diagnostics;  // the conversion's
   std::optional<Result> back;
   fs::path file;
 
   /// The -Wlossy warnings of the conversion whose message holds `text`.
   std::vector<const Diagnostic*> Lossy(std::string_view text) const {
     std::vector<const Diagnostic*> out;
-    for (const Diagnostic& d : source.diagnostics()) {
+    for (const Diagnostic& d : diagnostics) {
       if (d.kind == DiagKind::Lossy && d.message.find(text) != std::string::npos) out.push_back(&d);
     }
     return out;
@@ -512,16 +528,18 @@ struct Conversion {
 
 Conversion ConvertText(const std::string& model, const std::string& name, ConvertOptions convert,
                        const fs::path& dir) {
-  Conversion c{Compile(Input::Text(model, (dir / name).string())), {}, {}, {}};
-  EXPECT_TRUE(c.source.ok()) << Messages(c.source);
+  Conversion c{Compile(Input::Text(model, (dir / name).string())), {}, {}, {}, {}};
+  EXPECT_TRUE(c.source.ok()) << Messages(c.source, c.diagnostics);
   if (!c.source.ok()) return c;
   c.file = dir / ("converted_" + fs::path(name).stem().string() +
                   (convert.to == Format::Urdf  ? ".urdf"
                    : convert.to == Format::Sdf ? ".sdf"
                                                : ".xml"));
   convert.output = c.file.string();
-  c.text = c.source.Convert(convert);
-  EXPECT_TRUE(c.text) << Messages(c.source);
+  ConvertOutput converted = mdlc::Convert(c.source, convert);
+  c.text = std::move(converted.text);
+  c.diagnostics = std::move(converted.diagnostics);
+  EXPECT_TRUE(c.text) << Messages(c.source, c.diagnostics);
   if (!c.text) return c;
   std::ofstream(c.file) << *c.text;
   c.back = Compile(Input::File(c.file.string()));
@@ -556,7 +574,7 @@ TEST(MjcfWriter, ConvexMeshDeclarationIsALocatedLossyWarning) {
   const Conversion c = ConvertText(urdf, "convex.urdf", To(Format::Mjcf), dir.path());
   ASSERT_TRUE(c.back && c.back->ok());
   const auto lossy = c.Lossy("convex");
-  ASSERT_EQ(lossy.size(), 1u) << Messages(c.source);
+  ASSERT_EQ(lossy.size(), 1u) << Messages(c.source, c.diagnostics);
   EXPECT_NE(lossy[0]->message.find("geometry 'hull'"), std::string::npos) << lossy[0]->message;
   EXPECT_NE(lossy[0]->message.find("MuJoCo collides with every mesh's convex hull"),
             std::string::npos)
@@ -611,12 +629,12 @@ TEST(MjcfWriter, StackedJointsAreOneBodyAgain) {
   EXPECT_EQ(Count(*c.text, "<joint "), Count(xml, "<joint "));
   EXPECT_GT(c.source.plant().bodies.size(), Count(xml, "<body") + 1);  // the chains' links
   // the unnamed links come back as they were: nothing to warn about
-  EXPECT_TRUE(c.Lossy("").empty()) << Messages(c.source);
-  Comparison cmp(c.source, *c.back, kTargets[2]);
+  EXPECT_TRUE(c.Lossy("").empty()) << Messages(c.source, c.diagnostics);
+  Comparison cmp(c.source, *c.back, c.diagnostics, kTargets[2]);
   std::string why;
   ASSERT_TRUE(cmp.MapStructure(&why)) << why;
   std::mt19937 rng(7);
-  cmp.CompareAt(c.source.DefaultPositions(), "default q");
+  cmp.CompareAt(mdlc::DefaultPositions(c.source), "default q");
   for (int k = 0; k < 5; ++k) {
     cmp.CompareAt(RandomPositions(c.source.plant(), rng), fmt::format("q #{}", k));
   }
@@ -648,7 +666,7 @@ TEST(MjcfWriter, NamedMasslessLinkBetweenJointsIsMergedWithAWarning) {
   const Conversion c = ConvertText(urdf, "gimbal.urdf", To(Format::Mjcf), dir.path());
   ASSERT_TRUE(c.back && c.back->ok());
   const auto lossy = c.Lossy("body 'yoke' is massless");
-  ASSERT_EQ(lossy.size(), 1u) << Messages(c.source);
+  ASSERT_EQ(lossy.size(), 1u) << Messages(c.source, c.diagnostics);
   EXPECT_NE(c.source.FormatText(*lossy[0]).find("gimbal.urdf:7:"), std::string::npos)
       << c.source.FormatText(*lossy[0]);
   EXPECT_EQ(Count(*c.text, "<body"), 1u) << *c.text;  // the head, on both joints
@@ -657,7 +675,7 @@ TEST(MjcfWriter, NamedMasslessLinkBetweenJointsIsMergedWithAWarning) {
   const auto& pb = c.back->plant();
   std::mt19937 rng(3);
   for (int k = 0; k < 4; ++k) {
-    const Eigen::VectorXd qa = k == 0 ? c.source.DefaultPositions() : RandomPositions(pa, rng);
+    const Eigen::VectorXd qa = k == 0 ? mdlc::DefaultPositions(c.source) : RandomPositions(pa, rng);
     Eigen::VectorXd qb = Eigen::VectorXd::Zero(pb.num_positions);
     for (const auto& ja : pa.joints) {
       if (ja.nq == 0) continue;
@@ -665,15 +683,15 @@ TEST(MjcfWriter, NamedMasslessLinkBetweenJointsIsMergedWithAWarning) {
         if (jb.name == ja.name) qb.segment(jb.q_start, jb.nq) = qa.segment(ja.q_start, ja.nq);
       }
     }
-    const auto X_a = c.source.BodyPoses(qa);
-    const auto X_b = c.back->BodyPoses(qb);
+    const auto X_a = mdlc::BodyPoses(c.source, qa);
+    const auto X_b = mdlc::BodyPoses(*c.back, qb);
     size_t head_a = 0, head_b = 0;
     for (size_t i = 0; i < pa.bodies.size(); ++i) head_a = pa.bodies[i].name == "head" ? i : head_a;
     for (size_t i = 0; i < pb.bodies.size(); ++i) head_b = pb.bodies[i].name == "head" ? i : head_b;
     ASSERT_GT(head_a * head_b, 0u);
     EXPECT_TRUE(X_a[head_a].p.isApprox(X_b[head_b].p, 1e-12)) << k;
     EXPECT_TRUE(X_a[head_a].R.isApprox(X_b[head_b].R, 1e-12)) << k;
-    const Eigen::MatrixXd Ma = c.source.MassMatrix(qa), Mb = c.back->MassMatrix(qb);
+    const Eigen::MatrixXd Ma = mdlc::MassMatrix(c.source, qa), Mb = mdlc::MassMatrix(*c.back, qb);
     ASSERT_EQ(Ma.rows(), 2);
     ASSERT_EQ(Mb.rows(), 2);
     EXPECT_LE((Ma - Mb).cwiseAbs().maxCoeff(), 1e-12 * Ma.cwiseAbs().maxCoeff()) << k;
@@ -743,10 +761,10 @@ TEST(MjcfWriter, FuseFixedCombinesMassPropertiesExactly) {
   EXPECT_EQ(pb.bodies.size(), pa.bodies.size() - welds);
   // a note per fused body, naming it (not a warning: --fuse-fixed asked for it)
   std::vector<std::string> notes;
-  for (const Diagnostic& d : c.source.diagnostics()) {
+  for (const Diagnostic& d : c.diagnostics) {
     if (d.kind == DiagKind::FusedBody) notes.push_back(d.message);
   }
-  ASSERT_EQ(notes.size(), 2u) << Messages(c.source);
+  ASSERT_EQ(notes.size(), 2u) << Messages(c.source, c.diagnostics);
   EXPECT_NE(notes[0].find("body 'flange' is fused into body 'upper'"), std::string::npos)
       << notes[0];
   EXPECT_NE(notes[1].find("body 'tool' is fused into body 'upper'"), std::string::npos) << notes[1];
@@ -781,10 +799,10 @@ TEST(MjcfWriter, FuseFixedCombinesMassPropertiesExactly) {
   }
   std::mt19937 rng(11);
   for (int k = 0; k < 5; ++k) {
-    const Eigen::VectorXd qa = k == 0 ? c.source.DefaultPositions() : RandomPositions(pa, rng);
+    const Eigen::VectorXd qa = k == 0 ? mdlc::DefaultPositions(c.source) : RandomPositions(pa, rng);
     Eigen::VectorXd qb = Eigen::VectorXd::Zero(pb.num_positions);
     for (const auto& [ia, ib] : q_map) qb[ib] = qa[ia];
-    const Eigen::MatrixXd Ma = c.source.MassMatrix(qa), Mb = c.back->MassMatrix(qb);
+    const Eigen::MatrixXd Ma = mdlc::MassMatrix(c.source, qa), Mb = mdlc::MassMatrix(*c.back, qb);
     ASSERT_EQ(Ma.rows(), Mb.rows());
     const double scale = Ma.cwiseAbs().maxCoeff();
     for (int r = 0; r < Ma.rows(); ++r) {
@@ -794,7 +812,7 @@ TEST(MjcfWriter, FuseFixedCombinesMassPropertiesExactly) {
       }
     }
     // the fused bodies' frames and their frames, where they were
-    const auto X_WA = c.source.BodyPoses(qa), X_WB = c.back->BodyPoses(qb);
+    const auto X_WA = mdlc::BodyPoses(c.source, qa), X_WB = mdlc::BodyPoses(*c.back, qb);
     for (const char* name : {"flange", "tool", "tcp"}) {
       const BodyId ba = body_named(pa, name);
       const std::optional<Transform> was = ba.valid() ? std::optional<Transform>(X_WA[ba.index()])
@@ -891,10 +909,11 @@ TEST(Names, MultiInstanceRoundTripKeepsScopedNames) {
     const std::set<std::string> instances_after(names_after.begin(), names_after.end());
     EXPECT_EQ(instances_after, instances_before);
     // the plant is the same under those names
-    Comparison cmp(c.source, *c.back, to == Format::Urdf ? kTargets[0] : kTargets[2]);
+    Comparison cmp(c.source, *c.back, c.diagnostics,
+                   to == Format::Urdf ? kTargets[0] : kTargets[2]);
     std::string why;
     ASSERT_TRUE(cmp.MapStructure(&why)) << why;
-    cmp.CompareAt(c.source.DefaultPositions(), "default q");
+    cmp.CompareAt(mdlc::DefaultPositions(c.source), "default q");
     // naming the model reads the file as written: one instance, flat names
     Options named;
     named.model_name = "as_written";

@@ -13,6 +13,8 @@
 #include <thread>
 
 #include "ir/printer.h"
+#include "mdlc/ir.h"
+#include "mdlc/kinematics.h"
 #include "mdlc/mdlc.h"
 #include "shared_corpus.h"
 
@@ -46,8 +48,8 @@ std::string Everything(const std::string& path) {
   const Result r = Compile(Input::File(path), options);
   std::string out;
   for (const Diagnostic& d : r.diagnostics()) out += r.FormatText(d);
-  out += ir::PrintModule(r.module(), r.sources());
-  if (r.has_model()) out += r.PlantJson(r.DefaultPositions());
+  out += ir::PrintModule(mdlc::IrModule(r), r.sources());
+  if (r.has_model()) out += mdlc::PlantJson(r, mdlc::DefaultPositions(r));
   return out;
 }
 

@@ -11,6 +11,8 @@
 #include <iterator>
 #include <string>
 
+#include "mdlc/convert.h"
+#include "mdlc/kinematics.h"
 #include "mdlc/mdlc.h"
 
 namespace {
@@ -37,7 +39,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   // exercise what a user reads after a compile
   for (const mdlc::Diagnostic& d : result.diagnostics()) (void)result.FormatText(d);
   if (!result.has_model()) return 0;
-  (void)result.PlantJson(result.DefaultPositions());
+  (void)mdlc::PlantJson(result, mdlc::DefaultPositions(result));
   // and what `mdlc convert` writes of it, in each format and with MJCF's
   // fused bodies (a lossy warning is a diagnostic; only a crash, leak or
   // hang is a finding). An error ends the model, so each write asks again.
@@ -47,7 +49,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     mdlc::ConvertOptions convert;
     convert.to = targets[i];
     convert.fuse_fixed = i == 3;
-    (void)result.Convert(convert);
+    (void)mdlc::Convert(result, convert);
   }
   return 0;
 }

@@ -43,6 +43,8 @@ struct CompileOptions {
   /// Weld free bodies to the world instead of floating them
   /// (Options::fixed_base).
   bool fixed_base = false;
+  /// Options::diagnostics, kept for what reports after the compile (Convert).
+  DiagnosticPolicy diagnostics;
 };
 
 class Compilation {
@@ -60,7 +62,7 @@ class Compilation {
   assets::PackageMap packages;
   std::optional<backend::CompiledModel> model;
   /// Mesh files read during the compile, each once (the passes fill it;
-  /// tools read it afterwards, e.g. Result::MeshSizes).
+  /// tools read it afterwards, e.g. MeshSizes in mdlc/meshes.h).
   std::shared_ptr<mesh::MeshCache> meshes = std::make_shared<mesh::MeshCache>();
   /// Derived mesh data on disk (CompileOptions::mesh_cache_dir); null: none.
   std::shared_ptr<mesh::DerivedMeshCache> derived_meshes;

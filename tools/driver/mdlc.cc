@@ -6,14 +6,10 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "backend/kinematics.h"
-#include "backend/mass_matrix.h"
 #include "backend/positions.h"
-#include "backend/writers/writer.h"
 #include "ir/assets/package_scan.h"
 #include "frontend/xacro/xacro.h"
 #include "tools/driver/compiler.h"
-#include "tools/driver/obj_transcoder.h"
 
 namespace mdlc {
 
@@ -141,6 +137,7 @@ Result Compile(const std::vector<Input>& inputs, const Options& options) {
   c->options.instrumentation.verify_each = options.verify_each;
   c->options.skip_backend = options.skip_backend;
   c->options.fixed_base = options.fixed_base;
+  c->options.diagnostics = options.diagnostics;
   c->sources.set_limits(options.limits);
   c->options.mesh_reading = options.mesh_reader == MeshReader::InProcess
                                 ? mesh::MeshReading::kInProcess
@@ -178,7 +175,6 @@ std::string Result::FormatJson(const Diagnostic& diagnostic) const {
 }
 
 const SourceManager& Result::sources() const { return compilation_->sources; }
-const ir::Module& Result::module() const { return compilation_->module; }
 
 bool Result::has_model() const { return compilation_->model.has_value() && ok(); }
 const backend::CompiledModel& Result::model() const {
@@ -189,109 +185,6 @@ const backend::CompiledModel& Result::model() const {
   return *compilation_->model;
 }
 
-Eigen::VectorXd Result::DefaultPositions() const {
-  Eigen::VectorXd q = backend::DefaultPositions(plant());
-  for (const auto& [name, value] : joint_positions_) {
-    backend::SetJointPositionByName(plant(), q, name, value);  // checked by Compile
-  }
-  return q;
-}
-
-bool Result::SetJointPosition(Eigen::VectorXd& q, std::string_view name, double value) const {
-  return backend::SetJointPositionByName(plant(), q, name, value);
-}
-
-Eigen::MatrixXd Result::MassMatrix(const Eigen::VectorXd& q) const {
-  return backend::CalcMassMatrix(plant(), q);
-}
-
-std::vector<Transform> Result::BodyPoses(const Eigen::VectorXd& q) const {
-  return backend::BodyPosesInWorld(plant(), q);
-}
-
-std::string Result::PlantJson(const Eigen::VectorXd& q,
-                              const backend::PlantJsonOptions& options) const {
-  return backend::EmitPlantJson(model(), q, options);
-}
-
 const std::string& Result::timing_report() const { return compilation_->timing_report(); }
-
-namespace {
-
-/// Reads `paths` through the compile's mesh cache (in parallel, each file
-/// once) and makes an `Out` of each: its error, or what `take` takes from
-/// the mesh.
-template <typename Out, typename Take>
-std::vector<Out> ReadEach(mesh::MeshCache& meshes, const std::vector<std::string>& paths,
-                          Take take) {
-  meshes.Prefetch(paths);
-  std::vector<Out> out;
-  out.reserve(paths.size());
-  for (const std::string& path : paths) {
-    const mesh::MeshOrError m = meshes.Get(path);
-    Out& o = out.emplace_back();
-    if (m.ok()) {
-      take(path, *m.mesh, o);
-    } else {
-      o.error = m.error;
-    }
-  }
-  return out;
-}
-
-}  // namespace
-
-std::vector<MeshSize> Result::MeshSizes(const std::vector<std::string>& resolved_paths) const {
-  // the counts are among a mesh's facts: a warm cache answers without
-  // reading the file
-  mesh::MeshCache& meshes = *compilation_->meshes;
-  meshes.Survey(resolved_paths);
-  std::vector<MeshSize> out;
-  out.reserve(resolved_paths.size());
-  for (const std::string& path : resolved_paths) {
-    const mesh::MeshStatus m = meshes.Status(path);
-    MeshSize& size = out.emplace_back();
-    if (m.ok()) {
-      size.vertices = m.facts->vertices;
-      size.triangles = m.facts->triangles;
-    } else {
-      size.error = m.error;
-    }
-  }
-  return out;
-}
-
-std::vector<MeshTriangles> Result::ReadMeshes(const std::vector<std::string>& resolved_paths,
-                                              std::string* axes_note) const {
-  mesh::OffAxisColladaFiles off_axis;
-  std::vector<MeshTriangles> meshes = ReadEach<MeshTriangles>(
-      *compilation_->meshes, resolved_paths,
-      [&](const std::string& path, const mesh::TriangleMesh& m, MeshTriangles& out) {
-        out.vertices = m.vertices;
-        out.triangles = m.triangles;
-        for (const mesh::TriangleColor& c : m.colors) {
-          out.colors.push_back({static_cast<size_t>(c.first_triangle), c.rgba});
-        }
-        off_axis.Add(path, m.declared_up, m.turned_to_z_up);
-      });
-  if (axes_note) *axes_note = off_axis.Note();
-  return meshes;
-}
-
-std::optional<std::string> Result::Convert(const ConvertOptions& options) {
-  if (!has_model()) {
-    throw std::logic_error("mdlc: nothing to convert; the compile did not make a model");
-  }
-  writers::WriteOptions write;
-  write.to = options.to;
-  write.output = options.output;
-  if (options.copy_assets_dir) write.copy_assets_dir = *options.copy_assets_dir;
-  write.keep_package_uris = options.keep_package_uris;
-  write.fuse_fixed = options.fuse_fixed;
-  write.plain = options.plain;
-  ObjTranscoder meshes(*compilation_->meshes);
-  write.meshes = &meshes;
-  return writers::Write(*compilation_->model, compilation_->module, write, compilation_->diags);
-}
 
 }  // namespace mdlc

@@ -11,6 +11,7 @@
 
 #include "backend/json_writer.h"
 #include "ir/count_text.h"
+#include "mdlc/ir.h"
 #include "tools/driver/mjcf_file_assets.h"
 
 namespace mdlc::tools {
@@ -66,7 +67,7 @@ std::vector<Asset> Collect(const Result& result) {
     ++a.uses;
     if (a.resolved.empty()) a.resolved = resolved;
   };
-  const ir::Module& m = result.module();
+  const ir::Module& m = IrModule(result);
   for (const ir::Geometry& g : m.geometries) {
     if (const auto* mesh = std::get_if<ir::Mesh>(&g.shape)) {
       add("mesh", mesh->uri, mesh->resolved, mesh->uri_loc.valid() ? mesh->uri_loc : g.loc);

@@ -48,6 +48,11 @@ bool CollapsesRepeats(const CompileFlags& flags) {
 struct RunDiagnostics {
   const Result* result = nullptr;
   RepeatedWarnings repeated;
+  /// How the compile's diagnostics were shown, for those reported after it
+  /// (ReportAfterCompile), and how many of those there were.
+  std::function<void(const Diagnostic&, const SourceManager&)> show;
+  size_t warnings_after = 0;
+  size_t errors_after = 0;
 };
 RunDiagnostics& TheRun() {
   static RunDiagnostics run;
@@ -242,8 +247,10 @@ CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup) {
       break;
     }
     case DiagnosticOutput::Collect:
-      options.on_diagnostic = [&setup](const Diagnostic& d, const SourceManager&) {
-        setup.collected->push_back(d);
+      // the list, not `setup`: the consumer outlives this call (ReportAfterCompile)
+      options.on_diagnostic = [collected = setup.collected](const Diagnostic& d,
+                                                            const SourceManager&) {
+        collected->push_back(d);
       };
       break;
     case DiagnosticOutput::ErrorsAfter:
@@ -262,6 +269,13 @@ CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup) {
       inputs.push_back(std::move(*input));
     }
   }
+  if (setup.diagnostics == DiagnosticOutput::ErrorsAfter) {
+    TheRun().show = [](const Diagnostic& d, const SourceManager& s) {
+      if (d.severity == Severity::Error) fmt::print(stderr, "{}", FormatDiagnosticText(d, s));
+    };
+  } else {
+    TheRun().show = options.on_diagnostic;
+  }
   Result& result = KeepUntilExit(Compile(inputs, options));
   if (stream) stream->Finish();
   if (stream && !json) TheRun().result = &result;  // its counts end the run
@@ -274,6 +288,16 @@ CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup) {
   return {0, &result};
 }
 
+void ReportAfterCompile(const Result& result, const std::vector<Diagnostic>& diagnostics,
+                        size_t warnings, size_t errors) {
+  RunDiagnostics& run = TheRun();
+  if (run.show) {
+    for (const Diagnostic& d : diagnostics) run.show(d, result.sources());
+  }
+  run.warnings_after += warnings;
+  run.errors_after += errors;
+}
+
 int ReportFailure(const CompileFlags&, const Result&) { return 1; }
 
 int FinishDiagnostics(int status) {
@@ -281,7 +305,8 @@ int FinishDiagnostics(int status) {
   if (!run.result) return status;
   std::string text = run.repeated.Notes();
   // clang's closing line: the warnings and errors reported, shown or not
-  const size_t warnings = run.result->warning_count(), errors = run.result->error_count();
+  const size_t warnings = run.result->warning_count() + run.warnings_after;
+  const size_t errors = run.result->error_count() + run.errors_after;
   if (warnings && errors) {
     text += fmt::format("{} and {} generated.\n", ir::CountOf(warnings, "warning"),
                         ir::CountOf(errors, "error"));

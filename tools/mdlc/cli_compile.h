@@ -83,6 +83,14 @@ struct CliCompile {
 /// exits.
 CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup = {});
 
+/// Reports diagnostics made from the compile's Result after it (Convert's)
+/// as the compile's own were reported: shown as CompileForCli shows them
+/// (collapsed, collected or errors printed) and counted in the run's closing
+/// line (FinishDiagnostics), `warnings` and `errors` being the counts of the
+/// engine that made them.
+void ReportAfterCompile(const Result& result, const std::vector<Diagnostic>& diagnostics,
+                        size_t warnings, size_t errors);
+
 /// The exit status of a failed compile, 1; its count of errors is said at
 /// the end of the run (FinishDiagnostics).
 int ReportFailure(const CompileFlags& flags, const Result& result);

@@ -9,6 +9,8 @@
 #include <string>
 
 #include "ir/printer.h"
+#include "mdlc/ir.h"
+#include "mdlc/kinematics.h"
 #include "mdlc/option_names.h"
 #include "cli_compile.h"
 #include "q_flag.h"
@@ -84,7 +86,7 @@ int Run(const CompileCommandFlags& flags) {
   if (flags.emit == "ir") {
     ir::PrintOptions print;
     print.locations = !flags.no_locations;
-    return WriteOutput(flags.output, ir::PrintModule(result.module(), result.sources(), print));
+    return WriteOutput(flags.output, ir::PrintModule(IrModule(result), result.sources(), print));
   }
   if (flags.emit == "none") return 0;
   // --format json asks for the machine-readable output: plant-json
@@ -94,7 +96,7 @@ int Run(const CompileCommandFlags& flags) {
 
   backend::PlantJsonOptions json_options;
   json_options.force_mass_matrix = flags.mass_matrix;
-  return WriteOutput(flags.output, result.PlantJson(result.DefaultPositions(), json_options));
+  return WriteOutput(flags.output, PlantJson(result, DefaultPositions(result), json_options));
 }
 
 }  // namespace

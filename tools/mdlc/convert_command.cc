@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "cli_compile.h"
+#include "mdlc/convert.h"
 #include "subcommands.h"
 
 namespace mdlc::cli {
@@ -38,7 +39,7 @@ int Run(const ConvertFlags& flags) {
   }
   const CliCompile compiled = CompileForCli(flags.compile);
   if (compiled.status) return compiled.status;
-  Result& result = *compiled.result;
+  const Result& result = *compiled.result;
 
   ConvertOptions convert;
   convert.to = *to;
@@ -47,10 +48,12 @@ int Run(const ConvertFlags& flags) {
   convert.keep_package_uris = flags.keep_package_uris;
   convert.fuse_fixed = flags.fuse_fixed;
   convert.plain = flags.plain;
-  // Result::Convert reports why it could not write the model as diagnostics
-  const std::optional<std::string> text = result.Convert(convert);
-  if (!result.ok() || !text) return ReportFailure(flags.compile, result);
-  return WriteOutput(flags.output, *text);
+  // what the target cannot hold, and why the model could not be written,
+  // are diagnostics of the run like the compile's
+  const ConvertOutput out = Convert(result, convert);
+  ReportAfterCompile(result, out.diagnostics, out.warning_count, out.error_count);
+  if (!out.ok()) return ReportFailure(flags.compile, result);
+  return WriteOutput(flags.output, *out.text);
 }
 
 }  // namespace

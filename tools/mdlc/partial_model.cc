@@ -7,18 +7,19 @@
 
 #include "backend/backend.h"
 #include "ir/verifier.h"
+#include "mdlc/ir.h"
 
 namespace mdlc::cli {
 
 const backend::CompiledModel* ModelAsFarAsCompiled(const Result& result) {
   if (result.has_model()) return &result.model();
-  if (result.module().bodies.size() <= 1) return nullptr;  // nothing but the world
+  if (IrModule(result).bodies.size() <= 1) return nullptr;  // nothing but the world
   // What the verifier or the backend says of a half-compiled module is about
   // its missing parts, which the compile's own errors already explain.
   DiagnosticEngine unreported;
-  if (!ir::VerifyModule(result.module(), ir::VerifyLevel::Named, unreported)) return nullptr;
+  if (!ir::VerifyModule(IrModule(result), ir::VerifyLevel::Named, unreported)) return nullptr;
   static std::optional<backend::CompiledModel> partial;  // a command prints one model
-  partial = backend::Instantiate(result.module(), unreported);
+  partial = backend::Instantiate(IrModule(result), unreported);
   return partial ? &*partial : nullptr;
 }
 

@@ -188,7 +188,7 @@ class Stats {
         paths.push_back(mesh->resolved);
       }
     }
-    const std::vector<MeshSize> sizes = result.MeshSizes(paths);
+    const std::vector<MeshSize> sizes = MeshSizes(result, paths);
     for (size_t i = 0; i < meshes_.size(); ++i) {
       MeshUse& use = meshes_[i];
       use.size = sizes[i];

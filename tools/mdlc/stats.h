@@ -6,6 +6,7 @@
 #include <string>
 
 #include "mdlc/mdlc.h"
+#include "mdlc/meshes.h"
 
 namespace mdlc::tools {
 
@@ -15,7 +16,7 @@ namespace mdlc::tools {
 /// configuration, and counts of bodies, joints by type, geometries by role
 /// and shape, actuators, constraints and cameras; per mesh geometry, its
 /// file's vertex and triangle counts, and per instance and in total their
-/// sums (Result::MeshSizes: the meshes the compile read, the rest read now).
+/// sums (mdlc::MeshSizes: the meshes the compile read, the rest read now).
 /// `model` is result.model(), or the part of it a failed compile made
 /// (partial_model.h).
 std::string FormatStats(const backend::CompiledModel& model, const Result& result);

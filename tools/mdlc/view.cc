@@ -38,6 +38,9 @@
 #include "ir/module.h"
 #include "ir/overloaded.h"
 #include "ir/shape_parameters.h"
+#include "mdlc/ir.h"
+#include "mdlc/kinematics.h"
+#include "mdlc/meshes.h"
 #include "page_paths.h"
 
 #ifdef MDLC_HAVE_VIEWER
@@ -199,7 +202,7 @@ std::string ViewModelJson(const Result& result, const std::string& title,
   const PagePaths paths(model_file);
   const backend::Plant& plant = result.plant();
   const backend::SceneGraph& scene = result.scene_graph();
-  const ir::Module& module = result.module();
+  const ir::Module& module = IrModule(result);
   JsonWriter w(2);
   std::vector<std::string> notes;
   w.BeginObject();
@@ -211,7 +214,7 @@ std::string ViewModelJson(const Result& result, const std::string& title,
   w.Key("joint_order").BeginArray(JsonWriter::Layout::Compact);
   for (JointId id : plant.joint_order) w.Int(id.index());
   w.EndArray();
-  const Eigen::VectorXd q0 = result.DefaultPositions();
+  const Eigen::VectorXd q0 = DefaultPositions(result);
   w.Key("q0");
   Numbers(w, std::span<const double>(q0.data(), static_cast<size_t>(q0.size())));
 
@@ -292,7 +295,7 @@ std::string ViewModelJson(const Result& result, const std::string& title,
     }
   }
   std::string axes_note;
-  std::vector<MeshTriangles> read = result.ReadMeshes(mesh_paths, &axes_note);
+  std::vector<MeshTriangles> read = ReadMeshes(result, mesh_paths, &axes_note);
   if (!axes_note.empty()) notes.push_back(axes_note);
   std::vector<std::pair<std::string, const MeshTriangles*>> meshes;
   for (size_t i = 0; i < mesh_paths.size(); ++i) {

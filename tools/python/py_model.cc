@@ -14,6 +14,7 @@
 #include <variant>
 
 #include "ir/shape_parameters.h"
+#include "mdlc/kinematics.h"
 
 namespace mdlc::python {
 namespace py = pybind11;
@@ -190,7 +191,7 @@ void CheckQuaternions(const Model& m, const Eigen::VectorXd& q) {
 
 // q defaults to the model's default configuration
 Eigen::VectorXd PositionsOr(const Model& m, const std::optional<Eigen::VectorXd>& q) {
-  if (!q) return m.result->DefaultPositions();
+  if (!q) return mdlc::DefaultPositions(*m.result);
   CheckQuaternions(m, *q);
   return *q;
 }
@@ -367,12 +368,12 @@ void BindModel(py::module_& m) {
           "gravity", [](const Model& m) { return Eigen::Vector3d(m.result->plant().gravity); })
       .def_property_readonly("time_step",
                              [](const Model& m) { return m.result->plant().time_step; })
-      .def("default_positions", [](const Model& m) { return m.result->DefaultPositions(); },
+      .def("default_positions", [](const Model& m) { return mdlc::DefaultPositions(*m.result); },
            "Each joint's default position (and the compile's joint_positions), in q order")
       .def(
           "mass_matrix",
           [](const Model& m, const std::optional<Eigen::VectorXd>& q) {
-            return m.result->MassMatrix(PositionsOr(m, q));
+            return mdlc::MassMatrix(*m.result, PositionsOr(m, q));
           },
           py::arg("q") = py::none(),
           "The nv x nv mass matrix M(q) (default: at default_positions())")
@@ -380,7 +381,7 @@ void BindModel(py::module_& m) {
           "body_poses",
           [](const Model& m, const std::optional<Eigen::VectorXd>& q) {
             std::vector<Pose> poses;
-            for (const Transform& X : m.result->BodyPoses(PositionsOr(m, q))) {
+            for (const Transform& X : mdlc::BodyPoses(*m.result, PositionsOr(m, q))) {
               poses.push_back(MakePose(X));
             }
             return poses;
@@ -416,7 +417,7 @@ void BindModel(py::module_& m) {
           [](const Model& m, const std::optional<Eigen::VectorXd>& q, bool full_mass_matrix) {
             backend::PlantJsonOptions options;
             options.force_mass_matrix = full_mass_matrix;
-            return m.result->PlantJson(PositionsOr(m, q), options);
+            return mdlc::PlantJson(*m.result, PositionsOr(m, q), options);
           },
           py::arg("q") = py::none(), py::arg("full_mass_matrix") = false,
           "plant-json (schema mdlc-plant/1) at q")

@@ -9,6 +9,9 @@
 #include <vector>
 
 #include "mdlc/mdlc.h"
+#include "mdlc/convert.h"
+#include "mdlc/ir.h"
+#include "mdlc/kinematics.h"
 
 namespace mdlc {
 namespace {
@@ -48,8 +51,8 @@ TEST_P(TextEqualsFile, PlantJsonIsByteIdentical) {
   const Result from_text = Compile(Input::Text(ReadFile(path), path.string()), options);
   ASSERT_TRUE(from_file.ok());
   ASSERT_TRUE(from_text.ok());
-  const std::string file_json = from_file.PlantJson(from_file.DefaultPositions());
-  EXPECT_EQ(from_text.PlantJson(from_text.DefaultPositions()), file_json);
+  const std::string file_json = mdlc::PlantJson(from_file, mdlc::DefaultPositions(from_file));
+  EXPECT_EQ(mdlc::PlantJson(from_text, mdlc::DefaultPositions(from_text)), file_json);
   EXPECT_GT(file_json.size(), 100u);
 }
 
@@ -137,10 +140,10 @@ TEST(CompileApi, JointPositionsSetTheDefaultConfiguration) {
   options.joint_positions = {{"shoulder", 0.5}};
   const Result r = Compile(Input::Text(kPendulum, "p.urdf"), options);
   ASSERT_TRUE(r.ok());
-  EXPECT_EQ(r.DefaultPositions(), Eigen::VectorXd::Constant(1, 0.5));
-  Eigen::VectorXd q = r.DefaultPositions();
-  EXPECT_TRUE(r.SetJointPosition(q, "pendulum::shoulder", -1));
-  EXPECT_FALSE(r.SetJointPosition(q, "elbow", 1));
+  EXPECT_EQ(mdlc::DefaultPositions(r), Eigen::VectorXd::Constant(1, 0.5));
+  Eigen::VectorXd q = mdlc::DefaultPositions(r);
+  EXPECT_TRUE(mdlc::SetJointPosition(r, q, "pendulum::shoulder", -1));
+  EXPECT_FALSE(mdlc::SetJointPosition(r, q, "elbow", 1));
   EXPECT_EQ(q[0], -1);
 
   options.joint_positions = {{"elbow", 1}};
@@ -149,14 +152,54 @@ TEST(CompileApi, JointPositionsSetTheDefaultConfiguration) {
   EXPECT_NE(unknown.diagnostics().back().message.find("'elbow'"), std::string::npos);
 }
 
-TEST(CompileApi, MassMatrixAndBodyPosesAreMethods) {
+TEST(CompileApi, MassMatrixAndBodyPosesAreFreeFunctions) {
   const Result r = Compile(Input::Text(kPendulum, "p.urdf"));
   ASSERT_TRUE(r.ok());
   // iyy about the center of mass plus m d^2
-  EXPECT_NEAR(r.MassMatrix(r.DefaultPositions())(0, 0), 0.1 + 2 * 0.25, 1e-15);
-  const std::vector<Transform> X_WB = r.BodyPoses(Eigen::VectorXd::Constant(1, M_PI / 2));
+  EXPECT_NEAR(mdlc::MassMatrix(r, mdlc::DefaultPositions(r))(0, 0), 0.1 + 2 * 0.25, 1e-15);
+  const std::vector<Transform> X_WB = mdlc::BodyPoses(r, Eigen::VectorXd::Constant(1, M_PI / 2));
   ASSERT_EQ(X_WB.size(), r.plant().bodies.size());
-  EXPECT_THROW(r.MassMatrix(Eigen::VectorXd::Zero(3)), std::invalid_argument);
+  EXPECT_THROW(mdlc::MassMatrix(r, Eigen::VectorXd::Zero(3)), std::invalid_argument);
+}
+
+// Convert reports what the target cannot hold in its own output, under the
+// compile's diagnostic policy; the Result stays as the compile left it, so a
+// second conversion says the same.
+TEST(CompileApi, ConvertLeavesTheResultAsItWas) {
+  constexpr const char* kCapsule = R"(<?xml version="1.0"?>
+<robot name="pill" xmlns:drake="http://drake.mit.edu">
+  <link name="pill">
+    <collision><geometry><drake:capsule radius="0.1" length="0.4"/></geometry></collision>
+  </link>
+</robot>
+)";
+  ConvertOptions plain;
+  plain.to = Format::Urdf;
+  plain.plain = true;
+  const Result r = Compile(Input::Text(kCapsule, "pill.urdf"));
+  ASSERT_TRUE(r.ok());
+  const size_t diagnostics = r.diagnostics().size(), warnings = r.warning_count();
+  const ConvertOutput first = mdlc::Convert(r, plain);
+  ASSERT_TRUE(first.ok());
+  ASSERT_EQ(first.warning_count, 1u);  // the capsule, written as a cylinder (-Wlossy)
+  ASSERT_EQ(first.diagnostics.size(), 1u);
+  EXPECT_EQ(first.diagnostics[0].kind, DiagKind::Lossy);
+  EXPECT_TRUE(r.ok());
+  EXPECT_EQ(r.diagnostics().size(), diagnostics);
+  EXPECT_EQ(r.warning_count(), warnings);
+  const ConvertOutput second = mdlc::Convert(r, plain);
+  EXPECT_EQ(second.text, first.text);
+  EXPECT_EQ(second.diagnostics.size(), 1u);
+
+  // -Werror=lossy, given to the compile, makes the conversion fail
+  Options strict;
+  strict.diagnostics.error_groups.insert("lossy");
+  const Result s = Compile(Input::Text(kCapsule, "pill.urdf"), strict);
+  ASSERT_TRUE(s.ok());
+  const ConvertOutput refused = mdlc::Convert(s, plain);
+  EXPECT_FALSE(refused.ok());
+  EXPECT_EQ(refused.error_count, 1u);
+  EXPECT_TRUE(s.ok());
 }
 
 TEST(CompileApi, NamingAndPipelineOptions) {
@@ -179,7 +222,7 @@ TEST(CompileApi, NamingAndPipelineOptions) {
   const Result ir = Compile(Input::Text(kPendulum, "p.urdf"), ir_only);
   EXPECT_TRUE(ir.ok());
   EXPECT_FALSE(ir.has_model());
-  EXPECT_EQ(ir.module().bodies.size(), 2u);  // world, arm
+  EXPECT_EQ(mdlc::IrModule(ir).bodies.size(), 2u);  // world, arm
   EXPECT_FALSE(ir.timing_report().empty());
 
   Options unknown_pass;

@@ -14,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "mdlc/kinematics.h"
 #include "mdlc/mdlc.h"
 
 namespace mdlc {
@@ -50,7 +51,9 @@ class MeshReaderTest : public ::testing::Test {
     options.time_passes = true;
     return Compile(Input::File(kModel), options);
   }
-  static std::string PlantJson(const Result& r) { return r.PlantJson(r.DefaultPositions()); }
+  static std::string PlantJson(const Result& r) {
+    return mdlc::PlantJson(r, mdlc::DefaultPositions(r));
+  }
 
   fs::path dir_;
 };

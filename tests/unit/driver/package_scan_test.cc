@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ir/assets/package_scan.h"
+#include "mdlc/ir.h"
 #include "mdlc/mdlc.h"
 
 namespace mdlc {
@@ -61,7 +62,7 @@ class PackageScanTest : public ::testing::Test {
     const Result r = Compile(Input::File((root_ / "robot.urdf").string()), options);
     std::string out;
     for (const Diagnostic& d : r.diagnostics()) out += r.FormatText(d);
-    for (const ir::Geometry& g : r.module().geometries) {
+    for (const ir::Geometry& g : mdlc::IrModule(r).geometries) {
       if (const auto* mesh = std::get_if<ir::Mesh>(&g.shape)) {
         out += mesh->uri + " -> " + mesh->resolved + "\n";
       }

@@ -5,13 +5,20 @@
 //   mdlc::Result r = mdlc::Compile(mdlc::Input::File("robot.urdf"));
 //   for (const mdlc::Diagnostic& d : r.diagnostics()) std::cerr << r.FormatText(d);
 //   if (!r.ok()) return 1;
-//   Eigen::VectorXd q = r.DefaultPositions();
-//   Eigen::MatrixXd M = r.MassMatrix(q);
-//   std::vector<mdlc::Transform> X_WB = r.BodyPoses(q);  // indexed by BodyId
+//   Eigen::VectorXd q = mdlc::DefaultPositions(r);       // mdlc/kinematics.h
+//   Eigen::MatrixXd M = mdlc::MassMatrix(r, q);
+//   std::vector<mdlc::Transform> X_WB = mdlc::BodyPoses(r, q);  // by BodyId
 //
-// Everything a compile makes stays in its Result: the source buffers (which
-// diagnostics point into), the IR module and the compiled model. The plant
-// and scene graph are plain data (backend/plant.h, backend/scene_graph.h).
+// A Result is the outcome of a compile and what it made: the diagnostics, the
+// source buffers they point into, and the plant, scene graph and cameras
+// (plain data: backend/plant.h, backend/scene_graph.h). What is computed from
+// it are free functions in headers of their own, included when wanted:
+//   mdlc/kinematics.h  positions, mass matrix, body poses, the plant-json dump
+//   mdlc/convert.h     the model written as URDF, SDFormat or MJCF
+//   mdlc/meshes.h      the mesh files the model names, as the compile read them
+//   mdlc/ir.h          the IR module after the passes (the compiler's internals)
+// This header reaches neither the IR module nor any third-party library but
+// Eigen.
 #pragma once
 
 #include <Eigen/Core>
@@ -24,18 +31,16 @@
 #include <vector>
 
 #include "backend/compiled_model.h"
-#include "backend/plant_json.h"
 #include "ir/diagnostics.h"
 #include "ir/format.h"
 #include "ir/limits.h"
-#include "ir/module.h"
 #include "ir/source_manager.h"
-#include "ir/transform.h"
 #include "mdlc/version.h"
 
 namespace mdlc {
 
 class Compilation;
+class ResultAccess;
 namespace assets {
 class PackageScan;
 }
@@ -120,7 +125,8 @@ struct Options {
 
   // -- joint positions
   /// Positions of 1-dof joints by scoped or unambiguous local name (`--q`),
-  /// applied by Result::DefaultPositions; an unknown name is an error.
+  /// applied by DefaultPositions (mdlc/kinematics.h); an unknown name is an
+  /// error.
   std::vector<std::pair<std::string, double>> joint_positions;
 
   // -- the base
@@ -164,59 +170,8 @@ struct Options {
 /// Options::mesh_cache_dir); empty when no environment variable names one.
 std::string DefaultMeshCacheDirectory();
 
-/// How big a mesh file is, as the compile's mesh reader sees it
-/// (Result::MeshSizes): vertices at the same position count once, polygons
-/// count as the triangles they are split into.
-struct MeshSize {
-  size_t vertices = 0;
-  size_t triangles = 0;
-  std::string error;  // set when the file could not be read as a mesh
-  bool ok() const { return error.empty(); }
-};
-
-/// A run of a mesh's triangles in one colour of the file's materials
-/// (COLLADA, glTF, OBJ's .mtl): from first_triangle to the next run's first
-/// triangle (or the end); RGBA in [0, 1].
-struct MeshColor {
-  size_t first_triangle = 0;
-  Eigen::Vector4d rgba;
-};
-
-/// A mesh file's triangles as the compile reads them (Result::ReadMeshes):
-/// unscaled (the geometry's scale is not applied), glTF turned Z-up, COLLADA
-/// as Options::collada_up_axis says.
-struct MeshTriangles {
-  std::vector<Eigen::Vector3d> vertices;
-  std::vector<Eigen::Vector3i> triangles;
-  std::vector<MeshColor> colors;  // empty when the file names no colour
-  std::string error;  // set when the file could not be read as a mesh
-  bool ok() const { return error.empty(); }
-};
-
-/// What `mdlc convert` writes (Result::Convert).
-struct ConvertOptions {
-  /// The target: urdf, sdf or mjcf.
-  Format to = Format::Urdf;
-  /// The file the text will be written to: mesh paths are written relative
-  /// to its folder (empty: the current directory).
-  std::string output;
-  /// Copy every mesh into this folder (one copy per distinct content) and
-  /// name the copies; a mesh the target cannot read (MJCF: other than STL,
-  /// OBJ or MSH) is written as an OBJ of the triangles mdlc read.
-  std::optional<std::string> copy_assets_dir;
-  /// URDF only: plain URDF that urdfdom and ROS read (`--plain`): one root
-  /// link, with a floating joint to each free body, and Drake's shapes and
-  /// joints approximated (-Wlossy).
-  bool plain = false;
-  /// Keep package:// URIs as the source wrote them.
-  bool keep_package_uris = false;
-  /// MJCF only: fuse each body welded to its parent (not to the world) into
-  /// that body, mass properties combined exactly, its geometry, frames and
-  /// cameras re-posed there, its own frame kept as a site (`--fuse-fixed`).
-  bool fuse_fixed = false;
-};
-
-/// What a compile made. Move-only; owns everything it refers to.
+/// What a compile made: its outcome and the compiled model. Move-only; owns
+/// everything it refers to. Nothing done with it afterwards changes it.
 class Result {
  public:
   Result(Result&&) noexcept;
@@ -236,9 +191,6 @@ class Result {
   std::string FormatJson(const Diagnostic& diagnostic) const;
 
   const SourceManager& sources() const;
-  /// The IR after the passes (as far as they got when !ok()).
-  const ir::Module& module() const;
-
   /// The plant, scene graph and cameras; only when has_model() (ok() and not
   /// Options::skip_backend). The accessors throw std::logic_error otherwise.
   bool has_model() const;
@@ -247,43 +199,14 @@ class Result {
   const backend::SceneGraph& scene_graph() const { return model().scene; }
   const std::vector<backend::SceneCamera>& cameras() const { return model().scene.cameras; }
 
-  /// Each joint's default position, then Options::joint_positions.
-  Eigen::VectorXd DefaultPositions() const;
-  /// Sets 1-dof joint `name` (scoped, or local when unambiguous) in q;
-  /// false when there is no such joint.
-  bool SetJointPosition(Eigen::VectorXd& q, std::string_view name, double value) const;
-  /// The nv x nv mass matrix at q (size num_positions; else
-  /// std::invalid_argument), rows and columns in velocity order.
-  Eigen::MatrixXd MassMatrix(const Eigen::VectorXd& q) const;
-  /// X_WB of every body at q, indexed by BodyId (0 is the world).
-  std::vector<Transform> BodyPoses(const Eigen::VectorXd& q) const;
-  /// The plant-json dump at q (the contract: shared/spec/plant-json.md).
-  std::string PlantJson(const Eigen::VectorXd& q,
-                        const backend::PlantJsonOptions& options = {}) const;
-
   /// The --time-passes report (Options::time_passes).
   const std::string& timing_report() const;
 
-  /// The sizes of mesh files the model names (ir::Mesh::resolved paths),
-  /// from the meshes this compile read: a file the passes read is not read
-  /// again, nor one the mesh cache knows; the others are read now, in
-  /// parallel.
-  std::vector<MeshSize> MeshSizes(const std::vector<std::string>& resolved_paths) const;
-  /// The triangles of those files, read the same way (and as the compile
-  /// reads them: its reader, its axes). `axes_note`, when given, gets the
-  /// note mdlc gives about COLLADA files among them that declare an up axis
-  /// other than Z (empty when none do).
-  std::vector<MeshTriangles> ReadMeshes(const std::vector<std::string>& resolved_paths,
-                                        std::string* axes_note = nullptr) const;
-
-  /// The compiled model written as options.to (`mdlc convert`). What the
-  /// target cannot hold is reported as -Wlossy warnings, added to
-  /// diagnostics(); nullopt (and !ok()) after an error, e.g. a lossy
-  /// warning made an error by the diagnostic policy.
-  std::optional<std::string> Convert(const ConvertOptions& options);
-
  private:
   friend Result Compile(const std::vector<Input>& inputs, const Options& options);
+  // what the free functions of the other public headers (kinematics.h,
+  // convert.h, meshes.h, ir.h) read of the compile
+  friend class ResultAccess;
   Result(std::unique_ptr<Compilation> compilation,
          std::vector<std::pair<std::string, double>> joint_positions);
 
