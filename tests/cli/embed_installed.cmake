@@ -19,16 +19,37 @@ endfunction()
 file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
 run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
-foreach(installed include/mdlc/mdlc.h include/mdlc/version.h include/mdlc/ir/module.h
+foreach(installed include/mdlc/mdlc.h include/mdlc/version.h include/mdlc/kinematics.h
+                  include/mdlc/convert.h include/mdlc/ir.h include/mdlc/ir/module.h
                   include/mdlc/backend/plant.h bin/mdlc libexec/mdlc/mdlc-mesh-reader
                   ${LIBDIR}/mdlc/mdlc-mesh-import.so)
   if(NOT EXISTS ${prefix}/${installed})
     message(FATAL_ERROR "not installed: ${installed}")
   endif()
 endforeach()
-if(EXISTS ${prefix}/include/mdlc/frontend OR EXISTS ${prefix}/include/mdlc/passes)
-  message(FATAL_ERROR "internal headers (frontend/, passes/) were installed")
+if(EXISTS ${prefix}/include/mdlc/frontend OR EXISTS ${prefix}/include/mdlc/passes
+   OR EXISTS ${prefix}/include/mdlc/backend/writers)
+  message(FATAL_ERROR "internal headers (frontend/, passes/, backend/writers/) were installed")
 endif()
+# Only the public headers and what they include are installed: every
+# project include ("ir/module.h", "mdlc/mdlc.h") of an installed header names
+# an installed file, found as the installed Cflags find it (-I<includedir>
+# and -I<includedir>/mdlc), and no internal *_detail.h is among them.
+file(GLOB_RECURSE installed_headers ${prefix}/include/mdlc/*.h ${prefix}/include/mdlc/*.def)
+foreach(header IN LISTS installed_headers)
+  if(header MATCHES "_detail\\.h$")
+    message(FATAL_ERROR "an internal header was installed: ${header}")
+  endif()
+  file(STRINGS ${header} includes REGEX "^[ \t]*#[ \t]*include[ \t]+\"[^\"]+\"")
+  foreach(line IN LISTS includes)
+    string(REGEX REPLACE "^[^\"]*\"([^\"]+)\".*" "\\1" included "${line}")
+    if(NOT EXISTS ${prefix}/include/mdlc/${included} AND NOT EXISTS ${prefix}/include/${included})
+      message(FATAL_ERROR "${header} includes \"${included}\", which is not installed")
+    endif()
+  endforeach()
+endforeach()
+list(LENGTH installed_headers installed_count)
+message(STATUS "${installed_count} installed headers; every project include among them is installed")
 
 # the installed command reports the generated version
 run("mdlc --version" ${prefix}/bin/mdlc --version)
@@ -96,7 +117,8 @@ if(PKG_CONFIG AND CXX)
   run("pkg-config" ${PKG_CONFIG} --cflags --libs mdlc)
   string(STRIP "${run_output}" flags)
   separate_arguments(flags UNIX_COMMAND "${flags}")
-  run("compile with pkg-config flags" ${CXX} -std=c++20 ${SOURCE_DIR}/examples/embed_cmake/embed.cc
+    # no -std flag of our own: mdlc.pc's Cflags carry the C++20 the headers need
+  run("compile with pkg-config flags" ${CXX} ${SOURCE_DIR}/examples/embed_cmake/embed.cc
       ${flags} -o ${WORK_DIR}/embed_pc)
   run("embed (pkg-config)" ${WORK_DIR}/embed_pc ${SOURCE_DIR}/examples/urdf/double_pendulum.urdf)
   if(NOT run_output MATCHES "double_pendulum\\.urdf: bodies 3")

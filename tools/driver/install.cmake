@@ -2,8 +2,8 @@
 # the mdlc command, the mesh reader program (libexec/mdlc/) and module
 # (<libdir>/mdlc/), and what finds
 # them: mdlcConfig.cmake (CMake) and mdlc.pc (pkg-config). Internal headers
-# (frontends, passes) are not installed; the public header reaches only the
-# IR's and the backend's.
+# (frontends, passes, the writers, the IR and backend headers no public header
+# includes) are not installed.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -24,12 +24,18 @@ install(TARGETS ${MDLC_LIBRARIES} EXPORT mdlcTargets
 # (passes/mesh/reader_location.h)
 install(TARGETS mdlc_mesh_reader RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/mdlc)
 install(TARGETS mdlc_mesh_import_module LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/mdlc)
-install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/include/mdlc ${PROJECT_BINARY_DIR}/include/mdlc
-        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-# the layers' headers keep their paths ("ir/module.h") under include/mdlc/
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/ir ${PROJECT_SOURCE_DIR}/backend
-        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/mdlc
-        FILES_MATCHING PATTERN "*.h" PATTERN "*.def")
+# The public headers (include/mdlc/*.h and the generated version.h) go to
+# include/mdlc/; of the layers' headers only those they include, directly or
+# through one another, are installed (install_layer_headers.cmake). The
+# install test (tests/cli/embed_installed.cmake) checks that every project
+# include of an installed header is installed and that no *_detail.h is.
+file(GLOB public_headers CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/include/mdlc/*.h)
+install(FILES ${public_headers} ${PROJECT_BINARY_DIR}/include/mdlc/version.h
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/mdlc)
+install(CODE "set(MDLC_SOURCE_DIR \"${PROJECT_SOURCE_DIR}\")
+set(MDLC_PUBLIC_HEADERS \"${public_headers}\")
+set(MDLC_INCLUDE_DESTINATION \"${CMAKE_INSTALL_INCLUDEDIR}/mdlc\")")
+install(SCRIPT ${CMAKE_CURRENT_SOURCE_DIR}/install_layer_headers.cmake)
 
 set(config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/mdlc)
 install(EXPORT mdlcTargets NAMESPACE mdlc:: DESTINATION ${config_dir})
