@@ -42,23 +42,24 @@ FORCE_ELEMENTS = {"linear_bushing_rpy", "linear_spring_damper", "revolute_spring
 
 # plant-json keys the Python object spells differently, per list
 PYTHON_NAME = {
-    "joints": {"velocity_limit": "velocity_upper", "effort_limit": "effort"},
+    "joints": {"velocity_limit": "velocity_upper", "effort_limit": "effort",
+               "acceleration_limit": "acceleration_upper"},
 }
 # plant-json keys with no Python attribute: world-frame values at q, which
-# Python gives through body_poses(q), and acceleration limits, which the
-# Python model does not have yet
-PLANT_JSON_ONLY = {"X_WB", "X_WG", "axis_W", "acceleration_limit"}
+# Python gives through body_poses(q)
+PLANT_JSON_ONLY = {"X_WB", "X_WG", "axis_W"}
 # Python attributes with no plant-json key: plant-json gives poses in the
 # world, Python in the parent; the q layout; links in the tree
 PYTHON_ONLY = {
     "bodies": {"scoped_name", "is_world", "parent", "joint", "index"},
-    "joints": {"scoped_name", "X_PF", "X_CM", "axis", "velocity_lower", "q_start", "nq",
-               "v_start", "nv"},
+    "joints": {"scoped_name", "X_PF", "X_CM", "axis", "velocity_lower", "acceleration_lower",
+               "q_start", "nq", "v_start", "nv"},
     "geometries": {"X_BG", "shape_parameters"},
 }
 # plant-json keys written only where they say something (a screw joint's
-# pitch, a compiler-named entity's flag); Python always has the attribute
-PLANT_JSON_WHEN_SET = {"unnamed", "screw_thread_pitch"}
+# pitch, a finite acceleration limit, a compiler-named entity's flag); Python
+# always has the attribute
+PLANT_JSON_WHEN_SET = {"unnamed", "screw_thread_pitch", "acceleration_upper"}
 # the IR's spelling of a plant-json parameter, where it differs
 IR_KEY = {"frameA": "frame_A", "frameC": "frame_C"}
 IR_SHAPE_KEY = {"a": "abc", "b": "abc", "c": "abc"}

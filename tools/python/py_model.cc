@@ -139,7 +139,8 @@ Model MakeModel(std::shared_ptr<const Result> result, py::list diagnostics) {
                              ToVector(j.lower), ToVector(j.upper), ToVector(j.velocity_lower),
                              ToVector(j.velocity_upper), ToVector(j.effort),
                              ToVector(j.damping), ToVector(j.default_positions),
-                             j.screw_thread_pitch, j.unnamed, j.q_start, j.nq, j.v_start, j.nv});
+                             j.screw_thread_pitch, j.unnamed, j.q_start, j.nq, j.v_start, j.nv,
+                             ToVector(j.acceleration_lower), ToVector(j.acceleration_upper)});
   }
   for (const backend::PlantFrame& f : plant.frames) {
     m.frames.push_back(
@@ -258,6 +259,8 @@ void BindModel(py::module_& m) {
       .def_readonly("upper", &Joint::upper)
       .def_readonly("velocity_lower", &Joint::velocity_lower)
       .def_readonly("velocity_upper", &Joint::velocity_upper)
+      .def_readonly("acceleration_lower", &Joint::acceleration_lower)
+      .def_readonly("acceleration_upper", &Joint::acceleration_upper)
       .def_readonly("effort", &Joint::effort)
       .def_readonly("damping", &Joint::damping)
       .def_readonly("default_positions", &Joint::default_positions)

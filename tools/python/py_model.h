@@ -49,6 +49,7 @@ struct Joint {
   double screw_thread_pitch = 0;
   bool unnamed = false;
   int q_start = 0, nq = 0, v_start = 0, nv = 0;
+  Eigen::VectorXd acceleration_lower, acceleration_upper;  // -inf/inf where unbounded
 };
 
 struct Frame {
