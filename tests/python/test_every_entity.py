@@ -57,9 +57,11 @@ PYTHON_ONLY = {
     "geometries": {"X_BG", "shape_parameters"},
 }
 # plant-json keys written only where they say something (a screw joint's
-# pitch, a finite acceleration limit, a compiler-named entity's flag); Python
+# pitch, a finite acceleration limit, a body's surface velocity axis, a
+# compiler-named entity's flag); Python
 # always has the attribute
-PLANT_JSON_WHEN_SET = {"unnamed", "screw_thread_pitch", "acceleration_upper"}
+PLANT_JSON_WHEN_SET = {"unnamed", "screw_thread_pitch", "acceleration_upper",
+                       "surface_velocity_axis"}
 # the IR's spelling of a plant-json parameter, where it differs
 IR_KEY = {"frameA": "frame_A", "frameC": "frame_C"}
 IR_SHAPE_KEY = {"a": "abc", "b": "abc", "c": "abc"}

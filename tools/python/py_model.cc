@@ -130,6 +130,7 @@ Model MakeModel(std::shared_ptr<const Result> result, py::list diagnostics) {
               b.is_world, b.unnamed, std::nullopt, std::nullopt, static_cast<int>(i)};
     if (b.parent.valid()) body.parent = names.body(b.parent);
     if (b.inbound_joint.valid()) body.joint = names.joint(b.inbound_joint);
+    body.surface_velocity_axis = b.surface_velocity_axis;
     m.bodies.push_back(std::move(body));
   }
   for (const backend::PlantJoint& j : plant.joints) {
@@ -238,6 +239,8 @@ void BindModel(py::module_& m) {
       .def_readonly("unnamed", &Body::unnamed)
       .def_readonly("parent", &Body::parent)
       .def_readonly("joint", &Body::joint, "The joint whose child this body is")
+      .def_readonly("surface_velocity_axis", &Body::surface_velocity_axis,
+                    "The axis a conveyor-like surface moves along, in B (None: it does not)")
       .def_readonly("index", &Body::index, "Its index in Model.bodies and body_poses()")
       .def("__repr__", [](const Body& b) {
         return Repr("Body", b.scoped_name,

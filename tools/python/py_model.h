@@ -37,6 +37,7 @@ struct Body {
   bool is_world = false, unnamed = false;
   std::optional<std::string> parent, joint;  // scoped names; None for roots
   int index = 0;                             // its row in body_poses()
+  std::optional<Eigen::Vector3d> surface_velocity_axis;  // unit, in B (EXT-060)
 };
 
 struct Joint {
