@@ -23,7 +23,6 @@ class CheckJointsPass : public Pass {
 
 bool CheckJointsPass::Run(PassContext& ctx) {
   ir::Module& m = ctx.module;
-  const size_t errors_before = ctx.diags.error_count();
   std::vector<ir::Constraint> kept;
   kept.reserve(m.constraints.size());
   for (ir::Constraint& c : m.constraints) {
@@ -55,7 +54,7 @@ bool CheckJointsPass::Run(PassContext& ctx) {
     kept.push_back(std::move(c));
   }
   m.constraints = std::move(kept);
-  return ctx.diags.error_count() == errors_before;
+  return true;
 }
 
 }  // namespace

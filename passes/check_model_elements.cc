@@ -180,11 +180,10 @@ void CheckModelElementsPass::CheckForceElement(PassContext& ctx, const ir::Force
 }
 
 bool CheckModelElementsPass::Run(PassContext& ctx) {
-  const size_t errors_before = ctx.diags.error_count();
   CheckGroups(ctx);
   for (const ir::Constraint& c : ctx.module.constraints) CheckConstraint(ctx, c);
   for (const ir::ForceElement& f : ctx.module.force_elements) CheckForceElement(ctx, f);
-  return ctx.diags.error_count() == errors_before;
+  return true;
 }
 
 }  // namespace

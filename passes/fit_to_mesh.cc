@@ -24,7 +24,6 @@ class FitToMeshPass : public Pass {
   }
   ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Named; }
   bool Run(PassContext& ctx) override {
-    const size_t errors_before = ctx.diags.error_count();
     for (ir::Geometry& g : ctx.module.geometries) {
       if (!g.fit_to_mesh) continue;
       const ir::MeshFit fit = *g.fit_to_mesh;
@@ -47,7 +46,7 @@ class FitToMeshPass : public Pass {
       g.X_BG = g.X_BG * fitted->X_MG;
       g.fit_to_mesh.reset();
     }
-    return ctx.diags.error_count() == errors_before;
+    return true;
   }
 };
 

@@ -68,7 +68,6 @@ bool InertiaFromCollisionsPass::Run(PassContext& ctx) {
   bool any = false;
   for (const ir::Body& b : m.bodies) any |= b.inertia_from_collisions.has_value();
   if (!any) return true;
-  const size_t errors_before = ctx.diags.error_count();
   std::vector<MassSum> sums(m.bodies.size());
   for (const ir::Geometry& g : m.geometries) {
     if (!(g.roles & ir::kProximityRole) || !g.body.resolved()) continue;
@@ -113,7 +112,7 @@ bool InertiaFromCollisionsPass::Run(PassContext& ctx) {
     }
     b.inertial = in;
   }
-  return ctx.diags.error_count() == errors_before;
+  return true;
 }
 
 }  // namespace

@@ -50,10 +50,9 @@ class MassFromGeometryPass : public Pass {
   }
   ir::VerifyLevel level_after() const override { return ir::VerifyLevel::Named; }
   bool Run(PassContext& ctx) override {
-    const size_t errors_before = ctx.diags.error_count();
     FromGeometry(ctx);
     Adjust(ctx);
-    return ctx.diags.error_count() == errors_before;
+    return true;
   }
 
  private:

@@ -39,7 +39,8 @@ class Pass {
   virtual std::string_view description() const = 0;
   /// The invariants that hold after this pass succeeded.
   virtual ir::VerifyLevel level_after() const { return ir::VerifyLevel::Raw; }
-  /// Returns false when the pass reported an error.
+  /// Returns false to stop the pipeline. A pass need not count its own
+  /// errors: the pass manager stops after any pass that reported one.
   virtual bool Run(PassContext& ctx) = 0;
 };
 

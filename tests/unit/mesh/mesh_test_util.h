@@ -117,14 +117,15 @@ struct MassFixture {
     return m;
   }
 
-  /// Runs the named passes in order; false when one reported an error.
+  /// Runs the named passes in order and stops, as the pass manager does,
+  /// after one that reported an error; false then.
   bool Run(std::vector<std::string_view> names) {
     passes::PassContext ctx{module, diags, sources};
     ctx.meshes = meshes;
     for (std::string_view n : names) {
       auto pass = passes::CreatePass(n);
       EXPECT_TRUE(pass) << n;
-      if (!pass || !pass->Run(ctx)) return false;
+      if (!pass || !pass->Run(ctx) || diags.has_errors()) return false;
     }
     return !diags.has_errors();
   }
