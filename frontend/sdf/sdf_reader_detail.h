@@ -47,6 +47,9 @@ struct SdfFile {
 };
 
 /// The model scope being read: where its entities go and how names are looked up.
+/// What an <axis> says besides its direction (sdf_joint.cc).
+struct JointAxisValues;
+
 struct ModelScope {
   FrameScopeId scope;
   ModelId model;
@@ -176,8 +179,38 @@ class SdfReader {
   void ReadMoments(const xml::XmlElement& inertia, ir::Inertial& inertial);
   void ReadFrame(const xml::XmlElement& e, ModelScope& s);
 
-  // --- sdf_joint.cc ---
+  // --- sdf_joint.cc: <joint>, one step per concern ---
   void ReadJoint(const xml::XmlElement& e, ModelScope& s);
+  /// The joint's type and how many <axis> elements it needs; false (after an
+  /// error) for a type the plant has no joint for.
+  bool ReadJointType(const xml::XmlElement& e, std::string_view type_text,
+                     std::string_view name, ir::JointType& type, int& axes_needed);
+  /// <parent> and <child> (SDF-011); false after an error.
+  bool ReadJointEnds(const xml::XmlElement& e, std::string_view name, ir::NameRef& parent,
+                     ir::NameRef& child);
+  /// <axis> and <axis2> (SDF-012..014) into `spec` and `values`; false after
+  /// an error that leaves the joint without an axis it needs.
+  bool ReadJointAxes(const xml::XmlElement& e, const ModelScope& s, const ir::Joint& joint,
+                     std::string_view type, std::string_view name, int axes_needed,
+                     ir::JointFrameSpec& spec, JointAxisValues (&values)[2]);
+  void ReadAxisLimit(const xml::XmlElement& limit, std::string_view type, std::string_view name,
+                     JointAxisValues& v);
+  void ReadAxisDynamics(const xml::XmlElement& dyn, std::string_view name, JointAxisValues& v);
+  /// The limits, damping and screw pitch the axes' values give `joint`.
+  void SetJointValues(const xml::XmlElement& e, std::string_view type, std::string_view name,
+                      const JointAxisValues (&values)[2], ir::Joint& joint);
+  /// The joint frame J: attached to the child, posed relative to it by default.
+  void AddJointFrame(const xml::XmlElement& e, ModelScope& s, JointId joint,
+                     const ir::NameRef& child, ir::JointFrameSpec& spec);
+  /// The actuator every actuable SDFormat joint gets unless its effort is 0
+  /// (SDF-020).
+  std::optional<ActuatorId> AddDefaultActuator(const xml::XmlElement& e, const ModelScope& s,
+                                               JointId joint, std::string_view type,
+                                               std::string_view name,
+                                               const JointAxisValues (&values)[2]);
+  /// A spring on a revolute or prismatic joint with a stiffness (SDF-013).
+  void AddJointSpring(const xml::XmlElement& e, const ModelScope& s, JointId joint,
+                      std::string_view name, const JointAxisValues& v);
 
   // --- sdf_geometry.cc: children of a link ---
   void ReadVisual(const xml::XmlElement& e, ModelScope& s, BodyId body, Symbol link_name,
