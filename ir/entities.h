@@ -15,13 +15,16 @@
 //                             directives/, drake_elements.cc for drake: tags)
 //   passes/resolve_names.cc   its references (Ref<>, FrameRef)
 //   ir/verifier.cc            what a well-formed one is
-//   ir/printer.cc             `--emit=ir` (and the golden files, tests/golden)
+//   ir/printer.cc             `--emit=ir` (and the golden files, tests/golden);
+//                             a force element's fields print from its VisitFields
 //   backend/plant.h           the plant's copy: see the checklist there
 //   backend/writers/          each format that can write it
 // Driven from one place, nothing else to change:
 //   a geometry role           kGeometryRoleNames: the role names of every output
 //   a shape or shape field    ir/shape_parameters.h: plant-json, `mdlc view`, Python
 //   a format's names          ir/format.h
+//   a force element field     its VisitFields here (`--emit=ir`) and in
+//                             backend/plant.h (plant-json, Python)
 // tests/models/every_entity/ holds one of every kind the plant holds: add the
 // new kind or field there, and tests/python/test_every_entity.py fails until
 // `--emit=ir`, plant-json and the Python model all show it.
@@ -404,24 +407,58 @@ struct FrameRef {
   bool resolved() const { return frame.valid() || body.valid(); }
 };
 
+// Force elements. Each lists its fields once, in VisitFields: visit(name,
+// field) per field, in the order the IR printer writes them (`--emit=ir`
+// is driven by it; the backend's plant structs list theirs for plant-json and
+// Python). A field added here and to VisitFields is printed with no other
+// change; its reader sets it, and the backend copies it into the plant.
+
 /// Drake's LinearBushingRollPitchYaw between frames A and C, gains per axis.
 struct LinearBushingRpy {
+  static constexpr std::string_view kKind = "linear_bushing_rpy";
   FrameRef frame_A, frame_C;
   Eigen::Vector3d torque_stiffness = Eigen::Vector3d::Zero();
   Eigen::Vector3d torque_damping = Eigen::Vector3d::Zero();
   Eigen::Vector3d force_stiffness = Eigen::Vector3d::Zero();
   Eigen::Vector3d force_damping = Eigen::Vector3d::Zero();
+  template <typename Self, typename Visit>
+  static void VisitFields(Self& self, Visit&& visit) {
+    visit("frame_A", self.frame_A);
+    visit("frame_C", self.frame_C);
+    visit("torque_stiffness", self.torque_stiffness);
+    visit("torque_damping", self.torque_damping);
+    visit("force_stiffness", self.force_stiffness);
+    visit("force_damping", self.force_damping);
+  }
 };
 /// Drake's LinearSpringDamper between point P of body A and point Q of body B.
 struct LinearSpringDamper {
+  static constexpr std::string_view kKind = "linear_spring_damper";
   Ref<BodyId> body_A, body_B;
   Eigen::Vector3d p_AP = Eigen::Vector3d::Zero(), p_BQ = Eigen::Vector3d::Zero();
   double free_length = 0, stiffness = 0, damping = 0;
+  template <typename Self, typename Visit>
+  static void VisitFields(Self& self, Visit&& visit) {
+    visit("body_A", self.body_A);
+    visit("p_AP", self.p_AP);
+    visit("body_B", self.body_B);
+    visit("p_BQ", self.p_BQ);
+    visit("free_length", self.free_length);
+    visit("stiffness", self.stiffness);
+    visit("damping", self.damping);
+  }
 };
 /// Drake's RevoluteSpring or PrismaticSpring, by the joint's type.
 struct JointSpring {
+  static constexpr std::string_view kKind = "joint_spring";
   Ref<JointId> joint;
   double stiffness = 0, nominal = 0;
+  template <typename Self, typename Visit>
+  static void VisitFields(Self& self, Visit&& visit) {
+    visit("joint", self.joint);
+    visit("nominal", self.nominal);
+    visit("stiffness", self.stiffness);
+  }
 };
 
 /// The kinds of force element, in the order of ForceElementPayload's alternatives.

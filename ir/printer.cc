@@ -70,6 +70,12 @@ class Printer {
     if (r.body.valid()) return m_.ScopedName(r.body);
     return fmt::format("?{}", Name(r.name));
   }
+  // a force element's field, as the entity's own VisitFields lists it
+  std::string FieldText(double v) const { return Num(v); }
+  std::string FieldText(const Eigen::Vector3d& v) const { return Vec(v); }
+  std::string FieldText(const Ref<BodyId>& r) const { return BodyRef(r); }
+  std::string FieldText(const Ref<JointId>& r) const { return JointRef(r); }
+  std::string FieldText(const FrameRef& r) const { return FrameRefText(r); }
 
   const Module& m_;
   const SourceManager& sources_;
@@ -372,25 +378,12 @@ std::string Printer::Run() {
     const ForceElement& f = m_.force_elements[i];
     out_ += fmt::format("  force_element #{} model={}", i, Model(f.model));
     std::visit(
-        Overloaded{
-            [&](const LinearBushingRpy& k) {
-              out_ += fmt::format(" linear_bushing_rpy frame_A={} frame_C={} torque_stiffness={} "
-                                  "torque_damping={} force_stiffness={} force_damping={}",
-                                  FrameRefText(k.frame_A), FrameRefText(k.frame_C),
-                                  Vec(k.torque_stiffness), Vec(k.torque_damping),
-                                  Vec(k.force_stiffness), Vec(k.force_damping));
-            },
-            [&](const LinearSpringDamper& k) {
-              out_ += fmt::format(" linear_spring_damper body_A={} p_AP={} body_B={} p_BQ={} "
-                                  "free_length={} stiffness={} damping={}",
-                                  BodyRef(k.body_A), Vec(k.p_AP), BodyRef(k.body_B),
-                                  Vec(k.p_BQ), Num(k.free_length), Num(k.stiffness),
-                                  Num(k.damping));
-            },
-            [&](const JointSpring& k) {
-              out_ += fmt::format(" joint_spring joint={} nominal={} stiffness={}",
-                                  JointRef(k.joint), Num(k.nominal), Num(k.stiffness));
-            },
+        [&](const auto& k) {
+          out_ += fmt::format(" {}", k.kKind);
+          std::decay_t<decltype(k)>::VisitFields(
+              k, [&](std::string_view name, const auto& field) {
+                out_ += fmt::format(" {}={}", name, FieldText(field));
+              });
         },
         f.payload);
     out_ += Where(f.loc) + "\n";
