@@ -1,5 +1,10 @@
 // urdf_joint.cc - <joint> and <drake:joint> (their shared reading), <frame>
 // (URDF-010..018, URDF-041, URDF-042, EXT-001).
+// ReadAnyJoint is the outline; each step below reads one concern: the name
+// and the two ends (with the origin), the type and the element that spells
+// it, the axis, the unbounded values every joint starts from, the
+// parameters of Drake's custom types, then the other children (<limit>,
+// <dynamics>, <mimic>, ROS settings, type-specific drake: children).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -24,11 +29,14 @@ Eigen::Matrix3d FrameWithZAlong(const Eigen::Vector3d& axis) {
   return Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), axis).toRotationMatrix();
 }
 
+}  // namespace
+
 // Which element may declare a joint type (EXT-001): the standard URDF types
 // belong in <joint>, Drake's custom ones in <drake:joint>, and planar is
 // accepted in both (Drake long supported only the custom spelling).
 enum class Spelling { Joint, DrakeJoint, Either };
 
+// declared in urdf_reader_detail.h, so that the reading steps can share it
 struct UrdfJointType {
   std::string_view name;
   ir::JointType type;
@@ -36,6 +44,8 @@ struct UrdfJointType {
   bool continuous = false;  // revolute without position limits
   bool floating = false;    // makes no joint at all
 };
+
+namespace {
 
 constexpr UrdfJointType kJointTypes[] = {
     {"revolute", ir::JointType::Revolute, Spelling::Joint},
@@ -78,11 +88,43 @@ bool IgnoresLimits(ir::JointType type) {
   return type == ir::JointType::Ball || type == ir::JointType::Universal ||
          type == ir::JointType::Screw || type == ir::JointType::Curvilinear;
 }
+
+// every joint starts unbounded, with infinite effort and no damping; its
+// children narrow that
+void SetUnboundedJointValues(ir::Joint& joint) {
+  const int nv = ir::JointVelocityCount(joint.type);
+  joint.limits.lower.assign(nv, -kInf);
+  joint.limits.upper.assign(nv, kInf);
+  joint.limits.velocity_lower.assign(nv, -kInf);
+  joint.limits.velocity_upper.assign(nv, kInf);
+  joint.limits.acceleration_lower.assign(nv, -kInf);
+  joint.limits.acceleration_upper.assign(nv, kInf);
+  joint.limits.effort.assign(nv, kInf);
+  joint.damping.assign(nv, 0.0);
+}
+
 }  // namespace
 
 void UrdfReader::ReadJoint(const xml::XmlElement& e) { ReadAnyJoint(e, /*drake_element=*/false); }
 
 void UrdfReader::ReadAnyJoint(const xml::XmlElement& e, bool drake_element) {
+  ir::Joint joint;
+  const std::optional<std::string_view> type = ReadJointEnds(e, joint);
+  if (!type) return;
+  const UrdfJointType* kind = ReadJointType(e, *type, drake_element, joint);
+  if (!kind) return;  // unknown or floating: no joint
+  if (!ReadJointAxis(e, *kind, joint)) return;
+  SetUnboundedJointValues(joint);
+  ReadCustomTypeParameters(e, joint);
+  ReadJointChildren(e, *kind, joint);
+  const Symbol joint_name = joint.name;
+  const JointId id = module().Add(std::move(joint));
+  joint_ids_[joint_name.value] = id;
+  ReadOriginalName(e, id, ctx_);
+}
+
+std::optional<std::string_view> UrdfReader::ReadJointEnds(const xml::XmlElement& e,
+                                                          ir::Joint& joint) {
   const std::string_view element = e.Name();  // "joint" or "drake:joint"
   auto name = attrs_.String(e, "name", xml::Need::Required);
   auto type = attrs_.String(e, "type", xml::Need::Required);
@@ -99,9 +141,8 @@ void UrdfReader::ReadAnyJoint(const xml::XmlElement& e, bool drake_element) {
   }
   auto parent_link = parent ? attrs_.String(parent, "link", xml::Need::Required) : std::nullopt;
   auto child_link = child ? attrs_.String(child, "link", xml::Need::Required) : std::nullopt;
-  if (!name || !type || !parent_link || !child_link) return;
+  if (!name || !type || !parent_link || !child_link) return std::nullopt;
 
-  ir::Joint joint;
   joint.name = module().Intern(*name);
   joint.model = model_;
   joint.loc = e.GetLoc();
@@ -109,16 +150,21 @@ void UrdfReader::ReadAnyJoint(const xml::XmlElement& e, bool drake_element) {
   joint.parent = {module().Intern(*parent_link), parent.Attribute("link").loc, {}};
   joint.child = {module().Intern(*child_link), child.Attribute("link").loc, {}};
   joint.X_PF = ReadOrigin(e);
+  return type;
+}
 
+const UrdfJointType* UrdfReader::ReadJointType(const xml::XmlElement& e, std::string_view type,
+                                               bool drake_element, ir::Joint& joint) {
+  const std::string_view name = module().Text(joint.name);
   const Loc type_loc = e.Attribute("type").loc;
-  const UrdfJointType* kind = FindJointType(*type);
+  const UrdfJointType* kind = FindJointType(type);
   if (!kind) {
     diags().Report(DiagKind::BadValue, type_loc,
-                   fmt::format("joint '{}' has unrecognized type '{}'; expected {}", *name, *type,
+                   fmt::format("joint '{}' has unrecognized type '{}'; expected {}", name, type,
                                drake_element
                                    ? "ball, universal, screw, planar or curvilinear"
                                    : "revolute, continuous, prismatic, fixed, floating or planar"));
-    return;
+    return nullptr;
   }
   // the element must suit the type (EXT-001). Drake reports the mismatch and
   // still makes the joint; so does mdlc, so that nothing else fails because
@@ -127,23 +173,27 @@ void UrdfReader::ReadAnyJoint(const xml::XmlElement& e, bool drake_element) {
     diags().Report(DiagKind::BadValue, type_loc,
                    fmt::format("joint '{}' of type '{}' is a standard joint type: declare it with "
                                "<joint>, not <drake:joint>",
-                               *name, *type));
+                               name, type));
   } else if (!drake_element && kind->spelling == Spelling::DrakeJoint) {
     diags().Report(DiagKind::BadValue, type_loc,
                    fmt::format("joint '{}' of type '{}' is a custom joint type: declare it with "
                                "<drake:joint>, not <joint>",
-                               *name, *type));
+                               name, type));
   }
   if (kind->floating) {
     // Drake makes no joint: the child stays a free body (URDF-012)
     diags().Report(DiagKind::FloatingJoint, type_loc,
                    fmt::format("joint '{}' of type 'floating' creates no joint: link '{}' becomes "
                                "a free body",
-                               *name, *child_link));
-    return;
+                               name, module().Text(joint.child.name)));
+    return nullptr;
   }
   joint.type = kind->type;
+  return kind;
+}
 
+bool UrdfReader::ReadJointAxis(const xml::XmlElement& e, const UrdfJointType& kind,
+                               ir::Joint& joint) {
   // the axis, in the joint frame (URDF-011). Drake reads and checks it for
   // every type but fixed, floating and ball; universal and curvilinear
   // joints do not use it.
@@ -156,14 +206,16 @@ void UrdfReader::ReadAnyJoint(const xml::XmlElement& e, bool drake_element) {
     if (auto xyz = attrs_.Vector3(axis, "xyz", xml::Need::Required)) {
       if (xyz->norm() < kMinAxisNorm) {
         diags().Report(DiagKind::ZeroAxis, axis.Attribute("xyz").loc,
-                       fmt::format("joint '{}': axis is zero; it must have a direction", *name));
-        return;
+                       fmt::format("joint '{}': axis is zero; it must have a direction",
+                                   module().Text(joint.name)));
+        return false;
       }
       if (uses_axis) {
         joint.axis = xyz->normalized();
       } else {
         diags().Report(DiagKind::JointWarning, axis.GetLoc(),
-                       fmt::format("<axis> of {} joint '{}' is ignored{}", *type, *name,
+                       fmt::format("<axis> of {} joint '{}' is ignored{}", kind.name,
+                                   module().Text(joint.name),
                                    joint.type == ir::JointType::Universal
                                        ? ": Drake's universal joint turns about its frame's x "
                                          "axis, then y"
@@ -176,19 +228,12 @@ void UrdfReader::ReadAnyJoint(const xml::XmlElement& e, bool drake_element) {
     joint.X_CM.R = FrameWithZAlong(joint.axis);
     joint.axis = Eigen::Vector3d::UnitZ();
   }
+  return true;
+}
 
-  const int nv = ir::JointVelocityCount(joint.type);
-  joint.limits.lower.assign(nv, -kInf);
-  joint.limits.upper.assign(nv, kInf);
-  joint.limits.velocity_lower.assign(nv, -kInf);
-  joint.limits.velocity_upper.assign(nv, kInf);
-  joint.limits.acceleration_lower.assign(nv, -kInf);
-  joint.limits.acceleration_upper.assign(nv, kInf);
-  joint.limits.effort.assign(nv, kInf);
-  joint.damping.assign(nv, 0.0);
-
+void UrdfReader::ReadCustomTypeParameters(const xml::XmlElement& e, ir::Joint& joint) {
   // the parameters of Drake's custom types (EXT-002, EXT-003). After an
-  // error here the joint is still declared, for the same reason as above.
+  // error here the joint is still declared, as after a misspelled type.
   if (joint.type == ir::JointType::Screw) {
     ReadScrewThreadPitch(e, joint);
   } else if (joint.type == ir::JointType::Curvilinear) {
@@ -198,172 +243,75 @@ void UrdfReader::ReadAnyJoint(const xml::XmlElement& e, bool drake_element) {
       joint.limits.upper.set(0, joint.curvilinear_path.TotalLength());
     }
   }
+}
 
+void UrdfReader::ReadJointChildren(const xml::XmlElement& e, const UrdfJointType& kind,
+                                   ir::Joint& joint) {
+  const std::string_view element = e.Name();
   for (auto c = e.FirstChild(); c; c = c.NextSibling()) {
     std::string_view tag = c.Name();
     if (tag == "origin" || tag == "parent" || tag == "child" || tag == "axis") {
-      continue;
+      continue;  // read before the other children
     } else if (tag == "limit") {
-      if (joint.type == ir::JointType::Revolute || joint.type == ir::JointType::Prismatic) {
-        ReadLimits(c, joint, kind->continuous);
-      } else if (IgnoresLimits(joint.type)) {
-        diags().Report(DiagKind::UnsupportedElement, c.GetLoc(),
-                       fmt::format("<limit> of {} joint '{}' is ignored: Drake reads no limits "
-                                   "or effort for {} joints",
-                                   *type, *name, *type));
-      }
-      // fixed and planar joints ignore <limit> silently, as in Drake
+      ReadJointLimit(c, kind, joint);
     } else if (tag == "dynamics") {
-      attrs_.WarnUnknownAttributes(c, {"damping", "friction", "coulomb_window", "spring_reference",
-                                       "spring_stiffness"});
-      if (joint.type == ir::JointType::Planar) {
-        // three values: x, y and the rotation about z (URDF-014)
-        if (auto d = c.Attribute("damping"); d.present()) {
-          if (auto values = attrs_.Doubles(c, "damping", 3)) {
-            if (std::any_of(values->begin(), values->end(), [](double v) { return v < 0; })) {
-              diags().Report(DiagKind::BadValue, d.loc,
-                             fmt::format("joint '{}': damping must not be negative", *name));
-            } else {
-              joint.damping = *values;
-            }
-          }
-        }
-      } else if (nv > 0) {
-        // one value; ball and universal joints apply it to every dof, as
-        // Drake's BallRpyJoint and UniversalJoint do
-        if (auto d = attrs_.Double(c, "damping")) {
-          if (*d < 0) {
-            diags().Report(DiagKind::BadValue, c.Attribute("damping").loc,
-                           fmt::format("joint '{}': damping must not be negative", *name));
-          } else {
-            joint.damping.assign(nv, *d);
-          }
-        }
-      }
-      if (auto f = attrs_.Double(c, "friction"); f && *f != 0 && !said_friction_) {
-        said_friction_ = true;
-        diags().Report(DiagKind::UnsupportedAttribute, c.Attribute("friction").loc,
-                       "joint friction is ignored: the plant holds no Coulomb friction in joints, "
-                       "only <dynamics damping> (said once per file)");
-      }
-      if (auto w = c.Attribute("coulomb_window"); w.present()) {
-        diags().Report(DiagKind::UnsupportedAttribute, w.loc,
-                       "attribute 'coulomb_window' is not supported and is ignored");
-      }
+      ReadDynamics(c, joint);
     } else if (tag == "mimic") {
       ReadMimic(c, joint);
-    } else if (tag == "calibration") {
-      if (!std::exchange(said_calibration_, true)) {
-        diags().Report(DiagKind::UnsupportedElement, c.GetLoc(),
-                       fmt::format("element <calibration> in <{}> is ignored: the plant holds "
-                                   "no encoder calibration (said once per file)",
-                                   element));
-      }
-    } else if (tag == "safety_controller") {
-      if (!std::exchange(said_safety_controller_, true)) {
-        diags().Report(DiagKind::UnsupportedElement, c.GetLoc(),
-                       fmt::format("element <safety_controller> in <{}> is ignored: the plant "
-                                   "holds no ROS safety controller, only the <limit> (said once "
-                                   "per file)",
-                                   element));
-      }
-    } else if (auto it = std::find_if(std::begin(kTypeSpecificChildren),
-                                      std::end(kTypeSpecificChildren),
-                                      [&](const TypeSpecificChild& s) { return s.tag == tag; });
-               it != std::end(kTypeSpecificChildren)) {
-      // read above when the type is right
-      if (it->type != joint.type) {
-        diags().Report(DiagKind::UnknownElement, c.GetLoc(),
-                       fmt::format("<{}> applies only to {} joints; it is ignored in {} joint '{}'",
-                                   tag, ir::JointTypeName(it->type), *type, *name));
-      }
-    } else {
+    } else if (tag == "calibration" || tag == "safety_controller") {
+      ReportRosJointSetting(c, element);
+    } else if (!CheckTypeSpecificChild(c, kind, joint)) {
       ReportUnknownElement(diags(), c, element,
                            {"origin", "parent", "child", "axis", "limit", "dynamics", "mimic",
                             "calibration", "safety_controller"});
     }
   }
-  const Symbol joint_name = joint.name;
-  const JointId id = module().Add(std::move(joint));
-  joint_ids_[joint_name.value] = id;
-  ReadOriginalName(e, id, ctx_);
 }
 
-void UrdfReader::ReadLimits(const xml::XmlElement& e, ir::Joint& joint, bool continuous) {
-  // a misspelled bound (uper=) leaves that side unbounded: the note says so
-  static constexpr std::string_view kUnbounded[] = {"the lower limit is -inf: unbounded",
-                                                    "the upper limit is +inf: unbounded"};
-  attrs_.WarnUnknownAttributes(
-      e, {"lower", "upper", "velocity", "effort", "drake:acceleration"},
-      continuous ? std::initializer_list<xml::AttributeReader::WhenAbsent>{}
-                 : std::initializer_list<xml::AttributeReader::WhenAbsent>{
-                       {"lower", kUnbounded[0]}, {"upper", kUnbounded[1]}});
-  // joint limits may be infinite: that means "unbounded"
-  auto lower = attrs_.Double(e, "lower", xml::Need::Optional, xml::Finite::NotRequired);
-  auto upper = attrs_.Double(e, "upper", xml::Need::Optional, xml::Finite::NotRequired);
-  auto velocity = attrs_.Double(e, "velocity", xml::Need::Optional, xml::Finite::NotRequired);
-  auto effort = attrs_.Double(e, "effort", xml::Need::Optional, xml::Finite::NotRequired);
-  auto accel =
-      attrs_.Double(e, "drake:acceleration", xml::Need::Optional, xml::Finite::NotRequired);
-  for (auto [value, attr] : {std::pair{&lower, "lower"}, {&upper, "upper"},
-                             {&velocity, "velocity"}, {&effort, "effort"},
-                             {&accel, "drake:acceleration"}}) {
-    if (*value && std::isnan(**value)) {
-      diags().Report(DiagKind::NonFinite, e.Attribute(attr).loc,
-                     fmt::format("attribute '{}' of <limit> is NaN", attr));
-      value->reset();
+void UrdfReader::ReadJointLimit(const xml::XmlElement& limit, const UrdfJointType& kind,
+                                ir::Joint& joint) {
+  if (joint.type == ir::JointType::Revolute || joint.type == ir::JointType::Prismatic) {
+    ReadLimits(limit, joint, kind.continuous);
+  } else if (IgnoresLimits(joint.type)) {
+    diags().Report(DiagKind::UnsupportedElement, limit.GetLoc(),
+                   fmt::format("<limit> of {} joint '{}' is ignored: Drake reads no limits "
+                               "or effort for {} joints",
+                               kind.name, module().Text(joint.name), kind.name));
+  }
+  // fixed and planar joints ignore <limit> silently, as in Drake
+}
+
+void UrdfReader::ReportRosJointSetting(const xml::XmlElement& c, std::string_view element) {
+  if (c.Name() == "calibration") {
+    if (!std::exchange(said_calibration_, true)) {
+      diags().Report(DiagKind::UnsupportedElement, c.GetLoc(),
+                     fmt::format("element <calibration> in <{}> is ignored: the plant holds "
+                                 "no encoder calibration (said once per file)",
+                                 element));
     }
-  }
-  if (!continuous) {
-    // an absent bound leaves that side unbounded, as in Drake
-    const double lo = lower.value_or(-kInf), hi = upper.value_or(kInf);
-    if (lo > hi) {
-      diags().Report(DiagKind::BadLimits, e.GetLoc(),
-                     fmt::format("joint '{}': lower limit {} is greater than upper limit {}",
-                                 module().Text(joint.name), lo, hi));
-      return;
-    }
-    joint.limits.lower.set(0, lo);
-    joint.limits.upper.set(0, hi);
-  }
-  for (auto [value, what] : {std::pair{&velocity, "velocity"}, {&effort, "effort"},
-                             {&accel, "drake:acceleration"}}) {
-    if (*value && **value < 0) {
-      diags().Report(DiagKind::BadLimits, e.Attribute(what).loc,
-                     fmt::format("joint '{}': {} limit must not be negative",
-                                 module().Text(joint.name), what));
-      value->reset();
-    }
-  }
-  if (velocity) {
-    joint.limits.velocity_lower.set(0, -*velocity);
-    joint.limits.velocity_upper.set(0, *velocity);
-  }
-  if (effort) joint.limits.effort.set(0, *effort);
-  if (accel) {
-    joint.limits.acceleration_lower.set(0, -*accel);
-    joint.limits.acceleration_upper.set(0, *accel);
+  } else if (!std::exchange(said_safety_controller_, true)) {
+    diags().Report(DiagKind::UnsupportedElement, c.GetLoc(),
+                   fmt::format("element <safety_controller> in <{}> is ignored: the plant "
+                               "holds no ROS safety controller, only the <limit> (said once "
+                               "per file)",
+                               element));
   }
 }
 
-void UrdfReader::ReadMimic(const xml::XmlElement& e, const ir::Joint& joint) {
-  // q_joint = multiplier * q_other + offset, as a coupler constraint (URDF-018).
-  // Drake's convention: joint0 is the joint that follows (the one holding
-  // <mimic>), joint1 the joint it follows.
-  auto other = attrs_.String(e, "joint", xml::Need::Required);
-  if (!other) return;
-  attrs_.WarnUnknownAttributes(e, {"joint", "multiplier", "offset"});
-  if (module().Intern(*other) == joint.name) {
-    diags().Report(DiagKind::BadValue, e.Attribute("joint").loc,
-                   fmt::format("joint '{}' cannot mimic itself", module().Text(joint.name)));
-    return;
+bool UrdfReader::CheckTypeSpecificChild(const xml::XmlElement& c, const UrdfJointType& kind,
+                                        const ir::Joint& joint) {
+  const std::string_view tag = c.Name();
+  auto it = std::find_if(std::begin(kTypeSpecificChildren), std::end(kTypeSpecificChildren),
+                         [&](const TypeSpecificChild& s) { return s.tag == tag; });
+  if (it == std::end(kTypeSpecificChildren)) return false;
+  // read by ReadCustomTypeParameters when the type is right
+  if (it->type != joint.type) {
+    diags().Report(DiagKind::UnknownElement, c.GetLoc(),
+                   fmt::format("<{}> applies only to {} joints; it is ignored in {} joint '{}'",
+                               tag, ir::JointTypeName(it->type), kind.name,
+                               module().Text(joint.name)));
   }
-  ir::CouplerConstraint c;
-  c.joint0 = {joint.name, joint.loc, {}};
-  c.joint1 = {module().Intern(*other), e.Attribute("joint").loc, {}};
-  c.gear_ratio = attrs_.Double(e, "multiplier").value_or(1.0);
-  c.offset = attrs_.Double(e, "offset").value_or(0.0);
-  module().Add(ir::Constraint{model_, e.GetLoc(), std::move(c)});
+  return true;
 }
 
 void UrdfReader::ReadFrame(const xml::XmlElement& e) {

@@ -2,7 +2,8 @@
 //
 // The URDF frontend is split by element group: urdf_reader.cc (the <robot>
 // element, dispatch, materials), urdf_link.cc (links, inertials, visuals,
-// collisions, shapes), urdf_joint.cc (joints, limits, mimic, frames).
+// collisions, shapes), urdf_joint.cc (joints, frames), urdf_joint_children.cc
+// (a joint's <limit>, <dynamics> and <mimic>).
 // Each piece lowers syntax into the Module and reports what it cannot read;
 // references stay names until the resolve-names pass.
 #pragma once
@@ -16,6 +17,9 @@
 #include "frontend/xml/xml_document.h"
 
 namespace mdlc::frontend::urdf {
+
+/// A URDF joint type and the element that may declare it (urdf_joint.cc).
+struct UrdfJointType;
 
 struct UrdfMaterial {
   MaterialId id;
@@ -50,9 +54,11 @@ class UrdfReader {
 
   // urdf_joint.cc
   void ReadJoint(const xml::XmlElement& e);
-  void ReadLimits(const xml::XmlElement& e, ir::Joint& joint, bool continuous);
-  void ReadMimic(const xml::XmlElement& e, const ir::Joint& joint);
   void ReadFrame(const xml::XmlElement& e);
+  // urdf_joint_children.cc
+  void ReadLimits(const xml::XmlElement& e, ir::Joint& joint, bool continuous);
+  void ReadDynamics(const xml::XmlElement& dynamics, ir::Joint& joint);
+  void ReadMimic(const xml::XmlElement& e, const ir::Joint& joint);
   // urdf_transmission.cc
   void ReadTransmission(const xml::XmlElement& e);
   /// drake:rotor_inertia, drake:gear_ratio, drake:controller_gains under a
@@ -68,6 +74,27 @@ class UrdfReader {
   /// mimic) and the drake: children of custom types; registers the joint in
   /// joint_ids_ / joint_names_ (URDF-010..014, URDF-042, EXT-001..003).
   void ReadAnyJoint(const xml::XmlElement& e, bool drake_element);
+  // ReadAnyJoint's steps, in order:
+  /// name, type, <parent>, <child> and <origin>; the type's text, or nullopt
+  /// when the joint cannot be made.
+  std::optional<std::string_view> ReadJointEnds(const xml::XmlElement& e, ir::Joint& joint);
+  /// Sets joint.type; nullptr for an unknown type and for floating (no joint).
+  const UrdfJointType* ReadJointType(const xml::XmlElement& e, std::string_view type,
+                                     bool drake_element, ir::Joint& joint);
+  /// <axis> (URDF-011) and the planar frame; false for a zero axis (no joint).
+  bool ReadJointAxis(const xml::XmlElement& e, const UrdfJointType& kind, ir::Joint& joint);
+  /// The drake: parameters of screw and curvilinear joints (EXT-002, EXT-003).
+  void ReadCustomTypeParameters(const xml::XmlElement& e, ir::Joint& joint);
+  /// Every child but the ends, origin and axis, read above.
+  void ReadJointChildren(const xml::XmlElement& e, const UrdfJointType& kind, ir::Joint& joint);
+  /// <limit>: read for revolute and prismatic joints (ReadLimits).
+  void ReadJointLimit(const xml::XmlElement& limit, const UrdfJointType& kind, ir::Joint& joint);
+  /// <calibration> or <safety_controller>: ignored, said once per file.
+  void ReportRosJointSetting(const xml::XmlElement& c, std::string_view element);
+  /// True when `c` is a drake: child of one custom type (warned about on
+  /// joints of other types), false when it is none.
+  bool CheckTypeSpecificChild(const xml::XmlElement& c, const UrdfJointType& kind,
+                              const ir::Joint& joint);
   /// drake:screw_thread_pitch of a screw joint (EXT-002).
   void ReadScrewThreadPitch(const xml::XmlElement& e, ir::Joint& joint);
   /// drake:plane_normal, drake:initial_tangent, drake:is_periodic and
