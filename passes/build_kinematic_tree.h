@@ -1,5 +1,5 @@
 // build_kinematic_tree.h - the build-kinematic-tree pass with --fixed-base
-// (Options::fixed_base): the driver puts it in the pipeline in place of the
+// (Options::model.fixed_base): the driver puts it in the pipeline in place of the
 // registered one (pass_registry.h), under the same name.
 #pragma once
 

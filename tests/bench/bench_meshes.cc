@@ -139,9 +139,9 @@ std::string_view ReaderName(MeshReader reader) {
 
 Options CompileOptions(MeshReader reader, const fs::path& cache_dir) {
   Options options;
-  options.packages.emplace_back("drake_models", (g_corpus / "drake_models").string());
-  options.mesh_reader = reader;
-  options.mesh_cache_dir = cache_dir.string();
+  options.packages.definitions.emplace_back("drake_models", (g_corpus / "drake_models").string());
+  options.meshes.reader = reader;
+  options.meshes.cache_dir = cache_dir.string();
   return options;
 }
 

@@ -7,7 +7,7 @@
 //   - plain URDF (--plain): one root link, free bodies on floating joints,
 //     capsules, ellipsoids and Drake's joints approximated with -Wlossy;
 //   - a URDF root link that the plant floats gets a note in MJCF output, and
-//     --fixed-base (Options::fixed_base) welds it to the world instead.
+//     --fixed-base (Options::model.fixed_base) welds it to the world instead.
 // The corpus conversions loaded by MuJoCo and urdfdom (tests/convert/
 // CMakeLists.txt) check the same on real robots.
 #include <fmt/format.h>
@@ -337,7 +337,7 @@ TEST(FixedBase, UrdfRootFloatingInMjcfGetsANote) {
 TEST(FixedBase, WeldsEachFreeRootToTheWorld) {
   TempDir dir;
   Options options;
-  options.fixed_base = true;
+  options.model.fixed_base = true;
   Result source = CompileText(kArm, dir.path() / "arm.urdf", options);
   ASSERT_EQ(source.plant().num_positions, 1);
   bool welded = false;

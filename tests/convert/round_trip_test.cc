@@ -420,7 +420,7 @@ void PrintTo(const Target& t, std::ostream* os) { *os << t.name; }
 
 Outcome RoundTrip(const ModelCase& mc, const Target& to, const fs::path& dir) {
   Options options;
-  options.package_paths = {Corpus().string()};
+  options.packages.paths = {Corpus().string()};
   Result a = Compile(Input::File(mc.path.string()), options);
   if (!a.ok()) return Outcome::Rejected;  // which models are rejected is the corpus tests'
   fs::path out = DialectFolder(dir, to) / OutputName(mc, to.extension);
@@ -916,7 +916,7 @@ TEST(Names, MultiInstanceRoundTripKeepsScopedNames) {
     cmp.CompareAt(mdlc::DefaultPositions(c.source), "default q");
     // naming the model reads the file as written: one instance, flat names
     Options named;
-    named.model_name = "as_written";
+    named.naming.model_name = "as_written";
     const Result flat = Compile(Input::File(c.file.string()), named);
     ASSERT_TRUE(flat.ok()) << Messages(flat);
     bool found = false;

@@ -44,7 +44,7 @@ std::vector<std::string> CorpusModels() {
 /// Everything a compile prints: diagnostics, the IR, and plant-json.
 std::string Everything(const std::string& path) {
   Options options;
-  options.package_paths = {Corpus().string()};
+  options.packages.paths = {Corpus().string()};
   const Result r = Compile(Input::File(path), options);
   std::string out;
   for (const Diagnostic& d : r.diagnostics()) out += r.FormatText(d);

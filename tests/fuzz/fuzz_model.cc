@@ -31,7 +31,7 @@ const char* FileName() {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   mdlc::Options options;
-  options.diagnostics.max_errors = 50;  // a long tail of errors adds nothing
+  options.diagnostics.policy.max_errors = 50;  // a long tail of errors adds nothing
   mdlc::Result result = mdlc::Compile(
       mdlc::Input::Text(std::string(reinterpret_cast<const char*>(data), size), FileName(),
                         kFormat),

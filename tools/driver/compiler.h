@@ -36,14 +36,14 @@ struct CompileOptions {
   std::vector<std::string> pipeline;
   /// Stop after the passes (no plant, no scene graph).
   bool skip_backend = false;
-  /// Where mesh files are read (Options::mesh_reader).
+  /// Where mesh files are read (Options::meshes.reader).
   mesh::MeshReading mesh_reading = mesh::MeshReading::kChildProcess;
-  /// How they are turned Z-up (Options::collada_up_axis).
+  /// How they are turned Z-up (Options::meshes.collada_up_axis).
   mesh::MeshAxes mesh_axes;
   /// Weld free bodies to the world instead of floating them
-  /// (Options::fixed_base).
+  /// (Options::model.fixed_base).
   bool fixed_base = false;
-  /// Options::diagnostics, kept for what reports after the compile (Convert).
+  /// Options::diagnostics.policy, kept for what reports after the compile (Convert).
   DiagnosticPolicy diagnostics;
 };
 

@@ -23,10 +23,10 @@ Input Input::Text(std::string text, std::string name, std::optional<Format> form
 
 namespace {
 
-/// The folders a compile with `options` walks for packages, in order.
-std::vector<std::string> PackageFolders(const Options& options) {
-  std::vector<std::string> folders = options.package_paths;
-  if (options.use_ros_package_path) {
+/// The folders a compile with `packages` walks for package.xml files, in order.
+std::vector<std::string> PackageFolders(const PackageOptions& packages) {
+  std::vector<std::string> folders = packages.paths;
+  if (packages.use_ros_package_path) {
     if (const char* ros = std::getenv("ROS_PACKAGE_PATH")) {
       for (std::string& dir : assets::SplitPathList(ros)) folders.push_back(std::move(dir));
     }
@@ -38,27 +38,27 @@ std::vector<std::string> PackageFolders(const Options& options) {
 // ROS_PACKAGE_PATH (walked for package.xml files), then a ROS 2 install's
 // ament index. Reading an index lists one folder per prefix, so it is done
 // per compile rather than kept in the shared scan.
-void DefinePackages(const Options& options, Compilation& c) {
-  for (const auto& [name, dir] : options.packages) c.packages.Add(name, dir, c.diags);
-  const std::vector<std::string> folders = PackageFolders(options);
-  if (options.package_scan && options.package_scan->roots() == folders) {
-    for (const assets::FolderScan& folder : options.package_scan->folders()) {
+void DefinePackages(const PackageOptions& packages, Compilation& c) {
+  for (const auto& [name, dir] : packages.definitions) c.packages.Add(name, dir, c.diags);
+  const std::vector<std::string> folders = PackageFolders(packages);
+  if (packages.scan && packages.scan->roots() == folders) {
+    for (const assets::FolderScan& folder : packages.scan->folders()) {
       c.packages.PopulateFromScan(folder, c.sources, c.diags);
     }
   } else {
     for (const std::string& dir : folders) c.packages.PopulateFromFolder(dir, c.sources, c.diags);
   }
-  if (options.use_ros_package_path) {
+  if (packages.use_ros_package_path) {
     if (const char* prefixes = std::getenv("AMENT_PREFIX_PATH")) {
       c.packages.PopulateFromAmentPrefixes(prefixes);
     }
   }
 }
 
-void CheckJointPositions(const Options& options, Compilation& c) {
+void CheckJointPositions(const ModelOptions& model, Compilation& c) {
   if (!c.model) return;
   Eigen::VectorXd q = backend::DefaultPositions(c.model->plant);
-  for (const auto& [name, value] : options.joint_positions) {
+  for (const auto& [name, value] : model.joint_positions) {
     if (!backend::SetJointPositionByName(c.model->plant, q, name, value)) {
       c.diags.Report(DiagKind::UnknownReference, {},
                      fmt::format("no single-dof joint named '{}' to set the position of (use "
@@ -68,19 +68,57 @@ void CheckJointPositions(const Options& options, Compilation& c) {
   }
 }
 
+// A compilation whose diagnostics follow `diagnostics`: counted by its
+// policy, and handed to on_diagnostic as they come when it is set.
+std::unique_ptr<Compilation> MakeCompilation(const DiagnosticOptions& diagnostics) {
+  auto c = std::make_unique<Compilation>(diagnostics.policy);
+  c->options.diagnostics = diagnostics.policy;
+  if (diagnostics.on_diagnostic) {
+    c->diags.SetConsumer(
+        [&sources = c->sources, consumer = diagnostics.on_diagnostic](const Diagnostic& d) {
+          consumer(d, sources);
+        });
+  }
+  return c;
+}
+
+// The public instrumentation is the pass manager's, with the pipeline apart
+// (CompileOptions::pipeline) and print_after as a set.
+passes::PassInstrumentation PassInstrumentationOf(const Instrumentation& in) {
+  passes::PassInstrumentation out;
+  out.print_after.insert(in.print_after.begin(), in.print_after.end());
+  out.print_after_all = in.print_after_all;
+  out.print_sink = in.print_sink;
+  out.time_passes = in.time_passes;
+  out.verify_each = in.verify_each;
+  return out;
+}
+
+void SetMeshOptions(const MeshOptions& meshes, Compilation& c) {
+  c.options.mesh_reading = meshes.reader == MeshReader::InProcess
+                               ? mesh::MeshReading::kInProcess
+                               : mesh::MeshReading::kChildProcess;
+  c.options.mesh_axes.collada = meshes.collada_up_axis == ColladaUpAxis::Apply
+                                    ? mesh::ColladaUpAxis::kApply
+                                    : mesh::ColladaUpAxis::kAsWritten;
+  if (!meshes.cache_dir.empty()) {
+    c.derived_meshes = std::make_shared<mesh::DerivedMeshCache>(meshes.cache_dir);
+  }
+}
+
 }  // namespace
 
 std::string DefaultMeshCacheDirectory() { return mesh::DerivedMeshCache::DefaultDirectory(); }
 
 std::shared_ptr<const assets::PackageScan> ScanPackages(const Options& options) {
-  return std::make_shared<const assets::PackageScan>(PackageFolders(options));
+  return std::make_shared<const assets::PackageScan>(PackageFolders(options.packages));
 }
 
 UriResolution ResolveUri(std::string_view uri, const Options& options,
                          const std::string& base_dir) {
-  Compilation c(options.diagnostics);
+  Compilation c(options.diagnostics.policy);
   c.sources.set_limits(options.limits);  // package.xml files are read within them
-  DefinePackages(options, c);
+  DefinePackages(options.packages, c);
   UriResolution resolution;
   resolution.path = assets::ResolveUri(uri, base_dir, c.packages, {}, c.diags);
   for (const Diagnostic& d : c.diags.diagnostics()) {
@@ -91,15 +129,12 @@ UriResolution ResolveUri(std::string_view uri, const Options& options,
 
 XacroExpansion ExpandXacro(const std::string& path, const Options& options,
                            const std::string& shown_name) {
-  Compilation c(options.diagnostics);
-  if (options.on_diagnostic) {
-    c.diags.SetConsumer([&sources = c.sources, consumer = options.on_diagnostic](
-                            const Diagnostic& d) { consumer(d, sources); });
-  }
+  std::unique_ptr<Compilation> compilation = MakeCompilation(options.diagnostics);
+  Compilation& c = *compilation;
   c.sources.set_limits(options.limits);
-  DefinePackages(options, c);
+  DefinePackages(options.packages, c);
   xacro::XacroOptions xacro_options;
-  xacro_options.args = options.xacro_args;
+  xacro_options.args = options.model.xacro_args;
   xacro_options.packages = &c.packages;
   XacroExpansion out;
   std::unique_ptr<xacro::Expansion> expansion =
@@ -117,40 +152,20 @@ XacroExpansion ExpandXacro(const std::string& path, const Options& options,
 }
 
 Result Compile(const std::vector<Input>& inputs, const Options& options) {
-  auto c = std::make_unique<Compilation>(options.diagnostics);
-  if (options.on_diagnostic) {
-    c->diags.SetConsumer(
-        [&sources = c->sources, consumer = options.on_diagnostic](const Diagnostic& d) {
-          consumer(d, sources);
-        });
-  }
+  std::unique_ptr<Compilation> c = MakeCompilation(options.diagnostics);
   c->options.inputs = inputs;
-  c->options.frontend.model_name = options.model_name;
-  c->options.frontend.auto_rename = options.auto_rename;
-  c->options.frontend.xacro_args = options.xacro_args;
-  c->options.pipeline = options.passes;
-  c->options.instrumentation.print_after.insert(options.print_after.begin(),
-                                                 options.print_after.end());
-  c->options.instrumentation.print_after_all = options.print_after_all;
-  c->options.instrumentation.print_sink = options.print_sink;
-  c->options.instrumentation.time_passes = options.time_passes;
-  c->options.instrumentation.verify_each = options.verify_each;
+  c->options.frontend.model_name = options.naming.model_name;
+  c->options.frontend.auto_rename = options.naming.auto_rename;
+  c->options.frontend.xacro_args = options.model.xacro_args;
+  c->options.fixed_base = options.model.fixed_base;
+  c->options.pipeline = options.instrumentation.passes;
+  c->options.instrumentation = PassInstrumentationOf(options.instrumentation);
   c->options.skip_backend = options.skip_backend;
-  c->options.fixed_base = options.fixed_base;
-  c->options.diagnostics = options.diagnostics;
   c->sources.set_limits(options.limits);
-  c->options.mesh_reading = options.mesh_reader == MeshReader::InProcess
-                                ? mesh::MeshReading::kInProcess
-                                : mesh::MeshReading::kChildProcess;
-  c->options.mesh_axes.collada = options.collada_up_axis == ColladaUpAxis::Apply
-                                     ? mesh::ColladaUpAxis::kApply
-                                     : mesh::ColladaUpAxis::kAsWritten;
-  if (!options.mesh_cache_dir.empty()) {
-    c->derived_meshes = std::make_shared<mesh::DerivedMeshCache>(options.mesh_cache_dir);
-  }
-  DefinePackages(options, *c);
-  if (c->Run()) CheckJointPositions(options, *c);
-  return Result(std::move(c), options.joint_positions);
+  SetMeshOptions(options.meshes, *c);
+  DefinePackages(options.packages, *c);
+  if (c->Run()) CheckJointPositions(options.model, *c);
+  return Result(std::move(c), options.model.joint_positions);
 }
 
 Result::Result(std::unique_ptr<Compilation> compilation,

@@ -15,7 +15,7 @@ namespace mdlc {
 class ResultAccess {
  public:
   static const Compilation& compilation(const Result& result) { return *result.compilation_; }
-  /// Options::joint_positions, which DefaultPositions applies.
+  /// Options::model.joint_positions, which DefaultPositions applies.
   static const std::vector<std::pair<std::string, double>>& joint_positions(
       const Result& result) {
     return result.joint_positions_;

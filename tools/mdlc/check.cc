@@ -242,7 +242,7 @@ int RunCheck(const CheckOptions& options, const std::function<void(std::string_v
   }
   // every file has the same package path: walk its folders once, not per file
   Options compile = options.compile;
-  if (!compile.package_scan) compile.package_scan = ScanPackages(compile);
+  if (!compile.packages.scan) compile.packages.scan = ScanPackages(compile);
   // workers take files in order; the report is written in file order
   std::mutex mutex;
   std::condition_variable ready;

@@ -61,17 +61,17 @@ RunDiagnostics& TheRun() {
 
 // --package NAME=DIR, --package-path DIR, and the ROS environment
 // (ROS_PACKAGE_PATH, AMENT_PREFIX_PATH)
-bool ParsePackages(const CompileFlags& flags, Options& options) {
+bool ParsePackages(const CompileFlags& flags, PackageOptions& packages) {
   for (const std::string& definition : flags.packages) {
     const size_t eq = definition.find('=');
     if (eq == std::string::npos || eq == 0) {
       fmt::print(stderr, "mdlc: error: --package expects NAME=DIR, got '{}'\n", definition);
       return false;
     }
-    options.packages.emplace_back(definition.substr(0, eq), definition.substr(eq + 1));
+    packages.definitions.emplace_back(definition.substr(0, eq), definition.substr(eq + 1));
   }
-  options.package_paths = flags.package_paths;
-  options.use_ros_package_path = true;
+  packages.paths = flags.package_paths;
+  packages.use_ros_package_path = true;
   return true;
 }
 
@@ -189,31 +189,34 @@ void AddJsonAlias(CLI::App* command, CompileFlags& flags) {
 }
 
 int ToOptions(const CompileFlags& flags, Options& options) {
-  std::optional<std::string> problem = ApplyWarningFlags(flags, options.diagnostics);
+  std::optional<std::string> problem = ApplyWarningFlags(flags, options.diagnostics.policy);
   for (const std::string& setting : flags.limits) {
     if (!problem) problem = ApplyLimitSetting(options.limits, setting, "--limit");
   }
-  if (!problem) problem = ParseMeshReader(flags.mesh_reader, "--mesh-reader", options.mesh_reader);
+  if (!problem) {
+    problem = ParseMeshReader(flags.mesh_reader, "--mesh-reader", options.meshes.reader);
+  }
   if (!problem) {
     problem = ParseColladaUpAxis(flags.collada_up_axis, "--collada-up-axis",
-                                 options.collada_up_axis);
+                                 options.meshes.collada_up_axis);
   }
   if (problem) {
     fmt::print(stderr, "mdlc: error: {}\n", *problem);
     return 2;
   }
-  if (!ParsePackages(flags, options)) return 2;
-  options.model_name = flags.model_name;
-  options.auto_rename = flags.auto_rename;
-  options.fixed_base = flags.fixed_base;
+  if (!ParsePackages(flags, options.packages)) return 2;
+  options.naming.model_name = flags.model_name;
+  options.naming.auto_rename = flags.auto_rename;
+  options.model.fixed_base = flags.fixed_base;
   for (const std::string& word : flags.files) {
     // xacro's NAME:=VALUE arguments sit among the files, as on xacro's command line
     if (const size_t at = word.find(":="); at != std::string::npos && at > 0) {
-      options.xacro_args.emplace_back(word.substr(0, at), word.substr(at + 2));
+      options.model.xacro_args.emplace_back(word.substr(0, at), word.substr(at + 2));
     }
   }
   if (!flags.no_cache) {
-    options.mesh_cache_dir = flags.cache_dir.empty() ? DefaultMeshCacheDirectory() : flags.cache_dir;
+    options.meshes.cache_dir =
+        flags.cache_dir.empty() ? DefaultMeshCacheDirectory() : flags.cache_dir;
   }
   return 0;
 }
@@ -235,8 +238,8 @@ CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup) {
       });
       // JSON is never collapsed: its reader wants every diagnostic
       const bool collapse = !json && CollapsesRepeats(flags);
-      options.on_diagnostic = [json, color, collapse, stream](const Diagnostic& d,
-                                                              const SourceManager& s) {
+      options.diagnostics.on_diagnostic = [json, color, collapse, stream](
+                                              const Diagnostic& d, const SourceManager& s) {
         if (collapse && d.severity == Severity::Warning &&
             !TheRun().repeated.FirstOfItsKind(InfoFor(d.kind).group, d.message,
                                               LocationText(d.loc, s))) {
@@ -248,8 +251,8 @@ CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup) {
     }
     case DiagnosticOutput::Collect:
       // the list, not `setup`: the consumer outlives this call (ReportAfterCompile)
-      options.on_diagnostic = [collected = setup.collected](const Diagnostic& d,
-                                                            const SourceManager&) {
+      options.diagnostics.on_diagnostic = [collected = setup.collected](
+                                              const Diagnostic& d, const SourceManager&) {
         collected->push_back(d);
       };
       break;
@@ -274,7 +277,7 @@ CliCompile CompileForCli(const CompileFlags& flags, const CompileSetup& setup) {
       if (d.severity == Severity::Error) fmt::print(stderr, "{}", FormatDiagnosticText(d, s));
     };
   } else {
-    TheRun().show = options.on_diagnostic;
+    TheRun().show = options.diagnostics.on_diagnostic;
   }
   Result& result = KeepUntilExit(Compile(inputs, options));
   if (stream) stream->Finish();

@@ -63,12 +63,12 @@ int Run(const CompileCommandFlags& flags) {
   }
   setup.keep_failed = true;  // the timing report comes first
   setup.adjust = [&](Options& options) {
-    options.joint_positions = joint_positions.joint_positions;
-    options.passes = flags.passes;
-    options.print_after = flags.print_after;
-    options.print_after_all = flags.print_after_all;
-    options.time_passes = flags.time_passes;
-    options.verify_each = flags.verify_each;
+    options.model.joint_positions = joint_positions.model.joint_positions;
+    options.instrumentation.passes = flags.passes;
+    options.instrumentation.print_after = flags.print_after;
+    options.instrumentation.print_after_all = flags.print_after_all;
+    options.instrumentation.time_passes = flags.time_passes;
+    options.instrumentation.verify_each = flags.verify_each;
     options.skip_backend = flags.emit == "ir";
   };
   const CliCompile compiled = CompileForCli(flags.compile, setup);

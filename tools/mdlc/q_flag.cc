@@ -22,7 +22,7 @@ bool ParseJointPositions(const std::vector<std::string>& assignments, Options& o
       fmt::print(stderr, "mdlc: error: --q expects JOINT=VALUE, got '{}'\n", assignment);
       return false;
     }
-    options.joint_positions.emplace_back(assignment.substr(0, eq), value);
+    options.model.joint_positions.emplace_back(assignment.substr(0, eq), value);
   }
   return true;
 }

@@ -29,7 +29,7 @@ int Run(const ViewFlags& flags) {
   if (!ParseJointPositions(flags.q, joint_positions)) return 2;
   CompileSetup setup;
   setup.adjust = [&](Options& options) {
-    options.joint_positions = joint_positions.joint_positions;
+    options.model.joint_positions = joint_positions.model.joint_positions;
   };
   const CliCompile compiled = CompileForCli(flags.compile, setup);
   if (compiled.status) return compiled.status;

@@ -33,7 +33,7 @@ int Run(const XacroFlags& flags) {
     return 2;
   }
   const bool json = flags.compile.diagnostics_format == "json";
-  options.on_diagnostic = [json](const Diagnostic& d, const SourceManager& s) {
+  options.diagnostics.on_diagnostic = [json](const Diagnostic& d, const SourceManager& s) {
     const std::string text = json ? FormatDiagnosticJson(d, s) + "\n" : FormatDiagnosticText(d, s);
     std::fwrite(text.data(), 1, text.size(), stderr);
   };

@@ -121,40 +121,40 @@ void ApplyKeyword(Options& options, const std::string& function, const std::stri
   const auto& k = keyword;
   if (k == "packages") {
     for (auto [name, dir] : Dict(f, k, value)) {
-      options.packages.emplace_back(Text(f, k, name), Text(f, k, dir, true));
+      options.packages.definitions.emplace_back(Text(f, k, name), Text(f, k, dir, true));
     }
-    std::sort(options.packages.begin(), options.packages.end());
+    std::sort(options.packages.definitions.begin(), options.packages.definitions.end());
   } else if (k == "package_paths") {
-    options.package_paths = TextList(f, k, value, true);
+    options.packages.paths = TextList(f, k, value, true);
   } else if (k == "use_ros_package_path") {
-    options.use_ros_package_path = Value<bool>(f, k, value, "a bool");
+    options.packages.use_ros_package_path = Value<bool>(f, k, value, "a bool");
   } else if (k == "strict") {
     // strict=False does not undo warnings=["error"]
-    if (Value<bool>(f, k, value, "a bool")) options.diagnostics.warnings_as_errors = true;
+    if (Value<bool>(f, k, value, "a bool")) options.diagnostics.policy.warnings_as_errors = true;
   } else if (k == "warnings") {  // the text of -W flags: "error", "no-joint", ...
     for (const std::string& flag : TextList(f, k, value)) {
-      Check(ApplyWarningFlag(options.diagnostics, flag, "warnings (-W" + flag + ")"));
+      Check(ApplyWarningFlag(options.diagnostics.policy, flag, "warnings (-W" + flag + ")"));
     }
   } else if (k == "disabled_warnings") {
     for (const std::string& group : TextList(f, k, value)) {
-      Check(ApplyWarningFlag(options.diagnostics, "no-" + group, k));
+      Check(ApplyWarningFlag(options.diagnostics.policy, "no-" + group, k));
     }
   } else if (k == "error_warnings") {
     for (const std::string& group : TextList(f, k, value)) {
-      Check(ApplyWarningFlag(options.diagnostics, "error=" + group, k));
+      Check(ApplyWarningFlag(options.diagnostics.policy, "error=" + group, k));
     }
   } else if (k == "max_errors") {
-    options.diagnostics.max_errors = Value<size_t>(f, k, value, "a count");
+    options.diagnostics.policy.max_errors = Value<size_t>(f, k, value, "a count");
   } else if (k == "model_name") {
-    options.model_name = Text(f, k, value);
+    options.naming.model_name = Text(f, k, value);
   } else if (k == "auto_rename") {
-    options.auto_rename = Value<bool>(f, k, value, "a bool");
+    options.naming.auto_rename = Value<bool>(f, k, value, "a bool");
   } else if (k == "fixed_base") {
-    options.fixed_base = Value<bool>(f, k, value, "a bool");
+    options.model.fixed_base = Value<bool>(f, k, value, "a bool");
   } else if (k == "joint_positions") {
     for (auto [name, position] : Dict(f, k, value)) {
-      options.joint_positions.emplace_back(Text(f, k, name),
-                                           Value<double>(f, k, position, "numbers"));
+      options.model.joint_positions.emplace_back(Text(f, k, name),
+                                                 Value<double>(f, k, position, "numbers"));
     }
   } else if (k == "limits") {  // {"file_size": "64M"}: --limit file-size=64M
     for (auto [name, limit] : Dict(f, k, value)) {
@@ -164,9 +164,9 @@ void ApplyKeyword(Options& options, const std::string& function, const std::stri
                               k));
     }
   } else if (k == "mesh_reader") {
-    Check(ParseMeshReader(Text(f, k, value), k, options.mesh_reader));
+    Check(ParseMeshReader(Text(f, k, value), k, options.meshes.reader));
   } else if (k == "collada_up_axis") {
-    Check(ParseColladaUpAxis(Text(f, k, value), k, options.collada_up_axis));
+    Check(ParseColladaUpAxis(Text(f, k, value), k, options.meshes.collada_up_axis));
   } else if (k == "xacro_args") {
     for (auto [name, text] : Dict(f, k, value)) {
       if (!py::isinstance<py::str>(name) || !py::isinstance<py::str>(text)) {
@@ -174,10 +174,10 @@ void ApplyKeyword(Options& options, const std::string& function, const std::stri
                              " -> " + TypeName(text) + " for " +
                              py::repr(name).cast<std::string>());
       }
-      options.xacro_args.emplace_back(name.cast<std::string>(), text.cast<std::string>());
+      options.model.xacro_args.emplace_back(name.cast<std::string>(), text.cast<std::string>());
     }
   } else if (k == "cache_dir") {
-    options.mesh_cache_dir = Text(f, k, value, true);
+    options.meshes.cache_dir = Text(f, k, value, true);
   } else {
     // CompileOptionNames() has a keyword this function does not set
     throw py::value_error(f + ": the option '" + k + "' is not available from Python");
@@ -210,7 +210,8 @@ py::tuple CompileForPython(const std::vector<std::pair<std::string, std::optiona
 // set when the expansion had no error. The GIL is released meanwhile.
 py::tuple ExpandXacroForPython(const std::string& path, Options options) {
   std::vector<PyDiagnostic> collected;
-  options.on_diagnostic = [&collected](const Diagnostic& d, const SourceManager& sources) {
+  options.diagnostics.on_diagnostic = [&collected](const Diagnostic& d,
+                                                    const SourceManager& sources) {
     collected.push_back(MakeDiagnostic(d, sources));
   };
   XacroExpansion expansion;
@@ -234,11 +235,11 @@ void SetCommonOptions(Options& options,
   for (const std::string& setting : limits) {
     Check(ApplyLimitSetting(options.limits, setting, "limits"));
   }
-  options.packages = packages;
-  options.package_paths = package_paths;
-  options.use_ros_package_path = use_ros_package_path;
-  options.xacro_args = xacro_args;
-  options.diagnostics.warnings_as_errors = strict;
+  options.packages.definitions = packages;
+  options.packages.paths = package_paths;
+  options.packages.use_ros_package_path = use_ros_package_path;
+  options.model.xacro_args = xacro_args;
+  options.diagnostics.policy.warnings_as_errors = strict;
 }
 
 }  // namespace
@@ -311,9 +312,9 @@ PYBIND11_MODULE(_mdlc, m) {
          const std::vector<std::string>& package_paths, bool use_ros_package_path,
          const std::string& relative_to) {
         Options options;
-        options.packages = packages;
-        options.package_paths = package_paths;
-        options.use_ros_package_path = use_ros_package_path;
+        options.packages.definitions = packages;
+        options.packages.paths = package_paths;
+        options.packages.use_ros_package_path = use_ros_package_path;
         UriResolution resolution = ResolveUri(uri, options, relative_to);
         return std::make_pair(std::move(resolution.path), std::move(resolution.messages));
       },

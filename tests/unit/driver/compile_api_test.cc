@@ -46,7 +46,7 @@ class TextEqualsFile : public ::testing::TestWithParam<const char*> {};
 TEST_P(TextEqualsFile, PlantJsonIsByteIdentical) {
   const fs::path path = kExamples / GetParam();
   Options options;
-  options.package_paths = {kExamples.string()};  // the directives scene's package
+  options.packages.paths = {kExamples.string()};  // the directives scene's package
   const Result from_file = Compile(Input::File(path.string()), options);
   const Result from_text = Compile(Input::Text(ReadFile(path), path.string()), options);
   ASSERT_TRUE(from_file.ok());
@@ -108,24 +108,24 @@ TEST(CompileApi, StrictnessAndWarningGroups) {
   EXPECT_EQ(lenient.warning_count(), 1u);
 
   Options strict;
-  strict.diagnostics.warnings_as_errors = true;
+  strict.diagnostics.policy.warnings_as_errors = true;
   EXPECT_FALSE(Compile(noisy, strict).ok());
 
   Options silenced;
-  silenced.diagnostics.disabled_groups = {"unknown"};
+  silenced.diagnostics.policy.disabled_groups = {"unknown"};
   const Result quiet = Compile(noisy, silenced);
   EXPECT_TRUE(quiet.ok());
   EXPECT_TRUE(quiet.diagnostics().empty());
 
   Options promoted;
-  promoted.diagnostics.error_groups = {"unknown"};
+  promoted.diagnostics.policy.error_groups = {"unknown"};
   EXPECT_FALSE(Compile(noisy, promoted).ok());
 }
 
 TEST(CompileApi, DiagnosticsStreamToACallbackWhenOneIsGiven) {
   std::vector<std::string> seen;
   Options options;
-  options.on_diagnostic = [&](const Diagnostic& d, const SourceManager& sources) {
+  options.diagnostics.on_diagnostic = [&](const Diagnostic& d, const SourceManager& sources) {
     seen.push_back(FormatDiagnosticText(d, sources));
   };
   const Result r = Compile(Input::Text(WithUnknownElement(), "noisy.urdf"), options);
@@ -137,7 +137,7 @@ TEST(CompileApi, DiagnosticsStreamToACallbackWhenOneIsGiven) {
 
 TEST(CompileApi, JointPositionsSetTheDefaultConfiguration) {
   Options options;
-  options.joint_positions = {{"shoulder", 0.5}};
+  options.model.joint_positions = {{"shoulder", 0.5}};
   const Result r = Compile(Input::Text(kPendulum, "p.urdf"), options);
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(mdlc::DefaultPositions(r), Eigen::VectorXd::Constant(1, 0.5));
@@ -146,7 +146,7 @@ TEST(CompileApi, JointPositionsSetTheDefaultConfiguration) {
   EXPECT_FALSE(mdlc::SetJointPosition(r, q, "elbow", 1));
   EXPECT_EQ(q[0], -1);
 
-  options.joint_positions = {{"elbow", 1}};
+  options.model.joint_positions = {{"elbow", 1}};
   const Result unknown = Compile(Input::Text(kPendulum, "p.urdf"), options);
   EXPECT_FALSE(unknown.ok());
   EXPECT_NE(unknown.diagnostics().back().message.find("'elbow'"), std::string::npos);
@@ -193,7 +193,7 @@ TEST(CompileApi, ConvertLeavesTheResultAsItWas) {
 
   // -Werror=lossy, given to the compile, makes the conversion fail
   Options strict;
-  strict.diagnostics.error_groups.insert("lossy");
+  strict.diagnostics.policy.error_groups.insert("lossy");
   const Result s = Compile(Input::Text(kCapsule, "pill.urdf"), strict);
   ASSERT_TRUE(s.ok());
   const ConvertOutput refused = mdlc::Convert(s, plain);
@@ -204,13 +204,13 @@ TEST(CompileApi, ConvertLeavesTheResultAsItWas) {
 
 TEST(CompileApi, NamingAndPipelineOptions) {
   Options options;
-  options.model_name.emplace("renamed");  // assigning it draws a false GCC 12 warning
+  options.naming.model_name.emplace("renamed");  // assigning it draws a false GCC 12 warning
   const Result r = Compile(Input::Text(kPendulum, "p.urdf"), options);
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(r.plant().model_instances.back(), "renamed");
 
   Options twice;
-  twice.auto_rename = true;
+  twice.naming.auto_rename = true;
   const Result both = Compile({Input::Text(kPendulum, "a.urdf"), Input::Text(kPendulum, "b.urdf")},
                               twice);
   ASSERT_TRUE(both.ok());
@@ -218,7 +218,7 @@ TEST(CompileApi, NamingAndPipelineOptions) {
 
   Options ir_only;
   ir_only.skip_backend = true;
-  ir_only.time_passes = true;
+  ir_only.instrumentation.time_passes = true;
   const Result ir = Compile(Input::Text(kPendulum, "p.urdf"), ir_only);
   EXPECT_TRUE(ir.ok());
   EXPECT_FALSE(ir.has_model());
@@ -226,7 +226,7 @@ TEST(CompileApi, NamingAndPipelineOptions) {
   EXPECT_FALSE(ir.timing_report().empty());
 
   Options unknown_pass;
-  unknown_pass.passes = {"no-such-pass"};
+  unknown_pass.instrumentation.passes = {"no-such-pass"};
   EXPECT_FALSE(Compile(Input::Text(kPendulum, "p.urdf"), unknown_pass).ok());
 }
 
@@ -240,7 +240,7 @@ TEST(CompileApi, AutoRenameTakesTheFirstFreeSuffixOfEachName) {
   std::vector<Input> inputs = {Input::Text(taken, "taken.urdf")};
   for (int i = 0; i < 4; ++i) inputs.push_back(Input::Text(kPendulum, "p.urdf"));
   Options options;
-  options.auto_rename = true;
+  options.naming.auto_rename = true;
   const Result r = Compile(inputs, options);
   ASSERT_TRUE(r.ok());
   std::vector<std::string> names;

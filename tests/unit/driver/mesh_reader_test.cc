@@ -1,4 +1,4 @@
-// Where a compile reads its mesh files (issue 16, Options::mesh_reader): in
+// Where a compile reads its mesh files (issue 16, Options::meshes.reader): in
 // a child process or in this one, the plant is the same; a mesh reader that
 // crashes is an error located at the mesh that named the file, and the
 // compile survives it; without a reader program the compile reads in this
@@ -47,8 +47,8 @@ class MeshReaderTest : public ::testing::Test {
   }
   static Result CompileWith(MeshReader reader) {
     Options options;
-    options.mesh_reader = reader;
-    options.time_passes = true;
+    options.meshes.reader = reader;
+    options.instrumentation.time_passes = true;
     return Compile(Input::File(kModel), options);
   }
   static std::string PlantJson(const Result& r) {

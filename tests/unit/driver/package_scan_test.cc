@@ -44,7 +44,7 @@ class PackageScanTest : public ::testing::Test {
   <joint name="j2" type="fixed"><parent link="a"/><child link="c"/></joint>
 </robot>
 )");
-    options_.package_paths = {(root_ / "pkgs").string(), (root_ / "more").string()};
+    options_.packages.paths = {(root_ / "pkgs").string(), (root_ / "more").string()};
   }
   void TearDown() override { fs::remove_all(root_); }
 
@@ -88,26 +88,26 @@ TEST_F(PackageScanTest, ASharedScanResolvesAndReportsLikeAWalkPerCompile) {
       << walked;
 
   Options shared = options_;
-  shared.package_scan = ScanPackages(options_);
+  shared.packages.scan = ScanPackages(options_);
   EXPECT_EQ(Outcome(shared), walked);
   EXPECT_EQ(Outcome(shared), walked);  // the scan is not used up
 }
 
 TEST_F(PackageScanTest, BrokenManifestsAndMissingFoldersAreReportedTheSame) {  // COMMON-014
   Write("pkgs/broken/package.xml", "<package><name></name></package>");
-  options_.package_paths.push_back((root_ / "not_a_folder").string());
+  options_.packages.paths.push_back((root_ / "not_a_folder").string());
   const std::string walked = Outcome(options_);
   EXPECT_NE(walked.find("package.xml must be a <package>"), std::string::npos) << walked;
   EXPECT_NE(walked.find("is not a directory"), std::string::npos) << walked;
   Options shared = options_;
-  shared.package_scan = ScanPackages(options_);
+  shared.packages.scan = ScanPackages(options_);
   EXPECT_EQ(Outcome(shared), walked);
 }
 
 TEST_F(PackageScanTest, ThreadsShareOneScan) {
   const std::string walked = Outcome(options_);
   Options shared = options_;
-  shared.package_scan = ScanPackages(options_);
+  shared.packages.scan = ScanPackages(options_);
   std::vector<std::string> outcomes(4);
   std::vector<std::thread> threads;
   for (std::string& outcome : outcomes) {
@@ -119,7 +119,7 @@ TEST_F(PackageScanTest, ThreadsShareOneScan) {
 
 TEST_F(PackageScanTest, TheFoldersAreNotWalkedAgain) {
   Options shared = options_;
-  shared.package_scan = ScanPackages(options_);
+  shared.packages.scan = ScanPackages(options_);
   // a package made after the scan is not seen by compiles that use it...
   Package("pkgs/ignored_no_more", "hidden");
   Write("pkgs/ignored_no_more/x.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
@@ -130,15 +130,15 @@ TEST_F(PackageScanTest, TheFoldersAreNotWalkedAgain) {
 
 TEST_F(PackageScanTest, AScanOfOtherFoldersIsNotUsed) {
   Options other = options_;
-  other.package_paths.pop_back();
+  other.packages.paths.pop_back();
   Options mismatched = options_;
-  mismatched.package_scan = ScanPackages(other);
+  mismatched.packages.scan = ScanPackages(other);
   EXPECT_EQ(Outcome(mismatched), Outcome(options_));
 }
 
 TEST_F(PackageScanTest, RosPackagePathIsPartOfTheScan) {
   Options ros;
-  ros.use_ros_package_path = true;
+  ros.packages.use_ros_package_path = true;
   const std::string list = ":" + (root_ / "pkgs").string() + "::" + (root_ / "more").string();
   ASSERT_EQ(::setenv("ROS_PACKAGE_PATH", list.c_str(), 1), 0);
   const auto scan = ScanPackages(ros);
@@ -146,7 +146,7 @@ TEST_F(PackageScanTest, RosPackagePathIsPartOfTheScan) {
                                              (root_ / "more").string()};
   EXPECT_EQ(scan->roots(), expected);
   const std::string walked = Outcome(ros);
-  ros.package_scan = scan;
+  ros.packages.scan = scan;
   EXPECT_EQ(Outcome(ros), walked);
   ::unsetenv("ROS_PACKAGE_PATH");
 }
@@ -161,12 +161,12 @@ TEST_F(PackageScanTest, AmentPrefixPathIsReadWithTheRosEnvironment) {
   // a library reads the environment only when asked
   EXPECT_EQ(Outcome(options_).find(resolved), std::string::npos);
   Options ros = options_;
-  ros.use_ros_package_path = true;
+  ros.packages.use_ros_package_path = true;
   const std::string walked = Outcome(ros);
   EXPECT_NE(walked.find(resolved), std::string::npos) << walked;
   EXPECT_EQ(walked.find("unknown package"), std::string::npos) << walked;
   // the index is read per compile, alongside a shared scan
-  ros.package_scan = ScanPackages(ros);
+  ros.packages.scan = ScanPackages(ros);
   EXPECT_EQ(Outcome(ros), walked);
   ::unsetenv("AMENT_PREFIX_PATH");
 }

@@ -41,7 +41,7 @@ class ResolveUriTest : public ::testing::Test {
 
 TEST_F(ResolveUriTest, PackageModelFileAndRelativeForms) {
   Options options;
-  options.package_paths = {(root_ / "ws").string()};
+  options.packages.paths = {(root_ / "ws").string()};
   const std::string gains = Canonical((root_ / "ws/arm/config/gains.yaml").string());
   for (const std::string& uri : {std::string("package://arm/config/gains.yaml"),
                                 std::string("model://arm/config/gains.yaml"),
@@ -56,13 +56,13 @@ TEST_F(ResolveUriTest, PackageModelFileAndRelativeForms) {
   ASSERT_TRUE(relative.ok());
   EXPECT_EQ(*relative.path, (root_ / "ws/arm/config/gains.yaml").string());  // lexically normal
   Options by_name;
-  by_name.packages = {{"arm", (root_ / "ws/arm").string()}};
+  by_name.packages.definitions = {{"arm", (root_ / "ws/arm").string()}};
   EXPECT_EQ(Canonical(*ResolveUri("package://arm/config/gains.yaml", by_name).path), gains);
 }
 
 TEST_F(ResolveUriTest, WhatNamesNoFileSaysWhy) {
   Options options;
-  options.package_paths = {(root_ / "ws").string()};
+  options.packages.paths = {(root_ / "ws").string()};
   const UriResolution unknown = ResolveUri("package://gripper/a.obj", options);
   EXPECT_FALSE(unknown.ok());
   ASSERT_EQ(unknown.messages.size(), 1u);
@@ -84,7 +84,7 @@ TEST_F(ResolveUriTest, WhatNamesNoFileSaysWhy) {
 
 TEST_F(ResolveUriTest, ADeprecatedPackageResolvesWithItsWarning) {  // COMMON-014
   Options options;
-  options.package_paths = {(root_ / "old").string()};
+  options.packages.paths = {(root_ / "old").string()};
   const UriResolution r = ResolveUri("package://old/texture.png", options);
   ASSERT_TRUE(r.ok());
   ASSERT_EQ(r.messages.size(), 1u);

@@ -44,10 +44,10 @@ struct ConvertOutput {
   std::optional<std::string> text;
   /// What the target cannot hold (-Wlossy warnings) and why the model could
   /// not be written, in report order, under the compile's diagnostic policy
-  /// (Options::diagnostics): a -Wlossy warning may be an error. They point
+  /// (Options::diagnostics.policy): a -Wlossy warning may be an error. They point
   /// into the Result's sources: print them with Result::FormatText.
   std::vector<Diagnostic> diagnostics;
-  /// The errors and warnings reported; past Options::diagnostics.max_errors,
+  /// The errors and warnings reported; past Options::diagnostics.policy.max_errors,
   /// errors are counted but not listed.
   size_t error_count = 0;
   size_t warning_count = 0;

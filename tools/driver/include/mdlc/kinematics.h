@@ -18,7 +18,7 @@
 
 namespace mdlc {
 
-/// Each joint's default position, then Options::joint_positions.
+/// Each joint's default position, then Options::model.joint_positions.
 Eigen::VectorXd DefaultPositions(const Result& result);
 
 /// Sets 1-dof joint `name` (scoped, or local when unambiguous) in q; false

@@ -60,7 +60,7 @@ struct Input {
   static Input Text(std::string text, std::string name, std::optional<Format> format = {});
 };
 
-/// Where a compile reads mesh files (Options::mesh_reader, `--mesh-reader`).
+/// Where a compile reads mesh files (Options::meshes.reader, `--mesh-reader`).
 enum class MeshReader {
   /// In worker processes running the mdlc-mesh-reader program, one per
   /// thread reading meshes, each reading many files, so that a crash or
@@ -74,7 +74,7 @@ enum class MeshReader {
 };
 
 /// What a compile does with the up axis a COLLADA (.dae) mesh file declares
-/// (Options::collada_up_axis, `--collada-up-axis`). glTF meshes are always
+/// (Options::meshes.collada_up_axis, `--collada-up-axis`). glTF meshes are always
 /// turned from glTF's Y-up to Z-up, as Drake turns them.
 enum class ColladaUpAxis {
   /// Vertices as written, whatever the file declares: what RViz (for URDF)
@@ -85,57 +85,77 @@ enum class ColladaUpAxis {
   Apply,
 };
 
-/// Everything the `mdlc compile` command line can ask for.
-struct Options {
-  // -- packages, for package:// and model:// URIs, looked up in this order
+/// Where package:// and model:// URIs are looked up, in this order
+/// (Options::packages).
+struct PackageOptions {
   /// Explicit NAME -> DIR definitions (`--package NAME=DIR`).
-  std::vector<std::pair<std::string, std::string>> packages;
+  std::vector<std::pair<std::string, std::string>> definitions;
   /// Folders searched for package.xml files (`--package-path DIR`).
-  std::vector<std::string> package_paths;
+  std::vector<std::string> paths;
   /// Also use the ROS environment: the folders of ROS_PACKAGE_PATH (ROS 1,
-  /// searched like package_paths), then the packages of the ament index of
-  /// each AMENT_PREFIX_PATH prefix (ROS 2). The command line does; a library
+  /// searched like `paths`), then the packages of the ament index of each
+  /// AMENT_PREFIX_PATH prefix (ROS 2). The command line does; a library
   /// reads the environment only if asked.
   bool use_ros_package_path = false;
   /// The folders above, walked once before (ScanPackages) and shared by many
   /// compiles, e.g. from several threads: the compile reads the packages
   /// from it instead of walking the folders again. Used only when it was made
   /// for the same folders; otherwise the folders are walked.
-  std::shared_ptr<const assets::PackageScan> package_scan;
+  std::shared_ptr<const assets::PackageScan> scan;
+};
 
-  // -- diagnostics
+/// Which diagnostics count and where they go (Options::diagnostics).
+struct DiagnosticOptions {
   /// Strictness and warning groups: warnings_as_errors (`--strict`,
   /// `-Werror`), disabled_groups (`-Wno-GROUP`), error_groups
   /// (`-Werror=GROUP`), max_errors (`--max-errors`).
-  DiagnosticPolicy diagnostics;
+  DiagnosticPolicy policy;
   /// Called with each diagnostic as it is reported. Unset: the Result keeps
   /// them (Result::diagnostics()). Either way Result::ok() tells the outcome.
   std::function<void(const Diagnostic&, const SourceManager&)> on_diagnostic;
+};
 
-  // -- xacro
-  /// xacro's NAME:=VALUE arguments for an input that is a `.xacro` file
-  /// (`mdlc compile robot.urdf.xacro ur_type:=ur5e`).
-  std::vector<std::pair<std::string, std::string>> xacro_args;
-
-  // -- naming
+/// What the model instances are called (Options::naming).
+struct NamingOptions {
   /// Name the (single) model instance this instead of the name in the file.
   std::optional<std::string> model_name;
   /// On an instance-name collision, pick NAME_1, NAME_2, ... instead of failing.
   bool auto_rename = false;
+};
 
-  // -- joint positions
-  /// Positions of 1-dof joints by scoped or unambiguous local name (`--q`),
-  /// applied by DefaultPositions (mdlc/kinematics.h); an unknown name is an
-  /// error.
-  std::vector<std::pair<std::string, double>> joint_positions;
-
-  // -- the base
+/// What the model is made from and how it stands (Options::model).
+struct ModelOptions {
+  /// xacro's NAME:=VALUE arguments for an input that is a `.xacro` file
+  /// (`mdlc compile robot.urdf.xacro ur_type:=ur5e`).
+  std::vector<std::pair<std::string, std::string>> xacro_args;
   /// Weld each body that no joint holds to the world at its default pose,
   /// instead of giving it a floating joint (Drake's rule, the default): a
   /// fixed-base arm stays fixed (`--fixed-base`).
   bool fixed_base = false;
+  /// Positions of 1-dof joints by scoped or unambiguous local name (`--q`),
+  /// applied by DefaultPositions (mdlc/kinematics.h); an unknown name is an
+  /// error.
+  std::vector<std::pair<std::string, double>> joint_positions;
+};
 
-  // -- the pipeline
+/// How mesh files are read and what is kept of them (Options::meshes).
+struct MeshOptions {
+  /// Where mesh files are read (`--mesh-reader=process|in-process`).
+  MeshReader reader = MeshReader::Process;
+  /// COLLADA's declared up axis (`--collada-up-axis=as-written|apply`).
+  ColladaUpAxis collada_up_axis = ColladaUpAxis::AsWritten;
+  /// Keep derived mesh data (convex hulls, mass properties) in this folder
+  /// between compiles, keyed by the mesh file's content and the options
+  /// (empty: no cache). The command line uses $MDLC_CACHE_DIR, else
+  /// $XDG_CACHE_HOME/mdlc, else ~/.cache/mdlc (`--cache-dir`, `--no-cache`).
+  std::string cache_dir;
+};
+
+/// For working on the compiler rather than with it: which passes run, and
+/// what is printed, timed and verified around them (Options::instrumentation).
+/// Kept apart from the options a model is compiled with, as MLIR keeps IR
+/// printing and timing apart from its pass pipeline's options.
+struct Instrumentation {
   /// Pass names to run instead of the default pipeline (`--passes`).
   std::vector<std::string> passes;
   /// Print the IR after these passes / after every pass, to `print_sink`
@@ -146,28 +166,25 @@ struct Options {
   /// Time each pass (Result::timing_report) / verify the IR after each pass.
   bool time_passes = false;
   bool verify_each = false;
-  /// Stop after the passes: the IR module only, no plant (`--emit=ir`).
-  bool skip_backend = false;
+};
 
-  // -- input limits
+/// Everything the `mdlc compile` command line can ask for, in groups.
+struct Options {
+  PackageOptions packages;
+  DiagnosticOptions diagnostics;
+  NamingOptions naming;
+  ModelOptions model;
+  MeshOptions meshes;
   /// Bounds on file sizes, document size and depth, include depth and mesh
   /// size (ir/limits.h; `--limit NAME=VALUE`). Over one is an error.
   Limits limits;
-  /// Where mesh files are read (`--mesh-reader=process|in-process`).
-  MeshReader mesh_reader = MeshReader::Process;
-  /// COLLADA's declared up axis (`--collada-up-axis=as-written|apply`).
-  ColladaUpAxis collada_up_axis = ColladaUpAxis::AsWritten;
-
-  // -- caching
-  /// Keep derived mesh data (convex hulls, mass properties) in this folder
-  /// between compiles, keyed by the mesh file's content and the options
-  /// (empty: no cache). The command line uses $MDLC_CACHE_DIR, else
-  /// $XDG_CACHE_HOME/mdlc, else ~/.cache/mdlc (`--cache-dir`, `--no-cache`).
-  std::string mesh_cache_dir;
+  /// Stop after the passes: the IR module only, no plant (`--emit=ir`).
+  bool skip_backend = false;
+  Instrumentation instrumentation;
 };
 
 /// The folder the command line keeps its mesh cache in by default (see
-/// Options::mesh_cache_dir); empty when no environment variable names one.
+/// Options::meshes.cache_dir); empty when no environment variable names one.
 std::string DefaultMeshCacheDirectory();
 
 /// What a compile made: its outcome and the compiled model. Move-only; owns
@@ -180,7 +197,7 @@ class Result {
 
   /// True when no error was reported (warnings are fine, unless promoted).
   bool ok() const;
-  /// Every diagnostic, in report order (empty when Options::on_diagnostic
+  /// Every diagnostic, in report order (empty when Options::diagnostics.on_diagnostic
   /// took them as they came).
   const std::vector<Diagnostic>& diagnostics() const;
   size_t error_count() const;
@@ -199,7 +216,7 @@ class Result {
   const backend::SceneGraph& scene_graph() const { return model().scene; }
   const std::vector<backend::SceneCamera>& cameras() const { return model().scene.cameras; }
 
-  /// The --time-passes report (Options::time_passes).
+  /// The --time-passes report (Options::instrumentation.time_passes).
   const std::string& timing_report() const;
 
  private:
@@ -214,9 +231,9 @@ class Result {
   std::vector<std::pair<std::string, double>> joint_positions_;
 };
 
-/// Walks the package folders of `options` (package_paths, then those of
+/// Walks the package folders of `options` (packages.paths, then those of
 /// ROS_PACKAGE_PATH when use_ros_package_path) once, for
-/// Options::package_scan. The scan never changes: share it among threads.
+/// Options::packages.scan. The scan never changes: share it among threads.
 std::shared_ptr<const assets::PackageScan> ScanPackages(const Options& options);
 
 /// What ResolveUri found: the file, or the diagnostics that say why not.
@@ -244,13 +261,13 @@ struct XacroExpansion {
   /// Every file the expansion read besides the top one (includes, YAML), as
   /// `xacro --deps` lists them.
   std::vector<std::string> dependencies;
-  /// Each diagnostic as `mdlc compile` prints it, when Options::on_diagnostic
+  /// Each diagnostic as `mdlc compile` prints it, when Options::diagnostics.on_diagnostic
   /// is unset.
   std::vector<std::string> messages;
   bool ok() const { return xml.has_value(); }
 };
 
-/// Expands a xacro file (`mdlc xacro`) with Options::xacro_args and the
+/// Expands a xacro file (`mdlc xacro`) with Options::model.xacro_args and the
 /// packages `options` defines (for `$(find PKG)`), with no compile after.
 /// `shown_name` is the name the banner comment gives the input (empty: `path`).
 XacroExpansion ExpandXacro(const std::string& path, const Options& options = {},

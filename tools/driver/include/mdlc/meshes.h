@@ -31,7 +31,7 @@ struct MeshColor {
 
 /// A mesh file's triangles as the compile reads them: unscaled (the
 /// geometry's scale is not applied), glTF turned Z-up, COLLADA as
-/// Options::collada_up_axis says.
+/// Options::meshes.collada_up_axis says.
 struct MeshTriangles {
   std::vector<Eigen::Vector3d> vertices;
   std::vector<Eigen::Vector3i> triangles;
