@@ -7,26 +7,15 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <mutex>
 
 #include "frontend/xml/memory_stream.h"
 #include "frontend/xml/start_tags.h"
 #include "frontend/xml/tree_builder.h"
 #include "frontend/xml/xml_declaration.h"
+#include "ir/assets/xml_guard.h"
 
 namespace mdlc::xml {
 namespace {
-
-// No document may pull in anything from outside: refuse every external load.
-xmlParserInputPtr RefuseExternalEntity(const char*, const char*, xmlParserCtxtPtr) { return nullptr; }
-
-void InstallSecurityHooks() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    xmlInitParser();
-    xmlSetExternalEntityLoader(RefuseExternalEntity);
-  });
-}
 
 struct ErrorSink {
   DiagnosticEngine* diags;
@@ -36,16 +25,7 @@ struct ErrorSink {
 
 void OnXmlError(void* user, xmlErrorPtr error) {
   auto* sink = static_cast<ErrorSink*>(user);
-  // namespace complaints (an undeclared "drake:" prefix) are not errors for
-  // robot formats: names keep their prefix as written
-  if (error->domain == XML_FROM_NAMESPACE) return;
-  if (error->level == XML_ERR_WARNING) return;
-  if (++sink->reported > 20) return;
-  std::string message = error->message ? error->message : "unknown XML error";
-  while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
-  Loc loc{sink->file, static_cast<uint32_t>(error->line > 0 ? error->line : 0),
-          static_cast<uint32_t>(error->int2 > 0 ? error->int2 : 0)};
-  sink->diags->Report(DiagKind::XmlSyntax, loc, "malformed XML: " + message);
+  assets::ReportXmlError(*error, sink->file, sink->reported, *sink->diags);
 }
 
 // What libxml2's parse left: whether the text was well formed, where the
@@ -104,10 +84,10 @@ XmlDocument::~XmlDocument() {
 std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager& sources,
                                                 DiagnosticEngine& diags,
                                                 const ParseOptions& options) {
-  InstallSecurityHooks();
+  assets::InstallXmlSecurityHooks();
   std::string_view text = sources.Contents(file);
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
-    diags.Report(DiagKind::EmptyFile, Loc{file, 1, 1}, "the file is empty; an XML model needs a root element");
+    diags.Report(DiagKind::EmptyFile, Loc{file, 1, 1}, assets::kEmptyXmlFile);
     return nullptr;
   }
   // refuse entity declarations before libxml2 ever sees them
@@ -115,8 +95,7 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
   const size_t first_tag = NextStartTag(text, 0, &entity_decl);
   if (entity_decl) {
     diags.Report(DiagKind::EntityDeclaration, sources.LocForOffset(file, *entity_decl),
-                 "entity declarations are not allowed in robot model files; "
-                 "mdlc never expands or fetches entities");
+                 assets::kEntityDeclarationRefused);
     return nullptr;
   }
   if (first_tag == std::string_view::npos) {
@@ -146,8 +125,7 @@ std::unique_ptr<XmlDocument> XmlDocument::Parse(FileId file, const SourceManager
   }
   if (builder.declared_entity()) {
     diags.Report(DiagKind::EntityDeclaration, outcome.stopped_at,
-                 "entity declarations are not allowed in robot model files; "
-                 "mdlc never expands or fetches entities");
+                 assets::kEntityDeclarationRefused);
     return nullptr;
   }
   if (builder.over_limit()) return nullptr;  // reported where the limit was passed

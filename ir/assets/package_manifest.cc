@@ -1,4 +1,5 @@
 #include "ir/assets/package_manifest.h"
+#include "ir/assets/xml_guard.h"
 
 #include <libxml/parser.h>
 #include <libxml/parserInternals.h>
@@ -7,32 +8,10 @@
 
 #include <algorithm>
 #include <climits>
-#include <mutex>
 #include <string_view>
 
 namespace mdlc::assets {
 namespace {
-
-// The format readers' words for a refused entity declaration
-// (frontend/xml/xml_document.cc), so a package.xml is refused alike.
-constexpr const char* kEntityRefused =
-    "entity declarations are not allowed in robot model files; "
-    "mdlc never expands or fetches entities";
-
-// No document may pull in anything from outside: refuse every external
-// load. The format readers install the same loader; whichever runs first
-// installs it, and both refuse everything.
-xmlParserInputPtr RefuseExternalEntity(const char*, const char*, xmlParserCtxtPtr) {
-  return nullptr;
-}
-
-void InstallSecurityHooks() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    xmlInitParser();
-    xmlSetExternalEntityLoader(RefuseExternalEntity);
-  });
-}
 
 // Entity lookups know XML's five predefined entities only, so nothing a
 // document declares can expand, even where libxml2 records a declaration
@@ -132,15 +111,7 @@ void OnEntityDeclaration(void* ctx, const xmlChar*, int, const xmlChar*, const x
 
 void OnXmlError(void* user, xmlErrorPtr error) {
   auto* reader = static_cast<Reader*>(user);
-  // namespace complaints and warnings are not errors, as for the models
-  if (error->domain == XML_FROM_NAMESPACE) return;
-  if (error->level == XML_ERR_WARNING) return;
-  if (++reader->reported > 20) return;
-  std::string message = error->message ? error->message : "unknown XML error";
-  while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
-  const Loc loc{reader->file, static_cast<uint32_t>(error->line > 0 ? error->line : 0),
-                static_cast<uint32_t>(error->int2 > 0 ? error->int2 : 0)};
-  reader->diags->Report(DiagKind::XmlSyntax, loc, "malformed XML: " + message);
+  ReportXmlError(*error, reader->file, reader->reported, *reader->diags);
 }
 
 void Install(xmlSAXHandler& sax) {
@@ -166,17 +137,16 @@ void Install(xmlSAXHandler& sax) {
 
 std::optional<PackageManifest> ReadPackageManifest(FileId file, const SourceManager& sources,
                                                    DiagnosticEngine& diags) {
-  InstallSecurityHooks();
+  InstallXmlSecurityHooks();
   const std::string_view text = sources.Contents(file);
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
-    diags.Report(DiagKind::EmptyFile, Loc{file, 1, 1},
-                 "the file is empty; an XML model needs a root element");
+    diags.Report(DiagKind::EmptyFile, Loc{file, 1, 1}, kEmptyXmlFile);
     return std::nullopt;
   }
   // refused before libxml2 sees it. Stricter than the format readers' scan,
   // which skips comments: a package.xml has no reason to spell this at all.
   if (const size_t at = text.find("<!ENTITY"); at != std::string_view::npos) {
-    diags.Report(DiagKind::EntityDeclaration, sources.LocForOffset(file, at), kEntityRefused);
+    diags.Report(DiagKind::EntityDeclaration, sources.LocForOffset(file, at), kEntityDeclarationRefused);
     return std::nullopt;
   }
 
@@ -208,7 +178,7 @@ std::optional<PackageManifest> ReadPackageManifest(FileId file, const SourceMana
   xmlResetLastError();
 
   if (reader.declared_entity) {
-    diags.Report(DiagKind::EntityDeclaration, stopped_at, kEntityRefused);
+    diags.Report(DiagKind::EntityDeclaration, stopped_at, kEntityDeclarationRefused);
     return std::nullopt;
   }
   if (!well_formed || reader.reported > 0 || reader.manifest.root.empty()) {

@@ -34,7 +34,7 @@ set(layers ir ir/assets frontend/xml frontend/pyexpr frontend/xacro frontend pas
 # layer -> the layers it may include (besides its own)
 set(may_use_ir "")
 set(may_use_ir/assets "ir")
-set(may_use_frontend/xml "ir")
+set(may_use_frontend/xml "ir;ir/assets")
 set(may_use_frontend/pyexpr "ir")
 set(may_use_frontend/xacro "ir;ir/assets;frontend/xml;frontend/pyexpr")
 set(may_use_frontend "ir;ir/assets;frontend/xml;frontend/pyexpr;frontend/xacro")
