@@ -26,7 +26,8 @@ Then, for the models it is given (issue 58):
   selected body's panel lies inside a 1280x800 window.
 Screenshots are kept in $MDLC_VIEW_SCREENSHOTS when it is set.
 The page runs the checks itself when opened as page.html#selftest=JSON and
-writes the results into <pre id="mdlc-selftest">, which --dump-dom prints.
+writes the results into <pre id="mdlc-selftest">, read from its DOM. One
+Chromium (headless_browser.py) opens every page in turn.
 
 Exit status 0: passed; 77: skipped (no Chromium, or an mdlc built without the
 viewer), with the reason on stdout; 1: failed.
@@ -45,6 +46,8 @@ import tempfile
 import urllib.parse
 import zlib
 
+from headless_browser import Browser
+
 TOLERANCE = 1e-9
 SKIP = 77
 
@@ -55,18 +58,6 @@ def chromium():
         if name and shutil.which(name):
             return shutil.which(name)
     return None
-
-
-def run_browser(browser, url, *extra):
-    # --virtual-time-budget lets the page's asynchronous start-up (module
-    # imports) finish before the DOM is dumped or the screenshot taken;
-    # SwiftShader gives WebGL without a GPU
-    command = [browser, "--headless=new", "--no-sandbox", "--disable-gpu",
-               "--enable-unsafe-swiftshader", "--use-angle=swiftshader",
-               "--window-size=1280,800", "--virtual-time-budget=10000",
-               "--no-first-run", "--no-default-browser-check", *extra, url]
-    done = subprocess.run(command, capture_output=True, text=True, timeout=120)
-    return done.stdout
 
 
 def png_pixels(path):
@@ -151,7 +142,8 @@ def write_page(mdlc, model_path, page_path, *flags):
 def selftest(browser, page_path, request, name):
     """Opens the page with #selftest=request: the report it writes."""
     url = "file://" + page_path + "#selftest=" + urllib.parse.quote(json.dumps(request))
-    dom = run_browser(browser, url, "--dump-dom")
+    browser.open(url)
+    dom = browser.dom()
     errors = re.search(r'<pre id="mdlc-errors"[^>]*>(.*?)</pre>', dom, re.S)
     check(not errors or not errors.group(1).strip(), f"{name}: the page reported errors: "
           f"{errors.group(1) if errors else ''}")
@@ -169,7 +161,8 @@ def selftest(browser, page_path, request, name):
 
 def screenshot(browser, url, png, name):
     """A screenshot of the page at url, kept at png: (width, height, channels, rows)."""
-    run_browser(browser, url, f"--screenshot={png}")
+    browser.open(url, for_screenshot=True)
+    browser.screenshot(png)
     check(os.path.exists(png), f"{name}: no screenshot")
     return png_pixels(png)
 
@@ -400,12 +393,13 @@ def main():
         print(__doc__)
         return 2
     mdlc, models = sys.argv[1], sys.argv[2:]
-    browser = chromium()
-    if not browser:
+    chromium_path = chromium()
+    if not chromium_path:
         print("skipped: no Chromium on the PATH (Debian: apt-get install chromium)")
         return SKIP
     failures = 0
-    with tempfile.TemporaryDirectory() as work:
+    # one browser opens every page in turn (headless_browser.py says why)
+    with tempfile.TemporaryDirectory() as work, Browser(chromium_path) as browser:
         shots = os.environ.get("MDLC_VIEW_SCREENSHOTS") or work
         os.makedirs(shots, exist_ok=True)
         for model in models:
