@@ -17,13 +17,16 @@ as written:
   page says the files were turned and the knees leave the thighs.
 The numbers come from the page `mdlc view` writes (the vertices the viewer
 draws), each geometry placed on its body. Each page is also opened in
-headless Chromium: it must build its scene without an error, and its
-screenshot, kept in SCREENSHOT_DIR, must not be blank.
+headless Chromium (one browser for all, headless_browser.py): it must build
+its scene without an error, and its screenshot, kept in SCREENSHOT_DIR, must
+not be blank. With MDLC_VIEW_BROWSER=off (the sanitizer suite) the pages are
+checked without the browser.
 
 Exit status 0: passed; 77: skipped (no Chromium, or an mdlc built without
 the viewer); 1: failed.
 """
 import base64
+import contextlib
 import os
 import re
 import struct
@@ -32,7 +35,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from view_test import SKIP, Failure, check, chromium, embedded_model, png_pixels, run_browser  # noqa: E402
+from headless_browser import Browser  # noqa: E402
+from view_test import SKIP, Failure, check, chromium, embedded_model, png_pixels  # noqa: E402
 
 MARGIN = 0.01  # m: how far outside a mesh's bounds a joint may sit and still be "in" it
 
@@ -96,12 +100,16 @@ def near(actual, expected, tol, what):
 
 def screenshot(browser, page, png):
     """The page in Chromium: its scene built without an error, and a
-    screenshot that is not blank, kept at `png`."""
-    dom = run_browser(browser, "file://" + page, "--dump-dom")
+    screenshot that is not blank, kept at `png` (both of one opening: the
+    page is the same file either way)."""
+    if browser is None:  # MDLC_VIEW_BROWSER=off
+        return "not taken (MDLC_VIEW_BROWSER=off)"
+    browser.open("file://" + page, for_screenshot=True)
+    dom = browser.dom()
     errors = re.search(r'<pre id="mdlc-errors"[^>]*>(.*?)</pre>', dom, re.S)
     check(not errors or not errors.group(1).strip(), f"{page}: the page reported errors")
     check('data-ready="true"' in dom, f"{page}: the page did not finish building its scene")
-    run_browser(browser, "file://" + page, f"--screenshot={png}")
+    browser.screenshot(png)
     check(os.path.exists(png), f"no screenshot of {page}")
     width, height, channels, rows = png_pixels(png)
     colours = {row[x * channels:x * channels + 3] for row in rows[::4] for x in range(400, width, 4)}
@@ -187,13 +195,18 @@ def main():
         print(__doc__)
         return 2
     mdlc, third_party, shots = (os.path.abspath(a) for a in sys.argv[1:])
-    browser = chromium()
-    if not browser:
+    # the sanitizer suite (tools/sanitize.sh) looks for memory errors in mdlc:
+    # it checks what mdlc writes and leaves the drawing to the ordinary build
+    with_browser = os.environ.get("MDLC_VIEW_BROWSER", "on") != "off"
+    chromium_path = chromium()
+    if with_browser and not chromium_path:
         print("skipped: no Chromium on the PATH (Debian: apt-get install chromium)")
         return SKIP
     os.makedirs(shots, exist_ok=True)
     failures = 0
-    with tempfile.TemporaryDirectory() as work:
+    # one browser opens every page in turn (headless_browser.py says why)
+    with tempfile.TemporaryDirectory() as work, \
+            (Browser(chromium_path) if with_browser else contextlib.nullcontext()) as browser:
         for test in (test_jaco, test_icub):
             try:
                 test(mdlc, browser, third_party, shots, work)
