@@ -1385,15 +1385,22 @@ TEST(MujocoOracleSelfCheck, ServedDumpsEqualOwnProcessDumps) {
     files.push_back(fs::absolute(f).string());
   }
   ASSERT_GE(files.size(), 10u);
+  // a process of its own has no history: its dump of a file is the same each
+  // time, so the rejected file asked for before every model is run once
+  std::map<std::string, json> own_dumps;
   for (const std::string& file : files) {
     std::string problem;
     const json served = DumpMujoco3(file, &problem);
     ASSERT_EQ(problem, "") << file;
-    const RunResult own = RunProcess({NodeBinary(), DumpScript().string(), "--configs",
-                                      std::to_string(NumConfigs()), "--seed", "1", file},
-                                     600.0);
-    ASSERT_EQ(own.exit_code, 0) << own.err;
-    EXPECT_EQ(served, json::parse(own.out)) << file;
+    auto own = own_dumps.find(file);
+    if (own == own_dumps.end()) {
+      const RunResult run = RunProcess({NodeBinary(), DumpScript().string(), "--configs",
+                                        std::to_string(NumConfigs()), "--seed", "1", file},
+                                       600.0);
+      ASSERT_EQ(run.exit_code, 0) << run.err;
+      own = own_dumps.emplace(file, json::parse(run.out)).first;
+    }
+    EXPECT_EQ(served, own->second) << file;
     const bool loads = file != rejected.string() && file != solver_failure.string();
     EXPECT_EQ(served.value("ok", true), loads) << served.dump().substr(0, 300);
     if (file == solver_failure.string()) {
