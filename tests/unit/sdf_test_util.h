@@ -1,7 +1,8 @@
-// sdf_test_util.h - lowers SDFormat text for tests of the SDFormat frontend:
-// the frontend alone (IR as lowered), or the whole pipeline from a file in a
-// fresh temporary folder (so relative mesh and texture URIs have a home),
-// with the plant-json dump. Both are strict about diagnostics: see
+// sdf_test_util.h - lowers SDFormat text for tests of the SDFormat frontend
+// (its drake: elements included): the frontend alone (the IR as lowered,
+// references unresolved), or the whole pipeline from a file in a fresh
+// temporary folder (so relative mesh and texture URIs have a home), with the
+// plant-json dump. Both are strict about diagnostics: see
 // diagnostic_claims.h.
 #pragma once
 
@@ -9,10 +10,14 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "tools/driver/compiler.h"
 #include "backend/plant_json.h"
@@ -24,7 +29,7 @@
 namespace mdlc::testing {
 
 /// `body` inside <sdf version='1.9'> with the drake namespace declared; the
-/// body starts on line 3.
+/// body starts on line 3 (tests check the lines diagnostics point at).
 inline std::string SdfFileText(std::string_view body) {
   return fmt::format(
       "<?xml version='1.0'?>\n<sdf version='1.9' xmlns:drake='http://drake.mit.edu'>\n{}\n"
@@ -37,7 +42,8 @@ inline std::string SdfLink(std::string_view link_children) {
   return fmt::format("<model name='m'><link name='a'>{}</link></model>", link_children);
 }
 
-/// The SDFormat frontend alone on SdfFileText(body).
+/// The SDFormat frontend alone on SdfFileText(body): the IR as lowered,
+/// references unresolved.
 struct SdfFrontendResult : ClaimsDiagnostics {
   SourceManager sources;
   DiagnosticEngine diags;
@@ -49,18 +55,31 @@ struct SdfFrontendResult : ClaimsDiagnostics {
   SdfFrontendResult(const SdfFrontendResult&) = delete;
   SdfFrontendResult& operator=(const SdfFrontendResult&) = delete;
 
+  /// Runs the SDFormat frontend on SdfFileText(body).
   bool Read(std::string_view body) {
     FileId file = sources.AddBuffer("test.sdf", SdfFileText(body));
     frontend::FrontendContext ctx{sources, diags, module, {}};
     model = frontend::ReadSdf(file, ctx);
     return model.has_value() && !diags.has_errors();
   }
+
+  const ir::Body* Body(std::string_view name) const {
+    for (const auto& b : module.bodies) if (module.Text(b.name) == name) return &b;
+    return nullptr;
+  }
+  const ir::Joint* Joint(std::string_view name) const {
+    for (const auto& j : module.joints) if (module.Text(j.name) == name) return &j;
+    return nullptr;
+  }
+  /// The geometry `name` having one of `role` (a visual and a collision may
+  /// share a name).
   const ir::Geometry* Geometry(std::string_view name, uint8_t role) const {
     for (const auto& g : module.geometries) {
       if (module.Text(g.name) == name && (g.roles & role)) return &g;
     }
     return nullptr;
   }
+  /// Every diagnostic as `line:column: message`, one per line.
   std::string Messages() const {
     std::string out;
     for (const auto& d : diags.diagnostics()) {
@@ -75,19 +94,30 @@ struct SdfFrontendResult : ClaimsDiagnostics {
     claims_.Found(kind, "");
     return n;
   }
-
+  /// Line of the first diagnostic whose message holds `text` (0: none).
+  uint32_t LineOf(std::string_view text) const {
+    for (const auto& d : diags.diagnostics()) {
+      if (d.message.find(text) != std::string::npos) return d.loc.line;
+    }
+    return 0;
+  }
 };
 
-/// The whole pipeline on SdfFileText(body), written as model.sdf into a
-/// fresh folder beside which `extra_files` (name -> contents) are written.
+/// The whole pipeline (frontend, passes, backend) on SdfFileText(body),
+/// written as model.sdf into a fresh folder beside which `extra_files`
+/// (name -> contents) are written.
 class SdfCompileResult : public ClaimsDiagnostics {
  public:
   explicit SdfCompileResult(std::string_view body,
                             const std::vector<std::pair<std::string, std::string>>& extra_files = {})
       : ClaimsDiagnostics(c_.diags) {
+    // one folder per fixture: a parameterised test's name holds a '/', and
+    // one test may compile twice
+    static std::atomic<int> count{0};
+    std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    std::replace(test.begin(), test.end(), '/', '_');
     dir_ = std::filesystem::temp_directory_path() /
-           fmt::format("mdlc_sdf_geometry_{}_{}", ::getpid(),
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name());
+           fmt::format("mdlc_sdf_{}_{}_{}", ::getpid(), count++, test);
     std::filesystem::create_directories(dir_);
     for (const auto& [name, contents] : extra_files) std::ofstream(dir_ / name) << contents;
     const auto path = dir_ / "model.sdf";
@@ -119,6 +149,14 @@ class SdfCompileResult : public ClaimsDiagnostics {
   Compilation c_;
   bool ok_ = false;
 };
+
+/// The entry of `list` (a plant-json array) named `name` (null json: none).
+inline nlohmann::json Named(const nlohmann::json& list, std::string_view name) {
+  for (const auto& e : list) {
+    if (e.contains("name") && e["name"] == name) return e;
+  }
+  return nlohmann::json();
+}
 
 /// The entries of a plant-json array with this name (a visual and a
 /// collision may share one).

@@ -10,16 +10,16 @@
 #include <numbers>
 #include <string>
 
-#include "tests/unit/sdf_drake_test_util.h"
+#include "tests/unit/sdf_test_util.h"
 #include "tests/unit/test_values.h"
 
 namespace mdlc {
 namespace {
 
-using testing::CompiledSdf;
 using testing::kInf;
-using testing::LoweredSdf;
 using testing::Named;
+using testing::SdfCompileResult;
+using testing::SdfFrontendResult;
 
 // links a..d, a revolute joint a->b, and `body`
 std::string SdfModel(std::string_view body) {
@@ -36,7 +36,7 @@ std::string SdfModel(std::string_view body) {
 // ------------------------------------------------------- EXT-001, EXT-004
 
 TEST(SdfDrakeJointTest, PlanarJointBetweenLinks) {  // EXT-001, EXT-004
-  LoweredSdf l;
+  SdfFrontendResult l;
   ASSERT_TRUE(l.Read(SdfModel(R"(<drake:joint name='p' type='planar'>
     <drake:parent>b</drake:parent><drake:child>c</drake:child>
     <drake:damping>0.1 0.2 0.3</drake:damping>
@@ -56,7 +56,7 @@ TEST(SdfDrakeJointTest, PlanarJointBetweenLinks) {  // EXT-001, EXT-004
 TEST(SdfDrakeJointTest, PlanarNeedsThreeNonNegativeDampings) {  // EXT-004
   for (const char* damping : {"", "<drake:damping>0.1 -0.2 0.3</drake:damping>",
                               "<drake:damping>0.1 0.2</drake:damping>"}) {
-    LoweredSdf l;
+    SdfFrontendResult l;
     EXPECT_FALSE(l.Read(SdfModel(fmt::format(R"(<drake:joint name='p' type='planar'>
       <drake:parent>b</drake:parent><drake:child>c</drake:child>{}</drake:joint>)",
                                              damping))))
@@ -66,7 +66,7 @@ TEST(SdfDrakeJointTest, PlanarNeedsThreeNonNegativeDampings) {  // EXT-004
     // the one error, counted above: a missing child, or a bad value
     l.ExpectDiagnostic(*damping ? DiagKind::BadValue : DiagKind::MissingElement, "");
   }
-  LoweredSdf missing;
+  SdfFrontendResult missing;
   missing.Read(SdfModel(R"(<drake:joint name='p' type='planar'>
       <drake:parent>b</drake:parent><drake:child>c</drake:child></drake:joint>)"));
   EXPECT_TRUE(missing.HasDiagnostic(DiagKind::MissingElement, "<drake:joint> needs a <drake:damping> child"))
@@ -83,7 +83,7 @@ TEST(SdfDrakeJointTest, NameTakenByAJointOfTheModelIsAnError) {  // EXT-001, COM
         "<drake:child>{}</drake:child><drake:damping>0 0 0</drake:damping></drake:joint>\n",
         name, parent, child);
   };
-  LoweredSdf l;
+  SdfFrontendResult l;
   EXPECT_FALSE(l.Read(SdfModel(planar("rev", "c", "d") + planar("p", "b", "c") +
                                planar("p", "c", "d") +
                                "<model name='n'><link name='x'/><link name='y'/>" +
@@ -109,7 +109,7 @@ TEST(SdfDrakeJointTest, NameTakenByAJointOfTheModelIsAnError) {  // EXT-001, COM
 }
 
 TEST(SdfDrakeJointTest, CurvilinearJointPath) {  // EXT-001, EXT-003
-  LoweredSdf l;
+  SdfFrontendResult l;
   ASSERT_TRUE(l.Read(SdfModel(R"(<drake:joint name='cv' type='curvilinear'>
     <drake:parent>b</drake:parent><drake:child>c</drake:child>
     <drake:damping>0.1</drake:damping>
@@ -143,7 +143,7 @@ TEST(SdfDrakeJointTest, CurvilinearJointPath) {  // EXT-001, EXT-003
 }
 
 TEST(SdfDrakeJointTest, PeriodicCurvilinearIsUnlimited) {  // EXT-003
-  LoweredSdf l;
+  SdfFrontendResult l;
   ASSERT_TRUE(l.Read(SdfModel(R"(<drake:joint name='cv' type='curvilinear'>
     <drake:parent>b</drake:parent><drake:child>c</drake:child>
     <drake:is_periodic>true</drake:is_periodic>
@@ -189,7 +189,7 @@ TEST(SdfDrakeJointTest, CurvilinearErrors) {  // EXT-003
     if (auto at = body.find("LINE"); at != std::string::npos) {
       body.replace(at, 4, "<drake:curves>" + line + "</drake:curves>");
     }
-    LoweredSdf l;
+    SdfFrontendResult l;
     EXPECT_FALSE(l.Read(SdfModel(fmt::format(R"(<drake:joint name='cv' type='curvilinear'>
       <drake:parent>b</drake:parent><drake:child>c</drake:child>{}</drake:joint>)",
                                              body))))
@@ -229,14 +229,14 @@ TEST(SdfDrakeJointTest, AttributeTypePoseAndFrameErrors) {  // EXT-001
        DiagKind::DuplicateName, "joint name 'rev' is already used"},
   };
   for (const Case& c : cases) {
-    LoweredSdf l;
+    SdfFrontendResult l;
     EXPECT_FALSE(l.Read(SdfModel(c.element))) << c.element;
     EXPECT_TRUE(l.HasDiagnostic(c.kind, c.message)) << c.element << "\n" << l.Messages();
   }
 }
 
 TEST(SdfDrakeJointTest, DrakePoseIsAnUnsupportedElement) {  // EXT-001, SDF-001
-  LoweredSdf l;
+  SdfFrontendResult l;
   EXPECT_TRUE(l.Read(SdfModel(R"(<drake:joint name='p' type='planar'>
     <drake:parent>b</drake:parent><drake:child>c</drake:child>
     <drake:damping>0 0 0</drake:damping><drake:pose>1 0 0 0 0 0</drake:pose>
@@ -249,7 +249,7 @@ TEST(SdfDrakeJointTest, CompilesWithNestedLinksAndPlacesTheChildOnTheParent) {  
   // Drake's DrakeJointNestedParentChild: scoped names into a nested model;
   // the joint's frames are the links' frames, so at q = 0 the child link
   // sits exactly on the parent link, whatever the links' SDFormat poses
-  CompiledSdf c(R"(<model name='good'>
+  SdfCompileResult c(R"(<model name='good'>
   <model name='nested'>
     <link name='a'><pose>1 2 3 0 0 0</pose></link>
     <link name='b'><pose>-5 0 0 0 0 0</pose></link>
@@ -276,7 +276,7 @@ TEST(SdfDrakeJointTest, CompilesWithNestedLinksAndPlacesTheChildOnTheParent) {  
 // ------------------------------------------------------------- EXT-040
 
 TEST(SdfCollisionFilterGroupTest, LowersTextMembersAndGroups) {  // EXT-040
-  LoweredSdf l;
+  SdfFrontendResult l;
   ASSERT_TRUE(l.Read(SdfModel(R"(<drake:collision_filter_group name='g'>
     <drake:member>a</drake:member>
     <drake:member> nested::x </drake:member>
@@ -301,7 +301,7 @@ TEST(SdfCollisionFilterGroupTest, LowersTextMembersAndGroups) {  // EXT-040
 }
 
 TEST(SdfCollisionFilterGroupTest, SyntaxErrors) {  // EXT-040, COMMON-050
-  LoweredSdf l;
+  SdfFrontendResult l;
   EXPECT_FALSE(l.Read(SdfModel(R"(<drake:collision_filter_group/>
   <drake:collision_filter_group name='g'>
     <drake:member></drake:member>
@@ -315,7 +315,7 @@ TEST(SdfCollisionFilterGroupTest, SyntaxErrors) {  // EXT-040, COMMON-050
 }
 
 TEST(SdfCollisionFilterGroupTest, FiltersPairsInThePlant) {  // EXT-040, COMMON-051
-  CompiledSdf c(SdfModel(R"(<drake:collision_filter_group name='g'>
+  SdfCompileResult c(SdfModel(R"(<drake:collision_filter_group name='g'>
     <drake:member>c</drake:member><drake:member>d</drake:member>
     <drake:ignored_collision_filter_group>g</drake:ignored_collision_filter_group>
   </drake:collision_filter_group>)"));
@@ -327,7 +327,7 @@ TEST(SdfCollisionFilterGroupTest, FiltersPairsInThePlant) {  // EXT-040, COMMON-
 }
 
 TEST(SdfCollisionFilterGroupTest, UnknownMemberIsReportedByResolveNames) {  // COMMON-053
-  CompiledSdf c(SdfModel(R"(<drake:collision_filter_group name='g'>
+  SdfCompileResult c(SdfModel(R"(<drake:collision_filter_group name='g'>
     <drake:member>nope</drake:member></drake:collision_filter_group>)"));
   EXPECT_FALSE(c.ok());
   EXPECT_NE(c.Messages().find("not found"), std::string::npos) << c.Messages();
@@ -337,7 +337,7 @@ TEST(SdfCollisionFilterGroupTest, UnknownMemberIsReportedByResolveNames) {  // C
 // ------------------------------------------------------- EXT-050, EXT-051
 
 TEST(SdfForceElementTest, LinearBushingRpy) {  // EXT-050
-  LoweredSdf l;
+  SdfFrontendResult l;
   ASSERT_TRUE(l.Read(SdfModel(R"(<drake:linear_bushing_rpy>
     <drake:bushing_frameA>fa</drake:bushing_frameA>
     <drake:bushing_frameC>c</drake:bushing_frameC>
@@ -357,7 +357,7 @@ TEST(SdfForceElementTest, LinearBushingRpy) {  // EXT-050
   EXPECT_EQ(f.force_stiffness, Eigen::Vector3d(7, 8, 9));
   EXPECT_EQ(f.force_damping, Eigen::Vector3d(10, 11, 12));
 
-  CompiledSdf c(SdfModel(R"(<drake:linear_bushing_rpy>
+  SdfCompileResult c(SdfModel(R"(<drake:linear_bushing_rpy>
     <drake:bushing_frameA>fa</drake:bushing_frameA>
     <drake:bushing_frameC>c</drake:bushing_frameC>
     <drake:bushing_torque_stiffness>1 2 3</drake:bushing_torque_stiffness>
@@ -374,7 +374,7 @@ TEST(SdfForceElementTest, LinearBushingRpy) {  // EXT-050
 }
 
 TEST(SdfForceElementTest, BushingErrors) {  // EXT-050
-  LoweredSdf l;
+  SdfFrontendResult l;
   EXPECT_FALSE(l.Read(SdfModel(R"(<drake:linear_bushing_rpy>
     <drake:bushing_frameA>fa</drake:bushing_frameA>
     <drake:bushing_torque_stiffness>1 2 3</drake:bushing_torque_stiffness>
@@ -400,7 +400,7 @@ TEST(SdfForceElementTest, LinearSpringDamper) {  // EXT-051
     <drake:linear_spring_damper_stiffness>{}</drake:linear_spring_damper_stiffness>
     <drake:linear_spring_damper_damping>{}</drake:linear_spring_damper_damping>
   </drake:linear_spring_damper>)";
-  LoweredSdf l;
+  SdfFrontendResult l;
   ASSERT_TRUE(l.Read(SdfModel(fmt::format(fmt::runtime(element), 0.5, 100, 2)))) << l.Messages();
   ASSERT_EQ(l.module.force_elements.size(), 1u);
   ASSERT_EQ(l.module.force_elements[0].type(), ir::ForceElementType::LinearSpringDamper);
@@ -420,7 +420,7 @@ TEST(SdfForceElementTest, LinearSpringDamper) {  // EXT-051
   for (const Case& c : {Case{0, 1, 1, "free_length> must be positive"},
                         Case{1, -1, 1, "stiffness> must be non-negative"},
                         Case{1, 1, -1, "damping> must be non-negative"}}) {
-    LoweredSdf bad;
+    SdfFrontendResult bad;
     EXPECT_FALSE(bad.Read(
         SdfModel(fmt::format(fmt::runtime(element), c.free_length, c.stiffness, c.damping))));
     EXPECT_TRUE(bad.HasDiagnostic(DiagKind::BadValue, c.message)) << bad.Messages();
@@ -431,7 +431,7 @@ TEST(SdfForceElementTest, LinearSpringDamper) {  // EXT-051
 // ------------------------------------------------------- EXT-052..054
 
 TEST(SdfConstraintTest, BallConstraint) {  // EXT-052
-  LoweredSdf l;
+  SdfFrontendResult l;
   ASSERT_TRUE(l.Read(SdfModel(R"(<drake:ball_constraint>
     <drake:ball_constraint_body_A>a</drake:ball_constraint_body_A>
     <drake:ball_constraint_body_B>c</drake:ball_constraint_body_B>
@@ -447,7 +447,7 @@ TEST(SdfConstraintTest, BallConstraint) {  // EXT-052
   EXPECT_EQ(c.p_AP, Eigen::Vector3d(1, 2, 3));
   EXPECT_EQ(c.p_BQ, Eigen::Vector3d(4, 5, 6));
 
-  LoweredSdf missing;
+  SdfFrontendResult missing;
   EXPECT_FALSE(missing.Read(SdfModel(R"(<drake:ball_constraint>
     <drake:ball_constraint_body_A>a</drake:ball_constraint_body_A>
     <drake:ball_constraint_p_AP>1 2 3</drake:ball_constraint_p_AP>
@@ -456,7 +456,7 @@ TEST(SdfConstraintTest, BallConstraint) {  // EXT-052
   EXPECT_TRUE(missing.HasDiagnostic(
       DiagKind::MissingElement, "<drake:ball_constraint> needs a <drake:ball_constraint_body_B> child"));
 
-  CompiledSdf unknown(SdfModel(R"(<drake:ball_constraint>
+  SdfCompileResult unknown(SdfModel(R"(<drake:ball_constraint>
     <drake:ball_constraint_body_A>a</drake:ball_constraint_body_A>
     <drake:ball_constraint_body_B>zz</drake:ball_constraint_body_B>
     <drake:ball_constraint_p_AP>1 2 3</drake:ball_constraint_p_AP>
@@ -478,7 +478,7 @@ TEST(SdfConstraintTest, DistanceConstraint) {  // EXT-053
     <drake:distance_constraint_stiffness>{}</drake:distance_constraint_stiffness>
     <drake:distance_constraint_damping>{}</drake:distance_constraint_damping>
   </drake:distance_constraint>)";
-  CompiledSdf c(SdfModel(fmt::format(fmt::runtime(element), "0.5", "inf", "3")));
+  SdfCompileResult c(SdfModel(fmt::format(fmt::runtime(element), "0.5", "inf", "3")));
   ASSERT_TRUE(c.ok()) << c.Messages();
   const nlohmann::json json = c.PlantJson();
   ASSERT_EQ(json["constraints"].size(), 1u);
@@ -494,7 +494,7 @@ TEST(SdfConstraintTest, DistanceConstraint) {  // EXT-053
        {std::tuple{"0", "1", "1", "distance> must be positive"},
         std::tuple{"1", "0", "1", "stiffness> must be positive"},
         std::tuple{"1", "1", "-1", "damping> must be non-negative"}}) {
-    LoweredSdf bad;
+    SdfFrontendResult bad;
     EXPECT_FALSE(
         bad.Read(SdfModel(fmt::format(fmt::runtime(element), distance, stiffness, damping))));
     EXPECT_TRUE(bad.HasDiagnostic(DiagKind::BadValue, message)) << bad.Messages();
@@ -503,7 +503,7 @@ TEST(SdfConstraintTest, DistanceConstraint) {  // EXT-053
 }
 
 TEST(SdfConstraintTest, TendonConstraint) {  // EXT-054
-  LoweredSdf l;
+  SdfFrontendResult l;
   ASSERT_TRUE(l.Read(SdfModel(R"(<drake:tendon_constraint>
     <drake:tendon_constraint_joint name='rev' a='2'/>
     <drake:tendon_constraint_joint name='other' a='-1'/>
@@ -525,7 +525,7 @@ TEST(SdfConstraintTest, TendonConstraint) {  // EXT-054
   EXPECT_EQ(c.stiffness, kInf);  // AddTendonConstraint's defaults
   EXPECT_EQ(c.damping, 4);
 
-  LoweredSdf bad;
+  SdfFrontendResult bad;
   EXPECT_FALSE(bad.Read(SdfModel(R"(<drake:tendon_constraint>
     <drake:tendon_constraint_joint a='2'/>
     <drake:tendon_constraint_joint name='rev'/>
@@ -540,7 +540,7 @@ TEST(SdfConstraintTest, TendonConstraint) {  // EXT-054
 }
 
 TEST(SdfDrakeModelElementTest, UnknownDrakeElementWarns) {  // SDF-001
-  LoweredSdf l;
+  SdfFrontendResult l;
   EXPECT_TRUE(l.Read(SdfModel("<drake:flux_capacitor/>"))) << l.Messages();
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnknownElement, "<drake:flux_capacitor>"));
 }
@@ -559,7 +559,7 @@ std::string JointModel(std::string_view extra, std::string_view effort = "") {
 }
 
 TEST(SdfJointDrakeChildrenTest, ActuatorParameters) {  // SDF-021, EXT-012..014
-  LoweredSdf l;
+  SdfFrontendResult l;
   ASSERT_TRUE(l.Read(JointModel(R"(
     <drake:rotor_inertia>1.5</drake:rotor_inertia>
     <drake:gear_ratio>300</drake:gear_ratio>
@@ -576,7 +576,7 @@ TEST(SdfJointDrakeChildrenTest, ActuatorParameters) {  // SDF-021, EXT-012..014
 }
 
 TEST(SdfJointDrakeChildrenTest, ActuatorParameterErrors) {  // EXT-012..014
-  LoweredSdf l;
+  SdfFrontendResult l;
   EXPECT_FALSE(l.Read(JointModel(R"(
     <drake:rotor_inertia>-1</drake:rotor_inertia>
     <drake:gear_ratio>x</drake:gear_ratio>
@@ -595,7 +595,7 @@ TEST(SdfJointDrakeChildrenTest, ActuatorParameterErrors) {  // EXT-012..014
 
 TEST(SdfJointDrakeChildrenTest, NoActuatorIgnoresTheParameters) {  // SDF-020, SDF-021
   // effort 0: no actuator, and Drake ignores the actuator parameters
-  LoweredSdf l;
+  SdfFrontendResult l;
   EXPECT_TRUE(l.Read(JointModel("<drake:gear_ratio>3</drake:gear_ratio>",
                                 "<limit><effort>0</effort></limit>")))
       << l.Messages();
@@ -604,7 +604,7 @@ TEST(SdfJointDrakeChildrenTest, NoActuatorIgnoresTheParameters) {  // SDF-020, S
 }
 
 TEST(SdfJointDrakeChildrenTest, ReflectedInertiaInPlantJson) {  // EXT-012, EXT-013
-  CompiledSdf c(JointModel(R"(
+  SdfCompileResult c(JointModel(R"(
     <drake:rotor_inertia>0.5</drake:rotor_inertia>
     <drake:gear_ratio>2</drake:gear_ratio>)"));
   ASSERT_TRUE(c.ok()) << c.Messages();
@@ -617,7 +617,7 @@ TEST(SdfJointDrakeChildrenTest, ReflectedInertiaInPlantJson) {  // EXT-012, EXT-
 }
 
 TEST(SdfJointDrakeChildrenTest, MimicIsACouplerConstraint) {  // EXT-010
-  LoweredSdf l;
+  SdfFrontendResult l;
   ASSERT_TRUE(l.Read(JointModel("<drake:mimic joint='j2' multiplier='2' offset='0.5'/>")))
       << l.Messages();
   ASSERT_EQ(l.module.constraints.size(), 1u);
@@ -628,7 +628,7 @@ TEST(SdfJointDrakeChildrenTest, MimicIsACouplerConstraint) {  // EXT-010
   EXPECT_EQ(c.gear_ratio, 2);
   EXPECT_EQ(c.offset, 0.5);
 
-  CompiledSdf compiled(JointModel("<drake:mimic joint='j2' multiplier='2' offset='0.5'/>"));
+  SdfCompileResult compiled(JointModel("<drake:mimic joint='j2' multiplier='2' offset='0.5'/>"));
   ASSERT_TRUE(compiled.ok()) << compiled.Messages();
   const nlohmann::json json = compiled.PlantJson();
   ASSERT_EQ(json["constraints"].size(), 1u);
@@ -641,7 +641,7 @@ TEST(SdfJointDrakeChildrenTest, MimicIsACouplerConstraint) {  // EXT-010
 // follower = multiplier (leader - reference) + offset
 TEST(SdfJointDrakeChildrenTest, Sdformat111MimicIsACouplerToo) {  // issue 55, EXT-010
   {
-    LoweredSdf l;
+    SdfFrontendResult l;
     ASSERT_TRUE(l.Read(JointModel("", R"(<mimic joint='j2' axis='axis'><multiplier>2</multiplier>
         <offset>0.5</offset><reference>0.1</reference></mimic>)")))
         << l.Messages();
@@ -653,7 +653,7 @@ TEST(SdfJointDrakeChildrenTest, Sdformat111MimicIsACouplerToo) {  // issue 55, E
     EXPECT_DOUBLE_EQ(c.offset, 0.5 - 2 * 0.1);
   }
   {  // SDFormat's defaults: multiplier 1, offset 0, reference 0
-    CompiledSdf compiled(JointModel("", "<mimic joint='j2'/>"));
+    SdfCompileResult compiled(JointModel("", "<mimic joint='j2'/>"));
     ASSERT_TRUE(compiled.ok()) << compiled.Messages();
     const nlohmann::json json = compiled.PlantJson();
     ASSERT_EQ(json["constraints"].size(), 1u);
@@ -662,7 +662,7 @@ TEST(SdfJointDrakeChildrenTest, Sdformat111MimicIsACouplerToo) {  // issue 55, E
     EXPECT_EQ(json["constraints"][0]["joint1"], "m::j2");
   }
   {  // both: Drake's element is read, the other is ignored with a warning
-    LoweredSdf l;
+    SdfFrontendResult l;
     ASSERT_TRUE(l.Read(JointModel("<drake:mimic joint='j2' multiplier='3' offset='0'/>",
                                   "<mimic joint='j2'/>")))
         << l.Messages();
@@ -673,11 +673,11 @@ TEST(SdfJointDrakeChildrenTest, Sdformat111MimicIsACouplerToo) {  // issue 55, E
                                 "read instead"));
   }
   {  // a leader's second axis, and a joint following itself
-    LoweredSdf l;
+    SdfFrontendResult l;
     EXPECT_TRUE(l.Read(JointModel("", "<mimic joint='j2' axis='axis2'/>"))) << l.Messages();
     EXPECT_TRUE(l.module.constraints.empty());
     EXPECT_TRUE(l.HasDiagnostic(DiagKind::JointWarning, "it follows the 'axis2' of joint 'j2'"));
-    LoweredSdf self;
+    SdfFrontendResult self;
     EXPECT_FALSE(self.Read(JointModel("", "<mimic joint='j1'/>")));
     EXPECT_TRUE(self.HasDiagnostic(DiagKind::BadValue, "a joint cannot follow itself"));
   }
@@ -700,12 +700,12 @@ TEST(SdfJointDrakeChildrenTest, MimicErrors) {  // EXT-010
        "a joint cannot follow itself"},
   };
   for (const Case& c : cases) {
-    LoweredSdf l;
+    SdfFrontendResult l;
     EXPECT_FALSE(l.Read(JointModel(c.mimic))) << c.mimic;
     EXPECT_TRUE(l.HasDiagnostic(c.kind, c.message)) << c.mimic << "\n" << l.Messages();
     EXPECT_TRUE(l.module.constraints.empty());
   }
-  CompiledSdf unknown(JointModel("<drake:mimic joint='nope' multiplier='1' offset='0'/>"));
+  SdfCompileResult unknown(JointModel("<drake:mimic joint='nope' multiplier='1' offset='0'/>"));
   EXPECT_FALSE(unknown.ok());
   EXPECT_NE(unknown.Messages().find("unknown joint 'nope'"), std::string::npos)
       << unknown.Messages();
@@ -729,7 +729,7 @@ constexpr std::string_view kVtkCollision = R"(<collision name='collision'>
     </collision>)";
 
 TEST(SdfDeformableTest, DefaultsAndValues) {  // EXT-070
-  LoweredSdf minimal;
+  SdfFrontendResult minimal;
   ASSERT_TRUE(minimal.Read(
       DeformableModel(fmt::format("{}<drake:deformable_properties/>", kVtkCollision))))
       << minimal.Messages();
@@ -744,7 +744,7 @@ TEST(SdfDeformableTest, DefaultsAndValues) {  // EXT-070
   EXPECT_FALSE(body->deformable->resolution_hint.has_value());
   EXPECT_FALSE(minimal.Body("rigid")->deformable.has_value());
 
-  LoweredSdf full;
+  SdfFrontendResult full;
   ASSERT_TRUE(full.Read(DeformableModel(fmt::format(R"({}
     <drake:deformable_properties>
       <drake:youngs_modulus>100.0</drake:youngs_modulus>
@@ -779,14 +779,14 @@ TEST(SdfDeformableTest, SphereNeedsAPositiveResolutionHint) {  // EXT-070
     </collision><drake:deformable_properties/>)",
                        proximity);
   };
-  LoweredSdf ok;
+  SdfFrontendResult ok;
   ASSERT_TRUE(ok.Read(DeformableModel(sphere(
       "<drake:proximity_properties><drake:mesh_resolution_hint>0.05</drake:mesh_resolution_hint>"
       "</drake:proximity_properties>"))))
       << ok.Messages();
   EXPECT_EQ(ok.Body("body")->deformable->resolution_hint, 0.05);
 
-  LoweredSdf missing;
+  SdfFrontendResult missing;
   EXPECT_FALSE(missing.Read(DeformableModel(sphere(""))));
   EXPECT_TRUE(missing.HasDiagnostic(DiagKind::MissingElement,
                                     "<sphere> needs a <drake:mesh_resolution_hint>"))
@@ -844,7 +844,7 @@ TEST(SdfDeformableTest, PropertyAndLinkErrors) {  // EXT-070
        "", "<drake:outward_normal> must not be zero"},
   };
   for (const Case& c : cases) {
-    LoweredSdf l;
+    SdfFrontendResult l;
     EXPECT_FALSE(l.Read(DeformableModel(c.link_body, c.after_link))) << c.link_body;
     l.ExpectError(c.message);
     // what two collisions of one name and two visuals without a geometry say
@@ -867,7 +867,7 @@ TEST(SdfDeformableTest, PropertyAndLinkErrors) {  // EXT-070
 }
 
 TEST(SdfDeformableTest, MeshWithResolutionHintWarns) {  // EXT-070
-  LoweredSdf l;
+  SdfFrontendResult l;
   EXPECT_TRUE(l.Read(DeformableModel(R"(<collision name='collision'>
       <geometry><mesh><uri>single_tet.vtk</uri></mesh></geometry>
       <drake:proximity_properties><drake:mesh_resolution_hint>0.1</drake:mesh_resolution_hint></drake:proximity_properties>
