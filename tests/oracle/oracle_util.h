@@ -543,6 +543,24 @@ struct ListedRejection {
   std::string why;
 };
 
+/// Fills the Dump's maps from its root.
+inline void IndexDump(Dump* d) {
+  d->bodies.clear();
+  d->joints.clear();
+  d->frames.clear();
+  for (const auto& b : d->root["bodies"]) {
+    d->bodies[Key(b.value("model_instance", ""), b.value("name", ""))] = &b;
+  }
+  for (const auto& j : d->root["joints"]) {
+    d->joints[Key(j.value("model_instance", ""), j.value("name", ""))] = &j;
+  }
+  if (d->root.contains("frames") && d->root["frames"].is_array()) {
+    for (const auto& f : d->root["frames"]) {
+      d->frames[Key(f.value("model_instance", ""), f.value("name", ""))] = &f;
+    }
+  }
+}
+
 /// Runs mdlc on `file` at configuration `q`; returns false (after reporting,
 /// unless the run is a listed rejection) when there is no usable dump.
 inline bool RunMdlc(const std::string& file, const std::string& package_path,
@@ -575,17 +593,7 @@ inline bool RunMdlc(const std::string& file, const std::string& package_path,
     rep->Add(why);
     return false;
   }
-  for (const auto& b : d->root["bodies"]) {
-    d->bodies[Key(b.value("model_instance", ""), b.value("name", ""))] = &b;
-  }
-  for (const auto& j : d->root["joints"]) {
-    d->joints[Key(j.value("model_instance", ""), j.value("name", ""))] = &j;
-  }
-  if (d->root.contains("frames") && d->root["frames"].is_array()) {
-    for (const auto& f : d->root["frames"]) {
-      d->frames[Key(f.value("model_instance", ""), f.value("name", ""))] = &f;
-    }
-  }
+  IndexDump(d);
   return true;
 }
 
