@@ -17,12 +17,12 @@
 #include "frontend/xml/xml_document.h"
 #include "ir/diagnostics.h"
 #include "ir/module.h"
-#include "ir/proximity_properties.h"
+#include "ir/syntax/drake_proximity_tags.h"
 
 namespace mdlc::frontend {
 
 /// Where a drake: child writes its value or name (shared with the writers).
-using ir::ValueSpelling;
+using syntax::ValueSpelling;
 
 /// The sign a number must have.
 enum class Sign { Any, Positive, NonNegative };

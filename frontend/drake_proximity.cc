@@ -7,7 +7,8 @@
 #include <array>
 #include <string_view>
 
-#include "ir/proximity_properties.h"
+#include "ir/proximity_keys.h"
+#include "ir/syntax/drake_proximity_tags.h"
 
 namespace mdlc::frontend {
 
@@ -23,7 +24,7 @@ void ReportRepeatedElement(DiagnosticEngine& diags, const xml::XmlElement& e,
 }
 
 namespace {
-constexpr std::string_view kProximityTag = ir::kProximityPropertiesTag;
+constexpr std::string_view kProximityTag = syntax::kProximityPropertiesTag;
 }  // namespace
 
 
@@ -57,13 +58,13 @@ std::optional<std::vector<double>> CoulombFriction(DiagnosticEngine& diags, cons
 
 // <drake:proximity_properties> children that carry a number, with the range
 // each must be in and the property it becomes, in Drake's order of
-// properties: ir/proximity_properties.h, which the writers share.
-using ir::kProximityValueTags;
-using ir::ProximityValueTag;
-constexpr size_t kValueTagCount = ir::kProximityValueTagCount;
-using ir::kMuDynamic;
-using ir::kMuStatic;
-using ir::kModulus;
+// properties: ir/syntax/drake_proximity_tags.h, which the writers share.
+using syntax::kProximityValueTags;
+using syntax::ProximityValueTag;
+constexpr size_t kValueTagCount = syntax::kProximityValueTagCount;
+using syntax::kMuDynamic;
+using syntax::kMuStatic;
+using syntax::kModulus;
 
 /// EXT-020: the children of one <drake:proximity_properties>. Each problem
 /// is reported in document order; the properties are added in Drake's order.
@@ -72,8 +73,8 @@ void ReadDrakeProximityProperties(const xml::XmlElement& e, ir::Geometry& g,
                                   const ProximityValueReader& read_value) {
   attrs.WarnUnknownAttributes(e, {});
   // Drake reads the first of each, wherever it is
-  const xml::XmlElement rigid = e.Child(ir::kRigidHydroelasticTag);
-  const xml::XmlElement compliant = e.Child(ir::kCompliantHydroelasticTag);
+  const xml::XmlElement rigid = e.Child(syntax::kRigidHydroelasticTag);
+  const xml::XmlElement compliant = e.Child(syntax::kCompliantHydroelasticTag);
   std::array<xml::XmlElement, kValueTagCount> elements;
   std::array<std::optional<Located>, kValueTagCount> values;  // each one in range
   bool friction_ok = true;
@@ -86,8 +87,8 @@ void ReadDrakeProximityProperties(const xml::XmlElement& e, ir::Geometry& g,
                    "<drake:compliant_hydroelastic>");
       continue;
     }
-    if (tag == ir::kRigidHydroelasticTag || tag == ir::kCompliantHydroelasticTag) {
-      const xml::XmlElement& first = tag == ir::kRigidHydroelasticTag ? rigid : compliant;
+    if (tag == syntax::kRigidHydroelasticTag || tag == syntax::kCompliantHydroelasticTag) {
+      const xml::XmlElement& first = tag == syntax::kRigidHydroelasticTag ? rigid : compliant;
       if (first.raw() != c.raw()) {
         ReportRepeatedElement(diags, c, first);
         continue;
@@ -95,7 +96,7 @@ void ReadDrakeProximityProperties(const xml::XmlElement& e, ir::Geometry& g,
       attrs.WarnUnknownAttributes(c, {});
       if (marker_seen) {
         // the other one came first
-        const xml::XmlElement& other = tag == ir::kRigidHydroelasticTag ? compliant : rigid;
+        const xml::XmlElement& other = tag == syntax::kRigidHydroelasticTag ? compliant : rigid;
         diags
             .Report(DiagKind::BadValue, c.GetLoc(),
                     "<drake:rigid_hydroelastic> and <drake:compliant_hydroelastic> are mutually "

@@ -3,14 +3,14 @@
 
 namespace mdlc::frontend {
 
-std::optional<ir::ParsedOriginalName> ReadOriginalName(const xml::XmlElement& e,
-                                                       OriginalEntity entity,
-                                                       FrontendContext& ctx) {
+std::optional<syntax::ParsedOriginalName> ReadOriginalName(const xml::XmlElement& e,
+                                                           OriginalEntity entity,
+                                                           FrontendContext& ctx) {
   if (ctx.options.model_name || !ctx.options.name_prefix.empty() || ctx.options.single_model) {
     return std::nullopt;
   }
   for (const std::string& comment : e.Comments()) {
-    if (auto parsed = ir::ParseOriginalNameComment(comment)) {
+    if (auto parsed = syntax::ParseOriginalNameComment(comment)) {
       ctx.module.original_names.push_back({entity, parsed->model, parsed->name, e.GetLoc()});
       return parsed;
     }

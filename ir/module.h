@@ -13,7 +13,7 @@
 
 #include "ir/entities.h"
 #include "ir/frame_graph.h"
-#include "ir/original_names.h"
+#include "ir/original_name.h"
 #include "ir/scene_directives.h"
 #include "ir/scoped_symbol_map.h"
 #include "ir/symbol.h"

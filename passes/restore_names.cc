@@ -1,6 +1,6 @@
 // restore_names.cc - the restore-names pass: entities get back the model
 // instance and name they had before `mdlc convert` wrote them under another
-// (round-trip metadata, ir/original_names.h).
+// (round-trip metadata, ir/original_name.h).
 //
 // Reads: Module::original_names (recorded by the URDF and MJCF frontends)
 // and each entity's current model instance, the instance its file was read

@@ -8,30 +8,32 @@
 #include <variant>
 #include <vector>
 
+#include "ir/proximity_keys.h"
+
 namespace mdlc::writers {
 
-void DrakeValue(XmlOut& out, ir::ValueSpelling spelling, std::string_view tag, double v) {
-  if (spelling == ir::ValueSpelling::Attribute) {
+void DrakeValue(XmlOut& out, syntax::ValueSpelling spelling, std::string_view tag, double v) {
+  if (spelling == syntax::ValueSpelling::Attribute) {
     out.Open(tag).Attr("value", v).Close();
   } else {
     out.Open(tag).Text(NumberText(v)).Close();
   }
 }
 
-void DrakeValue(XmlOut& out, ir::ValueSpelling spelling, std::string_view tag,
+void DrakeValue(XmlOut& out, syntax::ValueSpelling spelling, std::string_view tag,
                 const Eigen::Vector3d& v) {
-  if (spelling == ir::ValueSpelling::Attribute) {
+  if (spelling == syntax::ValueSpelling::Attribute) {
     out.Open(tag).Attr("value", v).Close();
   } else {
     out.Open(tag).Text(VectorText(v)).Close();
   }
 }
 
-void WriteProximityProperties(XmlOut& out, ir::ValueSpelling spelling, std::string_view format,
+void WriteProximityProperties(XmlOut& out, syntax::ValueSpelling spelling, std::string_view format,
                               const backend::SceneGeometry& g, Loc loc, DiagnosticEngine& diags) {
   bool open = false;
   auto open_once = [&] {
-    if (!open) out.Open(ir::kProximityPropertiesTag);
+    if (!open) out.Open(syntax::kProximityPropertiesTag);
     open = true;
   };
   for (const ir::Property& p : g.properties) {
@@ -43,19 +45,19 @@ void WriteProximityProperties(XmlOut& out, ir::ValueSpelling spelling, std::stri
     const auto* vector = std::get_if<std::vector<double>>(&p.value);
     const auto* text = std::get_if<std::string>(&p.value);
     const auto child = std::find_if(
-        ir::kProximityValueTags.begin(), ir::kProximityValueTags.end(),
-        [&](const ir::ProximityValueTag& t) { return !t.key.empty() && t.key == p.key; });
-    if (child != ir::kProximityValueTags.end() && number) {
+        syntax::kProximityValueTags.begin(), syntax::kProximityValueTags.end(),
+        [&](const syntax::ProximityValueTag& t) { return !t.key.empty() && t.key == p.key; });
+    if (child != syntax::kProximityValueTags.end() && number) {
       open_once();
       DrakeValue(out, spelling, child->tag, *number);
     } else if (p.key == ir::kCoulombFrictionKey && vector && vector->size() == 2) {
       open_once();
-      DrakeValue(out, spelling, ir::kProximityValueTags[ir::kMuStatic].tag, (*vector)[0]);
-      DrakeValue(out, spelling, ir::kProximityValueTags[ir::kMuDynamic].tag, (*vector)[1]);
+      DrakeValue(out, spelling, syntax::kProximityValueTags[syntax::kMuStatic].tag, (*vector)[0]);
+      DrakeValue(out, spelling, syntax::kProximityValueTags[syntax::kMuDynamic].tag, (*vector)[1]);
     } else if (p.key == ir::kComplianceTypeKey && text &&
                (*text == "rigid" || *text == "compliant")) {
       open_once();
-      out.Open(*text == "rigid" ? ir::kRigidHydroelasticTag : ir::kCompliantHydroelasticTag)
+      out.Open(*text == "rigid" ? syntax::kRigidHydroelasticTag : syntax::kCompliantHydroelasticTag)
           .Close();
     } else {
       diags.Report(DiagKind::Lossy, loc,

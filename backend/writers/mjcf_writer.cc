@@ -31,7 +31,7 @@
 // Several model instances become one model whose names carry their instance
 // ("arm/link1"), as the URDF writer does; an element whose written name does
 // not give back its scoped name holds a comment naming its instance and name,
-// which mdlc's reader restores (ir/original_names.h).
+// which mdlc's reader restores (ir/syntax/original_name_comment.h).
 //
 // Which plant bodies become <body> elements is mjcf_layout.h's: a chain of
 // massless bodies between hinges and slides (an MJCF body's stacked joints,

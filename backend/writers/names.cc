@@ -5,7 +5,7 @@
 
 #include <set>
 
-#include "ir/original_names.h"
+#include "ir/syntax/original_name_comment.h"
 
 namespace mdlc::writers {
 
@@ -48,7 +48,7 @@ std::optional<std::string> FlatNames::OriginalNameComment(ModelId model, std::st
                                                           std::string_view read_back) const {
   const std::string& instance = plant_.model_instances[model.index()];
   if (instance == model_name_ && read_back == name) return std::nullopt;
-  return ir::FormatOriginalNameComment(instance, name);
+  return syntax::FormatOriginalNameComment(instance, name);
 }
 
 void FlatNames::ReportFlattening(const ir::Module& module, std::string_view what,

@@ -42,10 +42,10 @@ class FlatNames {
   void ReportFlattening(const ir::Module& module, std::string_view what,
                         DiagnosticEngine& diags) const;
 
-  /// Round-trip metadata (ir/original_names.h): the comment naming entity
-  /// `name` of instance `model`, which mdlc's reader will read back as
-  /// `read_back` in an instance named model_name(); nullopt when that is
-  /// its scoped name already.
+  /// Round-trip metadata (ir/syntax/original_name_comment.h): the comment
+  /// naming entity `name` of instance `model`, which mdlc's reader will read
+  /// back as `read_back` in an instance named model_name(); nullopt when
+  /// that is its scoped name already.
   std::optional<std::string> OriginalNameComment(ModelId model, std::string_view name,
                                                  std::string_view read_back) const;
 

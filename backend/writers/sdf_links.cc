@@ -81,7 +81,7 @@ void SdfWriter::WriteGeometry(const backend::SceneGeometry& g, Loc loc, UniqueNa
     out_.Open("collision").Attr("name", Unique(collisions, g.name));
     Pose(g.X_BG);
     Shape(g, loc, /*collision=*/true);
-    WriteProximityProperties(out_, ir::ValueSpelling::Text, "SDFormat", g, loc, diags_);
+    WriteProximityProperties(out_, syntax::ValueSpelling::Text, "SDFormat", g, loc, diags_);
     out_.Close();
   }
 }

@@ -27,7 +27,7 @@
 // instance ("arm/link1"; a nested instance "arm::hand" gives "arm/hand/link1").
 // A link, joint, frame or actuator whose written name does not give back its
 // scoped name holds a comment naming its instance and name, which mdlc's
-// reader restores (ir/original_names.h).
+// reader restores (ir/syntax/original_name_comment.h).
 //
 // This file writes the document, links and geometry; urdf_writer_detail.h
 // lists the files that write the rest.
@@ -154,7 +154,7 @@ void UrdfWriter::WriteGeometry(const backend::SceneGeometry& g, Loc loc) {
     out_.Open("collision").Attr("name", g.name);
     Origin(X_LG);
     Shape(g, loc, /*collision=*/true);
-    WriteProximityProperties(out_, ir::ValueSpelling::Attribute, "URDF", g, loc, diags_);
+    WriteProximityProperties(out_, syntax::ValueSpelling::Attribute, "URDF", g, loc, diags_);
     out_.Close();
   }
 }

@@ -98,7 +98,8 @@ class FlatWriterBase : public WriterBase {
   }
   /// Round-trip metadata inside the element just opened, after its
   /// attributes: the entity's instance and name when the file does not say
-  /// them (names.h, ir/original_names.h); `written` is the name in the file.
+  /// them (names.h, ir/syntax/original_name_comment.h); `written` is the name
+  /// in the file.
   void OriginalName(ModelId model, std::string_view name, std::string_view written) {
     if (auto comment = names_.OriginalNameComment(model, name, written)) out_.Comment(*comment);
   }

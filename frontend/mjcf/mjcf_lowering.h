@@ -37,7 +37,7 @@ struct BodyContext {
   bool simple_position = false;
   /// The body's name before `mdlc convert` wrote it (round-trip metadata):
   /// the massless bodies between its stacked joints are named after it.
-  std::optional<ir::ParsedOriginalName> original;
+  std::optional<syntax::ParsedOriginalName> original;
 };
 
 /// MJCF-021..024, BEYOND-007: the body's joints, or a weld to its parent

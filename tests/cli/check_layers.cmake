@@ -3,6 +3,7 @@
 #
 #   ir                 the IR, source manager, diagnostics
 #   ir/assets          packages and the URIs models name (mdlc_assets)
+#   ir/syntax          syntax the readers and the writers share (mdlc_syntax)
 #   frontend/xml       hardened XML reading (mdlc_xml)
 #   frontend/pyexpr    xacro's Python expressions (mdlc_pyexpr)
 #   frontend/xacro     the xacro stage (mdlc_xacro)
@@ -28,24 +29,25 @@ if(NOT DEFINED SOURCE_DIR)
   message(FATAL_ERROR "check_layers.cmake needs -DSOURCE_DIR=...")
 endif()
 
-set(layers ir ir/assets frontend/xml frontend/pyexpr frontend/xacro frontend passes/mesh passes
+set(layers ir ir/assets ir/syntax frontend/xml frontend/pyexpr frontend/xacro frontend passes/mesh passes
     backend backend/writers tools/driver/include tools/driver tools/mdlc tools/python examples)
 
 # layer -> the layers it may include (besides its own)
 set(may_use_ir "")
 set(may_use_ir/assets "ir")
+set(may_use_ir/syntax "ir")
 set(may_use_frontend/xml "ir;ir/assets")
 set(may_use_frontend/pyexpr "ir")
 set(may_use_frontend/xacro "ir;ir/assets;frontend/xml;frontend/pyexpr")
-set(may_use_frontend "ir;ir/assets;frontend/xml;frontend/pyexpr;frontend/xacro")
+set(may_use_frontend "ir;ir/assets;ir/syntax;frontend/xml;frontend/pyexpr;frontend/xacro")
 set(may_use_passes/mesh "ir")
 set(may_use_passes "ir;ir/assets;passes/mesh")
 set(may_use_backend "ir")
-set(may_use_backend/writers "ir;backend")
+set(may_use_backend/writers "ir;ir/syntax;backend")
 # the public API hands out the IR and the plant, nothing of the pipeline
 set(may_use_tools/driver/include "ir;backend")
 set(may_use_tools/driver
-    "ir;ir/assets;frontend/xml;frontend/pyexpr;frontend/xacro;frontend;passes/mesh;passes;backend;backend/writers;tools/driver/include")
+    "ir;ir/assets;ir/syntax;frontend/xml;frontend/pyexpr;frontend/xacro;frontend;passes/mesh;passes;backend;backend/writers;tools/driver/include")
 # the command line: the public API, the IR and plant it hands out, and the
 # driver's own headers (heap policy, MJCF file assets)
 set(may_use_tools/mdlc "ir;backend;tools/driver/include;tools/driver")

@@ -250,7 +250,7 @@ class Comparison {
     // every body keeps its scoped name: SDFormat keeps the instances as
     // models; URDF and MJCF flatten them into one model ("instance/name",
     // backend/writers/names.h) and leave comments from which mdlc's reader
-    // restores instances and names (ir/original_names.h)
+    // restores instances and names (ir/original_name.h)
     std::map<std::string, BodyId> by_name;
     for (size_t i = 1; i < pb_.bodies.size(); ++i) by_name[pb_.ScopedName(pb_.bodies[i])] = BodyId(i);
     body_map_.assign(pa_.bodies.size(), BodyId());

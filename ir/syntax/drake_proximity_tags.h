@@ -1,15 +1,17 @@
-// proximity_properties.h - the children of Drake's
+// drake_proximity_tags.h - the children of Drake's
 // <drake:proximity_properties> (EXT-020) and the geometry properties they
-// stand for. One table for both directions: the URDF and SDFormat readers
-// (frontend/drake_proximity.cc) read these tags into these keys, and the
-// URDF and SDFormat writers (backend/writers/drake_out.cc) write the keys
-// back as the same tags.
+// stand for (ir/proximity_keys.h). One table for both directions: the URDF
+// and SDFormat readers (frontend/drake_proximity.cc) read these tags into
+// these keys, and the URDF and SDFormat writers (backend/writers/drake_out.cc)
+// write the keys back as the same tags.
 #pragma once
 
 #include <array>
 #include <string_view>
 
-namespace mdlc::ir {
+#include "ir/proximity_keys.h"
+
+namespace mdlc::syntax {
 
 /// Where a value of one of Drake's XML extensions is written: URDF puts it
 /// in an attribute (<drake:x value="1"/>, <drake:frame name="a"/>),
@@ -41,25 +43,22 @@ enum ProximityValueIndex {
 };
 
 inline constexpr std::array<ProximityValueTag, kProximityValueTagCount> kProximityValueTags = {{
-    {"drake:mesh_resolution_hint", false, "mesh resolution hint", "hydroelastic/resolution_hint"},
-    {"drake:hydroelastic_modulus", false, "hydroelastic modulus",
-     "hydroelastic/hydroelastic_modulus"},
+    {"drake:mesh_resolution_hint", false, "mesh resolution hint", ir::kResolutionHintKey},
+    {"drake:hydroelastic_modulus", false, "hydroelastic modulus", ir::kHydroelasticModulusKey},
     {"drake:hunt_crossley_dissipation", true, "Hunt-Crossley dissipation",
-     "material/hunt_crossley_dissipation"},
+     ir::kHuntCrossleyDissipationKey},
     {"drake:point_contact_stiffness", false, "point contact stiffness",
-     "material/point_contact_stiffness"},
+     ir::kPointContactStiffnessKey},
     {"drake:mu_dynamic", true, "dynamic friction coefficient", ""},
     {"drake:mu_static", true, "static friction coefficient", ""},
-    {"drake:relaxation_time", true, "relaxation time", "material/relaxation_time"},
-    {"drake:hydroelastic_margin", true, "hydroelastic margin", "hydroelastic/margin"},
+    {"drake:relaxation_time", true, "relaxation time", ir::kRelaxationTimeKey},
+    {"drake:hydroelastic_margin", true, "hydroelastic margin", ir::kHydroelasticMarginKey},
 }};
 
-/// drake:mu_static and drake:mu_dynamic together: [static, dynamic] (EXT-021).
-inline constexpr std::string_view kCoulombFrictionKey = "material/coulomb_friction";
-/// drake:rigid_hydroelastic / drake:compliant_hydroelastic: "rigid" or "compliant".
-inline constexpr std::string_view kComplianceTypeKey = "hydroelastic/compliance_type";
+/// drake:mu_static and drake:mu_dynamic together: ir::kCoulombFrictionKey.
+/// drake:rigid_hydroelastic / drake:compliant_hydroelastic: ir::kComplianceTypeKey.
 inline constexpr std::string_view kRigidHydroelasticTag = "drake:rigid_hydroelastic";
 inline constexpr std::string_view kCompliantHydroelasticTag = "drake:compliant_hydroelastic";
 inline constexpr std::string_view kProximityPropertiesTag = "drake:proximity_properties";
 
-}  // namespace mdlc::ir
+}  // namespace mdlc::syntax

@@ -1,9 +1,9 @@
-// original_names.cc - see original_names.h.
-#include "ir/original_names.h"
+// original_name_comment.cc - see original_name_comment.h.
+#include "ir/syntax/original_name_comment.h"
 
 #include <fmt/format.h>
 
-namespace mdlc::ir {
+namespace mdlc::syntax {
 namespace {
 
 constexpr std::string_view kTag = "mdlc:name";
@@ -77,4 +77,4 @@ std::optional<ParsedOriginalName> ParseOriginalNameComment(std::string_view text
   return ParsedOriginalName{std::move(*model), std::move(*name)};
 }
 
-}  // namespace mdlc::ir
+}  // namespace mdlc::syntax
