@@ -16,7 +16,7 @@
 // PassContext::meshes. A file that cannot be read, or holds no triangles,
 // is an error at the attribute naming it. A COLLADA file that declares an up
 // axis other than Z gets a note, once per compile, saying what was done
-// with it (passes/mesh/mesh_axes.h).
+// with it (passes/mesh/io/mesh_axes.h).
 #include <fmt/format.h>
 
 #include <set>

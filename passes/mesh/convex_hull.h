@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "passes/mesh/triangle_mesh.h"
+#include "passes/mesh/io/triangle_mesh.h"
 
 namespace mdlc::mesh {
 

@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-#include "passes/mesh/mesh_wire.h"
+#include "passes/mesh/io/mesh_wire.h"
 #include "passes/mesh/reader/import_entry.h"
 #include "passes/mesh/reader_location.h"
 

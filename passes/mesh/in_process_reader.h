@@ -14,7 +14,7 @@
 
 #include "ir/limits.h"
 #include "passes/mesh/reader_location.h"
-#include "passes/mesh/triangle_mesh.h"
+#include "passes/mesh/io/triangle_mesh.h"
 
 namespace mdlc::mesh {
 

@@ -35,7 +35,7 @@
 #include <string>
 
 #include "ir/entities.h"
-#include "passes/mesh/triangle_mesh.h"
+#include "passes/mesh/io/triangle_mesh.h"
 
 namespace mdlc::mesh {
 

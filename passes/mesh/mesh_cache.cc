@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "passes/mesh/in_process_reader.h"
-#include "passes/mesh/mesh_wire.h"
+#include "passes/mesh/io/mesh_wire.h"
 #include "passes/mesh/reader_location.h"
 #include "passes/mesh/reader_pool.h"
 

@@ -33,7 +33,7 @@
 #include "ir/limits.h"
 #include "passes/mesh/derived_cache.h"
 #include "passes/mesh/mesh_loader.h"
-#include "passes/mesh/triangle_mesh.h"
+#include "passes/mesh/io/triangle_mesh.h"
 
 namespace mdlc::mesh {
 

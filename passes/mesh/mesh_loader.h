@@ -13,7 +13,7 @@
 #include <string>
 
 #include "ir/limits.h"
-#include "passes/mesh/triangle_mesh.h"
+#include "passes/mesh/io/triangle_mesh.h"
 
 namespace mdlc::mesh {
 

@@ -10,8 +10,8 @@
 #include <cstring>
 #include <map>
 
-#include "passes/mesh/mesh_wire.h"
-#include "passes/mesh/worker_frames.h"
+#include "passes/mesh/io/mesh_wire.h"
+#include "passes/mesh/io/worker_frames.h"
 #include "passes/mesh/worker_process.h"
 
 namespace mdlc::mesh {

@@ -12,7 +12,7 @@
 
 #include <string>
 
-#include "passes/mesh/triangle_mesh.h"
+#include "passes/mesh/io/triangle_mesh.h"
 
 namespace mdlc::mesh {
 

@@ -14,7 +14,7 @@
 #include <optional>
 #include <thread>
 
-#include "passes/mesh/worker_frames.h"
+#include "passes/mesh/io/worker_frames.h"
 
 extern char** environ;
 

@@ -8,7 +8,10 @@
 #   frontend/pyexpr    xacro's Python expressions (mdlc_pyexpr)
 #   frontend/xacro     the xacro stage (mdlc_xacro)
 #   frontend           the format readers (mdlc_frontend)
-#   passes/mesh        the mesh library and its reader (mdlc_mesh_io, ...)
+#   passes/mesh/io     what mdlc and the mesh reader say to each other (mdlc_mesh_io)
+#   passes/mesh/import reading a mesh file with assimp (mdlc_mesh_import)
+#   passes/mesh/reader the mesh reader's program and module
+#   passes/mesh        the mesh library (mdlc_mesh)
 #   passes             the passes (mdlc_passes)
 #   backend            the plant (mdlc_backend): the IR alone
 #   backend/writers    other formats out (mdlc_writers)
@@ -29,7 +32,8 @@ if(NOT DEFINED SOURCE_DIR)
   message(FATAL_ERROR "check_layers.cmake needs -DSOURCE_DIR=...")
 endif()
 
-set(layers ir ir/assets ir/syntax frontend/xml frontend/pyexpr frontend/xacro frontend passes/mesh passes
+set(layers ir ir/assets ir/syntax frontend/xml frontend/pyexpr frontend/xacro frontend
+    passes/mesh/io passes/mesh/import passes/mesh/reader passes/mesh passes
     backend backend/writers tools/driver/include tools/driver tools/mdlc tools/python examples)
 
 # layer -> the layers it may include (besides its own)
@@ -40,7 +44,12 @@ set(may_use_frontend/xml "ir;ir/assets")
 set(may_use_frontend/pyexpr "ir")
 set(may_use_frontend/xacro "ir;ir/assets;frontend/xml;frontend/pyexpr")
 set(may_use_frontend "ir;ir/assets;ir/syntax;frontend/xml;frontend/pyexpr;frontend/xacro")
-set(may_use_passes/mesh "ir")
+set(may_use_passes/mesh/io "ir")
+set(may_use_passes/mesh/import "ir;passes/mesh/io")
+set(may_use_passes/mesh/reader "ir;passes/mesh/io;passes/mesh/import")
+# the module's entry point (passes/mesh/reader/import_entry.h), which
+# in_process_reader.cc looks up; never the assimp loading of mesh/import
+set(may_use_passes/mesh "ir;passes/mesh/io;passes/mesh/reader")
 set(may_use_passes "ir;ir/assets;passes/mesh")
 set(may_use_backend "ir")
 set(may_use_backend/writers "ir;ir/syntax;backend")

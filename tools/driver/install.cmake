@@ -7,7 +7,7 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-set(MDLC_LIBRARIES mdlc_driver mdlc_writers mdlc_backend mdlc_passes mdlc_mesh_io mdlc_frontend mdlc_xacro mdlc_pyexpr mdlc_assets mdlc_syntax mdlc_xml mdlc_ir)
+set(MDLC_LIBRARIES mdlc_driver mdlc_writers mdlc_backend mdlc_passes mdlc_mesh mdlc_mesh_io mdlc_frontend mdlc_xacro mdlc_pyexpr mdlc_assets mdlc_syntax mdlc_xml mdlc_ir)
 set_target_properties(mdlc_driver PROPERTIES EXPORT_NAME mdlc)
 foreach(lib IN LISTS MDLC_LIBRARIES)
   if(NOT lib STREQUAL mdlc_driver)

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "ir/limits.h"
-#include "passes/mesh/assimp_loader.h"
-#include "passes/mesh/mesh_wire.h"
+#include "passes/mesh/import/assimp_loader.h"
+#include "passes/mesh/io/mesh_wire.h"
 #include "passes/mesh/reader/import_entry.h"
 
 extern "C" __attribute__((visibility("default"))) int MDLC_MESH_IMPORT_ENTRY(

@@ -21,8 +21,8 @@
 #include <cstdio>
 #include <string_view>
 
-#include "passes/mesh/assimp_loader.h"
-#include "passes/mesh/serve_requests.h"
+#include "passes/mesh/import/assimp_loader.h"
+#include "passes/mesh/io/serve_requests.h"
 
 int main(int argc, char** argv) {
   if (argc != 2 || std::string_view(argv[1]) != "--serve") {

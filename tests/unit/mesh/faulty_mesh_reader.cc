@@ -15,9 +15,9 @@
 #include <string>
 #include <string_view>
 
-#include "passes/mesh/assimp_loader.h"
-#include "passes/mesh/serve_requests.h"
-#include "passes/mesh/worker_frames.h"
+#include "passes/mesh/import/assimp_loader.h"
+#include "passes/mesh/io/serve_requests.h"
+#include "passes/mesh/io/worker_frames.h"
 
 namespace {
 

@@ -4,7 +4,7 @@
 // axis is read as written by default, as RViz and Gazebo read it, and
 // applied when asked. Both readers (the child process and the import
 // module) orient alike.
-#include "passes/mesh/mesh_axes.h"
+#include "passes/mesh/io/mesh_axes.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
-// The mesh reader's request and reply (issue 16, passes/mesh/mesh_wire.h):
+// The mesh reader's request and reply (issue 16, passes/mesh/io/mesh_wire.h):
 // the reader reads the file and limits mdlc asked for, what the reader
 // encodes the parent decodes to the same result, and the parent
 // rejects every reply that is not well formed, since the child that wrote
 // it may have been corrupted by the file it read.
-#include "passes/mesh/mesh_wire.h"
+#include "passes/mesh/io/mesh_wire.h"
 
 #include <gtest/gtest.h>
 

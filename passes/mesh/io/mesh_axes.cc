@@ -1,4 +1,4 @@
-#include "passes/mesh/mesh_axes.h"
+#include "passes/mesh/io/mesh_axes.h"
 
 #include <fmt/format.h>
 

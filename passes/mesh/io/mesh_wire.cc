@@ -1,4 +1,4 @@
-#include "passes/mesh/mesh_wire.h"
+#include "passes/mesh/io/mesh_wire.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "passes/mesh/triangle_mesh.h"
+#include "passes/mesh/io/triangle_mesh.h"
 
 #include <algorithm>
 #include <map>

@@ -29,7 +29,7 @@
 #include <vector>
 
 #include "ir/limits.h"
-#include "passes/mesh/triangle_mesh.h"
+#include "passes/mesh/io/triangle_mesh.h"
 
 namespace mdlc::mesh {
 

@@ -1,5 +1,5 @@
 // worker_frames.cc - see worker_frames.h.
-#include "passes/mesh/worker_frames.h"
+#include "passes/mesh/io/worker_frames.h"
 
 #include <unistd.h>
 
@@ -9,7 +9,7 @@
 #include <cerrno>
 #include <cstring>
 
-#include "passes/mesh/mesh_wire.h"
+#include "passes/mesh/io/mesh_wire.h"
 
 namespace mdlc::mesh {
 namespace {

@@ -1,5 +1,5 @@
 // serve_requests.cc - see serve_requests.h.
-#include "passes/mesh/serve_requests.h"
+#include "passes/mesh/io/serve_requests.h"
 
 #include <fmt/format.h>
 
@@ -7,8 +7,8 @@
 #include <string_view>
 #include <vector>
 
-#include "passes/mesh/mesh_wire.h"
-#include "passes/mesh/worker_frames.h"
+#include "passes/mesh/io/mesh_wire.h"
+#include "passes/mesh/io/worker_frames.h"
 
 namespace mdlc::mesh {
 namespace {

@@ -1,4 +1,4 @@
-#include "passes/mesh/assimp_loader.h"
+#include "passes/mesh/import/assimp_loader.h"
 
 #include <assimp/config.h>
 #include <assimp/material.h>
@@ -18,7 +18,7 @@
 #include <fstream>
 #include <optional>
 
-#include "passes/mesh/ply_header.h"
+#include "passes/mesh/import/ply_header.h"
 
 namespace mdlc::mesh {
 namespace {

@@ -1,5 +1,5 @@
 // ply_header.cc - see ply_header.h.
-#include "passes/mesh/ply_header.h"
+#include "passes/mesh/import/ply_header.h"
 
 #include <fmt/format.h>
 

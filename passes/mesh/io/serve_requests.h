@@ -10,8 +10,8 @@
 #include <string>
 
 #include "ir/limits.h"
-#include "passes/mesh/mesh_axes.h"
-#include "passes/mesh/triangle_mesh.h"
+#include "passes/mesh/io/mesh_axes.h"
+#include "passes/mesh/io/triangle_mesh.h"
 
 namespace mdlc::mesh {
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "passes/mesh/mesh_axes.h"
+#include "passes/mesh/io/mesh_axes.h"
 
 namespace mdlc::mesh {
 
