@@ -1,7 +1,8 @@
 // SDFormat visuals, collisions, shapes, materials and camera sensors: what
 // each element lowers to, what each rule rejects, and what reaches
 // plant-json (SDF-040, SDF-041, SDF-043, SDF-044, EXT-020, EXT-021,
-// EXT-030..035).
+// EXT-030..035). The drake: properties that URDF spells the same way are
+// tested in both spellings in drake_spellings_test.cc.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -34,14 +35,8 @@ std::string Visual(std::string_view geometry, std::string_view children = "") {
   return SdfLink(
       fmt::format("<visual name='v'><geometry>{}</geometry>{}</visual>", geometry, children));
 }
-std::string Proximity(std::string_view children) {
-  return Collision("<box><size>1 1 1</size></box>",
-                   fmt::format("<drake:proximity_properties>{}</drake:proximity_properties>",
-                               children));
-}
 
 using testing::Find;
-using testing::Number;
 using testing::Numbers;
 
 // -- SDF-040: shapes
@@ -167,23 +162,21 @@ TEST(SdfGeometry, UnknownChildrenFollowSdfRules) {  // SDF-001, SDF-040
 }
 
 
-TEST(SdfGeometry, MeshKeepsItsUriScaleAndConvexDeclaration) {  // SDF-040, EXT-034
+TEST(SdfGeometry, MeshKeepsItsUriAndScale) {  // SDF-040
   SdfFrontendResult l;
   ASSERT_TRUE(l.Read(SdfLink(R"(
-      <collision name='c'><geometry><mesh><uri>meshes/part.obj</uri><scale>1 2 3</scale>
-        <drake:declare_convex/></mesh></geometry></collision>
+      <collision name='c'><geometry><mesh><uri>meshes/part.obj</uri><scale>1 2 3</scale></mesh></geometry></collision>
       <visual name='v'><geometry><mesh><uri> package://pkg/part.dae </uri></mesh></geometry></visual>)")))
       << l.Messages();
-  const auto& convex = std::get<ir::Mesh>(l.Geometry("c", ir::kProximityRole)->shape);
-  EXPECT_EQ(convex.uri, "meshes/part.obj");
-  EXPECT_EQ(convex.scale, Eigen::Vector3d(1, 2, 3));
-  EXPECT_TRUE(convex.convex);
-  EXPECT_EQ(convex.uri_loc.line, 4u);
-  EXPECT_TRUE(convex.resolved.empty());  // the resolve-assets pass resolves it
+  const auto& scaled = std::get<ir::Mesh>(l.Geometry("c", ir::kProximityRole)->shape);
+  EXPECT_EQ(scaled.uri, "meshes/part.obj");
+  EXPECT_EQ(scaled.scale, Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(scaled.uri_loc.line, 4u);
+  EXPECT_TRUE(scaled.resolved.empty());  // the resolve-assets pass resolves it
   const auto& mesh = std::get<ir::Mesh>(l.Geometry("v", kVisualRoles)->shape);
   EXPECT_EQ(mesh.uri, "package://pkg/part.dae");
   EXPECT_EQ(mesh.scale, Eigen::Vector3d(1, 1, 1));
-  EXPECT_FALSE(mesh.convex);
+  EXPECT_FALSE(mesh.convex);  // <drake:declare_convex>: drake_spellings_test.cc
 }
 
 TEST(SdfGeometry, MeshNeedsAUri) {  // SDF-040
@@ -371,64 +364,38 @@ TEST(SdfGeometry, UnsupportedVisualChildrenWarn) {  // SDF-041, SDF-043
 
 // -- EXT-030, EXT-031: visual roles
 
-TEST(SdfGeometry, VisualRolesFollowEnabled) {  // EXT-030
+// SDFormat's booleans: '1' and '0' too (URDF takes 'true' and 'false' only)
+TEST(SdfGeometry, EnabledTakesSdformatBooleans) {  // EXT-030
   SdfFrontendResult l;
   ASSERT_TRUE(l.Read(SdfLink(R"(
-      <visual name='i'><geometry><box/></geometry>
-        <drake:perception_properties enabled='false'/></visual>
       <visual name='p'><geometry><box/></geometry>
         <drake:illustration_properties enabled='0'/></visual>
       <visual name='both'><geometry><box/></geometry>
-        <drake:illustration_properties enabled='true'/><drake:perception_properties/></visual>)")))
+        <drake:illustration_properties enabled='1'/><drake:perception_properties enabled=' true '/></visual>)")))
       << l.Messages();
-  EXPECT_EQ(l.Geometry("i", kVisualRoles)->roles, ir::kIllustrationRole);
   EXPECT_EQ(l.Geometry("p", kVisualRoles)->roles, ir::kPerceptionRole);
   EXPECT_EQ(l.Geometry("both", kVisualRoles)->roles, kVisualRoles);
 }
 
-TEST(SdfGeometry, VisualWithNoRoleIsDroppedWithAWarning) {  // EXT-030
+// the name is the element's text, trimmed
+TEST(SdfGeometry, AcceptingRendererTextIsTrimmed) {  // EXT-031
   SdfFrontendResult l;
-  ASSERT_TRUE(l.Read(Visual("<box/>", R"(<drake:illustration_properties enabled='false'/>
-        <drake:perception_properties enabled='false'/>)")))
-      << l.Messages();
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedValue,
-                              "visual geometry 'v' in link 'a' has both its illustration and "
-                              "perception properties disabled"))
-      << l.Messages();
-  EXPECT_TRUE(l.module.geometries.empty());
-}
-
-TEST(SdfGeometry, InvalidEnabledIsAnError) {  // EXT-030
-  SdfFrontendResult l;
-  EXPECT_FALSE(l.Read(Visual("<box/>", "<drake:perception_properties enabled='maybe'/>")));
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "invalid value 'maybe' for attribute 'enabled'"))
-      << l.Messages();
-}
-
-TEST(SdfGeometry, AcceptingRenderersAreASortedSet) {  // EXT-031
-  SdfFrontendResult l;
-  ASSERT_TRUE(l.Read(Visual("<box/>", R"(<drake:accepting_renderer>vtk</drake:accepting_renderer>
-      <drake:accepting_renderer> gl </drake:accepting_renderer>
-      <drake:accepting_renderer>vtk</drake:accepting_renderer>)")))
+  ASSERT_TRUE(l.Read(Visual("<box/>", R"(<drake:accepting_renderer> gl </drake:accepting_renderer>
+      <drake:accepting_renderer>
+        vtk
+      </drake:accepting_renderer>)")))
       << l.Messages();
   const ir::Property* p = Find(l.module.geometries.at(0), "renderer/accepting");
   ASSERT_NE(p, nullptr);
   EXPECT_EQ(std::get<std::vector<std::string>>(p->value), std::vector<std::string>({"gl", "vtk"}));
 }
 
-TEST(SdfGeometry, AcceptingRendererRules) {  // EXT-031
+TEST(SdfGeometry, AcceptingRendererMustNotBeEmpty) {  // EXT-031
   SdfFrontendResult l;
-  EXPECT_FALSE(l.Read(SdfLink(R"(
-      <visual name='empty'><geometry><box/></geometry>
-        <drake:accepting_renderer/></visual>
-      <visual name='off'><geometry><box/></geometry>
-        <drake:perception_properties enabled='false'/>
-        <drake:accepting_renderer>vtk</drake:accepting_renderer></visual>)")));
+  EXPECT_FALSE(l.Read(Visual("<box/>", "<drake:accepting_renderer/>")));
   EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "<drake:accepting_renderer> is empty"))
       << l.Messages();
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedElement,
-                              "the perception role of this visual is disabled"));
-  EXPECT_EQ(Find(*l.Geometry("off", kVisualRoles), "renderer/accepting"), nullptr);
+  EXPECT_EQ(Find(l.module.geometries.at(0), "renderer/accepting"), nullptr);
 }
 
 // -- EXT-032: drake:visual
@@ -510,82 +477,8 @@ TEST(SdfGeometry, DrakeVisualWithNoRoleIsSilentlyDropped) {  // EXT-032
   EXPECT_TRUE(l.module.geometries.empty());
 }
 
-// -- EXT-020, EXT-021: collision properties
-
-TEST(SdfGeometry, EveryProximityChildBecomesItsProperty) {  // EXT-020
-  SdfFrontendResult l;
-  ASSERT_TRUE(l.Read(Proximity(R"(
-      <drake:compliant_hydroelastic/>
-      <drake:hydroelastic_modulus>5e7</drake:hydroelastic_modulus>
-      <drake:mesh_resolution_hint>0.02</drake:mesh_resolution_hint>
-      <drake:hunt_crossley_dissipation>1.25</drake:hunt_crossley_dissipation>
-      <drake:point_contact_stiffness>1e5</drake:point_contact_stiffness>
-      <drake:relaxation_time>0.1</drake:relaxation_time>
-      <drake:hydroelastic_margin>0.001</drake:hydroelastic_margin>
-      <drake:mu_static>0.8</drake:mu_static>
-      <drake:mu_dynamic>0.6</drake:mu_dynamic>)")))
-      << l.Messages();
-  EXPECT_TRUE(l.diags.diagnostics().empty()) << l.Messages();
-  const ir::Geometry& g = l.module.geometries.at(0);
-  EXPECT_EQ(std::get<std::string>(Find(g, "hydroelastic/compliance_type")->value), "compliant");
-  EXPECT_EQ(Number(g, "hydroelastic/hydroelastic_modulus"), 5e7);
-  EXPECT_EQ(Number(g, "hydroelastic/resolution_hint"), 0.02);
-  EXPECT_EQ(Number(g, "material/hunt_crossley_dissipation"), 1.25);
-  EXPECT_EQ(Number(g, "material/point_contact_stiffness"), 1e5);
-  EXPECT_EQ(Number(g, "material/relaxation_time"), 0.1);
-  EXPECT_EQ(Number(g, "hydroelastic/margin"), 0.001);
-  EXPECT_EQ(Numbers(g, "material/coulomb_friction"), std::vector<double>({0.8, 0.6}));
-  EXPECT_EQ(g.properties.size(), 8u);
-}
-
-TEST(SdfGeometry, OneFrictionCoefficientGivesBoth) {  // EXT-020, EXT-021
-  SdfFrontendResult l;
-  ASSERT_TRUE(l.Read(Proximity("<drake:mu_dynamic>0.4</drake:mu_dynamic><drake:rigid_hydroelastic/>")))
-      << l.Messages();
-  const ir::Geometry& g = l.module.geometries.at(0);
-  EXPECT_EQ(Numbers(g, "material/coulomb_friction"), std::vector<double>({0.4, 0.4}));
-  EXPECT_EQ(std::get<std::string>(Find(g, "hydroelastic/compliance_type")->value), "rigid");
-}
-
-TEST(SdfGeometry, ProximityRulesMatchUrdf) {  // EXT-020
-  SdfFrontendResult l;
-  EXPECT_FALSE(l.Read(Proximity(R"(
-      <drake:rigid_hydroelastic/>
-      <drake:compliant_hydroelastic/>
-      <drake:soft_hydroelastic/>
-      <drake:mesh_resolution_hint>0</drake:mesh_resolution_hint>
-      <drake:relaxation_time>-1</drake:relaxation_time>
-      <drake:hydroelastic_margin>x</drake:hydroelastic_margin>
-      <drake:mu_static>0.2</drake:mu_static>
-      <drake:mu_dynamic>0.3</drake:mu_dynamic>
-      <drake:mu_dynamic>0.1</drake:mu_dynamic>
-      <drake:stickiness>1</drake:stickiness>)")));
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "are mutually exclusive")) << l.Messages();
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "<drake:soft_hydroelastic> is no longer supported"));
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue,
-                              "the mesh resolution hint given by <drake:mesh_resolution_hint> "
-                              "must be positive, got 0"));
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue,
-                              "the relaxation time given by <drake:relaxation_time> must be "
-                              "non-negative, got -1"));
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "<drake:hydroelastic_margin> must hold a number"));
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue,
-                              "the dynamic friction coefficient (0.3) is greater than the static "
-                              "one (0.2)"));
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedElement,
-                              "<drake:mu_dynamic> is given more than once"));
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnknownElement,
-                              "unknown element <drake:stickiness> in <drake:proximity_properties>"));
-}
-
-TEST(SdfGeometry, ModulusOnRigidIsIgnoredWithAWarning) {  // EXT-020
-  SdfFrontendResult l;
-  ASSERT_TRUE(l.Read(Proximity(
-      "<drake:rigid_hydroelastic/><drake:hydroelastic_modulus>1e7</drake:hydroelastic_modulus>")))
-      << l.Messages();
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedElement, "is ignored on a rigid hydroelastic"));
-  EXPECT_EQ(Find(l.module.geometries.at(0), "hydroelastic/hydroelastic_modulus"), nullptr);
-}
+// -- EXT-020, EXT-021: collision properties; <drake:proximity_properties>
+// in both spellings: drake_spellings_test.cc
 
 TEST(SdfGeometry, OdeMuGivesBothCoefficients) {  // SDF-041, EXT-021
   SdfFrontendResult l;

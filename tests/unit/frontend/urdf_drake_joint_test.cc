@@ -1,6 +1,8 @@
 // <drake:joint> in the URDF frontend (EXT-001..003) and its interplay with
 // <joint> (URDF-011..014, URDF-042): types, counts, axes, screw pitch,
 // curvilinear paths, errors, and the compiled plant's poses at given q.
+// What the SDFormat spelling shares is tested in both in
+// drake_spellings_test.cc.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -324,39 +326,8 @@ TEST(UrdfDrakeJointTest, ScrewThreadPitchErrors) {  // EXT-002
 
 // ---------------------------------------------------------------- EXT-003
 
-TEST(UrdfDrakeJointTest, CurvilinearPathDefaultsAndSegments) {  // EXT-003
-  Lowered l;
-  ASSERT_TRUE(l.Read(SixLinkRobot(R"(
-    <drake:joint name='c' type='curvilinear'><parent link='a'/><child link='b'/>
-      <dynamics damping='0.1'/>
-      <drake:curves>
-        <drake:line_segment length='1.0'/>
-        <drake:circular_arc radius='2.0' angle='1.5707963267948966'/>
-        <drake:circular_arc radius='0.5' angle='-3'/>
-      </drake:curves></drake:joint>)")))
-      << l.Messages();
-  const ir::Joint* c = l.Joint("c");
-  ASSERT_NE(c, nullptr);
-  EXPECT_EQ(c->type, ir::JointType::Curvilinear);
-  EXPECT_EQ(ir::JointPositionCount(c->type), 1);
-  EXPECT_EQ(ir::JointVelocityCount(c->type), 1);
-  const ir::CurvilinearPath& path = c->curvilinear_path;
-  EXPECT_EQ(path.plane_normal, Eigen::Vector3d::UnitZ());
-  EXPECT_EQ(path.initial_tangent, Eigen::Vector3d::UnitX());
-  EXPECT_FALSE(path.periodic);
-  ASSERT_EQ(path.segments.size(), 3u);
-  EXPECT_EQ(path.segments[0].length, 1.0);
-  EXPECT_EQ(path.segments[0].curvature, 0.0);
-  EXPECT_DOUBLE_EQ(path.segments[1].length, kPi);  // radius * |angle|
-  EXPECT_DOUBLE_EQ(path.segments[1].curvature, 0.5);
-  EXPECT_DOUBLE_EQ(path.segments[2].length, 1.5);
-  EXPECT_DOUBLE_EQ(path.segments[2].curvature, -2.0);  // a negative angle turns right
-  EXPECT_EQ(c->damping, (std::vector<double>{0.1}));
-  // Drake limits an open path's joint to the path's ends
-  EXPECT_EQ(c->limits.lower[0], 0.0);
-  EXPECT_DOUBLE_EQ(c->limits.upper[0], 1.0 + kPi + 1.5);
-  EXPECT_EQ(c->limits.velocity_upper[0], kInf);
-}
+// a path's segments, its default plane and its limits are tested in both
+// spellings in drake_spellings_test.cc
 
 TEST(UrdfDrakeJointTest, CurvilinearPlaneTangentAndPeriodic) {  // EXT-003
   // the corpus's joint_parsing_test.urdf curvilinear_periodic joint

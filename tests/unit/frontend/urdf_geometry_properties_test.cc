@@ -1,7 +1,8 @@
 // drake: geometry properties and actuator extensions in URDF: what each
 // element lowers to, what each rule rejects, and what reaches plant-json
 // (EXT-012..014, EXT-020, EXT-021, EXT-030, EXT-031, EXT-033, EXT-060,
-// URDF-033).
+// URDF-033). The proximity properties and visual roles that SDFormat spells
+// the same way are tested in both spellings in drake_spellings_test.cc.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -38,7 +39,6 @@ std::string UrdfProximity(std::string_view children) {
 }
 
 using testing::Find;
-using testing::Number;
 using testing::Numbers;
 
 /// Counts diagnostics of `kind` (all must be accounted for by the caller).
@@ -48,119 +48,12 @@ size_t Count(const Lowered& l, DiagKind kind) {
   return n;
 }
 
-// -- EXT-020: drake:proximity_properties
-
-TEST(UrdfGeometryProperties, EveryProximityChildBecomesItsProperty) {  // EXT-020
-  Lowered l;
-  ASSERT_TRUE(l.Read(UrdfProximity(R"(
-      <drake:compliant_hydroelastic/>
-      <drake:hydroelastic_modulus value='5e7'/>
-      <drake:mesh_resolution_hint value='0.02'/>
-      <drake:hunt_crossley_dissipation value='1.25'/>
-      <drake:point_contact_stiffness value='1e5'/>
-      <drake:relaxation_time value='0.1'/>
-      <drake:hydroelastic_margin value='0.001'/>
-      <drake:mu_static value='0.8'/>
-      <drake:mu_dynamic value='0.6'/>)")))
-      << l.Messages();
-  EXPECT_TRUE(l.diags.diagnostics().empty()) << l.Messages();
-  ASSERT_EQ(l.module.geometries.size(), 1u);
-  const ir::Geometry& g = l.module.geometries[0];
-  EXPECT_EQ(g.roles, ir::kProximityRole);
-  EXPECT_EQ(std::get<std::string>(Find(g, "hydroelastic/compliance_type")->value), "compliant");
-  EXPECT_EQ(Number(g, "hydroelastic/hydroelastic_modulus"), 5e7);
-  EXPECT_EQ(Number(g, "hydroelastic/resolution_hint"), 0.02);
-  EXPECT_EQ(Number(g, "hydroelastic/margin"), 0.001);
-  EXPECT_EQ(Number(g, "material/hunt_crossley_dissipation"), 1.25);
-  EXPECT_EQ(Number(g, "material/point_contact_stiffness"), 1e5);
-  EXPECT_EQ(Number(g, "material/relaxation_time"), 0.1);
-  EXPECT_EQ(Numbers(g, "material/coulomb_friction"), (std::vector<double>{0.8, 0.6}));
-  EXPECT_EQ(g.properties.size(), 8u);
-}
-
-TEST(UrdfGeometryProperties, RigidHydroelastic) {  // EXT-020
-  Lowered l;
-  ASSERT_TRUE(l.Read(UrdfProximity("<drake:rigid_hydroelastic/>"))) << l.Messages();
-  const ir::Geometry& g = l.module.geometries[0];
-  ASSERT_EQ(g.properties.size(), 1u);
-  EXPECT_EQ(std::get<std::string>(Find(g, "hydroelastic/compliance_type")->value), "rigid");
-}
-
-TEST(UrdfGeometryProperties, NoProximityPropertiesMeansNoProperties) {  // EXT-021
-  // the plant's default friction applies; it is not listed as a property
-  Lowered l;
-  ASSERT_TRUE(l.Read(UrdfCollision(""))) << l.Messages();
-  EXPECT_TRUE(l.module.geometries[0].properties.empty());
-  Lowered empty;
-  ASSERT_TRUE(empty.Read(UrdfProximity(""))) << empty.Messages();
-  EXPECT_TRUE(empty.module.geometries[0].properties.empty());
-}
-
-TEST(UrdfGeometryProperties, OneFrictionCoefficientGivesBoth) {  // EXT-020, EXT-021
-  for (const char* tag : {"drake:mu_dynamic", "drake:mu_static"}) {
-    Lowered l;
-    ASSERT_TRUE(l.Read(UrdfProximity(fmt::format("<{} value='0.4'/>", tag)))) << l.Messages();
-    EXPECT_EQ(Numbers(l.module.geometries[0], "material/coulomb_friction"),
-              (std::vector<double>{0.4, 0.4}))
-        << tag;
-  }
-}
-
-TEST(UrdfGeometryProperties, FrictionFollowsCoulombRules) {  // EXT-020
-  Lowered negative;
-  EXPECT_FALSE(negative.Read(UrdfProximity("<drake:mu_dynamic value='-0.1'/>")));
-  EXPECT_TRUE(negative.HasDiagnostic(DiagKind::BadValue, "must not be negative"));
-  EXPECT_EQ(negative.diags.error_count(), 1u) << negative.Messages();  // reported once
-  EXPECT_TRUE(negative.module.geometries[0].properties.empty());
-
-  // Drake's CoulombFriction: dynamic may not exceed static
-  Lowered inverted;
-  EXPECT_FALSE(inverted.Read(
-      UrdfProximity("<drake:mu_static value='0.2'/><drake:mu_dynamic value='0.5'/>")));
-  EXPECT_TRUE(inverted.HasDiagnostic(DiagKind::BadValue, "greater than the static"));
-
-  Lowered equal;
-  EXPECT_TRUE(
-      equal.Read(UrdfProximity("<drake:mu_static value='0.5'/><drake:mu_dynamic value='0.5'/>")))
-      << equal.Messages();
-}
-
-TEST(UrdfGeometryProperties, OutOfRangeValuesAreErrors) {  // EXT-020
-  struct Case {
-    const char* xml;
-    const char* message;
-  };
-  for (const Case& c : std::initializer_list<Case>{
-           {"<drake:relaxation_time value='-1'/>", "relaxation time"},
-           {"<drake:hydroelastic_margin value='-0.1'/>", "hydroelastic margin"},
-           {"<drake:hunt_crossley_dissipation value='-2'/>", "Hunt-Crossley dissipation"},
-           {"<drake:point_contact_stiffness value='0'/>", "point contact stiffness"},
-           {"<drake:point_contact_stiffness value='-1'/>", "point contact stiffness"},
-           {"<drake:hydroelastic_modulus value='0'/>", "hydroelastic modulus"},
-           {"<drake:mesh_resolution_hint value='-0.5'/>", "mesh resolution hint"},
-           {"<drake:mesh_resolution_hint value='0'/>", "mesh resolution hint"},
-       }) {
-    Lowered l;
-    EXPECT_FALSE(l.Read(UrdfProximity(c.xml))) << c.xml;
-    EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, c.message)) << c.xml << "\n" << l.Messages();
-    EXPECT_TRUE(l.module.geometries[0].properties.empty()) << c.xml;
-  }
-  // zero is allowed where only negatives are rejected
-  Lowered zero;
-  ASSERT_TRUE(zero.Read(UrdfProximity(R"(<drake:relaxation_time value='0'/>
-      <drake:hydroelastic_margin value='0'/><drake:hunt_crossley_dissipation value='0'/>)")))
-      << zero.Messages();
-  EXPECT_EQ(zero.module.geometries[0].properties.size(), 3u);
-}
+// -- EXT-020: drake:proximity_properties, where URDF's @value differs
 
 TEST(UrdfGeometryProperties, ValueAttributeIsRequiredAndNumeric) {  // EXT-020
   Lowered missing;
   EXPECT_FALSE(missing.Read(UrdfProximity("<drake:mu_dynamic/>")));
   EXPECT_TRUE(missing.HasDiagnostic(DiagKind::MissingAttribute, "'value'"));
-  Lowered text;
-  EXPECT_FALSE(text.Read(UrdfProximity("<drake:hydroelastic_modulus value='soft'/>")));
-  EXPECT_TRUE(text.diags.has_errors());
-  text.ExpectDiagnostic(DiagKind::BadValue, "must be numbers");
   Lowered nan;
   EXPECT_FALSE(nan.Read(UrdfProximity("<drake:hydroelastic_modulus value='nan'/>")));
   EXPECT_TRUE(nan.diags.has_errors());
@@ -169,52 +62,6 @@ TEST(UrdfGeometryProperties, ValueAttributeIsRequiredAndNumeric) {  // EXT-020
   Lowered content;
   EXPECT_FALSE(content.Read(UrdfProximity("<drake:mu_dynamic>0.5</drake:mu_dynamic>")));
   EXPECT_TRUE(content.HasDiagnostic(DiagKind::MissingAttribute, "'value'"));
-}
-
-TEST(UrdfGeometryProperties, RigidAndCompliantAreExclusive) {  // EXT-020
-  Lowered l;
-  EXPECT_FALSE(l.Read(UrdfProximity("<drake:rigid_hydroelastic/><drake:compliant_hydroelastic/>")));
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "mutually exclusive"));
-  EXPECT_EQ(Find(l.module.geometries[0], "hydroelastic/compliance_type"), nullptr);
-}
-
-TEST(UrdfGeometryProperties, ModulusOnRigidIsIgnoredWithAWarning) {  // EXT-020
-  Lowered l;
-  ASSERT_TRUE(
-      l.Read(UrdfProximity("<drake:rigid_hydroelastic/><drake:hydroelastic_modulus value='1e7'/>")))
-      << l.Messages();
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedElement, "ignored on a rigid"));
-  const ir::Geometry& g = l.module.geometries[0];
-  EXPECT_EQ(Find(g, "hydroelastic/hydroelastic_modulus"), nullptr);
-  EXPECT_EQ(std::get<std::string>(Find(g, "hydroelastic/compliance_type")->value), "rigid");
-}
-
-TEST(UrdfGeometryProperties, SoftHydroelasticIsNoLongerSupported) {  // EXT-020
-  Lowered l;
-  EXPECT_FALSE(l.Read(UrdfProximity("<drake:soft_hydroelastic/>")));
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "drake:compliant_hydroelastic"));
-}
-
-TEST(UrdfGeometryProperties, UnknownAndRepeatedChildrenAreReported) {  // EXT-020, COMMON-003
-  Lowered l;
-  ASSERT_TRUE(l.Read(UrdfProximity(R"(<drake:mu_dynamic value='0.3'/>
-      <drake:mu_dynamic value='0.9'/><drake:mu_dyanmic value='1'/>)")))
-      << l.Messages();
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedElement, "only the first one is used"));
-  EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnknownElement, "drake:mu_dyanmic"));
-  EXPECT_EQ(Numbers(l.module.geometries[0], "material/coulomb_friction"),
-            (std::vector<double>{0.3, 0.3}));
-
-  // a second drake:proximity_properties is ignored, as Drake reads only the first
-  Lowered twice;
-  ASSERT_TRUE(twice.Read(UrdfCollision(R"(
-      <drake:proximity_properties><drake:mu_static value='0.7'/></drake:proximity_properties>
-      <drake:proximity_properties><drake:mu_static value='0.1'/></drake:proximity_properties>)")))
-      << twice.Messages();
-  EXPECT_EQ(Count(twice, DiagKind::UnsupportedElement), 1u);
-  twice.ExpectDiagnostic(DiagKind::UnsupportedElement, "is given more than once");
-  EXPECT_EQ(Numbers(twice.module.geometries[0], "material/coulomb_friction"),
-            (std::vector<double>{0.7, 0.7}));
 }
 
 TEST(UrdfGeometryProperties, ProximityPropertiesOnAVisualIsUnknown) {  // EXT-020
@@ -289,35 +136,11 @@ TEST(UrdfGeometryProperties, ProximityFrictionBeatsDrakeCompliance) {  // EXT-02
 
 // -- EXT-030, EXT-031, EXT-033: visual roles and properties
 
-TEST(UrdfGeometryProperties, VisualRolesFollowEnabled) {  // EXT-030
-  struct Case {
-    const char* xml;
-    uint8_t roles;
-  };
-  for (const Case& c : std::initializer_list<Case>{
-           {"", ir::kIllustrationRole | ir::kPerceptionRole},
-           {"<drake:illustration_properties/>", ir::kIllustrationRole | ir::kPerceptionRole},
-           {"<drake:perception_properties enabled='true'/>",
-            ir::kIllustrationRole | ir::kPerceptionRole},
-           {"<drake:illustration_properties enabled='false'/>", ir::kPerceptionRole},
-           {"<drake:perception_properties enabled='false'/>", ir::kIllustrationRole},
-       }) {
-    Lowered l;
-    ASSERT_TRUE(l.Read(UrdfVisual(c.xml))) << c.xml << "\n" << l.Messages();
-    EXPECT_TRUE(l.diags.diagnostics().empty()) << c.xml << "\n" << l.Messages();
-    ASSERT_EQ(l.module.geometries.size(), 1u);
-    EXPECT_EQ(l.module.geometries[0].roles, c.roles) << c.xml;
-  }
-}
-
-TEST(UrdfGeometryProperties, InvalidEnabledIsAnError) {  // EXT-030
-  for (const char* value : {"no", "1", "False", ""}) {
-    Lowered l;
-    EXPECT_FALSE(
-        l.Read(UrdfVisual(fmt::format("<drake:perception_properties enabled='{}'/>", value))))
-        << value;
-    EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "expected 'true' or 'false'")) << value;
-  }
+// URDF takes exactly 'true' and 'false'; SDFormat takes '1' and '0' too
+TEST(UrdfGeometryProperties, EnabledIsTrueOrFalseOnly) {  // EXT-030
+  Lowered l;
+  EXPECT_FALSE(l.Read(UrdfVisual("<drake:perception_properties enabled='1'/>")));
+  EXPECT_TRUE(l.HasDiagnostic(DiagKind::BadValue, "expected 'true' or 'false'")) << l.Messages();
 }
 
 TEST(UrdfGeometryProperties, VisualWithNoRoleIsDropped) {  // EXT-030
@@ -335,16 +158,6 @@ TEST(UrdfGeometryProperties, VisualWithNoRoleIsDropped) {  // EXT-030
   EXPECT_EQ(l.module.Text(l.module.geometries[0].name), "Box");
 }
 
-TEST(UrdfGeometryProperties, AcceptingRenderersAreASortedSet) {  // EXT-031
-  Lowered l;
-  ASSERT_TRUE(l.Read(UrdfVisual(R"(<drake:accepting_renderer name='vtk'/>
-      <drake:accepting_renderer name='gl'/><drake:accepting_renderer name='vtk'/>)")))
-      << l.Messages();
-  const ir::Property* p = Find(l.module.geometries[0], "renderer/accepting");
-  ASSERT_NE(p, nullptr);
-  EXPECT_EQ(std::get<std::vector<std::string>>(p->value), (std::vector<std::string>{"gl", "vtk"}));
-}
-
 TEST(UrdfGeometryProperties, AcceptingRendererNeedsAName) {  // EXT-031
   Lowered missing;
   EXPECT_FALSE(missing.Read(UrdfVisual("<drake:accepting_renderer/>")));
@@ -352,20 +165,6 @@ TEST(UrdfGeometryProperties, AcceptingRendererNeedsAName) {  // EXT-031
   Lowered empty;
   EXPECT_FALSE(empty.Read(UrdfVisual("<drake:accepting_renderer name=''/>")));
   EXPECT_TRUE(empty.HasDiagnostic(DiagKind::BadValue, "empty 'name'"));
-}
-
-TEST(UrdfGeometryProperties, AcceptingRendererWithoutPerceptionIsIgnored) {  // EXT-031
-  // in either order
-  for (const char* xml : {"<drake:perception_properties enabled='false'/>"
-                          "<drake:accepting_renderer name='vtk'/>",
-                          "<drake:accepting_renderer name='vtk'/>"
-                          "<drake:perception_properties enabled='false'/>"}) {
-    Lowered l;
-    ASSERT_TRUE(l.Read(UrdfVisual(xml))) << l.Messages();
-    EXPECT_TRUE(l.HasDiagnostic(DiagKind::UnsupportedElement, "perception role"));
-    EXPECT_EQ(Find(l.module.geometries[0], "renderer/accepting"), nullptr);
-    EXPECT_EQ(l.module.geometries[0].roles, ir::kIllustrationRole);
-  }
 }
 
 TEST(UrdfGeometryProperties, TextureBecomesDiffuseMap) {  // EXT-033
