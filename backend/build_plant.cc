@@ -126,30 +126,26 @@ class PlantBuilder {
     return {};
   }
 
+  // The plant's force element is the IR's with its references resolved:
+  // the two are one template (ir/entities.h), copied field by field in step.
   void AddForceElement(const ir::ForceElement& src) {
     CheckEntityModel(src.model, src.loc);
-    plant_.force_elements.push_back(std::visit(
-        ir::Overloaded{
-            [&](const ir::LinearBushingRpy& k) -> ForceElement {
-              return LinearBushingRpy{FrameName(k.frame_A, src.loc), FrameName(k.frame_C, src.loc),
-                                      k.torque_stiffness, k.torque_damping, k.force_stiffness,
-                                      k.force_damping};
-            },
-            [&](const ir::LinearSpringDamper& k) -> ForceElement {
-              return LinearSpringDamper{ResolveBody(k.body_A, src.loc),
-                                        ResolveBody(k.body_B, src.loc),
-                                        k.p_AP,
-                                        k.p_BQ,
-                                        k.free_length,
-                                        k.stiffness,
-                                        k.damping};
-            },
-            [&](const ir::JointSpring& k) -> ForceElement {
-              return JointSpring{ResolveJoint(k.joint, src.loc), k.nominal, k.stiffness};
-            },
+    std::visit(
+        [&](const auto& from) {
+          using Kind = std::decay_t<decltype(from)>;
+          typename Kind::template Rebind<PlantReferences> to;
+          Kind::ForEachField(
+              [&](std::string_view, const auto& in, auto& out) { out = Resolved(in, src.loc); },
+              from, to);
+          plant_.force_elements.emplace_back(std::move(to));
         },
-        src.payload));
+        src.payload);
   }
+  BodyId Resolved(const ir::Ref<BodyId>& ref, Loc loc) { return ResolveBody(ref, loc); }
+  JointId Resolved(const ir::Ref<JointId>& ref, Loc loc) { return ResolveJoint(ref, loc); }
+  std::string Resolved(const ir::FrameRef& ref, Loc loc) { return FrameName(ref, loc); }
+  template <typename Value>
+  const Value& Resolved(const Value& value, Loc) { return value; }  // numbers, vectors
 
   void AddFrame(const ir::Frame& src) {
     CheckEntityModel(src.model, src.loc);

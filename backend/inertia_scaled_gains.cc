@@ -116,7 +116,7 @@ class ModelGains {
       const double damping = 2 * inertia / std::max(kMinVal, s.timeconst);
       joint.damping.assign(static_cast<size_t>(n), damping);
       if (joint.type == ir::JointType::Revolute || joint.type == ir::JointType::Prismatic) {
-        plant_.force_elements.emplace_back(JointSpring{s.joint, s.springref, stiffness});
+        plant_.force_elements.emplace_back(JointSpring{.joint = s.joint, .nominal = s.springref, .stiffness = stiffness});
       }
     }
     return true;

@@ -22,8 +22,9 @@
 //   tools/mdlc/view.cc          only what the viewer draws
 //   entity_index.cc             what the writers look up by body or joint
 // Driven from one place (plant_json.md still names a new key):
-//   a constraint's or force element's field   its VisitFields (below):
-//                               plant-json and Python
+//   a constraint's field        its VisitFields (below): plant-json and Python
+//   a force element's field     the IR's struct (ir/entities.h): the plant's
+//                               copy, plant-json and Python
 //   a shape field, a role       ir/shape_parameters.h, ir::kGeometryRoleNames
 // Then add it to tests/models/every_entity/, which test_every_entity.py
 // compares across `--emit=ir`, plant-json and Python.
@@ -181,54 +182,20 @@ struct PlantConstraint {
   ir::ConstraintType type() const { return static_cast<ir::ConstraintType>(payload.index()); }
 };
 
-// Force elements, with references resolved. Each describes its fields once,
-// in VisitFields: visit(name, value) per field, in the order plant-json and
-// Python's Model.force_elements write them, with a value that is a double,
-// an Eigen::Vector3d, a std::string, a BodyId or a JointId (the outputs write
-// ids as scoped names). A field added to a force element is added to its
-// VisitFields and reaches both outputs; ForceElementTypeName names the kind.
-struct LinearBushingRpy {
-  std::string frameA, frameC;  // scoped frame names
-  Eigen::Vector3d torque_stiffness = Eigen::Vector3d::Zero();
-  Eigen::Vector3d torque_damping = Eigen::Vector3d::Zero();
-  Eigen::Vector3d force_stiffness = Eigen::Vector3d::Zero();
-  Eigen::Vector3d force_damping = Eigen::Vector3d::Zero();
-  template <typename Visit>
-  void VisitFields(Visit&& visit) const {
-    visit("frameA", frameA);
-    visit("frameC", frameC);
-    visit("torque_stiffness", torque_stiffness);
-    visit("torque_damping", torque_damping);
-    visit("force_stiffness", force_stiffness);
-    visit("force_damping", force_damping);
-  }
+// Force elements, with references resolved: the IR's structs
+// (ir/entities.h), instantiated with ids for bodies and joints and scoped
+// names ("model::frame") for frames. Their fields, and the order plant-json
+// and Python's Model.force_elements write them in, are the IR's
+// ForEachField; ForceElementTypeName names the kind.
+struct PlantReferences {
+  using Body = BodyId;
+  using Joint = JointId;
+  using Frame = std::string;
 };
-struct LinearSpringDamper {
-  BodyId body_A, body_B;
-  Eigen::Vector3d p_AP = Eigen::Vector3d::Zero(), p_BQ = Eigen::Vector3d::Zero();
-  double free_length = 0, stiffness = 0, damping = 0;
-  template <typename Visit>
-  void VisitFields(Visit&& visit) const {
-    visit("body_A", body_A);
-    visit("p_AP", p_AP);
-    visit("body_B", body_B);
-    visit("p_BQ", p_BQ);
-    visit("free_length", free_length);
-    visit("stiffness", stiffness);
-    visit("damping", damping);
-  }
-};
-struct JointSpring {  // revolute_spring or prismatic_spring, by the joint's type
-  JointId joint;
-  double nominal = 0, stiffness = 0;
-  template <typename Visit>
-  void VisitFields(Visit&& visit) const {
-    visit("joint", joint);
-    visit("nominal", nominal);
-    visit("stiffness", stiffness);
-  }
-};
-using ForceElement = std::variant<LinearBushingRpy, LinearSpringDamper, JointSpring>;
+using LinearBushingRpy = ir::LinearBushingRpyOf<PlantReferences>;
+using LinearSpringDamper = ir::LinearSpringDamperOf<PlantReferences>;
+using JointSpring = ir::JointSpringOf<PlantReferences>;
+using ForceElement = ir::ForceElementVariant<PlantReferences>;
 
 struct Plant {
   ModelInstanceNames model_instances;        // names, by ModelId

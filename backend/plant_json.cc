@@ -134,27 +134,10 @@ class PlantJsonEmitter {
     if (unnamed) w_.Key("unnamed").Bool(true);
   }
 
-  // `bodies[].deformable` (EXT-070)
+  // `bodies[].deformable` (EXT-070), from its VisitFields
   void Deformable(const ir::DeformableProperties& d) {
     w_.Key("deformable").BeginObject();
-    w_.Key("youngs_modulus").Number(d.youngs_modulus);
-    w_.Key("poissons_ratio").Number(d.poissons_ratio);
-    w_.Key("mass_damping").Number(d.mass_damping);
-    w_.Key("stiffness_damping").Number(d.stiffness_damping);
-    w_.Key("mass_density").Number(d.mass_density);
-    w_.Key("material_model").String(d.material_model);
-    w_.Key("resolution_hint");
-    OptionalNumber(d.resolution_hint);
-    w_.Key("wall_boundary_conditions").BeginArray();
-    for (const auto& wall : d.wall_boundary_conditions) {
-      w_.BeginObject();
-      w_.Key("point_on_plane");
-      Vector(wall.point_on_plane);
-      w_.Key("outward_normal");
-      Vector(wall.outward_normal);
-      w_.EndObject();
-    }
-    w_.EndArray();
+    Fields(d);
     w_.EndObject();
   }
 
@@ -257,6 +240,19 @@ class PlantJsonEmitter {
   void Value(JointId joint) { w_.String(JointName(joint)); }
   void Value(const Transform& X) { Pose(X); }
   void Value(const std::vector<double>& values) { Numbers(values); }
+  void Value(const std::optional<double>& x) { OptionalNumber(x); }
+  // a list of structs, each an object of its own VisitFields
+  template <typename Item>
+    requires requires(const Item& item) { item.VisitFields([](std::string_view, const auto&) {}); }
+  void Value(const std::vector<Item>& items) {
+    w_.BeginArray();
+    for (const Item& item : items) {
+      w_.BeginObject();
+      Fields(item);
+      w_.EndObject();
+    }
+    w_.EndArray();
+  }
   void Value(const std::vector<JointId>& joints) {
     w_.BeginArray();
     for (JointId j : joints) w_.String(JointName(j));

@@ -23,8 +23,8 @@
 //   a geometry role           kGeometryRoleNames: the role names of every output
 //   a shape or shape field    ir/shape_parameters.h: plant-json, `mdlc view`, Python
 //   a format's names          ir/format.h
-//   a force element field     its VisitFields here (`--emit=ir`) and in
-//                             backend/plant.h (plant-json, Python)
+//   a force element field     its struct and ForEachField here: `--emit=ir`,
+//                             the plant's copy, plant-json and Python
 // tests/models/every_entity/ holds one of every kind the plant holds: add the
 // new kind or field there, and tests/python/test_every_entity.py fails until
 // `--emit=ir`, plant-json and the Python model all show it.
@@ -115,8 +115,24 @@ struct DeformableProperties {
   struct WallBoundaryCondition {
     Eigen::Vector3d point_on_plane = Eigen::Vector3d::Zero();
     Eigen::Vector3d outward_normal = Eigen::Vector3d::UnitZ();
+    template <typename Visit> void VisitFields(Visit&& visit) const {
+      visit("point_on_plane", point_on_plane);
+      visit("outward_normal", outward_normal);
+    }
   };
   std::vector<WallBoundaryCondition> wall_boundary_conditions;
+  /// Each field once, in plant-json's order (`bodies[].deformable`), which
+  /// Python's Body.deformable follows too.
+  template <typename Visit> void VisitFields(Visit&& visit) const {
+    visit("youngs_modulus", youngs_modulus);
+    visit("poissons_ratio", poissons_ratio);
+    visit("mass_damping", mass_damping);
+    visit("stiffness_damping", stiffness_damping);
+    visit("mass_density", mass_density);
+    visit("material_model", material_model);
+    visit("resolution_hint", resolution_hint);
+    visit("wall_boundary_conditions", wall_boundary_conditions);
+  }
 };
 
 struct Body {
@@ -407,63 +423,94 @@ struct FrameRef {
   bool resolved() const { return frame.valid() || body.valid(); }
 };
 
-// Force elements. Each lists its fields once, in VisitFields: visit(name,
-// field) per field, in the order the IR printer writes them (`--emit=ir`
-// is driven by it; the backend's plant structs list theirs for plant-json and
-// Python). A field added here and to VisitFields is printed with no other
-// change; its reader sets it, and the backend copies it into the plant.
+// Force elements are written once, here, for the IR and the plant both: each
+// is a template over how it refers to other entities. The IR instantiates it
+// with references as read (IrReferences: a name and location that
+// resolve-names fills in), the plant (backend/plant.h) with resolved ones
+// (PlantReferences: ids, scoped frame names). Each lists its fields once, in
+// ForEachField: visit(name, field...) per field, in the order every output
+// writes them, over one element or several of the same kind in step (the
+// backend copies the IR's into the plant's that way). So a field added here,
+// with its line in ForEachField, reaches `--emit=ir`, the plant, plant-json
+// and Python; only its reader sets it and its consumer uses it. The names are
+// plant-json's (mdlc-plant/1).
+
+/// How the IR's force elements refer to bodies, joints and frames.
+struct IrReferences {
+  using Body = Ref<BodyId>;
+  using Joint = Ref<JointId>;
+  using Frame = FrameRef;
+};
 
 /// Drake's LinearBushingRollPitchYaw between frames A and C, gains per axis.
-struct LinearBushingRpy {
+template <typename References>
+struct LinearBushingRpyOf {
   static constexpr std::string_view kKind = "linear_bushing_rpy";
-  FrameRef frame_A, frame_C;
+  template <typename Other> using Rebind = LinearBushingRpyOf<Other>;
+  typename References::Frame frame_A, frame_C;
   Eigen::Vector3d torque_stiffness = Eigen::Vector3d::Zero();
   Eigen::Vector3d torque_damping = Eigen::Vector3d::Zero();
   Eigen::Vector3d force_stiffness = Eigen::Vector3d::Zero();
   Eigen::Vector3d force_damping = Eigen::Vector3d::Zero();
-  template <typename Self, typename Visit>
-  static void VisitFields(Self& self, Visit&& visit) {
-    visit("frame_A", self.frame_A);
-    visit("frame_C", self.frame_C);
-    visit("torque_stiffness", self.torque_stiffness);
-    visit("torque_damping", self.torque_damping);
-    visit("force_stiffness", self.force_stiffness);
-    visit("force_damping", self.force_damping);
+  template <typename Visit, typename... Self>
+  static void ForEachField(Visit&& visit, Self&... self) {
+    visit("frameA", self.frame_A...);
+    visit("frameC", self.frame_C...);
+    visit("torque_stiffness", self.torque_stiffness...);
+    visit("torque_damping", self.torque_damping...);
+    visit("force_stiffness", self.force_stiffness...);
+    visit("force_damping", self.force_damping...);
   }
+  template <typename Visit> void VisitFields(Visit&& visit) const { ForEachField(visit, *this); }
 };
 /// Drake's LinearSpringDamper between point P of body A and point Q of body B.
-struct LinearSpringDamper {
+template <typename References>
+struct LinearSpringDamperOf {
   static constexpr std::string_view kKind = "linear_spring_damper";
-  Ref<BodyId> body_A, body_B;
+  template <typename Other> using Rebind = LinearSpringDamperOf<Other>;
+  typename References::Body body_A, body_B;
   Eigen::Vector3d p_AP = Eigen::Vector3d::Zero(), p_BQ = Eigen::Vector3d::Zero();
   double free_length = 0, stiffness = 0, damping = 0;
-  template <typename Self, typename Visit>
-  static void VisitFields(Self& self, Visit&& visit) {
-    visit("body_A", self.body_A);
-    visit("p_AP", self.p_AP);
-    visit("body_B", self.body_B);
-    visit("p_BQ", self.p_BQ);
-    visit("free_length", self.free_length);
-    visit("stiffness", self.stiffness);
-    visit("damping", self.damping);
+  template <typename Visit, typename... Self>
+  static void ForEachField(Visit&& visit, Self&... self) {
+    visit("body_A", self.body_A...);
+    visit("p_AP", self.p_AP...);
+    visit("body_B", self.body_B...);
+    visit("p_BQ", self.p_BQ...);
+    visit("free_length", self.free_length...);
+    visit("stiffness", self.stiffness...);
+    visit("damping", self.damping...);
   }
+  template <typename Visit> void VisitFields(Visit&& visit) const { ForEachField(visit, *this); }
 };
 /// Drake's RevoluteSpring or PrismaticSpring, by the joint's type.
-struct JointSpring {
+template <typename References>
+struct JointSpringOf {
   static constexpr std::string_view kKind = "joint_spring";
-  Ref<JointId> joint;
-  double stiffness = 0, nominal = 0;
-  template <typename Self, typename Visit>
-  static void VisitFields(Self& self, Visit&& visit) {
-    visit("joint", self.joint);
-    visit("nominal", self.nominal);
-    visit("stiffness", self.stiffness);
+  template <typename Other> using Rebind = JointSpringOf<Other>;
+  typename References::Joint joint;
+  double nominal = 0, stiffness = 0;
+  template <typename Visit, typename... Self>
+  static void ForEachField(Visit&& visit, Self&... self) {
+    visit("joint", self.joint...);
+    visit("nominal", self.nominal...);
+    visit("stiffness", self.stiffness...);
   }
+  template <typename Visit> void VisitFields(Visit&& visit) const { ForEachField(visit, *this); }
 };
 
-/// The kinds of force element, in the order of ForceElementPayload's alternatives.
+/// Every kind of force element, for the references `R`: the one list of kinds.
+template <typename R>
+using ForceElementVariant =
+    std::variant<LinearBushingRpyOf<R>, LinearSpringDamperOf<R>, JointSpringOf<R>>;
+
+using LinearBushingRpy = LinearBushingRpyOf<IrReferences>;
+using LinearSpringDamper = LinearSpringDamperOf<IrReferences>;
+using JointSpring = JointSpringOf<IrReferences>;
+
+/// The kinds of force element, in the order of ForceElementVariant's alternatives.
 enum class ForceElementType { LinearBushingRpy, LinearSpringDamper, JointSpring };
-using ForceElementPayload = std::variant<LinearBushingRpy, LinearSpringDamper, JointSpring>;
+using ForceElementPayload = ForceElementVariant<IrReferences>;
 
 /// Force elements of the plant (Drake's ForceElement subclasses).
 struct ForceElement {

@@ -380,10 +380,9 @@ std::string Printer::Run() {
     std::visit(
         [&](const auto& k) {
           out_ += fmt::format(" {}", k.kKind);
-          std::decay_t<decltype(k)>::VisitFields(
-              k, [&](std::string_view name, const auto& field) {
-                out_ += fmt::format(" {}={}", name, FieldText(field));
-              });
+          k.VisitFields([&](std::string_view name, const auto& field) {
+            out_ += fmt::format(" {}={}", name, FieldText(field));
+          });
         },
         f.payload);
     out_ += Where(f.loc) + "\n";

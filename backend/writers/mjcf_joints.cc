@@ -191,7 +191,7 @@ void MjcfWriter::WriteForceElements() {
                      diags_.Report(DiagKind::Lossy, loc,
                                    fmt::format("the bushing between frames '{}' and '{}' is "
                                                "dropped: MJCF has no bushings",
-                                               k.frameA, k.frameC));
+                                               k.frame_A, k.frame_C));
                    },
                    [&](const backend::LinearSpringDamper& k) {
                      diags_.Report(DiagKind::Lossy, loc,

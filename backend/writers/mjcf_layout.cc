@@ -53,7 +53,7 @@ std::vector<bool> Occupied(const backend::Plant& plant, const backend::SceneGrap
   for (const auto& f : plant.force_elements) {
     std::visit(ir::Overloaded{
                    [&](const backend::LinearBushingRpy& k) {
-                     for (const std::string* name : {&k.frameA, &k.frameC}) {
+                     for (const std::string* name : {&k.frame_A, &k.frame_C}) {
                        if (auto it = by_scoped_name.find(*name); it != by_scoped_name.end()) {
                          mark(it->second);
                        }

@@ -102,12 +102,12 @@ void SdfWriter::BuildElements() {
     std::visit(
         ir::Overloaded{
             [&](const backend::LinearBushingRpy& k) {
-              auto a = frame_refs_.find(k.frameA), c = frame_refs_.find(k.frameC);
+              auto a = frame_refs_.find(k.frame_A), c = frame_refs_.find(k.frame_C);
               if (a == frame_refs_.end() || c == frame_refs_.end()) {
                 diags_.Report(DiagKind::Lossy, Loc{},
                               fmt::format("the bushing between '{}' and '{}' is dropped: a "
                                           "frame it names is not written",
-                                          k.frameA, k.frameC));
+                                          k.frame_A, k.frame_C));
                 return;
               }
               const FrameRef fa = a->second, fc = c->second;

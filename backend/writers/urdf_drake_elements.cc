@@ -119,8 +119,8 @@ void UrdfWriter::WriteForceElements() {
         ir::Overloaded{
             [&](const backend::LinearBushingRpy& k) {
               out_.Open("drake:linear_bushing_rpy");
-              out_.Open("drake:bushing_frameA").Attr("name", FrameOrLink(k.frameA)).Close();
-              out_.Open("drake:bushing_frameC").Attr("name", FrameOrLink(k.frameC)).Close();
+              out_.Open("drake:bushing_frameA").Attr("name", FrameOrLink(k.frame_A)).Close();
+              out_.Open("drake:bushing_frameC").Attr("name", FrameOrLink(k.frame_C)).Close();
               out_.Open("drake:bushing_torque_stiffness").Attr("value", k.torque_stiffness);
               out_.Close();
               out_.Open("drake:bushing_torque_damping").Attr("value", k.torque_damping).Close();

@@ -61,9 +61,7 @@ PYTHON_ONLY = {
 # compiler-named entity's flag); Python
 # always has the attribute
 PLANT_JSON_WHEN_SET = {"unnamed", "screw_thread_pitch", "acceleration_upper",
-                       "surface_velocity_axis"}
-# the IR's spelling of a plant-json parameter, where it differs
-IR_KEY = {"frameA": "frame_A", "frameC": "frame_C"}
+                       "surface_velocity_axis", "deformable"}
 IR_SHAPE_KEY = {"a": "abc", "b": "abc", "c": "abc"}
 # the IR's name of a force element kind
 IR_FORCE_ELEMENT = {"revolute_spring": "joint_spring", "prismatic_spring": "joint_spring"}
@@ -124,6 +122,30 @@ class EveryEntity(unittest.TestCase):
                     self.assertEqual(fields, attributes - (PLANT_JSON_WHEN_SET - fields))
                     self.assertEqual(entry.get("name"), obj.name)
 
+    def test_deformable_bodies_match_plant_json(self):  # EXT-070
+        bodies = {(b.model_instance, b.name): b for b in self.model.bodies}
+        deformable = [e for e in self.plant["bodies"] if "deformable" in e]
+        self.assertTrue(deformable, "the model has no deformable body")
+        for entry in self.plant["bodies"]:
+            with self.subTest(body=entry["name"]):
+                python = bodies[entry["model_instance"], entry["name"]].deformable
+                if "deformable" not in entry:
+                    self.assertIsNone(python)
+                    continue
+                expected = entry["deformable"]
+                self.assertEqual(list(expected), list(python))  # same keys, same order
+                for key, value in expected.items():
+                    if key == "wall_boundary_conditions":
+                        self.assertEqual(len(value), len(python[key]))
+                        for wall, got in zip(value, python[key]):
+                            self.assertEqual(list(wall), list(got))
+                            for k in wall:
+                                np.testing.assert_allclose(got[k], wall[k])
+                    elif isinstance(value, str) or value is None:
+                        self.assertEqual(value, python[key])
+                    else:
+                        np.testing.assert_allclose(python[key], value)
+
     def test_parameters_match_plant_json(self):
         m = self.model
         for entry, g in zip(self.plant["geometries"], m.geometries):
@@ -175,7 +197,7 @@ class EveryEntity(unittest.TestCase):
         for entry, line in zip(self.plant["constraints"], constraint_lines):
             for k in entry:
                 if k not in ("type", "model_instance"):
-                    self.assertIn(f" {IR_KEY.get(k, k)}=", line)
+                    self.assertIn(f" {k}=", line)
         force_lines = self.ir_lines("force_element")
         self.assertEqual([IR_FORCE_ELEMENT.get(f["type"], f["type"])
                           for f in self.plant["force_elements"]],
@@ -183,7 +205,7 @@ class EveryEntity(unittest.TestCase):
         for entry, line in zip(self.plant["force_elements"], force_lines):
             for k in entry:
                 if k != "type":
-                    self.assertIn(f" {IR_KEY.get(k, k)}=", line)
+                    self.assertIn(f" {k}=", line)
         self.assertTrue(self.ir_lines("collision_filter_group"))
 
     def test_the_viewer_draws_shapes_as_plant_json_gives_them(self):

@@ -65,6 +65,17 @@ py::object Value(BodyId body, const Names& names) { return py::cast(names.body(b
 py::object Value(JointId joint, const Names& names) { return py::cast(names.joint(joint)); }
 py::object Value(const Transform& X, const Names&) { return py::cast(MakePose(X)); }
 py::object Value(const std::vector<double>& v, const Names&) { return py::cast(ToVector(v)); }
+py::object Value(const std::optional<double>& x, const Names&) { return py::cast(x); }
+template <typename Entity>
+py::dict Fields(const Entity& entity, const Names& names);
+// a list of structs, each a dict of its own VisitFields
+template <typename Item>
+  requires requires(const Item& item) { item.VisitFields([](std::string_view, const auto&) {}); }
+py::object Value(const std::vector<Item>& items, const Names& names) {
+  py::list list;
+  for (const Item& item : items) list.append(Fields(item, names));
+  return list;
+}
 py::object Value(const std::vector<JointId>& joints, const Names& names) {
   py::list list;
   for (JointId j : joints) list.append(names.joint(j));
@@ -82,7 +93,8 @@ py::dict ShapeParameters(const ir::Shape& shape, const Names& names) {
   return d;
 }
 
-// a constraint's or force element's fields, by its VisitFields (backend/plant.h)
+// a constraint's, force element's or deformable body's fields, by its
+// VisitFields (backend/plant.h, ir/entities.h)
 template <typename Entity>
 py::dict Fields(const Entity& entity, const Names& names) {
   py::dict d;
@@ -131,6 +143,7 @@ Model MakeModel(std::shared_ptr<const Result> result, py::list diagnostics) {
     if (b.parent.valid()) body.parent = names.body(b.parent);
     if (b.inbound_joint.valid()) body.joint = names.joint(b.inbound_joint);
     body.surface_velocity_axis = b.surface_velocity_axis;
+    if (b.deformable) body.deformable = Fields(*b.deformable, names);
     m.bodies.push_back(std::move(body));
   }
   for (const backend::PlantJoint& j : plant.joints) {
@@ -241,6 +254,9 @@ void BindModel(py::module_& m) {
       .def_readonly("joint", &Body::joint, "The joint whose child this body is")
       .def_readonly("surface_velocity_axis", &Body::surface_velocity_axis,
                     "The axis a conveyor-like surface moves along, in B (None: it does not)")
+      .def_readonly("deformable", &Body::deformable,
+                    "A deformable link's properties, as plant-json's bodies[].deformable (None: "
+                    "a rigid body)")
       .def_readonly("index", &Body::index, "Its index in Model.bodies and body_poses()")
       .def("__repr__", [](const Body& b) {
         return Repr("Body", b.scoped_name,

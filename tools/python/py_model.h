@@ -38,6 +38,9 @@ struct Body {
   std::optional<std::string> parent, joint;  // scoped names; None for roots
   int index = 0;                             // its row in body_poses()
   std::optional<Eigen::Vector3d> surface_velocity_axis;  // unit, in B (EXT-060)
+  /// A deformable link's properties (EXT-070), as plant-json's
+  /// bodies[].deformable; None for a rigid body.
+  std::optional<pybind11::dict> deformable;
 };
 
 struct Joint {
