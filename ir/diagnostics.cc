@@ -14,6 +14,7 @@ constexpr std::array kKindInfo = {
 }  // namespace
 
 const DiagKindInfo& InfoFor(DiagKind kind) { return kKindInfo[static_cast<size_t>(kind)]; }
+std::span<const DiagKindInfo> AllDiagKindInfo() { return kKindInfo; }
 
 std::string_view SeverityName(Severity s) {
   switch (s) {

@@ -14,6 +14,7 @@
 
 #include <functional>
 #include <string>
+#include <span>
 #include <string_view>
 #include <unordered_set>
 #include <utility>
@@ -39,6 +40,9 @@ struct DiagKindInfo {
   std::string_view name;
 };
 const DiagKindInfo& InfoFor(DiagKind kind);
+/// Every kind's facts, in DiagKind order: the one walk of diagnostic_kinds.def
+/// that the option checker and `--list-warnings` read their groups from.
+std::span<const DiagKindInfo> AllDiagKindInfo();
 std::string_view SeverityName(Severity s);
 
 struct DiagnosticNote {

@@ -200,6 +200,4 @@ const backend::CompiledModel& Result::model() const {
   return *compilation_->model;
 }
 
-const std::string& Result::timing_report() const { return compilation_->timing_report(); }
-
 }  // namespace mdlc

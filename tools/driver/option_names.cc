@@ -9,7 +9,8 @@
 #include <unordered_set>
 
 #include "ir/scoped_name.h"
-#include "passes/pass_registry.h"
+#include "ir/diagnostics.h"
+#include "mdlc/pass_list.h"
 
 namespace mdlc {
 namespace {
@@ -44,9 +45,7 @@ std::optional<std::string> CheckChoice(std::string_view text, std::string_view w
 const std::vector<std::string_view>& WarningGroupNames() {
   static const std::vector<std::string_view> names = [] {
     std::set<std::string_view> groups;
-#define DIAG(id, severity, group, name) groups.insert(group);
-#include "ir/diagnostic_kinds.def"
-#undef DIAG
+    for (const DiagKindInfo& kind : AllDiagKindInfo()) groups.insert(kind.group);
     return std::vector<std::string_view>(groups.begin(), groups.end());
   }();
   return names;
@@ -55,7 +54,7 @@ const std::vector<std::string_view>& WarningGroupNames() {
 const std::vector<std::string_view>& PassNames() {
   static const std::vector<std::string_view> names = [] {
     std::vector<std::string_view> out;
-    for (const passes::PassInfo& info : passes::RegisteredPasses()) out.push_back(info.name);
+    for (const PassListing& pass : PassList()) out.push_back(pass.name);
     return out;
   }();
   return names;

@@ -1,6 +1,7 @@
 #include "mdlc/pass_list.h"
 
 #include "passes/pass_registry.h"
+#include "tools/driver/result_access.h"
 
 namespace mdlc {
 
@@ -15,6 +16,10 @@ const std::vector<PassListing>& PassList() {
     return out;
   }();
   return list;
+}
+
+const std::string& TimingReport(const Result& result) {
+  return ResultAccess::compilation(result).timing_report();
 }
 
 }  // namespace mdlc

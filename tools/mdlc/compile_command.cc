@@ -12,6 +12,7 @@
 #include "mdlc/ir.h"
 #include "mdlc/kinematics.h"
 #include "mdlc/option_names.h"
+#include "mdlc/pass_list.h"
 #include "cli_compile.h"
 #include "q_flag.h"
 #include "subcommands.h"
@@ -75,7 +76,7 @@ int Run(const CompileCommandFlags& flags) {
   if (!compiled.result) return compiled.status;
   const Result& result = *compiled.result;
 
-  if (flags.time_passes) fmt::print(stderr, "{}", result.timing_report());
+  if (flags.time_passes) fmt::print(stderr, "{}", TimingReport(result));
   if (flags.verify_diagnostics) {
     auto problems = tools::VerifyDiagnostics(collected, result.sources());
     for (const auto& p : problems) fmt::print(stderr, "{}\n", p);

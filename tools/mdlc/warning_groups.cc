@@ -7,6 +7,8 @@
 #include <map>
 #include <utility>
 
+#include "ir/diagnostics.h"
+
 namespace mdlc::cli {
 namespace {
 
@@ -46,12 +48,10 @@ struct GroupFacts {
 
 // every group of the .def, and whether any of its kinds can be silenced
 std::map<std::string_view, GroupFacts> GroupsInDefinitions() {
-  enum Severity { Note, Warning, Error };
   std::map<std::string_view, GroupFacts> groups;
-#define DIAG(id, severity, group, name) \
-  groups[group].has_warnings_or_notes |= (Severity::severity != Severity::Error);
-#include "ir/diagnostic_kinds.def"
-#undef DIAG
+  for (const DiagKindInfo& kind : AllDiagKindInfo()) {
+    groups[kind.group].has_warnings_or_notes |= kind.default_severity != Severity::Error;
+  }
   return groups;
 }
 

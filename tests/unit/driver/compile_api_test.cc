@@ -12,6 +12,7 @@
 #include "mdlc/convert.h"
 #include "mdlc/ir.h"
 #include "mdlc/kinematics.h"
+#include "mdlc/pass_list.h"
 
 namespace mdlc {
 namespace {
@@ -223,7 +224,7 @@ TEST(CompileApi, NamingAndPipelineOptions) {
   EXPECT_TRUE(ir.ok());
   EXPECT_FALSE(ir.has_model());
   EXPECT_EQ(mdlc::IrModule(ir).bodies.size(), 2u);  // world, arm
-  EXPECT_FALSE(ir.timing_report().empty());
+  EXPECT_FALSE(TimingReport(ir).empty());
 
   Options unknown_pass;
   unknown_pass.instrumentation.passes = {"no-such-pass"};

@@ -16,6 +16,7 @@
 
 #include "mdlc/kinematics.h"
 #include "mdlc/mdlc.h"
+#include "mdlc/pass_list.h"
 
 namespace mdlc {
 namespace {
@@ -65,11 +66,11 @@ TEST_F(MeshReaderTest, BothReadersGiveTheSamePlant) {  // issue 16
   ASSERT_TRUE(here.ok());
   EXPECT_TRUE(child.diagnostics().empty());
   EXPECT_EQ(PlantJson(child), PlantJson(here));
-  EXPECT_NE(child.timing_report().find("mesh reader: /"), std::string::npos)
-      << child.timing_report();
-  EXPECT_NE(here.timing_report().find("mesh reader: in this process (asked for)"),
+  EXPECT_NE(TimingReport(child).find("mesh reader: /"), std::string::npos)
+      << TimingReport(child);
+  EXPECT_NE(TimingReport(here).find("mesh reader: in this process (asked for)"),
             std::string::npos)
-      << here.timing_report();
+      << TimingReport(here);
 }
 
 TEST_F(MeshReaderTest, ACrashingReaderIsAnErrorAtTheMesh) {  // issue 16
@@ -104,9 +105,9 @@ TEST_F(MeshReaderTest, WithoutAReaderMeshesAreReadHereAndANoteSaysSo) {  // issu
                               "names '"),
             std::string::npos)
       << note.message;
-  EXPECT_NE(r.timing_report().find("mesh reader: none, meshes read in this process"),
+  EXPECT_NE(TimingReport(r).find("mesh reader: none, meshes read in this process"),
             std::string::npos)
-      << r.timing_report();
+      << TimingReport(r);
   ::unsetenv("MDLC_MESH_READER");
   EXPECT_EQ(PlantJson(r), PlantJson(CompileWith(MeshReader::Process)));
 }

@@ -163,7 +163,7 @@ struct Instrumentation {
   std::vector<std::string> print_after;
   bool print_after_all = false;
   std::function<void(std::string_view)> print_sink;
-  /// Time each pass (Result::timing_report) / verify the IR after each pass.
+  /// Time each pass (TimingReport, mdlc/pass_list.h) / verify the IR after each pass.
   bool time_passes = false;
   bool verify_each = false;
 };
@@ -215,9 +215,6 @@ class Result {
   const backend::Plant& plant() const { return model().plant; }
   const backend::SceneGraph& scene_graph() const { return model().scene; }
   const std::vector<backend::SceneCamera>& cameras() const { return model().scene.cameras; }
-
-  /// The --time-passes report (Options::instrumentation.time_passes).
-  const std::string& timing_report() const;
 
  private:
   friend Result Compile(const std::vector<Input>& inputs, const Options& options);
