@@ -88,11 +88,6 @@ Symbol SymbolTable::Intern(std::string_view text) {
   return Symbol{id};
 }
 
-void SymbolTable::Prefetch(std::string_view text) const {
-  if (text.empty()) return;
-  __builtin_prefetch(&slots_[HashText(text) & (slots_.size() - 1)]);
-}
-
 Symbol SymbolTable::Find(std::string_view text) const {
   if (text.empty()) return Symbol{};
   const Slot& slot = slots_[Probe(text, HashText(text))];

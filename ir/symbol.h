@@ -38,11 +38,6 @@ class SymbolTable {
   Symbol Intern(std::string_view text);
   /// Returns the symbol if `text` was interned before; the empty symbol otherwise.
   Symbol Find(std::string_view text) const;
-  /// Asks the cache for the slot `text` would be found or placed in, ahead
-  /// of interning or finding it: a reader that knows the next name it will
-  /// intern (a world's next model) hides the slot's miss behind its work on
-  /// the current one. A text that is not interned next costs only the hash.
-  void Prefetch(std::string_view text) const;
   /// The text, NUL-terminated in the table's storage.
   std::string_view Text(Symbol s) const { return texts_[s.value]; }
   size_t size() const { return texts_.size(); }

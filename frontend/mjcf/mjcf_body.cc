@@ -102,9 +102,6 @@ BodyItems Collect(MjcfReader& r, const xml::XmlElement& body, const std::string&
     } else if (tag == "camera") {
       items.cameras.push_back(std::move(item));
     } else if (tag == "body") {
-      // the walk reads this body's subtree after the current body's joints
-      // and geoms: ask for it now, as the SDFormat and URDF walks do
-      e.PrefetchSubtree();
       items.bodies.push_back(std::move(item));
     } else if (tag == "composite" || tag == "attach" || tag == "replicate") {
       WarnModelGenerator(r, e, tag);

@@ -358,14 +358,6 @@ std::optional<ModelId> SdfReader::ReadWorld(const xml::XmlElement& e, const SdfF
   ModelScope world{world_id, ir::kWorldModel, &file, false, module().Intern("world")};
   std::vector<xml::XmlElement> joints;
   for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
-    // Work ahead of the cache: the subtree after the next one is fetched,
-    // and the symbol-table slot of the next model's name (fetched one turn
-    // ago), which reading that model will intern: in a world of many
-    // models the slots outgrow the cache, and each fresh name would miss.
-    if (xml::XmlElement next = child.NextSibling()) {
-      if (xml::XmlElement after = next.NextSibling()) after.PrefetchSubtree();
-      if (next.Name() == "model") module().symbols.Prefetch(next.Attribute("name").value);
-    }
     CheckChild(e, child, kWorldChildren, {});
     std::string_view tag = child.Name();
     if (tag == "model") {
@@ -520,6 +512,7 @@ void SdfReader::ReadModelBody(const xml::XmlElement& e, ModelScope& s) {
   static constexpr std::string_view kModelUnsupported[] = {"gripper"};
   std::vector<xml::XmlElement> joints, drake_elements, nested;
   for (auto child = e.FirstChild(); child; child = child.NextSibling()) {
+    // the next link's subtree while this one is read (XmlElement::PrefetchSubtree)
     if (xml::XmlElement next = child.NextSibling()) next.PrefetchSubtree();
     CheckChild(e, child, kModelChildren, kModelUnsupported);
     std::string_view tag = child.Name();

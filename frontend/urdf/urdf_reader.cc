@@ -60,7 +60,6 @@ std::optional<ModelId> UrdfReader::Read() {
     if (e.Name() == "material") ReadRobotMaterial(e);
   }
   for (auto e = robot.FirstChild(); e; e = e.NextSibling()) {
-    if (xml::XmlElement next = e.NextSibling()) next.PrefetchSubtree();
     std::string_view tag = e.Name();
     if (tag == "link") {
       if (!Ignored(e)) ReadLink(e);

@@ -12,7 +12,9 @@
 #include "frontend/mjcf/mjcf_capacity.h"
 #include "ir/diagnostics.h"
 #include "ir/source_manager.h"
+#include "tests/unit/files_under.h"
 #include "tests/unit/mjcf_test_util.h"
+#include "ir/format.h"
 
 namespace mdlc::frontend {
 namespace {
@@ -199,6 +201,80 @@ TEST(MjcfEntityRoomTest, CountsWhatTheBodyTreeAdds) {
   // (illustration and proximity), which holds what the lowering added
   EXPECT_EQ(room.geometries, 2 * 8u);
   EXPECT_LE(added.geometries, room.geometries);
+}
+
+// The room is an estimate made before lowering, from element counts: a
+// change to what a reader adds could leave it short, and nothing else would
+// fail (the tables would grow by doubling, as fast but with up to a third
+// more peak memory on the 10,000-link models). So every test model, example
+// and corpus file that one document describes (no <include>, no xacro) is
+// lowered, and its room must hold what the lowering added, per table.
+struct RoomCheck {
+  int files = 0;
+  std::vector<std::string> short_rooms;
+};
+void CheckRoomHoldsWhatEachFileAdds(const std::filesystem::path& root, RoomCheck& check) {
+  testing::ForEachFileUnder({root}, {".urdf", ".sdf", ".xml"},
+                            [&](const std::string& path, const std::string& text) {
+    SourceManager sources;
+    DiagnosticEngine diags;
+    const FileId file = sources.AddBuffer(path, text);
+    auto doc = xml::XmlDocument::Parse(file, sources, diags);
+    if (!doc || diags.has_errors() || doc->CountOf("include") > 0) return;
+    const std::optional<Format> format = FormatFromRootElement(doc->Root().Name());
+    if (!format) return;
+    EntityRoom room;
+    size_t floating = 0;  // URDF and SDFormat reserve the kinematic-tree pass's floating joints
+    if (*format == Format::Urdf) {
+      room = UrdfEntityRoom(*doc);
+      floating = doc->CountOf("robot");
+    } else if (*format == Format::Sdf) {
+      room = SdfEntityRoom(*doc);
+      floating = doc->CountOf("model");
+    } else if (*format == Format::Mjcf) {
+      room = mjcf::MjcfEntityRoom({std::shared_ptr<const xml::XmlDocument>(std::move(doc))});
+    } else {
+      return;
+    }
+    ir::Module module;
+    const ir::Module empty;
+    FrontendContext ctx{sources, diags, module, {}};
+    if (!ReadModel(file, *format, ctx) || diags.has_errors()) return;
+    ++check.files;
+    const EntityRoom added = Added(empty, module);
+    const std::pair<const char*, std::pair<size_t, size_t>> tables[] = {
+        {"bodies", {room.bodies, added.bodies}},
+        {"frames", {room.frames, added.frames}},
+        {"joints", {room.joints, added.joints + floating}},
+        {"geometries", {room.geometries, added.geometries}},
+        {"frame graph nodes", {room.frame_nodes, added.frame_nodes}},
+        {"frame scopes", {room.frame_scopes, added.frame_scopes}}};
+    for (const auto& [table, counts] : tables) {
+      if (counts.first < counts.second) {
+        check.short_rooms.push_back(fmt::format("{}: room for {} {}, {} added", path,
+                                                counts.first, table, counts.second));
+      }
+    }
+  });
+}
+
+TEST(EntityRoomTest, HoldsWhatEveryTestModelAdds) {
+  const std::filesystem::path tests = std::filesystem::path(MDLC_TEST_MODELS).parent_path();
+  RoomCheck check;
+  CheckRoomHoldsWhatEachFileAdds(tests / "models", check);
+  CheckRoomHoldsWhatEachFileAdds(tests / "golden", check);
+  CheckRoomHoldsWhatEachFileAdds(MDLC_EXAMPLES_DIR, check);
+  EXPECT_GE(check.files, 60);  // 71 when this was written
+  EXPECT_EQ(check.short_rooms, std::vector<std::string>{});
+}
+
+TEST(EntityRoomTest, HoldsWhatEveryCorpusModelAdds) {
+  const std::filesystem::path corpus = std::filesystem::path(MDLC_SHARED_DIR) / "corpus";
+  if (!std::filesystem::exists(corpus)) GTEST_SKIP() << "no corpus beside the repository";
+  RoomCheck check;
+  CheckRoomHoldsWhatEachFileAdds(corpus, check);
+  EXPECT_GE(check.files, 50);
+  EXPECT_EQ(check.short_rooms, std::vector<std::string>{});
 }
 
 }  // namespace
