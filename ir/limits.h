@@ -40,7 +40,7 @@ struct Limits {
   /// position are merged (an OBJ face's corners may count separately).
   uint64_t mesh_vertices = 20'000'000;
   /// Seconds the mesh reader may take over one mesh file before it is
-  /// stopped (it runs in its own process; see passes/mesh/mesh_reader_process.h).
+  /// stopped (it runs in its own process; see passes/mesh/reader_pool.h).
   uint64_t mesh_seconds = 60;
   /// xacro macro calls inside macro calls (a macro calling itself ends here).
   uint64_t macro_depth = 200;

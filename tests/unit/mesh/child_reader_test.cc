@@ -1,4 +1,4 @@
-// Reading meshes in a child process (issue 16, passes/mesh/child_reader.h):
+// Reading meshes in a child process (issue 16, passes/mesh/reader_pool.h):
 // the mesh reader program gives exactly what reading in this process gives,
 // and whatever goes wrong in the child (a crash, a hang, a failure, a
 // malformed reply) is an error about the file. Stand-in readers are small
