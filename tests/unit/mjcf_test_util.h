@@ -17,6 +17,7 @@
 #include "frontend/frontend.h"
 #include "ir/module.h"
 #include "tests/unit/diagnostic_claims.h"
+#include "tests/unit/test_values.h"
 
 namespace mdlc::testing {
 
@@ -50,12 +51,10 @@ class LoweredMjcf : public ClaimsDiagnostics {
   bool ok() const { return model.has_value() && !diags.has_errors(); }
 
   const ir::Body* Body(std::string_view name) const {
-    for (const auto& b : module.bodies) if (module.Text(b.name) == name) return &b;
-    return nullptr;
+    return FindNamed(module, module.bodies, name);
   }
   const ir::Joint* Joint(std::string_view name) const {
-    for (const auto& j : module.joints) if (module.Text(j.name) == name) return &j;
-    return nullptr;
+    return FindNamed(module, module.joints, name);
   }
   /// The registration of geometry `name` with any of `roles`.
   const ir::Geometry* Geometry(std::string_view name, uint8_t roles) const {

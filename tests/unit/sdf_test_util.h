@@ -25,6 +25,7 @@
 #include "tests/unit/diagnostic_claims.h"
 #include "frontend/frontend.h"
 #include "ir/module.h"
+#include "tests/unit/test_values.h"
 
 namespace mdlc::testing {
 
@@ -64,12 +65,10 @@ struct SdfFrontendResult : ClaimsDiagnostics {
   }
 
   const ir::Body* Body(std::string_view name) const {
-    for (const auto& b : module.bodies) if (module.Text(b.name) == name) return &b;
-    return nullptr;
+    return FindNamed(module, module.bodies, name);
   }
   const ir::Joint* Joint(std::string_view name) const {
-    for (const auto& j : module.joints) if (module.Text(j.name) == name) return &j;
-    return nullptr;
+    return FindNamed(module, module.joints, name);
   }
   /// The geometry `name` having one of `role` (a visual and a collision may
   /// share a name).

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ir/entities.h"
+#include "ir/module.h"
 
 namespace mdlc::testing {
 
@@ -25,6 +26,17 @@ inline Eigen::Matrix3d Sym(double xx, double yy, double zz, double xy, double xz
   Eigen::Matrix3d m;
   m << xx, xy, xz, xy, yy, yz, xz, yz, zz;
   return m;
+}
+
+/// The first entity of a module's `table` (bodies, joints) named `name`;
+/// null when none is. What the frontend fixtures' Body() and Joint() ask.
+template <typename Entity>
+const Entity* FindNamed(const ir::Module& module, const std::vector<Entity>& table,
+                        std::string_view name) {
+  for (const Entity& e : table) {
+    if (module.Text(e.name) == name) return &e;
+  }
+  return nullptr;
 }
 
 /// The property `key` of geometry `g` (null when it has none).

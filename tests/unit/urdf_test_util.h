@@ -11,6 +11,7 @@
 #include "ir/module.h"
 #include "passes/pass_manager.h"
 #include "tests/unit/diagnostic_claims.h"
+#include "tests/unit/test_values.h"
 
 namespace mdlc::testing {
 
@@ -43,12 +44,10 @@ struct Lowered : ClaimsDiagnostics {
   }
 
   const ir::Body* Body(std::string_view name) const {
-    for (const auto& b : module.bodies) if (module.Text(b.name) == name) return &b;
-    return nullptr;
+    return FindNamed(module, module.bodies, name);
   }
   const ir::Joint* Joint(std::string_view name) const {
-    for (const auto& j : module.joints) if (module.Text(j.name) == name) return &j;
-    return nullptr;
+    return FindNamed(module, module.joints, name);
   }
   /// Messages of all diagnostics, one per line, for failure output.
   std::string Messages() const {
