@@ -132,19 +132,23 @@ class EveryEntity(unittest.TestCase):
                 if "deformable" not in entry:
                     self.assertIsNone(python)
                     continue
-                expected = entry["deformable"]
-                self.assertEqual(list(expected), list(python))  # same keys, same order
-                for key, value in expected.items():
-                    if key == "wall_boundary_conditions":
-                        self.assertEqual(len(value), len(python[key]))
-                        for wall, got in zip(value, python[key]):
-                            self.assertEqual(list(wall), list(got))
-                            for k in wall:
-                                np.testing.assert_allclose(got[k], wall[k])
-                    elif isinstance(value, str) or value is None:
-                        self.assertEqual(value, python[key])
-                    else:
-                        np.testing.assert_allclose(python[key], value)
+                self.assert_same_fields(entry["deformable"], python)
+
+    def assert_same_fields(self, expected, got):
+        """plant-json's value `expected` and Python's `got`: the same keys in the
+        same order, lists item by item, numbers within float tolerance."""
+        if isinstance(expected, dict):
+            self.assertEqual(list(expected), list(got))
+            for key, value in expected.items():
+                self.assert_same_fields(value, got[key])
+        elif isinstance(expected, list) and expected and isinstance(expected[0], dict):
+            self.assertEqual(len(expected), len(got))
+            for item, got_item in zip(expected, got):
+                self.assert_same_fields(item, got_item)
+        elif isinstance(expected, str) or expected is None:
+            self.assertEqual(expected, got)
+        else:
+            np.testing.assert_allclose(got, expected)
 
     def test_parameters_match_plant_json(self):
         m = self.model
