@@ -29,12 +29,14 @@ runtime_packages=(cmake ninja-build g++ pkg-config libeigen3-dev libxml2-dev lib
 # the Python module (built and tested by `test`)
 python_packages=(python3-dev python3-numpy pybind11-dev)
 # what its tests need besides: GoogleTest, Google Benchmark, and the reference
-# implementations the differential tests compare against, Graphviz to
+# implementations the differential tests compare against (DART 6.12 with its
+# URDF and SDFormat readers for the dynamics oracle), Graphviz to
 # check that `mdlc graph -o x.svg` renders, and Chromium to open the pages
 # `mdlc view` writes, and clang with its sanitizer and libFuzzer runtimes for
 # the sanitizer suite and the fuzzers (test-only)
 test_packages=(libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
                liburdfdom-dev libsdformat-dev libmujoco-dev graphviz chromium
+               libdart-dev libdart-utils-dev libdart-utils-urdf-dev
                clang libclang-rt-14-dev)
 
 packages=("${runtime_packages[@]}")
