@@ -19,14 +19,16 @@
 //   ForwardDynamics  vdot with M vdot + C v = tau + tau_g + tau_applied
 // where tau_applied is what DynamicsOptions switches on: joint damping
 // (-d v, per velocity) and the force elements (joint springs, linear
-// spring-dampers). Reflected inertia (an actuator's rotor_inertia *
+// spring-dampers, and roll-pitch-yaw bushings, whose generalized forces come
+// from their potential 1/2 k x^2 and dissipation 1/2 b xdot^2 over their six
+// coordinates, as Drake's LinearBushingRollPitchYaw defines them). Reflected inertia (an actuator's rotor_inertia *
 // gear_ratio^2 on its joint's velocity) is part of M here, as in Drake's
 // dynamics; CalcMassMatrix (mass_matrix.h) stays the rigid-body matrix.
 //
 // Not modelled (out of scope for these functions): coupler and other
-// constraints, kinematic loops, contact, joint limits, deformable bodies
-// (massless here), and the linear_bushing_rpy force element, which throws
-// std::domain_error when force elements are requested.
+// constraints, kinematic loops, contact, joint limits and deformable bodies
+// (massless here). A spring-damper whose ends meet, or a bushing at pitch
+// +-90 degrees, throws std::domain_error (their forces are undefined there).
 #pragma once
 
 #include <Eigen/Core>
@@ -93,7 +95,7 @@ double KineticEnergy(const Plant& plant, const Eigen::VectorXd& q, const Eigen::
                      const DynamicsOptions& options = {});
 
 /// Gravity's potential energy -sum m g . p_WBcm (zero at the world origin)
-/// when options.gravity, plus the springs' 1/2 k stretch^2 when
+/// when options.gravity, plus the force elements' (1/2 k stretch^2) when
 /// options.force_elements.
 double PotentialEnergy(const Plant& plant, const Eigen::VectorXd& q,
                        const DynamicsOptions& options = {});

@@ -16,6 +16,7 @@
 #include <random>
 #include <stdexcept>
 #include <tuple>
+#include <variant>
 
 #include "backend/kinematics.h"
 #include "backend/mass_matrix.h"
@@ -350,7 +351,14 @@ TEST_F(DynamicsOnEveryJoint, EnergyRateIsThePowerOfTheActuation) {
   module_.Add(spring);
   model_ = test_util::InstantiateOk(module_);
   ASSERT_TRUE(model_);
-  ASSERT_EQ(plant().force_elements.size(), 2u);
+  // a bushing between the base and the tool, its frames named as bodies
+  LinearBushingRpy bushing;
+  bushing.frame_A = "robot::base";
+  bushing.frame_C = "robot::tool";
+  bushing.torque_stiffness = Vector3d(3, 4, 5);
+  bushing.force_stiffness = Vector3d(20, 30, 40);
+  model_->plant.force_elements.push_back(bushing);
+  ASSERT_EQ(plant().force_elements.size(), 3u);
 
   DynamicsOptions conservative;
   conservative.force_elements = true;
@@ -379,6 +387,27 @@ TEST_F(DynamicsOnEveryJoint, EnergyRateIsThePowerOfTheActuation) {
     const double dV = PotentialEnergy(plant(), Advance(plant(), s.q, e), springs_only) -
                       PotentialEnergy(plant(), Advance(plant(), s.q, -e), springs_only);
     EXPECT_NEAR(applied[k], -dV / 2e-6, 1e-5 * Scale(applied)) << "velocity " << k;
+  }
+  // dampers only: their power is minus twice the dissipation function, so
+  // it is negative whatever v is
+  Plant& damped = model_->plant;
+  for (ForceElement& element : damped.force_elements) {
+    if (auto* b = std::get_if<LinearBushingRpy>(&element)) {
+      b->torque_stiffness.setZero();
+      b->force_stiffness.setZero();
+      b->torque_damping = Vector3d(1, 2, 3);
+      b->force_damping = Vector3d(4, 5, 6);
+    } else if (auto* rope = std::get_if<LinearSpringDamper>(&element)) {
+      rope->stiffness = 0;
+      rope->damping = 7;
+    } else {
+      std::get<JointSpring>(element).stiffness = 0;
+    }
+  }
+  for (int trial = 0; trial < 3; ++trial) {
+    const State t = RandomState(rng, plant());
+    EXPECT_LT(AppliedForces(plant(), t.q, t.v, springs_only).dot(t.v), 0);
+    EXPECT_NEAR(AppliedForces(plant(), t.q, VectorXd::Zero(plant().num_velocities), springs_only).norm(), 0, 1e-12);
   }
 }
 
@@ -419,13 +448,12 @@ TEST(Dynamics, PendulumClosedForm) {
   }
 }
 
-TEST(Dynamics, RejectsWrongSizesSingularMassAndBushings) {
+TEST(Dynamics, RejectsWrongSizesAndSingularMass) {
   ModelBuilder b;
   const BodyId massless = b.AddMasslessBody("massless");
   b.AddJoint("pivot", JointType::Revolute, ir::kWorldBody, massless, {}, Vector3d::UnitY());
   auto model = test_util::InstantiateOk(b.module());
   ASSERT_TRUE(model);
-  model->plant.force_elements.push_back(LinearBushingRpy{});
   const Plant& plant = model->plant;
   const VectorXd one = VectorXd::Zero(1), two = VectorXd::Zero(2);
   EXPECT_THROW(InverseDynamics(plant, two, one, one), std::invalid_argument);
@@ -434,9 +462,6 @@ TEST(Dynamics, RejectsWrongSizesSingularMassAndBushings) {
   EXPECT_THROW(ForwardDynamics(plant, one, one, two), std::invalid_argument);
   EXPECT_THROW(GravityForces(plant, two), std::invalid_argument);
   EXPECT_THROW(ForwardDynamics(plant, one, one, one), std::domain_error);
-  DynamicsOptions with_elements;
-  with_elements.force_elements = true;
-  EXPECT_THROW(InverseDynamics(plant, one, one, one, with_elements), std::domain_error);
   EXPECT_THROW(CalcCenterOfMass(plant, one, {}), std::domain_error);
   EXPECT_EQ(InverseDynamics(plant, one, one, one).size(), 1);
 }
