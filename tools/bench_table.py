@@ -12,6 +12,7 @@ does; the one-shot rows pay every first touch.
 
     python3 tools/bench_table.py [BUILD_DIR] [--repetitions=3] [--rounds=5]
                                  [--readme=README.md] [--corpus=DIR] [--only-meshes]
+                                 [--only-dynamics]
 
 BUILD_DIR (default: build) must hold mdlc, mdlc_bench, mdlc_bench_sdf and
 mdlc_bench_dmd. When it also holds mdlc_bench_meshes, a last part times
@@ -19,7 +20,10 @@ mesh-heavy models (issue 57): synthetic ones and real ones from the corpus
 (--corpus, default $MDLC_CORPUS, else ../shared/corpus), the mesh cache cold
 and warm, meshes read by child processes and in-process, and MuJoCo 2.2.2's
 load of the same MJCF files, in wall time (the child readers' work is in
-other processes); --only-meshes runs that part alone. Ratios are paired: one process runs a family's floor and
+other processes); --only-meshes runs that part alone. When it holds
+mdlc_bench_dynamics, a part after it times mdlc's inverse dynamics, mass
+matrix and forward dynamics per call against MuJoCo 2.2.2's on the same
+MJCF files (--only-dynamics runs it alone). Ratios are paired: one process runs a family's floor and
 compile at both sizes, --repetitions times each, interleaved at random, and
 the family's ratios are read from that process's fastest CPU times; each
 number in the table is the median over --rounds such processes. A slow
@@ -317,6 +321,130 @@ def add_mesh_part(add, exe, corpus, reps, min_time, rounds):
         f"loads | worst {fmt_ratio(worst_mujoco)} | {verdict(worst_mujoco, 2, at_most=False)} |")
 
 
+# (label, model) of mdlc_bench_dynamics (tests/bench/bench_dynamics.cc):
+# rigid-body dynamics per call against MuJoCo 2.2.2 on the same MJCF file.
+# MuJoCo 2.2.2 reads no element nested deeper than 100, so 96 links is the
+# longest chain it loads and chain_n1000 has mdlc's rows alone.
+DYNAMICS_MODELS = [
+    ("Menagerie KUKA iiwa 14", "iiwa14"),
+    ("MuJoCo humanoid", "humanoid"),
+    ("chain, 10 links", "chain_n10"),
+    ("chain, 96 links", "chain_n96"),
+    ("chain, 1000 links", "chain_n1000"),
+    ("tree, 1000 links", "tree_n1000"),
+]
+# (operation, MuJoCo's fair pipeline from qpos, MuJoCo's call alone)
+DYNAMICS_OPS = [
+    ("inverse_dynamics", "mujoco", "mujoco_rne"),
+    ("mass_matrix", "mujoco", "mujoco_crb"),
+    ("forward_dynamics", "mujoco", None),
+]
+
+
+def fmt_us(t_ms):
+    """A time given in ms, written in microseconds."""
+    return "–" if t_ms is None else fmt_ms(t_ms * 1000)
+
+
+def add_dynamics_part(add, exe, corpus, reps, min_time, rounds):
+    """The dynamics part: mdlc's inverse dynamics, mass matrix and forward
+    dynamics per call against MuJoCo 2.2.2's on the same files. Each model's
+    benchmarks run interleaved in a process of their own per round; every
+    number is the median over the rounds of one process's fastest CPU time."""
+    if not os.path.exists(exe):
+        print(f"bench_table: {exe} is not built; skipping the dynamics part", file=sys.stderr)
+        return
+    model_rounds = {model: [] for _, model in DYNAMICS_MODELS}
+    counters, errors = {}, {}
+    for _ in range(rounds):
+        for _, model in DYNAMICS_MODELS:
+            runs = benchmark_runs(exe, rf"^[a-z_]+/[a-z_]+/{model}$", reps, min_time,
+                                  [f"--corpus={corpus}"])
+            model_rounds[model].append(fastest_times(runs))
+            for b in runs:
+                if b.get("error_occurred"):
+                    # one line per model and reason: a model MuJoCo cannot load fails every row
+                    op, impl, _ = b["run_name"].split("/")
+                    message = " ".join(b.get("error_message", "").split())
+                    errors.setdefault((model, message), set()).add(f"{op}/{impl}")
+                elif b.get("run_type") == "iteration":
+                    c = counters.setdefault(model, {})
+                    c["nv"] = int(b.get("nv", 0))
+                    if "rel_diff" in b:
+                        c[b["run_name"]] = b["rel_diff"]
+
+    def med(model, name):
+        return median([t[name] for t in model_rounds[model] if name in t])
+
+    add("Rigid-body dynamics per call (`mdlc_bench_dynamics`): mdlc's `InverseDynamics`, "
+        "`MassMatrix` and `ForwardDynamics` (each from q, its own kinematics included) "
+        "against what MuJoCo 2.2.2 needs for the same answer from qpos: "
+        "`mj_kinematics`, `mj_comPos`, `mj_comVel`, `mj_rne` (inverse dynamics); "
+        "`mj_kinematics`, `mj_comPos`, `mj_crb`, `mj_fullM` (the dense mass matrix); "
+        "`mj_forward` with constraints, contact, passive forces, actuation and sensors "
+        "disabled (forward dynamics); and MuJoCo's `mj_rne` and `mj_crb` + `mj_fullM` alone, on "
+        "kinematics computed before. Same MJCF file, same random state, gravity on, no "
+        "armature, damping or springs on either side. Microseconds, CPU time; each model's "
+        f"benchmarks interleaved in one process, fastest of {reps} runs, median over "
+        f"{rounds} processes. Agreement: the largest difference between the two answers "
+        "over the answer's largest entry. Goal: mdlc ≤ 1.0x MuJoCo's time.")
+    add("")
+    add("| model (nv) | inverse dynamics, mdlc / MuJoCo (µs) | mdlc/MuJoCo | `mj_rne` alone (µs) "
+        "| mass matrix, mdlc / MuJoCo (µs) | mdlc/MuJoCo | `mj_crb`+`mj_fullM` alone (µs) "
+        "| forward dynamics, mdlc / MuJoCo (µs) | mdlc/MuJoCo | agreement |")
+    add("|---|---|---|---|---|---|---|---|---|---|")
+    worst = {}
+    for label, model in DYNAMICS_MODELS:
+        nv = counters.get(model, {}).get("nv")
+        cells = [f"{label} ({'–' if nv is None else nv})"]
+        for op, pipeline, alone in DYNAMICS_OPS:
+            mdlc_t, mj_t = med(model, f"{op}/mdlc/{model}"), med(model, f"{op}/{pipeline}/{model}")
+            r = ratio(mdlc_t, mj_t)
+            if r is not None:
+                worst[op] = max(worst.get(op, r), r)
+            cells += [f"{fmt_us(mdlc_t)} / {fmt_us(mj_t)}", fmt_ratio(r)]
+            if alone:
+                cells.append(fmt_us(med(model, f"{op}/{alone}/{model}")))
+        diffs = [v for k, v in counters.get(model, {}).items() if k != "nv"]
+        cells.append("–" if not diffs else f"{max(diffs):.0e}")
+        add("| " + " | ".join(cells) + " |")
+    add("")
+
+    # linearity: mdlc's time per velocity along the chains
+    add("mdlc per velocity along the chains (µs per dof; goal: the same at every length, "
+        "O(n) for inverse dynamics; the dense mass matrix has n² entries and forward "
+        "dynamics factors it):")
+    add("")
+    chains = [m for m in ("chain_n10", "chain_n96", "chain_n1000", "tree_n1000")]
+    add("| operation | " + " | ".join(chains) + " | growth per dof, chain 96 → 1000 |")
+    add("|---|" + "---|" * (len(chains) + 1))
+    growth = {}
+    for op, _, _ in DYNAMICS_OPS:
+        per_dof = {}
+        for model in chains:
+            nv = counters.get(model, {}).get("nv")
+            t = med(model, f"{op}/mdlc/{model}")
+            per_dof[model] = None if not nv or t is None else t * 1000 / nv
+        growth[op] = ratio(per_dof["chain_n1000"], per_dof["chain_n96"])
+        add(f"| {op.replace('_', ' ')} | "
+            + " | ".join("–" if per_dof[m] is None else f"{per_dof[m]:.3g}" for m in chains)
+            + f" | {fmt_ratio(growth[op])} |")
+    add("")
+    if errors:
+        add("Not measured:")
+        add("")
+        for (model, message), rows in sorted(errors.items()):
+            add(f"- `{model}`, {', '.join(f'`{r}`' for r in sorted(rows))}: {message}")
+        add("")
+    add("| goal | measured | |")
+    add("|---|---|---|")
+    for op, _, _ in DYNAMICS_OPS:
+        add(f"| {op.replace('_', ' ')} ≤ 1.0x MuJoCo 2.2.2, every model both load | worst "
+            f"{fmt_ratio(worst.get(op))} | {verdict(worst.get(op), 1.0)} |")
+    add(f"| inverse dynamics linear in bodies: time per dof, chain of 96 to 1000 ≤ 1.1x "
+        f"| {fmt_ratio(growth['inverse_dynamics'])} | {verdict(growth['inverse_dynamics'], 1.1)} |")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -334,11 +462,15 @@ def main():
                              "(default: $MDLC_CORPUS, else ../shared/corpus)")
     parser.add_argument("--only-meshes", action="store_true",
                         help="run the meshes part (mdlc_bench_meshes) alone")
+    parser.add_argument("--only-dynamics", action="store_true",
+                        help="run the dynamics part (mdlc_bench_dynamics) alone")
     args = parser.parse_args()
     if args.rounds < 1:
         parser.error("--rounds must be at least 1: every number is a median over them")
     if args.only_meshes and args.readme:
         parser.error("--readme replaces the whole table, which --only-meshes does not make")
+    if args.only_dynamics and args.readme:
+        parser.error("--readme replaces the whole table, which --only-dynamics does not make")
 
     bench_dir = os.path.join(args.build, "tests", "bench")
     mdlc = os.path.join(args.build, "tools", "mdlc", "mdlc")
@@ -348,6 +480,12 @@ def main():
     if args.only_meshes:
         lines = []
         add_mesh_part(lines.append, meshes_exe, corpus, reps, min_time, args.rounds)
+        print("\n".join(lines))
+        return
+    dynamics_exe = os.path.join(bench_dir, "mdlc_bench_dynamics")
+    if args.only_dynamics:
+        lines = []
+        add_dynamics_part(lines.append, dynamics_exe, corpus, reps, min_time, args.rounds)
         print("\n".join(lines))
         return
 
@@ -601,6 +739,9 @@ def main():
     if os.path.exists(meshes_exe):
         add("")
         add_mesh_part(add, meshes_exe, corpus, reps, min_time, args.rounds)
+    if os.path.exists(dynamics_exe):
+        add("")
+        add_dynamics_part(add, dynamics_exe, corpus, reps, min_time, args.rounds)
 
     table = "\n".join(lines)
     print(table)
