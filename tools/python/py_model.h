@@ -118,4 +118,7 @@ Model MakeModel(std::shared_ptr<const Result> result, pybind11::list diagnostics
 /// Adds the classes above to the module.
 void BindModel(pybind11::module_& m);
 
+/// Adds Model's dynamics methods and CenterOfMass (py_dynamics.cc); after BindModel.
+void BindDynamics(pybind11::module_& m);
+
 }  // namespace mdlc::python

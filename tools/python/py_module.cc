@@ -269,6 +269,7 @@ PYBIND11_MODULE(_mdlc, m) {
       });
 
   BindModel(m);
+  BindDynamics(m);
 
   // (inputs: [(path, text or None)], format or None, {keyword: value},
   // function): the options by the keywords of mdlc.compile, each checked
