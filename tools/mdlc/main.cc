@@ -12,6 +12,7 @@
 //   mdlc assets FILE... [--format json] every file the model uses, found or not
 //   mdlc view FILE... -o model.html   the model in 3D, in one offline HTML page
 //   mdlc check PATH... [-j N] [--format text|json|sarif] [--skip-ok REPORT.jsonl]
+//   mdlc dynamics FILE... [--q J=X] [--v J=X] [--vdot J=X] [--tau J=X] [--format json]
 //   mdlc --list-passes
 //   mdlc --list-warnings            the diagnostic groups -W selects
 //
@@ -54,6 +55,7 @@ int main(int argc, char** argv) {
       cli::AddCompileCommand(app), cli::AddConvertCommand(app), cli::AddTreeCommand(app),
       cli::AddStatsCommand(app),   cli::AddGraphCommand(app),   cli::AddAssetsCommand(app),
       cli::AddViewCommand(app),    cli::AddCheckCommand(app),   cli::AddXacroCommand(app),
+      cli::AddDynamicsCommand(app),
   };
 
   try {

@@ -23,5 +23,6 @@ Subcommand AddAssetsCommand(CLI::App& app);   // assets_command.cc
 Subcommand AddViewCommand(CLI::App& app);     // view_command.cc
 Subcommand AddCheckCommand(CLI::App& app);    // check_command.cc
 Subcommand AddXacroCommand(CLI::App& app);    // xacro_command.cc
+Subcommand AddDynamicsCommand(CLI::App& app); // dynamics_command.cc
 
 }  // namespace mdlc::cli
