@@ -20,10 +20,11 @@ mesh-heavy models (issue 57): synthetic ones and real ones from the corpus
 (--corpus, default $MDLC_CORPUS, else ../shared/corpus), the mesh cache cold
 and warm, meshes read by child processes and in-process, and MuJoCo 2.2.2's
 load of the same MJCF files, in wall time (the child readers' work is in
-other processes); --only-meshes runs that part alone. When it holds
-mdlc_bench_dynamics, a part after it times mdlc's inverse dynamics, mass
-matrix and forward dynamics per call against MuJoCo 2.2.2's on the same
-MJCF files (--only-dynamics runs it alone). Ratios are paired: one process runs a family's floor and
+other processes); --only-meshes runs that part alone. --only-dynamics
+runs mdlc_bench_dynamics alone (never part of the whole table: the README
+keeps it in a section of its own): mdlc's inverse dynamics, mass matrix
+and forward dynamics per call against MuJoCo 2.2.2's on the same MJCF
+files. Ratios are paired: one process runs a family's floor and
 compile at both sizes, --repetitions times each, interleaved at random, and
 the family's ratios are read from that process's fastest CPU times; each
 number in the table is the median over --rounds such processes. A slow
@@ -739,9 +740,6 @@ def main():
     if os.path.exists(meshes_exe):
         add("")
         add_mesh_part(add, meshes_exe, corpus, reps, min_time, args.rounds)
-    if os.path.exists(dynamics_exe):
-        add("")
-        add_dynamics_part(add, dynamics_exe, corpus, reps, min_time, args.rounds)
 
     table = "\n".join(lines)
     print(table)
