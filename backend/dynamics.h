@@ -1,7 +1,7 @@
 // dynamics.h - velocities, accelerations and rigid-body dynamics of the plant
 // (the subset of Drake's MultibodyPlant calculations a controller or planner
-// needs), by the recursive Newton-Euler algorithm in world Plücker
-// coordinates (spatial.h).
+// needs), by the recursive Newton-Euler and articulated-body algorithms in
+// world Plücker coordinates (tree_sweep.h).
 //
 // Coordinates are the plant's q and v (kinematics.h says what they are per
 // joint type: a quaternion_floating joint has q = [qw qx qy qz px py pz] and
@@ -83,9 +83,10 @@ Eigen::VectorXd AppliedForces(const Plant& plant, const Eigen::VectorXd& q,
 /// Each velocity's reflected inertia (0 where no actuator drives it).
 Eigen::VectorXd ReflectedInertia(const Plant& plant);
 
-/// vdot for (q, v, tau): solves (M + reflected) vdot = tau + tau_g +
-/// tau_applied - C v with a dense LDLT (O(nv^3)). Throws std::domain_error
-/// when M is singular (a massless body at the end of a joint).
+/// vdot for (q, v, tau): the solution of (M + reflected) vdot = tau + tau_g
+/// + tau_applied - C v, by the articulated-body algorithm (O(n) in the
+/// bodies; M is never formed). Throws std::domain_error when a joint moves
+/// only massless bodies (M is singular).
 Eigen::VectorXd ForwardDynamics(const Plant& plant, const Eigen::VectorXd& q,
                                 const Eigen::VectorXd& v, const Eigen::VectorXd& tau,
                                 const DynamicsOptions& options = {});

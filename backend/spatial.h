@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace mdlc::backend {
 
@@ -57,6 +58,33 @@ inline MotionSubspace ToWorldPlucker(const MotionSubspace& H, const Eigen::Matri
     S.col(k).tail<3>() = v_Mo + p_WMo.cross(w);  // v_O = v_Mo + w x (O - Mo)
   }
   return S;
+}
+
+/// The angular and linear halves of a spatial vector, and the vector of two halves.
+inline Eigen::Vector3d Angular(const Vector6d& x) { return x.head<3>(); }
+inline Eigen::Vector3d Linear(const Vector6d& x) { return x.tail<3>(); }
+inline Vector6d Spatial(const Eigen::Vector3d& angular, const Eigen::Vector3d& linear) {
+  Vector6d x;
+  x << angular, linear;
+  return x;
+}
+
+/// a x m (crm(a) m): the rate of motion vector m carried by a frame moving
+/// with velocity a.
+inline Vector6d CrossMotion(const Vector6d& a, const Vector6d& m) {
+  return Spatial(Angular(a).cross(Angular(m)),
+                 Linear(a).cross(Angular(m)) + Angular(a).cross(Linear(m)));
+}
+
+/// a x* f: the same for a force vector f = [moment about O; force].
+inline Vector6d CrossForce(const Vector6d& a, const Vector6d& f) {
+  return Spatial(Angular(a).cross(Angular(f)) + Linear(a).cross(Linear(f)),
+                 Angular(a).cross(Linear(f)));
+}
+
+/// The velocity of the body-fixed point at p_W, from a Plücker velocity.
+inline Eigen::Vector3d PointVelocity(const Vector6d& V, const Eigen::Vector3d& p_W) {
+  return Linear(V) + Angular(V).cross(p_W);
 }
 
 }  // namespace mdlc::backend

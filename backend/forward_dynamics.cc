@@ -1,0 +1,105 @@
+// forward_dynamics.cc - vdot by the articulated-body algorithm (ABA), O(n)
+// in the bodies, in Plücker coordinates about the world origin like the
+// other sweeps (tree_sweep.h). Per joint j with child c and parent p:
+//   up the tree:   U = I^A_c S, D = S^T U (+ reflected inertia),
+//                  u = tau_j - S^T p^A_c,
+//                  I^A_p += I^A_c - U D^-1 U^T,
+//                  p^A_p += p^A_c + (I^A_c - U D^-1 U^T) c_j + U D^-1 u
+//   down the tree: a' = A_p + c_j, vdot_j = D^-1 (u - U^T a'), A_c = a' + S vdot_j
+// where c_j is the velocity-product acceleration of the RNEA and
+// p^A_c starts as V_c x* I_c V_c minus the applied body forces.
+#include <Eigen/Cholesky>
+#include <stdexcept>
+#include <string>
+
+#include "backend/applied_forces.h"
+#include "backend/dynamics.h"
+#include "backend/tree_sweep.h"
+
+namespace mdlc::backend {
+
+using Eigen::VectorXd;
+
+namespace {
+
+using JointMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
+using JointVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
+
+/// What the sweep up the tree leaves for the sweep down, per joint.
+struct ArticulatedJoint {
+  MotionSubspace U;    // I^A S
+  JointMatrix D_inv;   // (S^T I^A S + reflected)^-1
+  JointVector u;       // tau - S^T p^A
+  Vector6d c;          // velocity-product acceleration
+};
+
+JointMatrix InvertJointInertia(const Plant& plant, const PlantJoint& joint, const JointMatrix& D) {
+  const Eigen::LDLT<JointMatrix> ldlt(D);
+  const JointVector d = ldlt.vectorD();
+  if (ldlt.info() != Eigen::Success || !(d.minCoeff() > 1e-12 * std::max(1e-300, d.maxCoeff()))) {
+    throw std::domain_error("joint '" + plant.ScopedName(joint) +
+                            "' moves only massless bodies (its articulated inertia is singular), "
+                            "so the accelerations are undefined");
+  }
+  return ldlt.solve(JointMatrix::Identity(joint.nv, joint.nv));
+}
+
+}  // namespace
+
+VectorXd ForwardDynamics(const Plant& plant, const VectorXd& q, const VectorXd& v,
+                         const VectorXd& tau, const DynamicsOptions& options) {
+  RequireState(plant, q, &v, &tau, "tau");
+  const TreeState s = SweepDown(plant, q, &v);
+  VectorXd tau_total = tau;
+  std::vector<Vector6d> f_ext;
+  CollectAppliedForces(plant, s, q, v, options, tau_total, f_ext);
+  const VectorXd reflected = options.reflected_inertia ? ReflectedInertia(plant)
+                                                       : VectorXd::Zero(plant.num_velocities);
+
+  std::vector<Matrix6d> IA = s.I;
+  std::vector<Vector6d> pA(plant.bodies.size());
+  for (size_t b = 0; b < plant.bodies.size(); ++b) {
+    pA[b] = CrossForce(s.V[b], s.I[b] * s.V[b]);
+    if (!f_ext.empty()) pA[b] -= f_ext[b];
+  }
+  std::vector<ArticulatedJoint> art(plant.joints.size());
+  for (auto it = plant.joint_order.rbegin(); it != plant.joint_order.rend(); ++it) {
+    const PlantJoint& joint = plant.joint(*it);
+    const MotionSubspace& S = s.joint[it->index()].S;
+    ArticulatedJoint& aj = art[it->index()];
+    const int p = joint.parent.index(), c = joint.child.index();
+    aj.c = CrossMotion(s.V[p], S * v.segment(joint.v_start, joint.nv)) +
+           s.joint[it->index()].subspace_rate_term;
+    Matrix6d Ia = IA[c];
+    Vector6d pa = pA[c];
+    if (joint.nv > 0) {
+      aj.U = IA[c] * S;
+      JointMatrix D = S.transpose() * aj.U;
+      D.diagonal() += reflected.segment(joint.v_start, joint.nv);
+      aj.D_inv = InvertJointInertia(plant, joint, D);
+      aj.u = tau_total.segment(joint.v_start, joint.nv) - S.transpose() * pA[c];
+      Ia -= aj.U * aj.D_inv * aj.U.transpose();
+      pa += aj.U * (aj.D_inv * aj.u);
+    }
+    pa += Ia * aj.c;
+    IA[p] += Ia;
+    pA[p] += pa;
+  }
+
+  VectorXd vdot = VectorXd::Zero(plant.num_velocities);
+  std::vector<Vector6d> A(plant.bodies.size(), Vector6d::Zero());
+  A[0] = GravityBaseAcceleration(plant, options.gravity);
+  for (JointId id : plant.joint_order) {
+    const PlantJoint& joint = plant.joint(id);
+    const ArticulatedJoint& aj = art[id.index()];
+    const Vector6d a = A[joint.parent.index()] + aj.c;
+    A[joint.child.index()] = a;
+    if (joint.nv == 0) continue;
+    const JointVector vdot_j = aj.D_inv * (aj.u - aj.U.transpose() * a);
+    vdot.segment(joint.v_start, joint.nv) = vdot_j;
+    A[joint.child.index()] += s.joint[id.index()].S * vdot_j;
+  }
+  return vdot;
+}
+
+}  // namespace mdlc::backend

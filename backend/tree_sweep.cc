@@ -1,0 +1,156 @@
+// tree_sweep.cc - the sweeps of tree_sweep.h.
+#include "backend/tree_sweep.h"
+
+#include <stdexcept>
+#include <string>
+
+#include "backend/kinematics.h"
+
+namespace mdlc::backend {
+
+using Eigen::Vector3d;
+using Eigen::VectorXd;
+
+namespace {
+
+void RequireSize(const char* what, const VectorXd& x, int size) {
+  if (x.size() != size) {
+    throw std::invalid_argument(std::string(what) + " has " + std::to_string(x.size()) +
+                                " entries; the plant has " + std::to_string(size));
+  }
+}
+
+/// (dH_FM/dt) v_j in F, about M's origin, for the joints whose H turns with q.
+Vector6d JointSubspaceRate(const PlantJoint& joint, const Eigen::Ref<const VectorXd>& q_j,
+                           const Eigen::Ref<const VectorXd>& v_j) {
+  switch (joint.type) {
+    case ir::JointType::Universal: {
+      // column 1 is Rx(q0) y, turning about x at v0
+      const Vector3d y_F = RotationAboutAxis(Vector3d::UnitX(), q_j[0]) * Vector3d::UnitY();
+      return Spatial(v_j[0] * v_j[1] * Vector3d::UnitX().cross(y_F), Vector3d::Zero());
+    }
+    case ir::JointType::Curvilinear: {
+      // the tangent turns about the plane normal at curvature * sdot
+      const ir::CurvilinearPath& path = joint.curvilinear_path;
+      const Vector3d tangent = Linear(path.VelocityAt(q_j[0]));
+      const double kappa = path.CurvatureAt(q_j[0]);
+      return Spatial(Vector3d::Zero(),
+                     kappa * v_j[0] * v_j[0] * path.plane_normal.cross(tangent));
+    }
+    default:
+      return Vector6d::Zero();
+  }
+}
+
+/// Moves [w; v] about point Fo in F to world Plücker about O.
+Vector6d FrameToWorld(const Transform& X_WF, const Vector6d& x_F) {
+  const Vector3d w = X_WF.R * Angular(x_F);
+  return Spatial(w, X_WF.R * Linear(x_F) + X_WF.p.cross(w));
+}
+
+}  // namespace
+
+void RequireState(const Plant& plant, const VectorXd& q, const VectorXd* v,
+                  const VectorXd* v_like, const char* v_like_name) {
+  RequireSize("q", q, plant.num_positions);
+  if (v) RequireSize("v", *v, plant.num_velocities);
+  if (v_like) RequireSize(v_like_name, *v_like, plant.num_velocities);
+}
+
+TreeState SweepDown(const Plant& plant, const VectorXd& q, const VectorXd* v) {
+  TreeState s;
+  s.X_WB = BodyPosesInWorld(plant, q);
+  s.V.assign(plant.bodies.size(), Vector6d::Zero());
+  s.joint.resize(plant.joints.size());
+  s.I.resize(plant.bodies.size());
+  for (size_t b = 0; b < plant.bodies.size(); ++b) {
+    const PlantBody& body = plant.bodies[b];
+    const Eigen::Matrix3d& R_WB = s.X_WB[b].R;
+    s.I[b] = SpatialInertiaAboutOrigin(body.mass, s.X_WB[b] * body.p_BoBcm_B,
+                                       R_WB * body.I_BBcm_B * R_WB.transpose());
+  }
+  for (JointId id : plant.joint_order) {
+    const PlantJoint& joint = plant.joint(id);
+    JointState& js = s.joint[id.index()];
+    const auto q_j = q.segment(joint.q_start, joint.nq);
+    const Transform X_WF = JointFrameInWorld(plant, s.X_WB, id);
+    const Vector3d p_WMo = s.X_WB[joint.child.index()] * joint.X_CM.p;
+    const MotionSubspace H = JointMotionSubspace(joint, q_j);
+    js.S = ToWorldPlucker(H, X_WF.R, p_WMo);
+    js.subspace_rate_term.setZero();
+    if (!v) continue;
+    const auto v_j = v->segment(joint.v_start, joint.nv);
+    const Vector6d V_FM = H * v_j;  // about Mo, in F
+    s.V[joint.child.index()] = s.V[joint.parent.index()] + js.S * v_j;
+    // d/dt of S' v at fixed v, S' = H moved to F's origin: the rate of H
+    // itself, and the shift p_FMo x w changing as Mo moves and w turns
+    const Vector3d p_FMo = JointPose(joint, q_j).p;
+    const Vector6d H_rate = JointSubspaceRate(joint, q_j, v_j);
+    const Vector6d S_rate_F =
+        Spatial(Angular(H_rate), Linear(H_rate) + Linear(V_FM).cross(Angular(V_FM)) +
+                                     p_FMo.cross(Angular(H_rate)));
+    js.subspace_rate_term = FrameToWorld(X_WF, S_rate_F);
+  }
+  return s;
+}
+
+/// Generalized forces of body forces f (world Plücker, by body; empty:
+/// none): tau_j = S_j^T (the sum of f over j's subtree).
+VectorXd GeneralizedFromBodyForces(const Plant& plant, const TreeState& s,
+                                   std::vector<Vector6d> f) {
+  VectorXd tau = VectorXd::Zero(plant.num_velocities);
+  if (f.empty()) return tau;
+  for (auto it = plant.joint_order.rbegin(); it != plant.joint_order.rend(); ++it) {
+    const PlantJoint& joint = plant.joint(*it);
+    if (joint.nv > 0) {
+      tau.segment(joint.v_start, joint.nv) = s.joint[it->index()].S.transpose() * f[joint.child.index()];
+    }
+    f[joint.parent.index()] += f[joint.child.index()];
+  }
+  return tau;
+}
+
+VectorXd Rnea(const Plant& plant, const TreeState& s, const VectorXd* v, const VectorXd* vdot,
+              const Vector6d& A_world, const std::vector<Vector6d>& f_ext) {
+  std::vector<Vector6d> A(plant.bodies.size(), Vector6d::Zero());
+  std::vector<Vector6d> f(plant.bodies.size(), Vector6d::Zero());
+  A[0] = A_world;
+  for (JointId id : plant.joint_order) {
+    const PlantJoint& joint = plant.joint(id);
+    const JointState& js = s.joint[id.index()];
+    const int p = joint.parent.index(), c = joint.child.index();
+    A[c] = A[p];
+    if (vdot) A[c] += js.S * vdot->segment(joint.v_start, joint.nv);
+    if (v) {
+      A[c] += CrossMotion(s.V[p], js.S * v->segment(joint.v_start, joint.nv)) +
+              js.subspace_rate_term;
+    }
+    f[c] = s.I[c] * A[c] + CrossForce(s.V[c], s.I[c] * s.V[c]);
+    if (!f_ext.empty()) f[c] -= f_ext[c];
+  }
+  return GeneralizedFromBodyForces(plant, s, std::move(f));
+}
+
+Vector6d GravityBaseAcceleration(const Plant& plant, bool gravity) {
+  return gravity ? Spatial(Vector3d::Zero(), -plant.gravity) : Vector6d::Zero();
+}
+
+Vector3d CenterOfMassInWorld(const Plant& plant, const TreeState& s, size_t b) {
+  return s.X_WB[b] * plant.bodies[b].p_BoBcm_B;
+}
+
+void AddPointJacobian(const Plant& plant, const TreeState& s, BodyId body, const Vector3d& p_W,
+                      double sign, Eigen::MatrixXd& J) {
+  for (BodyId b = body; !plant.body(b).is_world; b = plant.body(b).parent) {
+    const JointId id = plant.body(b).inbound_joint;
+    const PlantJoint& joint = plant.joint(id);
+    const MotionSubspace& S = s.joint[id.index()].S;
+    for (int k = 0; k < joint.nv; ++k) {
+      const Vector6d col = S.col(k);
+      J.col(joint.v_start + k).head<3>() += sign * Angular(col);
+      J.col(joint.v_start + k).tail<3>() += sign * PointVelocity(col, p_W);
+    }
+  }
+}
+
+}  // namespace mdlc::backend
