@@ -314,7 +314,7 @@ int Run(const DynamicsFlags& flags) {
   options.force_elements = flags.force_elements;
   try {
     d = Compute(result, std::move(d), options);
-  } catch (const std::exception& e) {  // a force element the dynamics do not model
+  } catch (const std::exception& e) {  // a force element whose force is undefined here
     fmt::print(stderr, "mdlc: error: {}\n", e.what());
     return 1;
   }
@@ -351,7 +351,7 @@ Subcommand AddDynamicsCommand(CLI::App& app) {
   command->add_flag("--joint-damping", flags->joint_damping,
                     "Include the joints' viscous damping (-d v)");
   command->add_flag("--force-elements", flags->force_elements,
-                    "Include joint springs and linear spring-dampers");
+                    "Include joint springs, linear spring-dampers and bushings");
   return {command, [flags] { return Run(*flags); }};
 }
 

@@ -37,8 +37,9 @@ constexpr const char* kConventions =
 // The options the dynamics methods take by keyword.
 constexpr const char* kOptions =
     "gravity: include the plant's gravity; joint_damping: -damping * v on each velocity; "
-    "force_elements: joint springs and linear spring-dampers (a linear_bushing_rpy raises "
-    "ValueError); reflected_inertia: each actuator's rotor_inertia * gear_ratio^2 added to M's "
+    "force_elements: joint springs, linear spring-dampers and roll-pitch-yaw bushings (a "
+    "spring-damper whose ends meet, or a bushing at pitch +-90 degrees, raises ValueError); "
+    "reflected_inertia: each actuator's rotor_inertia * gear_ratio^2 added to M's "
     "diagonal, as Drake does.";
 
 std::string Doc(const std::string& what, bool with_options = false) {
@@ -209,7 +210,8 @@ void BindDynamics(py::module_& m) {
           py::arg("q"), py::kw_only(), py::arg("gravity") = true,
           py::arg("force_elements") = false,
           Doc("The potential energy at q, in joules: gravity's -sum m g . p_WBcm (zero at the "
-              "world origin), plus the springs' 1/2 k stretch^2 with force_elements=True.")
+              "world origin), plus the force elements' 1/2 k stretch^2 with "
+              "force_elements=True.")
               .c_str())
       .def(
           "jacobian",
