@@ -153,10 +153,15 @@ std::string ModelFile(const ModelSpec& spec, std::string& error) {
   return out.string();
 }
 
-constexpr DynamicsOptions kOptions{.gravity = true,
-                                   .joint_damping = false,
-                                   .force_elements = false,
-                                   .reflected_inertia = false};
+// gravity only: MuJoCo's armature is zeroed, its passive forces disabled
+const DynamicsOptions kOptions = [] {
+  DynamicsOptions options;
+  options.gravity = true;
+  options.joint_damping = false;
+  options.force_elements = false;
+  options.reflected_inertia = false;
+  return options;
+}();
 
 // Largest |a - b| over the largest |a| (at least 1).
 double RelativeDifference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
