@@ -33,13 +33,17 @@ struct ArticulatedJoint {
   Vector6d c;          // velocity-product acceleration
 };
 
+[[noreturn]] void ThrowMassless(const Plant& plant, const PlantJoint& joint) {
+  throw std::domain_error("joint '" + plant.ScopedName(joint) +
+                          "' moves only massless bodies (its articulated inertia is singular), "
+                          "so the accelerations are undefined");
+}
+
 JointMatrix InvertJointInertia(const Plant& plant, const PlantJoint& joint, const JointMatrix& D) {
   const Eigen::LDLT<JointMatrix> ldlt(D);
   const JointVector d = ldlt.vectorD();
   if (ldlt.info() != Eigen::Success || !(d.minCoeff() > 1e-12 * std::max(1e-300, d.maxCoeff()))) {
-    throw std::domain_error("joint '" + plant.ScopedName(joint) +
-                            "' moves only massless bodies (its articulated inertia is singular), "
-                            "so the accelerations are undefined");
+    ThrowMassless(plant, joint);
   }
   return ldlt.solve(JointMatrix::Identity(joint.nv, joint.nv));
 }
@@ -56,7 +60,8 @@ VectorXd ForwardDynamics(const Plant& plant, const VectorXd& q, const VectorXd& 
   const VectorXd reflected = options.reflected_inertia ? ReflectedInertia(plant)
                                                        : VectorXd::Zero(plant.num_velocities);
 
-  std::vector<Matrix6d> IA = s.I;
+  std::vector<Matrix6d> IA(plant.bodies.size());
+  for (size_t b = 0; b < plant.bodies.size(); ++b) IA[b] = s.I[b].Matrix();
   std::vector<Vector6d> pA(plant.bodies.size());
   for (size_t b = 0; b < plant.bodies.size(); ++b) {
     pA[b] = CrossForce(s.V[b], s.I[b] * s.V[b]);
@@ -68,11 +73,20 @@ VectorXd ForwardDynamics(const Plant& plant, const VectorXd& q, const VectorXd& 
     const MotionSubspace& S = s.joint[it->index()].S;
     ArticulatedJoint& aj = art[it->index()];
     const int p = joint.parent.index(), c = joint.child.index();
-    aj.c = CrossMotion(s.V[p], S * v.segment(joint.v_start, joint.nv)) +
-           s.joint[it->index()].subspace_rate_term;
+    aj.c = CrossMotion(s.V[p], s.V[c] - s.V[p]) + s.joint[it->index()].subspace_rate_term;
     Matrix6d Ia = IA[c];
     Vector6d pa = pA[c];
-    if (joint.nv > 0) {
+    if (joint.nv == 1) {
+      // most joints: D is a number and U D^-1 U^T an outer product
+      const Vector6d s_col = S.col(0), U = IA[c] * s_col;
+      const double D = s_col.dot(U) + reflected[joint.v_start];
+      if (!(D > 0)) ThrowMassless(plant, joint);
+      aj.U = U;
+      aj.D_inv = JointMatrix::Constant(1, 1, 1 / D);
+      aj.u = JointVector::Constant(1, tau_total[joint.v_start] - s_col.dot(pA[c]));
+      Ia.noalias() -= U * (U.transpose() / D);
+      pa += U * (aj.u[0] / D);
+    } else if (joint.nv > 1) {
       aj.U = IA[c] * S;
       JointMatrix D = S.transpose() * aj.U;
       D.diagonal() += reflected.segment(joint.v_start, joint.nv);
@@ -95,6 +109,12 @@ VectorXd ForwardDynamics(const Plant& plant, const VectorXd& q, const VectorXd& 
     const Vector6d a = A[joint.parent.index()] + aj.c;
     A[joint.child.index()] = a;
     if (joint.nv == 0) continue;
+    if (joint.nv == 1) {
+      const double vdot_j = aj.D_inv(0, 0) * (aj.u[0] - aj.U.col(0).dot(a));
+      vdot[joint.v_start] = vdot_j;
+      A[joint.child.index()] += s.joint[id.index()].S.col(0) * vdot_j;
+      continue;
+    }
     const JointVector vdot_j = aj.D_inv * (aj.u - aj.U.transpose() * a);
     vdot.segment(joint.v_start, joint.nv) = vdot_j;
     A[joint.child.index()] += s.joint[id.index()].S * vdot_j;

@@ -13,10 +13,10 @@ using Eigen::VectorXd;
 
 namespace {
 
-void RequireSize(const char* what, const VectorXd& x, int size) {
+void RequireSize(const char* what, const VectorXd& x, int size, const char* unit) {
   if (x.size() != size) {
     throw std::invalid_argument(std::string(what) + " has " + std::to_string(x.size()) +
-                                " entries; the plant has " + std::to_string(size));
+                                " entries; the plant has " + std::to_string(size) + " " + unit);
   }
 }
 
@@ -52,43 +52,48 @@ Vector6d FrameToWorld(const Transform& X_WF, const Vector6d& x_F) {
 
 void RequireState(const Plant& plant, const VectorXd& q, const VectorXd* v,
                   const VectorXd* v_like, const char* v_like_name) {
-  RequireSize("q", q, plant.num_positions);
-  if (v) RequireSize("v", *v, plant.num_velocities);
-  if (v_like) RequireSize(v_like_name, *v_like, plant.num_velocities);
+  RequireSize("q", q, plant.num_positions, "positions");
+  if (v) RequireSize("v", *v, plant.num_velocities, "velocities");
+  if (v_like) RequireSize(v_like_name, *v_like, plant.num_velocities, "velocities");
 }
 
 TreeState SweepDown(const Plant& plant, const VectorXd& q, const VectorXd* v) {
   TreeState s;
-  s.X_WB = BodyPosesInWorld(plant, q);
-  s.V.assign(plant.bodies.size(), Vector6d::Zero());
+  const size_t num_bodies = plant.bodies.size();
+  s.X_WB.resize(num_bodies);
+  s.V.assign(num_bodies, Vector6d::Zero());
   s.joint.resize(plant.joints.size());
-  s.I.resize(plant.bodies.size());
-  for (size_t b = 0; b < plant.bodies.size(); ++b) {
-    const PlantBody& body = plant.bodies[b];
-    const Eigen::Matrix3d& R_WB = s.X_WB[b].R;
-    s.I[b] = SpatialInertiaAboutOrigin(body.mass, s.X_WB[b] * body.p_BoBcm_B,
-                                       R_WB * body.I_BBcm_B * R_WB.transpose());
-  }
+  s.I.resize(num_bodies);
+  // parents come before children in joint_order, so one sweep poses them all
   for (JointId id : plant.joint_order) {
     const PlantJoint& joint = plant.joint(id);
     JointState& js = s.joint[id.index()];
+    const int p = joint.parent.index(), c = joint.child.index();
     const auto q_j = q.segment(joint.q_start, joint.nq);
-    const Transform X_WF = JointFrameInWorld(plant, s.X_WB, id);
-    const Vector3d p_WMo = s.X_WB[joint.child.index()] * joint.X_CM.p;
+    const Transform X_FM = JointPose(joint, q_j);
+    const Transform X_WF = s.X_WB[p] * joint.X_PF;
+    const Transform X_WM = X_WF * X_FM;
+    s.X_WB[c] = X_WM * joint.X_CM.inverse();
+    const PlantBody& body = plant.bodies[c];
+    const Eigen::Matrix3d& R_WB = s.X_WB[c].R;
+    s.I[c] = CompactInertia::About(body.mass, s.X_WB[c] * body.p_BoBcm_B,
+                                   R_WB * body.I_BBcm_B * R_WB.transpose());
     const MotionSubspace H = JointMotionSubspace(joint, q_j);
-    js.S = ToWorldPlucker(H, X_WF.R, p_WMo);
+    js.S = ToWorldPlucker(H, X_WF.R, X_WM.p);
     js.subspace_rate_term.setZero();
-    if (!v) continue;
+    if (!v || joint.nv == 0) {
+      s.V[c] = s.V[p];
+      continue;
+    }
     const auto v_j = v->segment(joint.v_start, joint.nv);
     const Vector6d V_FM = H * v_j;  // about Mo, in F
-    s.V[joint.child.index()] = s.V[joint.parent.index()] + js.S * v_j;
+    s.V[c] = s.V[p] + js.S * v_j;
     // d/dt of S' v at fixed v, S' = H moved to F's origin: the rate of H
     // itself, and the shift p_FMo x w changing as Mo moves and w turns
-    const Vector3d p_FMo = JointPose(joint, q_j).p;
     const Vector6d H_rate = JointSubspaceRate(joint, q_j, v_j);
     const Vector6d S_rate_F =
         Spatial(Angular(H_rate), Linear(H_rate) + Linear(V_FM).cross(Angular(V_FM)) +
-                                     p_FMo.cross(Angular(H_rate)));
+                                     X_FM.p.cross(Angular(H_rate)));
     js.subspace_rate_term = FrameToWorld(X_WF, S_rate_F);
   }
   return s;
@@ -102,8 +107,11 @@ VectorXd GeneralizedFromBodyForces(const Plant& plant, const TreeState& s,
   if (f.empty()) return tau;
   for (auto it = plant.joint_order.rbegin(); it != plant.joint_order.rend(); ++it) {
     const PlantJoint& joint = plant.joint(*it);
-    if (joint.nv > 0) {
-      tau.segment(joint.v_start, joint.nv) = s.joint[it->index()].S.transpose() * f[joint.child.index()];
+    const MotionSubspace& S = s.joint[it->index()].S;
+    if (joint.nv == 1) {
+      tau[joint.v_start] = S.col(0).dot(f[joint.child.index()]);
+    } else if (joint.nv > 1) {
+      tau.segment(joint.v_start, joint.nv) = S.transpose() * f[joint.child.index()];
     }
     f[joint.parent.index()] += f[joint.child.index()];
   }
@@ -120,11 +128,13 @@ VectorXd Rnea(const Plant& plant, const TreeState& s, const VectorXd* v, const V
     const JointState& js = s.joint[id.index()];
     const int p = joint.parent.index(), c = joint.child.index();
     A[c] = A[p];
-    if (vdot) A[c] += js.S * vdot->segment(joint.v_start, joint.nv);
-    if (v) {
-      A[c] += CrossMotion(s.V[p], js.S * v->segment(joint.v_start, joint.nv)) +
-              js.subspace_rate_term;
+    if (vdot && joint.nv == 1) {
+      A[c] += js.S.col(0) * (*vdot)[joint.v_start];
+    } else if (vdot && joint.nv > 1) {
+      A[c] += js.S * vdot->segment(joint.v_start, joint.nv);
     }
+    // S v_j is V_c - V_p, which the sweep down already summed
+    if (v) A[c] += CrossMotion(s.V[p], s.V[c] - s.V[p]) + js.subspace_rate_term;
     f[c] = s.I[c] * A[c] + CrossForce(s.V[c], s.I[c] * s.V[c]);
     if (!f_ext.empty()) f[c] -= f_ext[c];
   }

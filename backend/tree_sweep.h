@@ -43,7 +43,7 @@ struct TreeState {
   std::vector<Transform> X_WB;
   std::vector<Vector6d> V;        // by body, world Plücker
   std::vector<JointState> joint;  // by JointId
-  std::vector<Matrix6d> I;        // by body, about the world origin in W
+  std::vector<CompactInertia> I;  // by body, about the world origin in W
 };
 
 /// Poses, subspaces and body inertias at q; velocities and the subspace rate
