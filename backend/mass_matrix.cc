@@ -12,6 +12,23 @@
 
 namespace mdlc::backend {
 
+namespace {
+
+/// Calls visit(j, column of j in the result, j's nv) for each joint with
+/// velocities between `joint`'s parent and the world that is selected.
+template <typename Visit>
+void ForEachSelectedAncestor(const Plant& plant, const PlantJoint& joint,
+                             const std::vector<int>& out_start, Visit&& visit) {
+  for (BodyId b = joint.parent; !plant.body(b).is_world; b = plant.body(b).parent) {
+    const JointId j = plant.body(b).inbound_joint;
+    const int col = out_start[j.index()];
+    const int nv_j = plant.joint(j).nv;
+    if (col >= 0 && nv_j > 0) visit(j, col, nv_j);
+  }
+}
+
+}  // namespace
+
 Eigen::MatrixXd CalcMassMatrix(const Plant& plant, const Eigen::VectorXd& q) {
   return CalcMassMatrix(plant, q, plant.joint_order);
 }
@@ -41,18 +58,27 @@ Eigen::MatrixXd CalcMassMatrix(const Plant& plant, const Eigen::VectorXd& q,
   for (JointId i : joints) {
     const PlantJoint& joint_i = plant.joint(i);
     if (joint_i.nv == 0) continue;
-    const MotionSubspace F = Ic[joint_i.child.index()] * S(i);  // 6 x nv_i
     const int row = out_start[i.index()];
+    if (joint_i.nv == 1) {
+      // most joints: F is one force vector and each entry one dot product
+      const Vector6d F = Ic[joint_i.child.index()] * Vector6d(S(i).col(0));
+      M(row, row) = S(i).col(0).dot(F);
+      ForEachSelectedAncestor(plant, joint_i, out_start, [&](JointId j, int col, int nv_j) {
+        if (nv_j == 1) {
+          M(col, row) = M(row, col) = S(j).col(0).dot(F);
+        } else {
+          M.block(col, row, nv_j, 1) = S(j).transpose() * F;
+          M.block(row, col, 1, nv_j) = M.block(col, row, nv_j, 1).transpose();
+        }
+      });
+      continue;
+    }
+    const MotionSubspace F = Ic[joint_i.child.index()] * S(i);  // 6 x nv_i
     M.block(row, row, joint_i.nv, joint_i.nv) = S(i).transpose() * F;
-    // walk up to the world, filling the blocks with selected ancestor joints
-    for (BodyId b = joint_i.parent; !plant.body(b).is_world; b = plant.body(b).parent) {
-      const JointId j = plant.body(b).inbound_joint;
-      const int col = out_start[j.index()];
-      const int nv_j = plant.joint(j).nv;
-      if (col < 0 || nv_j == 0) continue;
+    ForEachSelectedAncestor(plant, joint_i, out_start, [&](JointId j, int col, int nv_j) {
       M.block(col, row, nv_j, joint_i.nv) = S(j).transpose() * F;
       M.block(row, col, joint_i.nv, nv_j) = M.block(col, row, nv_j, joint_i.nv).transpose();
-    }
+    });
   }
   return M;
 }
