@@ -24,6 +24,9 @@ FrameLookup FindFrameByName(const Plant& plant, std::string_view name) {
   if (name == "world") return {FrameLookupStatus::Found, {BodyId(size_t{0}), Transform::Identity()}};
   for (int pass = 0; pass < 2; ++pass) {
     const bool scoped = pass == 0;
+    // bodies first: a body's name names its own frame, as in Drake, even
+    // where a frame of the same name sits on it (an MJCF site named after
+    // its body)
     FrameLookup found;
     for (size_t b = 0; b < plant.bodies.size(); ++b) {
       const PlantBody& body = plant.bodies[b];
@@ -32,6 +35,7 @@ FrameLookup FindFrameByName(const Plant& plant, std::string_view name) {
                                 : body.name == name;
       if (match && !Offer(found, {BodyId(b), Transform::Identity()})) return {FrameLookupStatus::Ambiguous, {}};
     }
+    if (found.status == FrameLookupStatus::Found) return found;
     for (const PlantFrame& frame : plant.frames) {
       const bool match = scoped ? name.ends_with(frame.name) &&
                                       plant.model_instances.Scoped(frame.model, frame.name) == name

@@ -1,9 +1,10 @@
 // named_frames.h - finding a body or a frame by the name plant-json gives it.
 //
 // A name is "world", a body's or a frame's scoped name ("instance::name"),
-// or a local name that exactly one body or frame carries. A body and a frame
-// with the same name that are the same frame (a body's own frame listed
-// again, X_BF the identity) count once.
+// or a local name that exactly one body or frame carries. A body's name
+// names the body's own frame even when a frame of the same name exists (an
+// MJCF site named after its body); frames with one name that are the same
+// frame count once.
 #pragma once
 
 #include <string_view>
