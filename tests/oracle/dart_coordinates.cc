@@ -29,9 +29,17 @@ const char* DartTypeFor(JointType type) {
   }
 }
 
-bool NearTransform(const Eigen::Isometry3d& a, const Transform& b, double tol = 1e-9) {
-  return (a.linear() - b.R).cwiseAbs().maxCoeff() <= tol &&
-         (a.translation() - b.p).cwiseAbs().maxCoeff() <= tol;
+Transform FromIsometry(const Eigen::Isometry3d& X) { return {X.linear(), X.translation()}; }
+
+bool IsIdentity(const Transform& X, double tol) {
+  return (X.R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() <= tol &&
+         X.p.cwiseAbs().maxCoeff() <= tol;
+}
+
+Eigen::Matrix3d Hat(const Eigen::Vector3d& p) {
+  Eigen::Matrix3d S;
+  S << 0, -p.z(), p.y(), p.z(), 0, -p.x(), -p.y(), p.x(), 0;
+  return S;
 }
 
 // A planar joint's [x; y] = A [q0; q1]: DART's axes t1, t2 of the plane,
@@ -98,14 +106,15 @@ std::string PairWithDart(const Plant& plant,
       return "joint " + name + ": mdlc " + std::string(ir::JointTypeName(joint.type)) +
              ", DART " + dart->getType();
     }
-    // A rotation vector or a plane in DART's joint frames must be one in
-    // mdlc's F and M: the frames must agree.
-    if (joint.type == JointType::QuaternionFloating || joint.type == JointType::Ball ||
-        joint.type == JointType::Planar) {
-      if (!NearTransform(dart->getTransformFromParentBodyNode(), joint.X_PF) ||
-          !NearTransform(dart->getTransformFromChildBodyNode(), joint.X_CM)) {
-        return "joint " + name + ": DART's joint frames are not mdlc's F and M";
-      }
+    // DART's joint frames against mdlc's F and M (dart_coordinates.h).
+    const Transform X_PJp = FromIsometry(dart->getTransformFromParentBodyNode());
+    const Transform X_CJc = FromIsometry(dart->getTransformFromChildBodyNode());
+    const Transform K = X_PJp.inverse() * joint.X_PF, L = joint.X_CM.inverse() * X_CJc;
+    // A ball joint's motion stays a rotation only if neither frame is offset;
+    // a plane in DART's joint frame must be mdlc's.
+    if ((joint.type == JointType::Ball && (!K.p.isZero(1e-9) || !L.p.isZero(1e-9))) ||
+        (joint.type == JointType::Planar && (!IsIdentity(K, 1e-9) || !IsIdentity(L, 1e-9)))) {
+      return "joint " + name + ": DART's joint frames are offset from mdlc's F and M";
     }
     if (joint.type == JointType::Planar) {
       const auto& planar = static_cast<const dart::dynamics::PlanarJoint&>(*dart);
@@ -120,6 +129,8 @@ std::string PairWithDart(const Plant& plant,
     JointPair pair;
     pair.joint = body.inbound_joint;
     pair.dart = dart;
+    pair.K = K;
+    pair.L = L;
     for (size_t k = 0; k < skeletons.size(); ++k) {
       if (skeletons[k].get() == dart->getSkeleton().get()) {
         pair.dart_v_start =
@@ -145,18 +156,22 @@ DartState ToDartState(const Plant& plant, const DartPairing& pairing, const Eige
     switch (joint.type) {
       case JointType::QuaternionFloating: {
         const Transform X_FM = backend::JointPose(joint, q_j);
-        s.q.segment<3>(d) = dart::math::logMap(X_FM.R);
-        s.q.segment<3>(d + 3) = X_FM.p;
-        s.T.block<3, 3>(i, d) = X_FM.R;
-        s.T.block<3, 3>(i + 3, d + 3) = X_FM.R;
+        const Transform Q = pair.K * X_FM * pair.L;
+        s.q.segment<3>(d) = dart::math::logMap(Q.R);
+        s.q.segment<3>(d + 3) = Q.p;
+        // V_M = Ad_L V_Jc = [R_L w; R_L v + p_L x R_L w], then into F
+        const Eigen::Matrix3d& R_L = pair.L.R;
+        s.T.block<3, 3>(i, d) = X_FM.R * R_L;
+        s.T.block<3, 3>(i + 3, d) = X_FM.R * Hat(pair.L.p) * R_L;
+        s.T.block<3, 3>(i + 3, d + 3) = X_FM.R * R_L;
         const Eigen::Vector3d w_FM_F = v.segment<3>(i), v_FM_F = v.segment<3>(i + 3);
         s.a.segment<3>(i + 3) = w_FM_F.cross(v_FM_F);
         break;
       }
       case JointType::Ball: {
         const Transform X_FM = backend::JointPose(joint, q_j);
-        s.q.segment<3>(d) = dart::math::logMap(X_FM.R);
-        s.T.block<3, 3>(i, d) = X_FM.R;
+        s.q.segment<3>(d) = dart::math::logMap(pair.K.R * X_FM.R * pair.L.R);
+        s.T.block<3, 3>(i, d) = X_FM.R * pair.L.R;
         break;
       }
       case JointType::Planar: {

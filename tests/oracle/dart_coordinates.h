@@ -8,18 +8,21 @@
 // Coordinates (checked against DART 6.12's FreeJoint, BallJoint and
 // PlanarJoint, and against its body velocities and accelerations):
 //   revolute, prismatic, universal   DART's q and v are mdlc's
-//   quaternion_floating / FreeJoint  DART q = [log(R_FM); p_FM] (rotation
-//       vector, translation); DART v = [w; v] of M relative to F expressed
-//       in M, i.e. R_FM^T w_FM_F and R_FM^T v_FM_F; mdlc's are in F
-//   ball / BallJoint                 DART q = log(R_FM) (mdlc: roll-pitch-yaw);
-//       DART v = R_FM^T w_FM_F
+//   quaternion_floating / FreeJoint  DART's joint motion is X_JpJc = Q =
+//       K X_FM L (K = X_JpF, L = X_MJc: DART's joint frames Jp, Jc need not
+//       be F and M); DART q = [log(R_Q); p_Q] (rotation vector, translation);
+//       DART v = [w; v] of Jc relative to Jp expressed in Jc, i.e.
+//       Ad_L^-1 [R_FM^T w_FM_F; R_FM^T v_FM_F]; mdlc's v is in F
+//   ball / BallJoint                 the same with K, L rotations: DART
+//       q = log(R_Q) (mdlc: roll-pitch-yaw), DART v = R_L^T R_FM^T w_FM_F
 //   planar / PlanarJoint             DART translates along its own axes t1, t2
 //       of the plane: [x; y] = A [q0; q1], theta = q2; v likewise
-// So v_mdlc = T v_dart with T block diagonal (R_FM per rotation vector in M,
-// A^-1 for a planar joint, 1 otherwise), and since DART's accelerations are
-// d/dt of its velocities, vdot_mdlc = T vdot_dart + a with a = w_FM_F x
-// v_FM_F in a floating joint's translational rows (d/dt R_FM = [w_FM_F]x R_FM),
-// zero elsewhere. Generalized forces keep power tau . v invariant:
+// So v_mdlc = T v_dart with T block diagonal (diag(R_FM, R_FM) Ad_L for a
+// floating joint, R_FM R_L for a ball joint, A^-1 for a planar joint, 1
+// otherwise), and since DART's accelerations are d/dt of its velocities,
+// vdot_mdlc = T vdot_dart + a with a = w_FM_F x v_FM_F in a floating joint's
+// translational rows (d/dt R_FM = [w_FM_F]x R_FM; Ad_L is constant), zero
+// elsewhere. Generalized forces keep power tau . v invariant:
 // tau_dart = T^T tau_mdlc; a mass matrix is M_mdlc = T^-T M_dart T^-1 and a
 // Jacobian J_mdlc = J_dart T^-1.
 #pragma once
@@ -41,6 +44,10 @@ struct JointPair {
   JointId joint;
   dart::dynamics::Joint* dart = nullptr;
   int dart_v_start = 0;  // its first velocity in DART's stacked v
+  // DART's joint frames Jp (on the parent) and Jc (on the child) against
+  // mdlc's F and M: K = X_JpF, L = X_MJc, constant; DART's joint motion is
+  // X_JpJc = K X_FM(q) L.
+  Transform K, L;
 };
 
 /// The pairing of a plant with DART skeletons. DART's vectors are stacked

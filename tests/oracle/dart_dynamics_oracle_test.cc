@@ -142,13 +142,14 @@ struct Errors {
 
 double MaxAbs(const MatrixXd& x) { return x.size() ? x.cwiseAbs().maxCoeff() : 0.0; }
 
-// |mdlc - dart|_max <= kTol * (1 + |dart|_max); records the error relative
-// to that scale.
+// |mdlc - dart|_max <= kTol * (1 + max(|dart|_max, scale)); records the
+// error relative to that. `scale` is the size of what round-off grows with
+// where that exceeds the result (the bias term's w x I w).
 void ExpectNear(const std::string& what, const MatrixXd& mdlc, const MatrixXd& dart, int state,
-                Errors* errors) {
+                Errors* errors, double scale = 0) {
   ASSERT_EQ(mdlc.rows(), dart.rows()) << what;
   ASSERT_EQ(mdlc.cols(), dart.cols()) << what;
-  const double error = MaxAbs(mdlc - dart) / (1 + MaxAbs(dart));
+  const double error = MaxAbs(mdlc - dart) / (1 + std::max(MaxAbs(dart), scale));
   const std::string key = what.substr(0, what.find(' '));
   errors->max_error[key] = std::max(errors->max_error[key], error);
   ++errors->compared;
@@ -261,9 +262,10 @@ bool PhysicalInertia(double mass, const Eigen::Matrix3d& I) {
 // must be mdlc's, except where the spec has mdlc replace an impossible one
 // (COMMON-040/041: negative mass, moments breaking the triangle inequality,
 // ...), which DART keeps: DART is then given mdlc's, and `replaced` names
-// the body. Returns the first real difference ("" when none).
+// the body; so too where DART lost the inertia's axes (`rotated`). Returns
+// the first real difference ("" when none).
 std::string ReconcileInertias(const backend::Plant& plant, const DartPairing& pairing,
-                              std::string* replaced) {
+                              std::string* replaced, std::string* rotated) {
   for (size_t b = 0; b < plant.bodies.size(); ++b) {
     dart::dynamics::BodyNode* node = pairing.bodies[b];
     if (!node) continue;
@@ -276,6 +278,19 @@ std::string ReconcileInertias(const backend::Plant& plant, const DartPairing& pa
       continue;
     }
     const std::string name = plant.ScopedName(body);
+    // DART 6.12's SdfParser drops the rotation of <inertial><pose>: the same
+    // mass, center and principal moments in other axes.
+    const auto moments = [](const Eigen::Matrix3d& I) {
+      return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I).eigenvalues();
+    };
+    if (std::abs(inertia.getMass() - body.mass) <= tol &&
+        (inertia.getLocalCOM() - body.p_BoBcm_B).cwiseAbs().maxCoeff() <= 1e-12 &&
+        (moments(inertia.getMoment()) - moments(body.I_BBcm_B)).cwiseAbs().maxCoeff() <= 1e-9 * (1 + body.I_BBcm_B.cwiseAbs().maxCoeff())) {
+      node->setMomentOfInertia(body.I_BBcm_B(0, 0), body.I_BBcm_B(1, 1), body.I_BBcm_B(2, 2),
+                               body.I_BBcm_B(0, 1), body.I_BBcm_B(0, 2), body.I_BBcm_B(1, 2));
+      *rotated += (rotated->empty() ? "" : " ") + name;
+      continue;
+    }
     if (PhysicalInertia(inertia.getMass(), inertia.getMoment())) {
       std::ostringstream out;
       out << "body " << name << ": mdlc mass " << body.mass << ", com "
@@ -336,10 +351,13 @@ TEST_P(DartDynamicsOracle, Matches) {
   if (!unpaired.empty()) GTEST_SKIP() << "DART reads another tree: " << unpaired;
   for (const auto& s : pairing.skeletons) {
     s->setGravity(plant.gravity);
+    // mdlc, like Drake, ignores SDFormat's <gravity>false</gravity> on a link
+    // (it warns); DART honours it.
+    for (size_t i = 0; i < s->getNumBodyNodes(); ++i) s->getBodyNode(i)->setGravityMode(true);
     for (size_t i = 0; i < s->getNumDofs(); ++i) s->getDof(i)->setSpringStiffness(0);
   }
-  std::string replaced;
-  const std::string inertia_differs = ReconcileInertias(plant, pairing, &replaced);
+  std::string replaced, rotated;
+  const std::string inertia_differs = ReconcileInertias(plant, pairing, &replaced, &rotated);
   ASSERT_TRUE(inertia_differs.empty()) << "mass properties differ: " << inertia_differs;
 
   // The damping both read must agree before dynamics with it can.
@@ -370,7 +388,7 @@ TEST_P(DartDynamicsOracle, Matches) {
   }
 
   Errors errors;
-  bool fd_singular = false;
+  bool fd_singular = false, fd_not_thrown = false;
   std::mt19937 rng(20261207);
   for (int state = 0; state < kStates; ++state) {
     const VectorXd q = RandomPositions(plant, rng);
@@ -428,21 +446,35 @@ TEST_P(DartDynamicsOracle, Matches) {
     const VectorXd coriolis = DartStacked(pairing, [](dart::dynamics::Skeleton& s) {
       return VectorXd(s.getCoriolisForces());
     });
+    const MatrixXd M_mdlc_coords = T_inv_T * M_dart * T_inv;
     ExpectNear("bias_term", BiasTerm(result, q, v), T_inv_T * (coriolis - M_dart * T_inv * d.a),
-               state, &errors);
+               state, &errors, MaxAbs(M_mdlc_coords) * MaxAbs(v) * MaxAbs(v));
     const VectorXd gravity = DartStacked(pairing, [](dart::dynamics::Skeleton& s) {
       return VectorXd(s.getGravityForces());
     });
     ExpectNear("gravity_forces", GravityForces(result, q), -(T_inv_T * gravity), state, &errors);
 
-    // Forward dynamics, without damping, then with it where there is some.
+    // Forward dynamics, without damping, then with it where there is some;
+    // not where M is singular (a massless body at the end of a joint, a
+    // point mass turning about itself), for which mdlc should throw.
+    bool singular = false;
+    if (pairing.nv > 0) {
+      const VectorXd eigenvalues =
+          Eigen::SelfAdjointEigenSolver<MatrixXd>(M_mdlc_coords).eigenvalues();
+      singular = eigenvalues.minCoeff() <= 1e-12 * eigenvalues.cwiseAbs().maxCoeff();
+    }
     for (const bool with_damping : {false, true}) {
       if (with_damping && !has_damping) continue;
       VectorXd vdot_mdlc;
       try {
         vdot_mdlc = ForwardDynamics(result, q, v, tau, with_damping ? damped : rigid);
       } catch (const std::domain_error&) {
-        fd_singular = true;  // a massless body on a joint: nothing to compare
+        fd_singular = true;
+        break;
+      }
+      if (singular) {
+        fd_singular = true;
+        fd_not_thrown = true;
         break;
       }
       const VectorXd d_used = with_damping ? damping : VectorXd::Zero(pairing.nv);
@@ -524,7 +556,9 @@ TEST_P(DartDynamicsOracle, Matches) {
   summary << mc.display << ": nv " << plant.num_velocities << ", " << errors.compared
           << " comparisons" << (dart.note.empty() ? "" : ", " + dart.note)
           << (replaced.empty() ? "" : ", DART given mdlc's replacement inertia of " + replaced)
+          << (rotated.empty() ? "" : ", DART given the <inertial> axes it drops of " + rotated)
           << (fd_singular ? ", forward dynamics skipped (singular mass matrix)" : "")
+          << (fd_not_thrown ? " though mdlc's ForwardDynamics returned instead of throwing" : "")
           << (aba_safe ? "" : ", DART's forward dynamics from its M, C, g (massless bodies)")
           << "; max relative errors:";
   for (const auto& [what, error] : errors.max_error) summary << " " << what << "=" << error;
