@@ -61,10 +61,15 @@ VectorXd ForwardDynamics(const Plant& plant, const VectorXd& q, const VectorXd& 
                                                        : VectorXd::Zero(plant.num_velocities);
 
   std::vector<Matrix6d> IA(plant.bodies.size());
-  for (size_t b = 0; b < plant.bodies.size(); ++b) IA[b] = s.I[b].Matrix();
   std::vector<Vector6d> pA(plant.bodies.size());
   for (size_t b = 0; b < plant.bodies.size(); ++b) {
-    pA[b] = CrossForce(s.V[b], s.I[b] * s.V[b]);
+    if (s.I[b].is_zero) {
+      IA[b].setZero();
+      pA[b].setZero();
+    } else {
+      IA[b] = s.I[b].Matrix();
+      pA[b] = CrossForce(s.V[b], s.I[b] * s.V[b]);
+    }
     if (!f_ext.empty()) pA[b] -= f_ext[b];
   }
   std::vector<ArticulatedJoint> art(plant.joints.size());

@@ -52,13 +52,16 @@ struct CompactInertia {
   double m = 0;
   Eigen::Vector3d h = Eigen::Vector3d::Zero();
   Eigen::Matrix3d I_O = Eigen::Matrix3d::Zero();
+  /// No mass and no rotational inertia: a massless body (MJCF lowers a body
+  /// with several hinges to a chain of them), whose products the sweeps skip.
+  bool is_zero = true;
 
   /// The body of mass m with its COM at c and inertia I_c about it, both in W.
   static CompactInertia About(double m, const Eigen::Vector3d& c, const Eigen::Matrix3d& I_c) {
     // the parallel-axis shift -m [c]x [c]x = m (|c|^2 1 - c c^T), without a product
     Eigen::Matrix3d I_O = I_c - m * c * c.transpose();
     I_O.diagonal().array() += m * c.squaredNorm();
-    return {m, m * c, I_O};
+    return {m, m * c, I_O, m == 0 && I_c.isZero(0)};
   }
   /// I V = [I_O w + h x v; m v - h x w] for V = [w; v].
   Vector6d operator*(const Vector6d& V) const {
@@ -73,6 +76,7 @@ struct CompactInertia {
     m += other.m;
     h += other.h;
     I_O += other.I_O;
+    is_zero = is_zero && other.is_zero;
     return *this;
   }
   /// I S, column by column.
