@@ -55,15 +55,15 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # leaks inside third-party libraries, each one explained in the file
 export LSAN_OPTIONS=suppressions=$root/tests/fuzz/lsan_suppressions.txt
 # the targets built above discover their own tests; the script-driven ones
-# that need other targets (oracles, Python, the embed examples, corpus runs)
-# are left to the ordinary build
+# that need other targets (oracles, Python, the embed examples, corpus runs,
+# the install packages) are left to the ordinary build
 # cli/robot_meshes checks the pages mdlc view writes without opening them in
 # Chromium (MDLC_VIEW_BROWSER=off): the browser is none of mdlc's memory, and
 # the ordinary build's run of the same test opens and screenshots each page
 if [ -z "${FUZZ_ONLY:-}" ]; then
   echo "==> the test suite under ASan and UBSan"
   (cd "$build_dir" && MDLC_VIEW_BROWSER=off ctest --output-on-failure -j "$jobs" --timeout 900 \
-     -E 'oracle|Oracle|python|embed|corpus|Corpus|convert/|layers/|[Dd]eterminism|ReferenceRejects|view_in_browser|readme')
+     -E 'oracle|Oracle|python|embed|corpus|Corpus|convert/|layers/|[Dd]eterminism|ReferenceRejects|view_in_browser|readme|install/')
 fi
 
 echo "==> fuzzing, ${seconds}s per harness"
