@@ -26,6 +26,7 @@
 // reads as a different tree, are skipped with the reason. One CTest case per
 // model, e.g. HandMade/DartDynamicsOracle.Matches/urdf_joint_mix.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <dart/dynamics/BodyNode.hpp>
 #include <dart/dynamics/DegreeOfFreedom.hpp>
@@ -36,6 +37,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <random>
 #include <sstream>
@@ -77,6 +79,7 @@ struct ModelCase {
   std::string display;
   std::string package_path;  // searched for package:// URIs by mdlc
   std::string skip_reason;
+  std::string text;  // the model itself, written to `path` first, when set
 };
 
 void PrintTo(const ModelCase& c, std::ostream* os) { *os << c.display; }
@@ -102,6 +105,85 @@ std::vector<ModelCase> HandMadeCases() {
   }
   Uniquify(&cases);
   return cases;
+}
+
+// The hand-made SDFormat models use SDFormat 1.9's frames, which DART's
+// SdfParser cannot read; this one is in 1.6 for it: a free body with a posed
+// model and an offset, rotated center of mass, a ball joint and a universal
+// joint with offset and rotated joint frames, and a damped revolute joint.
+constexpr char kBallUniversal16[] = R"(<?xml version="1.0"?>
+<sdf version="1.6">
+  <model name="ball_universal_16">
+    <pose>0.1 -0.2 0.3 0.2 -0.1 0.4</pose>
+    <link name="base">
+      <pose>0.5 0 1 0.3 0.2 0.1</pose>
+      <inertial>
+        <pose>0.01 0.02 -0.03 0 0 0</pose>
+        <mass>3</mass>
+        <inertia><ixx>0.1</ixx><iyy>0.2</iyy><izz>0.25</izz>
+                 <ixy>0.01</ixy><ixz>0</ixz><iyz>0.02</iyz></inertia>
+      </inertial>
+    </link>
+    <link name="arm">
+      <pose>0.5 0.1 0.6 0 0.4 0.2</pose>
+      <inertial>
+        <pose>0 0 -0.15 0 0 0</pose>
+        <mass>1.2</mass>
+        <inertia><ixx>0.02</ixx><iyy>0.03</iyy><izz>0.01</izz>
+                 <ixy>0</ixy><ixz>0.001</ixz><iyz>0</iyz></inertia>
+      </inertial>
+    </link>
+    <joint name="shoulder" type="ball">
+      <parent>base</parent>
+      <child>arm</child>
+      <pose>0 0 0.1 0.3 -0.2 0.5</pose>
+    </joint>
+    <link name="hand">
+      <pose>0.45 0.1 0.3 0.2 0.4 0</pose>
+      <inertial>
+        <pose>0.02 0 -0.05 0 0 0</pose>
+        <mass>0.6</mass>
+        <inertia><ixx>0.004</ixx><iyy>0.005</iyy><izz>0.003</izz>
+                 <ixy>0</ixy><ixz>0</ixz><iyz>0</iyz></inertia>
+      </inertial>
+    </link>
+    <joint name="wrist" type="universal">
+      <parent>arm</parent>
+      <child>hand</child>
+      <pose>0 0.01 0.05 0 0 0.3</pose>
+      <axis><xyz>1 0 0</xyz></axis>
+      <axis2><xyz>0 1 0</xyz></axis2>
+    </joint>
+    <link name="finger">
+      <pose>0.45 0.12 0.2 0 0 0</pose>
+      <inertial>
+        <pose>0 0 -0.03 0 0 0</pose>
+        <mass>0.1</mass>
+        <inertia><ixx>0.0002</ixx><iyy>0.0002</iyy><izz>0.0001</izz>
+                 <ixy>0</ixy><ixz>0</ixz><iyz>0</iyz></inertia>
+      </inertial>
+    </link>
+    <joint name="knuckle" type="revolute">
+      <parent>hand</parent>
+      <child>finger</child>
+      <pose>0 0 0.02 0 0 0</pose>
+      <axis>
+        <xyz>0.6 0 0.8</xyz>
+        <limit><lower>-1</lower><upper>1.2</upper></limit>
+        <dynamics><damping>0.3</damping></dynamics>
+      </axis>
+    </joint>
+  </model>
+</sdf>
+)";
+
+// The inline models, written out where the test runs (DART reads files).
+std::vector<ModelCase> InlineCases() {
+  ModelCase c;
+  c.id = "sdf16_ball_universal";
+  c.display = "ball_universal_16.sdf (inline, SDFormat 1.6)";
+  c.text = kBallUniversal16;
+  return {c};
 }
 
 // The corpus's URDF and SDFormat files that its reference tools load.
@@ -315,18 +397,34 @@ class DartDynamicsOracle : public ::testing::TestWithParam<ModelCase> {};
 TEST_P(DartDynamicsOracle, Matches) {
   const ModelCase& mc = GetParam();
   if (!mc.skip_reason.empty()) GTEST_SKIP() << mc.skip_reason;
+  std::string path = mc.path;
+  // An inline model goes to a folder of this process, removed on the way out.
+  struct RemoveOnExit {
+    fs::path dir;
+    ~RemoveOnExit() {
+      std::error_code ec;
+      if (!dir.empty()) fs::remove_all(dir, ec);
+    }
+  } scratch;
+  if (!mc.text.empty()) {
+    scratch.dir = fs::temp_directory_path() /
+                  ("mdlc_dart_oracle_" + std::to_string(static_cast<long>(getpid())));
+    fs::create_directories(scratch.dir);
+    path = (scratch.dir / (mc.id + ".sdf")).string();
+    std::ofstream(path) << mc.text;
+  }
 
   // DART first, while the process has one thread (mdlc's compile may start
   // more), and so that a file DART cannot read costs no compile.
-  if (const std::string crash = DartCrashesOn(mc.path); !crash.empty()) GTEST_SKIP() << crash;
-  DartModel dart = LoadDartModel(mc.path);
+  if (const std::string crash = DartCrashesOn(path); !crash.empty()) GTEST_SKIP() << crash;
+  DartModel dart = LoadDartModel(path);
   if (!dart.skip_reason.empty()) GTEST_SKIP() << "DART: " << dart.skip_reason;
 
   Options options;
   options.meshes.reader = MeshReader::InProcess;
   if (const char* cache = std::getenv("MDLC_CACHE_DIR")) options.meshes.cache_dir = cache;
   if (!mc.package_path.empty()) options.packages.paths.push_back(mc.package_path);
-  const Result result = Compile(Input::File(mc.path), options);
+  const Result result = Compile(Input::File(path), options);
   if (!result.ok() || !result.has_model()) {
     std::string first;
     for (const Diagnostic& d : result.diagnostics()) {
@@ -567,6 +665,8 @@ TEST_P(DartDynamicsOracle, Matches) {
 }
 
 INSTANTIATE_TEST_SUITE_P(HandMade, DartDynamicsOracle, ::testing::ValuesIn(HandMadeCases()),
+                         CaseName());
+INSTANTIATE_TEST_SUITE_P(Inline, DartDynamicsOracle, ::testing::ValuesIn(InlineCases()),
                          CaseName());
 INSTANTIATE_TEST_SUITE_P(Corpus, DartDynamicsOracle, ::testing::ValuesIn(CorpusCases()),
                          CaseName());
