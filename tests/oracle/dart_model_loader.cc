@@ -5,7 +5,9 @@
 #include <dart/common/Resource.hpp>
 #include <dart/common/ResourceRetriever.hpp>
 #include <dart/common/Uri.hpp>
+#include <dart/dynamics/BodyNode.hpp>
 #include <dart/dynamics/Inertia.hpp>
+#include <dart/dynamics/WeldJoint.hpp>
 #include <dart/utils/sdf/SdfParser.hpp>
 #include <dart/utils/urdf/DartLoader.hpp>
 #include <tinyxml2.h>
@@ -139,12 +141,12 @@ bool EndsWith(const std::string& s, const std::string& tail) {
 }
 
 void LoadUrdf(const std::string& path, std::string text, DartModel* model) {
+  CaptureOutput capture;  // also DART's complaint about the zero inertia below
   dart::utils::DartLoader::Options options;
   // URDF's default for a link without <inertial> (DART's own is mass 1)
   options.mDefaultInertia =
       dart::dynamics::Inertia(0.0, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero());
   dart::utils::DartLoader loader(options);
-  CaptureOutput capture;
   dart::dynamics::SkeletonPtr skeleton =
       loader.parseSkeletonString(text, dart::common::Uri::createFromPath(path));
   model->log = capture.text();
@@ -174,13 +176,20 @@ void ForEachModel(tinyxml2::XMLElement* element,
 // cannot find by exact name, or a 1-dof or 2-dof joint without its axes; it
 // does not trim the names SDFormat allows to be padded with white space.
 // Returns why DART cannot read `text` ("" when it can) and trims the names.
-std::string CheckSdfJoints(std::string* text, int version) {
+// Collects the names of static models in `static_models`.
+std::string CheckSdfJoints(std::string* text, int version, std::set<std::string>* static_models) {
   tinyxml2::XMLDocument doc;
   if (doc.Parse(text->c_str(), text->size()) != tinyxml2::XML_SUCCESS) {
     return std::string("tinyxml2 cannot parse it: ") + doc.ErrorStr();
   }
   std::string problem;
   ForEachModel(doc.RootElement(), [&](tinyxml2::XMLElement* m) {
+    if (auto* is_static = m->FirstChildElement("static")) {
+      const std::string value = Trimmed(is_static->GetText());
+      if ((value == "true" || value == "1") && m->Attribute("name")) {
+        static_models->insert(m->Attribute("name"));
+      }
+    }
     std::set<std::string> links;
     for (auto* l = m->FirstChildElement("link"); l; l = l->NextSiblingElement("link")) {
       links.insert(l->Attribute("name") ? l->Attribute("name") : "");
@@ -221,6 +230,24 @@ std::string CheckSdfJoints(std::string* text, int version) {
   return "";
 }
 
+// DART 6.12's SdfParser ignores <static>: a static model's links float.
+// SDFormat (and mdlc) fix them to the world where they are.
+void WeldFreeRoots(dart::dynamics::Skeleton& skeleton) {
+  std::vector<dart::dynamics::BodyNode*> roots;  // first: welding reorders the nodes
+  for (size_t i = 0; i < skeleton.getNumBodyNodes(); ++i) {
+    dart::dynamics::BodyNode* node = skeleton.getBodyNode(i);
+    if (!node->getParentBodyNode() && node->getParentJoint()->getType() == "FreeJoint") {
+      roots.push_back(node);
+    }
+  }
+  for (dart::dynamics::BodyNode* node : roots) {
+    const Eigen::Isometry3d X_WB = node->getWorldTransform();
+    auto* weld = node->changeParentJointType<dart::dynamics::WeldJoint>();
+    weld->setTransformFromChildBodyNode(Eigen::Isometry3d::Identity());
+    weld->setTransformFromParentBodyNode(X_WB);
+  }
+}
+
 void LoadSdf(const std::string& path, std::string text, DartModel* model) {
   if (FindStartTag(text, "include", 0) != std::string::npos) {
     model->skip_reason = "uses <include>, which DART's SdfParser does not resolve";
@@ -248,7 +275,8 @@ void LoadSdf(const std::string& path, std::string text, DartModel* model) {
     model->note = "SDFormat " + text.substr(begin, end - begin) + " read as 1.6";
     text.replace(begin, end - begin, "1.6");
   }
-  if (std::string problem = CheckSdfJoints(&text, version); !problem.empty()) {
+  std::set<std::string> static_models;
+  if (std::string problem = CheckSdfJoints(&text, version, &static_models); !problem.empty()) {
     model->skip_reason = problem;
     return;
   }
@@ -267,6 +295,9 @@ void LoadSdf(const std::string& path, std::string text, DartModel* model) {
   }
   model->log = capture.text();
   if (model->skeletons.empty()) model->skip_reason = "DART's SdfParser reads no model from it";
+  for (const auto& skeleton : model->skeletons) {
+    if (static_models.count(skeleton->getName())) WeldFreeRoots(*skeleton);
+  }
 }
 
 }  // namespace

@@ -6,8 +6,11 @@
 // shapes (a zero sphere radius) that a compiler must accept. DART's
 // SdfParser reads SDFormat 1.4-1.6 only; a newer file that uses none of
 // what changed since (pose relative_to, frames, expressed_in, nested models,
-// includes, degrees) means the same as 1.6 and is read as 1.6. A file DART
-// cannot read gets a reason instead of skeletons.
+// includes, degrees) means the same as 1.6 and is read as 1.6. Two gaps of
+// the SdfParser are filled as libsdformat would: a 1.4 axis is marked as in
+// the model frame (use_parent_model_frame), and a static model's free links
+// are welded where they are. A file DART cannot read gets a reason instead
+// of skeletons.
 #pragma once
 
 #include <dart/dynamics/Skeleton.hpp>
