@@ -17,6 +17,8 @@
 //     on where the model has it, and off)
 //   each body's Jacobian at its   JacobianSpatialVelocity(body, world, world)
 //     origin                                            vs getWorldJacobian
+//   each body's velocity V_WB_W   FrameSpatialVelocity  vs getAngularVelocity,
+//                                                          getLinearVelocity
 //   center of mass, its velocity  CenterOfMass          vs getCOM,
 //     and Jacobian                                         getCOMLinearJacobian
 //   kinetic, potential energy     KineticEnergy, PotentialEnergy
@@ -606,6 +608,11 @@ TEST_P(DartDynamicsOracle, Matches) {
       }
       const std::string name = plant.ScopedName(plant.bodies[b]);
       ExpectNear("jacobian of " + name, JacobianSpatialVelocity(result, q, name), J_dart * T_inv,
+                 state, &errors);
+      // and its velocity, which DART propagates body by body, not by J v
+      Eigen::Matrix<double, 6, 1> V_WB;
+      V_WB << node->getAngularVelocity(), node->getLinearVelocity();
+      ExpectNear("spatial_velocity of " + name, FrameSpatialVelocity(result, q, v, name), V_WB,
                  state, &errors);
     }
 
