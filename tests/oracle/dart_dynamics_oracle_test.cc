@@ -19,6 +19,9 @@
 //     origin                                            vs getWorldJacobian
 //   each body's velocity V_WB_W   FrameSpatialVelocity  vs getAngularVelocity,
 //                                                          getLinearVelocity
+//   and acceleration A_WB_W       BodySpatialAccelerations (backend)
+//                                                       vs getAngularAcceleration,
+//                                                          getLinearAcceleration
 //   center of mass, its velocity  CenterOfMass          vs getCOM,
 //     and Jacobian                                         getCOMLinearJacobian
 //   kinetic, potential energy     KineticEnergy, PotentialEnergy
@@ -525,6 +528,17 @@ TEST_P(DartDynamicsOracle, Matches) {
     });
     ExpectNear("inverse_dynamics", InverseDynamics(result, q, v, vdot, rigid), T_inv_T * id_dart,
                state, &errors);
+    // Each body's acceleration at vdot: [alpha; classical a of Bo] in W.
+    const std::vector<backend::Vector6d> A_WB =
+        backend::BodySpatialAccelerations(plant, q, v, vdot);
+    for (size_t b = 0; b < plant.bodies.size(); ++b) {
+      dart::dynamics::BodyNode* node = pairing.bodies[b];
+      if (!node) continue;
+      Eigen::Matrix<double, 6, 1> A;
+      A << node->getAngularAcceleration(), node->getLinearAcceleration();
+      ExpectNear("spatial_acceleration of " + plant.ScopedName(plant.bodies[b]), A_WB[b], A, state,
+                 &errors);
+    }
     if (has_damping) {
       // DART's inverse dynamics damps v + time_step * vdot (its implicit
       // damping; the time step must be positive); mdlc's, like Drake's,
