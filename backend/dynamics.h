@@ -85,8 +85,9 @@ Eigen::VectorXd ReflectedInertia(const Plant& plant);
 
 /// vdot for (q, v, tau): the solution of (M + reflected) vdot = tau + tau_g
 /// + tau_applied - C v, by the articulated-body algorithm (O(n) in the
-/// bodies; M is never formed). Throws std::domain_error when a joint moves
-/// only massless bodies (M is singular).
+/// bodies; M is never formed). Throws std::domain_error when M is singular:
+/// a joint with no inertia along its own motion (it moves only massless
+/// bodies, or point masses on its axis).
 Eigen::VectorXd ForwardDynamics(const Plant& plant, const Eigen::VectorXd& q,
                                 const Eigen::VectorXd& v, const Eigen::VectorXd& tau,
                                 const DynamicsOptions& options = {});

@@ -35,8 +35,8 @@ struct ArticulatedJoint {
 
 [[noreturn]] void ThrowMassless(const Plant& plant, const PlantJoint& joint) {
   throw std::domain_error("joint '" + plant.ScopedName(joint) +
-                          "' moves only massless bodies (its articulated inertia is singular), "
-                          "so the accelerations are undefined");
+                          "' has no inertia along its own motion (it moves only massless bodies, "
+                          "or point masses on its axis), so the accelerations are undefined");
 }
 
 JointMatrix InvertJointInertia(const Plant& plant, const PlantJoint& joint, const JointMatrix& D) {
@@ -85,7 +85,10 @@ VectorXd ForwardDynamics(const Plant& plant, const VectorXd& q, const VectorXd& 
       // most joints: D is a number and U D^-1 U^T an outer product
       const Vector6d s_col = S.col(0), U = IA[c] * s_col;
       const double D = s_col.dot(U) + reflected[joint.v_start];
-      if (!(D > 0)) ThrowMassless(plant, joint);
+      // below round-off of the product it came from, D is zero: a joint
+      // moving only massless bodies, or point masses on its own axis
+      const double round_off = 1e-13 * IA[c].cwiseAbs().maxCoeff() * s_col.squaredNorm();
+      if (!(D > round_off)) ThrowMassless(plant, joint);
       aj.U = U;
       aj.D_inv = JointMatrix::Constant(1, 1, 1 / D);
       aj.u = JointVector::Constant(1, tau_total[joint.v_start] - s_col.dot(pA[c]));

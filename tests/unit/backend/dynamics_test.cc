@@ -466,5 +466,28 @@ TEST(Dynamics, RejectsWrongSizesAndSingularMass) {
   EXPECT_EQ(InverseDynamics(plant, one, one, one).size(), 1);
 }
 
+// A point mass on its joint's axis has no inertia along the joint's motion:
+// M is singular though the body has mass, and the round-off of M's entry
+// must not pass for an inertia. A small but real inertia, away from the
+// world origin, still counts.
+TEST(Dynamics, PointMassOnItsAxisIsSingularButASmallInertiaIsNot) {
+  for (const bool point_mass : {true, false}) {
+    ModelBuilder b;
+    const Eigen::Matrix3d I = point_mass ? Eigen::Matrix3d::Zero() : Diag(1e-9, 1e-9, 1e-9);
+    const BodyId link = b.AddBody("link", point_mass ? 0.5 : 1e-3, Vector3d::Zero(), I);
+    const Transform X_PF{RotationFromRpy(Vector3d(0.3, 0.2, 0.1)), Vector3d(3, -2, 1)};
+    b.AddJoint("spin", JointType::Revolute, ir::kWorldBody, link, X_PF, Vector3d(0.6, 0.8, 0));
+    auto model = test_util::InstantiateOk(b.module());
+    ASSERT_TRUE(model);
+    const VectorXd q = VectorXd::Constant(1, 2.7), v = VectorXd::Constant(1, 0.3),
+                   tau = VectorXd::Constant(1, 1e-9);
+    if (point_mass) {
+      EXPECT_THROW(ForwardDynamics(model->plant, q, v, tau), std::domain_error);
+    } else {
+      EXPECT_NEAR(ForwardDynamics(model->plant, q, v, tau)[0], 1.0, 1e-6);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace mdlc::backend
