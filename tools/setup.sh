@@ -33,11 +33,12 @@ python_packages=(python3-dev python3-numpy pybind11-dev)
 # URDF and SDFormat readers for the dynamics oracle), Graphviz to
 # check that `mdlc graph -o x.svg` renders, and Chromium to open the pages
 # `mdlc view` writes, and clang with its sanitizer and libFuzzer runtimes for
-# the sanitizer suite and the fuzzers (test-only)
+# the sanitizer suite and the fuzzers, and dpkg-dev, whose dpkg-shlibdeps
+# computes the Debian package's Depends (test-only)
 test_packages=(libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
                liburdfdom-dev libsdformat-dev libmujoco-dev graphviz chromium
                libdart-dev libdart-utils-dev libdart-utils-urdf-dev
-               clang libclang-rt-14-dev)
+               clang libclang-rt-14-dev dpkg-dev)
 
 packages=("${runtime_packages[@]}")
 if [ "$mode" = test ]; then
