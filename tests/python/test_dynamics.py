@@ -150,6 +150,20 @@ class Identities(Models, unittest.TestCase):
                     Jv = model.jacobian(body, q, translational=True)  # a Body names itself
                     np.testing.assert_allclose(Jv, J[3:], atol=1e-15)
 
+    def test_frame_acceleration_is_the_rate_of_the_frame_velocity(self):
+        model = self.models["double_pendulum.urdf"]  # every v is a qdot here
+        self.assertEqual(len(qdot_columns(model)), model.num_velocities)
+        rng = np.random.default_rng(11)
+        q, v = random_state(model, rng)
+        vdot = rng.uniform(-1.0, 1.0, model.num_velocities)
+        for body in model.bodies:
+            with self.subTest(body=body.scoped_name):
+                def velocity(t):
+                    return model.frame_velocity(body, q + t * v, v + t * vdot)
+                rate = (velocity(STEP) - velocity(-STEP)) / (2 * STEP)
+                np.testing.assert_allclose(model.frame_acceleration(body, q, v, vdot), rate,
+                                           atol=1e-6)
+
     def test_jacobian_columns_are_finite_differences_of_the_pose(self):
         self.assertEqual(len(qdot_columns(self.models["ball_universal.sdf"])), 2)
         rng = np.random.default_rng(6)
@@ -336,7 +350,7 @@ class Errors(Models, unittest.TestCase):
     def test_docstrings_state_the_conventions(self):
         for method in ("inverse_dynamics", "bias_term", "gravity_forces", "forward_dynamics",
                        "kinetic_energy", "potential_energy", "jacobian", "frame_pose",
-                       "frame_velocity", "center_of_mass"):
+                       "frame_velocity", "frame_acceleration", "center_of_mass"):
             with self.subTest(method=method):
                 doc = getattr(mdlc.Model, method).__doc__
                 self.assertIn("Drake", doc)

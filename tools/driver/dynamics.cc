@@ -108,6 +108,22 @@ backend::Vector6d FrameSpatialVelocity(const Result& result, const Eigen::Vector
   return V_WF;
 }
 
+backend::Vector6d FrameSpatialAcceleration(const Result& result, const Eigen::VectorXd& q,
+                                           const Eigen::VectorXd& v, const Eigen::VectorXd& vdot,
+                                           std::string_view frame) {
+  const backend::Plant& plant = result.plant();
+  const backend::BodyFixedFrame F = Frame(plant, frame);
+  const size_t b = F.body.index();
+  const backend::Vector6d A_WB = backend::BodySpatialAccelerations(plant, q, v, vdot)[b];
+  const backend::Vector6d V_WB = backend::BodySpatialVelocities(plant, q, v)[b];
+  // a_Fo = a_Bo + alpha x p + w x (w x p), p = p_BoFo_W
+  const Eigen::Vector3d w = V_WB.head<3>(), alpha = A_WB.head<3>();
+  const Eigen::Vector3d p = backend::BodyPosesInWorld(plant, q)[b].R * F.X_BF.p;
+  backend::Vector6d A_WF;
+  A_WF << alpha, A_WB.tail<3>() + alpha.cross(p) + w.cross(w.cross(p));
+  return A_WF;
+}
+
 backend::CenterOfMass CenterOfMass(const Result& result, const Eigen::VectorXd& q,
                                    const Eigen::VectorXd& v,
                                    const std::vector<std::string>& model_instances) {

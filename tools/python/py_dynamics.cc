@@ -261,6 +261,21 @@ void BindDynamics(py::module_& m) {
               "jacobian(frame, q) @ v.")
               .c_str())
       .def(
+          "frame_acceleration",
+          [](const Model& m, const py::object& frame, const Eigen::VectorXd& q,
+             const Eigen::VectorXd& v, const Eigen::VectorXd& vdot) {
+            const char* f = "frame_acceleration";
+            return mdlc::FrameSpatialAcceleration(*m.result, Positions(f, m, q),
+                                                  Velocities(f, m, "v", v),
+                                                  Velocities(f, m, "vdot", vdot), FrameName(frame));
+          },
+          py::arg("frame"), py::arg("q"), py::arg("v"), py::arg("vdot"),
+          Doc("A_WF_W (6): [alpha_WF; a_WFo], the angular acceleration of a body or frame F and "
+              "the acceleration of its origin, measured and expressed in the world, gravity not "
+              "included: the rate of frame_velocity(frame, q, v) as q moves with v and v with "
+              "vdot.")
+              .c_str())
+      .def(
           "center_of_mass",
           [](const Model& m, const Eigen::VectorXd& q, const std::optional<Eigen::VectorXd>& v,
              const std::optional<std::vector<std::string>>& model_instances) {

@@ -70,6 +70,12 @@ Transform FramePose(const Result& result, const Eigen::VectorXd& q, std::string_
 backend::Vector6d FrameSpatialVelocity(const Result& result, const Eigen::VectorXd& q,
                                        const Eigen::VectorXd& v, std::string_view frame);
 
+/// A_WF_W = [alpha; a of F's origin] of a named body or frame at (q, v, vdot),
+/// gravity not included (the derivative of FrameSpatialVelocity).
+backend::Vector6d FrameSpatialAcceleration(const Result& result, const Eigen::VectorXd& q,
+                                           const Eigen::VectorXd& v, const Eigen::VectorXd& vdot,
+                                           std::string_view frame);
+
 /// The center of mass of every body (empty `model_instances`) or of the
 /// bodies of the named model instances; v may be empty (velocity then zero).
 backend::CenterOfMass CenterOfMass(const Result& result, const Eigen::VectorXd& q,
