@@ -62,9 +62,9 @@
 // texturedir or assetdir attribute, as many levels above as that needs) is
 // copied into it at the same absolute path before loading; includes, meshes
 // and textures then resolve as they do for MuJoCo on disk.
-import fs from 'node:fs';
 import path from 'node:path';
-import loadMujoco from 'mujoco-js';
+
+import { answerAll, dumpFile, mj, mulberry32, nameOf, startModule } from './wasm_host.mjs';
 
 const JOINT_TYPES = ['free', 'ball', 'slide', 'hinge'];
 const GEOM_TYPES = ['plane', 'hfield', 'sphere', 'capsule', 'ellipsoid', 'cylinder', 'box', 'mesh', 'sdf'];
@@ -109,111 +109,14 @@ const files = [];
   if (!(opts.configs >= 0)) usage('--configs must be >= 0');
 }
 
-// Messages the module prints (e.g. "Loading error: ...") are collected per
-// file instead of going to the terminal.
-let printed = [];
-const startModule = () => loadMujoco({
-  print: (s) => printed.push(String(s)),
-  printErr: (s) => printed.push(String(s)),
-});
-let mj = await startModule();
+await startModule();
 
 if (opts.version) {
   process.stdout.write(JSON.stringify({ version: mj.mj_versionString() }) + '\n');
   process.exit(0);
 }
 
-// ------------------------------------------------------------ file mirroring
-const mirrored = new Set();
-
-function mkdirp(dir) {
-  const parts = dir.split('/').filter(Boolean);
-  let cur = '';
-  for (const p of parts) {
-    cur += '/' + p;
-    try { mj.FS.mkdir(cur); } catch (e) { /* exists */ }
-  }
-}
-
-function listTree(dir, out) {
-  let entries = [];
-  try { entries = fs.readdirSync(dir, { withFileTypes: true }); } catch (e) { return; }
-  for (const e of entries) {
-    const p = path.join(dir, e.name);
-    if (e.isDirectory()) listTree(p, out);
-    else if (e.isFile() || e.isSymbolicLink()) out.push(p);
-  }
-}
-
-// How many levels above its folder an XML file reaches with "../".
-function upLevels(xmlFile) {
-  let text = '';
-  try { text = fs.readFileSync(xmlFile, 'utf8'); } catch (e) { return 0; }
-  let most = 0;
-  const re = /\b(?:file|meshdir|texturedir|assetdir)\s*=\s*"((?:\.\.\/|\.\/)*)/g;
-  for (let m; (m = re.exec(text));) most = Math.max(most, (m[1].match(/\.\.\//g) || []).length);
-  return most;
-}
-
-function rootFor(file) {
-  if (opts.root) return opts.root;
-  let root = path.dirname(file);
-  for (let guard = 0; guard < 8; ++guard) {
-    const tree = [];
-    listTree(root, tree);
-    let need = 0;
-    for (const f of tree) {
-      if (!f.endsWith('.xml')) continue;
-      const depth = path.relative(root, path.dirname(f)).split(path.sep).filter(Boolean).length;
-      need = Math.max(need, upLevels(f) - depth);
-    }
-    if (need <= 0 || path.dirname(root) === root) break;
-    for (let k = 0; k < need; ++k) root = path.dirname(root);
-  }
-  return root;
-}
-
-function mirror(root) {
-  if (mirrored.has(root)) return;
-  const tree = [];
-  listTree(root, tree);
-  for (const f of tree) {
-    if (mirrored.has(f)) continue;
-    mkdirp(path.dirname(f));
-    try { mj.FS.writeFile(f, fs.readFileSync(f)); } catch (e) { /* unreadable: MuJoCo reports it */ }
-    mirrored.add(f);
-  }
-  mirrored.add(root);
-}
-
 // ------------------------------------------------------------------- helpers
-function heapU8() {
-  const b = new mj.DoubleBuffer(1);
-  const view = new Uint8Array(b.GetView().buffer);
-  b.delete();
-  return view;
-}
-
-// MuJoCo's exceptions (mjXError, mjCError) hold the message as their first
-// member, a NUL-terminated char array.
-function exceptionText(e) {
-  if (e && typeof e.excPtr === 'number') {
-    const heap = heapU8();
-    const bytes = [];
-    for (let i = e.excPtr; i < heap.length && heap[i] && bytes.length < 4000; ++i) bytes.push(heap[i]);
-    return `${e.name || 'error'}: ${Buffer.from(bytes).toString('utf8').trim()}`;
-  }
-  return String(e && e.message ? e.message : e);
-}
-
-function nameOf(m, adrArray, id) {
-  const adr = adrArray[id];
-  const names = m.names;
-  let s = '';
-  for (let i = adr; i < names.length && names[i] !== 0; ++i) s += String.fromCharCode(names[i] & 0xff);
-  return Buffer.from(s, 'latin1').toString('utf8');
-}
-
 const vec = (a, i, n) => Array.from(a.subarray(i * n, i * n + n));
 
 function matToQuat(R) {  // row-major 3x3 -> [w x y z], w >= 0
@@ -235,15 +138,6 @@ function matToQuat(R) {  // row-major 3x3 -> [w x y z], w >= 0
   }
   const n = Math.hypot(w, x, y, z) * (w < 0 ? -1 : 1);
   return [w / n, x / n, y / n, z / n];
-}
-
-function mulberry32(a) {
-  return () => {
-    a |= 0; a = (a + 0x6D2B79F5) | 0;
-    let t = Math.imul(a ^ (a >>> 15), 1 | a);
-    t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
 }
 
 // ------------------------------------------------------------------- dumping
@@ -418,49 +312,7 @@ function dumpModel(file, m) {
   return out;
 }
 
-// A module that failed a file is not used again: MuJoCo's compiler leaves
-// its error handler installed when a load ends in an exception, so the next
-// model's runtime error (mju_error) would jump into a finished compile and
-// surface as a bare "Error". A fresh instance (about 0.1 s) keeps every
-// file's dump what a process of its own would print.
-let moduleFailed = false;
-
 // One file's line of output.
-async function dumpFile(file) {
-  printed = [];
-  if (!fs.existsSync(file)) return { file, ok: false, error: `no such file: ${file}` };
-  if (moduleFailed) {
-    mj = await startModule();
-    mirrored.clear();
-    moduleFailed = false;
-  }
-  mirror(rootFor(file));
-  let line;
-  let m = null;
-  try {
-    m = mj.MjModel.loadFromXML(file);
-    if (!m) line = { file, ok: false, error: printed.join('\n').trim() || 'load failed' };
-    else line = dumpModel(file, m);
-  } catch (e) {
-    line = { file, ok: false, error: exceptionText(e) };
-  } finally {
-    if (m) m.delete();
-  }
-  const warnings = printed.filter((s) => s.trim());
-  if (line.ok && warnings.length) line.messages = warnings;
-  if (!line.ok) moduleFailed = true;
-  return line;
-}
+const dumpOne = (file) => dumpFile(file, dumpModel, { root: opts.root, messages: true });
 
-if (opts.serve) {
-  // One path per line on stdin, one line out per path, in order, until
-  // stdin closes: a test dumping many files starts Node.js and MuJoCo once.
-  const readline = await import('node:readline');
-  const lines = readline.createInterface({ input: process.stdin, crlfDelay: Infinity });
-  for await (const request of lines) {
-    if (!request) continue;
-    process.stdout.write(JSON.stringify(await dumpFile(path.resolve(request))) + '\n');
-  }
-} else {
-  for (const file of files) process.stdout.write(JSON.stringify(await dumpFile(file)) + '\n');
-}
+await answerAll(files, opts.serve, dumpOne);

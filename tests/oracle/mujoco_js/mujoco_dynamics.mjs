@@ -44,12 +44,12 @@
 // limited, else in [-pi, pi] (hinge) or [-0.5, 0.5] (slide); ball and free
 // joints a uniformly random unit quaternion, free positions uniform in
 // [-1, 1]; qvel, qacc and tau uniform in [-1, 1]. Numbers print so that they
-// round-trip a double. Files are mirrored into the module's file system as
-// mujoco_dump.mjs does it (the file's folder, and the levels above it that
-// "../" references reach).
-import fs from 'node:fs';
+// round-trip a double. Files are mirrored into the module's file system by
+// wasm_host.mjs (the file's folder, and the levels above it that "../"
+// references reach), as for mujoco_dump.mjs.
 import path from 'node:path';
-import loadMujoco from 'mujoco-js';
+
+import { answerAll, dumpFile, mj, mulberry32, nameOf, startModule } from './wasm_host.mjs';
 
 const JOINT_TYPES = ['free', 'ball', 'slide', 'hinge'];
 // mjtDisableBit and mjtEnableBit of MuJoCo 3.3.8 (checked against the
@@ -81,12 +81,7 @@ const files = [];
   if (!(opts.states >= 1)) usage('--states must be >= 1');
 }
 
-let printed = [];
-const startModule = () => loadMujoco({
-  print: (s) => printed.push(String(s)),
-  printErr: (s) => printed.push(String(s)),
-});
-let mj = await startModule();
+await startModule();
 
 // The enum values this script relies on, where the module exposes them.
 for (const [name, bit] of Object.entries(DSBL)) {
@@ -100,102 +95,7 @@ for (const [name, bit] of Object.entries(DSBL)) {
   if (e && e.value !== undefined && e.value !== ENBL_ENERGY) throw new Error('mjENBL_ENERGY moved');
 }
 
-// ------------------------------------------------------------ file mirroring
-// (as mujoco_dump.mjs: the module has its own file system)
-const mirrored = new Set();
-
-function mkdirp(dir) {
-  let cur = '';
-  for (const p of dir.split('/').filter(Boolean)) {
-    cur += '/' + p;
-    try { mj.FS.mkdir(cur); } catch (e) { /* exists */ }
-  }
-}
-
-function listTree(dir, out) {
-  let entries = [];
-  try { entries = fs.readdirSync(dir, { withFileTypes: true }); } catch (e) { return; }
-  for (const e of entries) {
-    const p = path.join(dir, e.name);
-    if (e.isDirectory()) listTree(p, out);
-    else if (e.isFile() || e.isSymbolicLink()) out.push(p);
-  }
-}
-
-function upLevels(xmlFile) {
-  let text = '';
-  try { text = fs.readFileSync(xmlFile, 'utf8'); } catch (e) { return 0; }
-  let most = 0;
-  const re = /\b(?:file|meshdir|texturedir|assetdir)\s*=\s*"((?:\.\.\/|\.\/)*)/g;
-  for (let m; (m = re.exec(text));) most = Math.max(most, (m[1].match(/\.\.\//g) || []).length);
-  return most;
-}
-
-function rootFor(file) {
-  let root = path.dirname(file);
-  for (let guard = 0; guard < 8; ++guard) {
-    const tree = [];
-    listTree(root, tree);
-    let need = 0;
-    for (const f of tree) {
-      if (!f.endsWith('.xml')) continue;
-      const depth = path.relative(root, path.dirname(f)).split(path.sep).filter(Boolean).length;
-      need = Math.max(need, upLevels(f) - depth);
-    }
-    if (need <= 0 || path.dirname(root) === root) break;
-    for (let k = 0; k < need; ++k) root = path.dirname(root);
-  }
-  return root;
-}
-
-function mirror(root) {
-  if (mirrored.has(root)) return;
-  const tree = [];
-  listTree(root, tree);
-  for (const f of tree) {
-    if (mirrored.has(f)) continue;
-    mkdirp(path.dirname(f));
-    try { mj.FS.writeFile(f, fs.readFileSync(f)); } catch (e) { /* MuJoCo reports it */ }
-    mirrored.add(f);
-  }
-  mirrored.add(root);
-}
-
 // ------------------------------------------------------------------- helpers
-function heapU8() {
-  const b = new mj.DoubleBuffer(1);
-  const view = new Uint8Array(b.GetView().buffer);
-  b.delete();
-  return view;
-}
-
-function exceptionText(e) {
-  if (e && typeof e.excPtr === 'number') {
-    const heap = heapU8();
-    const bytes = [];
-    for (let i = e.excPtr; i < heap.length && heap[i] && bytes.length < 4000; ++i) bytes.push(heap[i]);
-    return `${e.name || 'error'}: ${Buffer.from(bytes).toString('utf8').trim()}`;
-  }
-  return String(e && e.message ? e.message : e);
-}
-
-function nameOf(m, adrArray, id) {
-  const adr = adrArray[id];
-  const names = m.names;
-  let s = '';
-  for (let i = adr; i < names.length && names[i] !== 0; ++i) s += String.fromCharCode(names[i] & 0xff);
-  return Buffer.from(s, 'latin1').toString('utf8');
-}
-
-function mulberry32(a) {
-  return () => {
-    a |= 0; a = (a + 0x6D2B79F5) | 0;
-    let t = Math.imul(a ^ (a >>> 15), 1 | a);
-    t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
-
 // A uniformly random unit quaternion [w x y z] (Shoemake's method).
 function randomQuat(rnd) {
   const u1 = rnd(), u2 = 2 * Math.PI * rnd(), u3 = 2 * Math.PI * rnd();
@@ -370,41 +270,4 @@ function dumpModel(file, m) {
   return out;
 }
 
-// A module that failed a file is replaced (see mujoco_dump.mjs: MuJoCo leaves
-// its compiler's error handler installed after a failed load).
-let moduleFailed = false;
-
-async function dumpFile(file) {
-  printed = [];
-  if (!fs.existsSync(file)) return { file, ok: false, error: `no such file: ${file}` };
-  if (moduleFailed) {
-    mj = await startModule();
-    mirrored.clear();
-    moduleFailed = false;
-  }
-  mirror(rootFor(file));
-  let line;
-  let m = null;
-  try {
-    m = mj.MjModel.loadFromXML(file);
-    if (!m) line = { file, ok: false, error: printed.join('\n').trim() || 'load failed' };
-    else line = dumpModel(file, m);
-  } catch (e) {
-    line = { file, ok: false, error: exceptionText(e) };
-  } finally {
-    if (m) m.delete();
-  }
-  if (!line.ok) moduleFailed = true;
-  return line;
-}
-
-if (opts.serve) {
-  const readline = await import('node:readline');
-  const lines = readline.createInterface({ input: process.stdin, crlfDelay: Infinity });
-  for await (const request of lines) {
-    if (!request) continue;
-    process.stdout.write(JSON.stringify(await dumpFile(path.resolve(request))) + '\n');
-  }
-} else {
-  for (const file of files) process.stdout.write(JSON.stringify(await dumpFile(file)) + '\n');
-}
+await answerAll(files, opts.serve, (file) => dumpFile(file, dumpModel));
