@@ -57,13 +57,6 @@
 #include "mdlc/mdlc.h"
 #include "oracle_util.h"
 
-#ifndef MDLC_SHARED_DIR
-#define MDLC_SHARED_DIR ""
-#endif
-#ifndef MDLC_TEST_MODELS
-#define MDLC_TEST_MODELS ""
-#endif
-
 namespace mdlc::oracle {
 namespace {
 
@@ -89,16 +82,10 @@ struct ModelCase {
 
 void PrintTo(const ModelCase& c, std::ostream* os) { *os << c.display; }
 
-struct CaseName {
-  std::string operator()(const ::testing::TestParamInfo<ModelCase>& info) const {
-    return info.param.id;
-  }
-};
-
 std::vector<ModelCase> HandMadeCases() {
   std::vector<ModelCase> cases;
   for (const auto& [sub, ext] : {std::pair{"urdf", ".urdf"}, std::pair{"sdf", ".sdf"}}) {
-    const fs::path dir = fs::path(MDLC_TEST_MODELS) / sub;
+    const fs::path dir = TestModels(sub);
     for (const fs::path& f : FilesWithExtension(dir, ext)) {
       ModelCase c;
       c.id = Sanitize(std::string(sub) + "_" + f.stem().string());
@@ -193,28 +180,18 @@ std::vector<ModelCase> InlineCases() {
 
 // The corpus's URDF and SDFormat files that its reference tools load.
 std::vector<ModelCase> CorpusCases() {
-  std::vector<ModelCase> cases;
-  const fs::path corpus = fs::path(MDLC_SHARED_DIR) / "corpus";
-  const auto rows = ReadManifest(corpus / "manifest.tsv");
-  if (std::string(MDLC_SHARED_DIR).empty() || !rows) {
-    ModelCase c;
-    c.id = "shared_corpus_unavailable";
-    c.skip_reason = "shared corpus not found; the corpus comparison needs ../shared";
-    cases.push_back(c);
-    return cases;
-  }
-  for (const std::vector<std::string>& cols : *rows) {
-    if (cols.size() < 7 || (cols[0] != "urdf" && cols[0] != "sdf")) continue;
-    if (cols[6].rfind("yes", 0) != 0) continue;
-    ModelCase c;
-    c.id = Sanitize(fs::path(cols[1]).replace_extension().string());
-    c.path = (corpus / cols[1]).string();
-    c.display = "corpus/" + cols[1];
-    c.package_path = corpus.string();
-    cases.push_back(c);
-  }
-  Uniquify(&cases);
-  return cases;
+  return ManifestCases<ModelCase>(
+      "shared corpus not found; the corpus comparison needs ../shared",
+      [](const std::vector<std::string>& cols) -> std::optional<ModelCase> {
+        if (cols.size() < 7 || (cols[0] != "urdf" && cols[0] != "sdf")) return std::nullopt;
+        if (cols[6].rfind("yes", 0) != 0) return std::nullopt;
+        ModelCase c;
+        c.id = Sanitize(fs::path(cols[1]).replace_extension().string());
+        c.path = (CorpusDir() / cols[1]).string();
+        c.display = "corpus/" + cols[1];
+        c.package_path = CorpusDir().string();
+        return c;
+      });
 }
 
 // ---------------------------------------------------------------------------
@@ -223,11 +200,9 @@ std::vector<ModelCase> CorpusCases() {
 
 // Largest error of each quantity over the model's states, for the log.
 struct Errors {
-  std::map<std::string, double> max_error;
+  WorstErrors max_error;
   int compared = 0;
 };
-
-double MaxAbs(const MatrixXd& x) { return x.size() ? x.cwiseAbs().maxCoeff() : 0.0; }
 
 // |mdlc - dart|_max <= kTol * (1 + max(|dart|_max, scale)); records the
 // error relative to that. `scale` is the size of what round-off grows with
@@ -237,8 +212,7 @@ void ExpectNear(const std::string& what, const MatrixXd& mdlc, const MatrixXd& d
   ASSERT_EQ(mdlc.rows(), dart.rows()) << what;
   ASSERT_EQ(mdlc.cols(), dart.cols()) << what;
   const double error = MaxAbs(mdlc - dart) / (1 + std::max(MaxAbs(dart), scale));
-  const std::string key = what.substr(0, what.find(' '));
-  errors->max_error[key] = std::max(errors->max_error[key], error);
+  RecordWorst(&errors->max_error, what, error);
   ++errors->compared;
   EXPECT_LE(error, kTol) << what << " at state " << state << " differs (relative error " << error
                          << ")\nmdlc:\n"

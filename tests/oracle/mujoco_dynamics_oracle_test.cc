@@ -83,19 +83,6 @@ using Eigen::Vector3d;
 using Eigen::VectorXd;
 using json = nlohmann::json;
 
-#ifndef MDLC_SHARED_DIR
-#define MDLC_SHARED_DIR ""
-#endif
-#ifndef MDLC_TEST_MODELS
-#define MDLC_TEST_MODELS ""
-#endif
-#ifndef MDLC_NODE
-#define MDLC_NODE ""
-#endif
-#ifndef MDLC_MUJOCO_JS_DIR
-#define MDLC_MUJOCO_JS_DIR ""
-#endif
-
 // Relative to 1 + the largest entry: both sides do the same arithmetic in
 // double precision in a different order.
 constexpr double kDynTol = 1e-8;
@@ -138,93 +125,42 @@ struct ModelCase {
 void PrintTo(const ModelCase& c, std::ostream* os) { *os << c.display; }
 
 std::vector<ModelCase> CorpusCases() {
-  std::vector<ModelCase> cases;
-  const fs::path corpus = fs::path(MDLC_SHARED_DIR) / "corpus";
-  const auto rows = ReadManifest(corpus / "manifest.tsv");
-  if (std::string(MDLC_SHARED_DIR).empty() || !rows) {
-    ModelCase c;
-    c.id = "shared_corpus_unavailable";
-    c.skip_reason = "shared corpus not found (corpus/manifest.tsv under MDLC_SHARED_DIR)";
-    cases.push_back(c);
-    return cases;
-  }
-  for (const std::vector<std::string>& cols : *rows) {
-    if (cols.size() < 2 || cols[0] != "mjcf") continue;
-    ModelCase c;
-    std::string stem = cols[1];
-    if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".xml") stem.resize(stem.size() - 4);
-    c.id = Sanitize(stem);
-    c.path = (corpus / cols[1]).string();
-    c.display = "corpus/" + cols[1];
-    if (const char* r = NotComparableReason(cols[1])) c.listed = r;
-    cases.push_back(c);
-  }
-  Uniquify(&cases);
-  return cases;
+  return ManifestCases<ModelCase>(
+      "shared corpus not found (corpus/manifest.tsv under MDLC_SHARED_DIR)",
+      [](const std::vector<std::string>& cols) -> std::optional<ModelCase> {
+        if (cols.size() < 2 || cols[0] != "mjcf") return std::nullopt;
+        ModelCase c;
+        c.id = Sanitize(WithoutSuffix(cols[1], ".xml"));
+        c.path = (CorpusDir() / cols[1]).string();
+        c.display = "corpus/" + cols[1];
+        if (const char* r = NotComparableReason(cols[1])) c.listed = r;
+        return c;
+      });
 }
 
 std::vector<ModelCase> HandMadeCases() {
-  std::vector<ModelCase> cases;
-  const fs::path dir = fs::path(MDLC_TEST_MODELS) / "mjcf" / "oracle";
-  for (const auto& f : FilesWithExtension(dir, ".xml")) {
-    ModelCase c;
-    c.id = Sanitize(f.stem().string());
-    c.path = f.string();
-    c.display = "tests/models/mjcf/oracle/" + f.filename().string();
-    if (const char* r = NotComparableReason(c.display)) c.listed = r;
-    cases.push_back(c);
-  }
-  if (cases.empty()) {
-    ModelCase c;
-    c.id = "no_models";
-    c.skip_reason = "no MJCF models in tests/models/mjcf/oracle";
-    cases.push_back(c);
-  }
-  Uniquify(&cases);
-  return cases;
+  return FolderCases<ModelCase>(
+      TestModels("mjcf/oracle"), ".xml", "no MJCF models in tests/models/mjcf/oracle",
+      [](const fs::path& f) {
+        ModelCase c;
+        c.id = Sanitize(f.stem().string());
+        c.path = f.string();
+        c.display = "tests/models/mjcf/oracle/" + f.filename().string();
+        if (const char* r = NotComparableReason(c.display)) c.listed = r;
+        return c;
+      });
 }
 
 // ---------------------------------------------------------------------------
 // MuJoCo's side
 // ---------------------------------------------------------------------------
 
-std::string Found(const std::string& s) {
-  return s.size() >= 9 && s.compare(s.size() - 9, 9, "-NOTFOUND") == 0 ? "" : s;
-}
-
-std::string NodeBinary() {
-  if (const char* env = std::getenv("MDLC_NODE"); env && *env) return env;
-  return Found(MDLC_NODE);
-}
-
-std::string MujocoJsUnavailable() {
-  if (NodeBinary().empty()) return "Node.js not found at configure time (install nodejs)";
-  if (std::string(MDLC_MUJOCO_JS_DIR).empty()) return "MDLC_MUJOCO_JS_DIR not set";
-  std::error_code ec;
-  if (!fs::exists(fs::path(MDLC_MUJOCO_JS_DIR) / "node_modules" / "mujoco-js" / "package.json", ec)) {
-    return "mujoco-js is not installed: run `npm ci` in tests/oracle/mujoco_js "
-           "(tools/setup.sh test does)";
-  }
-  return "";
-}
-
 // The dump of one file, from one Node.js process per test process.
 json DumpDynamics(const std::string& file, std::string* problem) {
-  static LineServer server({NodeBinary(),
-                            (fs::path(MDLC_MUJOCO_JS_DIR) / "mujoco_dynamics.mjs").string(),
-                            "--states", std::to_string(std::max(1, EnvInt("MDLC_DYNAMICS_STATES", 5))),
-                            "--seed", "1", "--serve"});
-  const std::optional<std::string> line = server.Ask(file, 120.0, problem);
-  if (!line) {
-    *problem = "MuJoCo 3.3.8 dynamics helper: " + *problem;
-    return json();
-  }
-  try {
-    return json::parse(*line);
-  } catch (const std::exception& e) {
-    *problem = std::string("unreadable dump (") + e.what() + "): " + line->substr(0, 300);
-    return json();
-  }
+  static LineServer server(MujocoJsServeCommand(
+      "mujoco_dynamics.mjs",
+      {"--states", std::to_string(std::max(1, EnvInt("MDLC_DYNAMICS_STATES", 5))), "--seed", "1"}));
+  return AskForDump(server, "MuJoCo 3.3.8 dynamics helper", file, 120.0, problem);
 }
 
 VectorXd Vec(const json& a) {
@@ -419,13 +355,11 @@ MdlcCoordinates ToMdlcCoordinates(const mdlc::backend::Plant& plant, const Match
 // Comparison
 // ---------------------------------------------------------------------------
 
-// The largest relative error seen per quantity, for the summary line.
-using Worst = std::map<std::string, double>;
-
 // max|a - b| / (1 + max(|a|, |b|)) over the entries; reports it above `tol`
 // with the worst entry.
-double Compare(Report* rep, Worst* worst, const std::string& feature, const std::string& what,
-               const MatrixXd& mdlc_value, const MatrixXd& ref, double tol = kDynTol) {
+double Compare(Report* rep, WorstErrors* worst, const std::string& feature,
+               const std::string& what, const MatrixXd& mdlc_value, const MatrixXd& ref,
+               double tol = kDynTol) {
   if (mdlc_value.rows() != ref.rows() || mdlc_value.cols() != ref.cols()) {
     rep->Add(feature + " " + what + ": mdlc is " + std::to_string(mdlc_value.rows()) + "x" +
              std::to_string(mdlc_value.cols()) + ", MuJoCo " + std::to_string(ref.rows()) + "x" +
@@ -433,12 +367,11 @@ double Compare(Report* rep, Worst* worst, const std::string& feature, const std:
     return INFINITY;
   }
   if (ref.size() == 0) return 0;
-  const double scale = 1 + std::max(mdlc_value.cwiseAbs().maxCoeff(), ref.cwiseAbs().maxCoeff());
+  const double scale = 1 + std::max(MaxAbs(mdlc_value), MaxAbs(ref));
   Eigen::Index r = 0, c = 0;
   const double err = (mdlc_value - ref).cwiseAbs().maxCoeff(&r, &c);
   const double rel = std::isnan(err) ? INFINITY : err / scale;
-  double& w = (*worst)[what.substr(0, what.find(' '))];
-  w = std::max(w, rel);
+  RecordWorst(worst, what, rel);
   if (rel <= tol) return rel;
   rep->Add(feature + " " + what + ": max|mdlc - mujoco| / (1 + max|x|) = " + Fmt(rel) +
            ", worst at (" + std::to_string(r) + "," + std::to_string(c) + "): mdlc=" +
@@ -446,8 +379,8 @@ double Compare(Report* rep, Worst* worst, const std::string& feature, const std:
   return rel;
 }
 
-void CompareScalar(Report* rep, Worst* worst, const std::string& feature, const std::string& what,
-                   double mdlc_value, double ref, double tol = kDynTol) {
+void CompareScalar(Report* rep, WorstErrors* worst, const std::string& feature,
+                   const std::string& what, double mdlc_value, double ref, double tol = kDynTol) {
   Compare(rep, worst, feature, what, MatrixXd::Constant(1, 1, mdlc_value),
           MatrixXd::Constant(1, 1, ref), tol);
 }
@@ -536,7 +469,7 @@ TEST_P(MujocoDynamics, DynamicsMatch) {
   if (nv == 0) GTEST_SKIP() << mc.display << " has no degrees of freedom: no dynamics to compare";
 
   Report rep(mc.display, "mujoco3.3.8");
-  Worst worst;
+  WorstErrors worst;
   Compare(&rep, &worst, "MJCF-007", "gravity", plant.gravity, Vec(dump.at("gravity")));
 
   const bool passive = dump.at("passive").at("compared").get<bool>();
@@ -672,11 +605,7 @@ INSTANTIATE_TEST_SUITE_P(HandMade, MujocoDynamics, ::testing::ValuesIn(HandMadeC
 
 // Every kNotComparable entry names a model the test runs.
 TEST(MujocoDynamicsSelfCheck, NotComparableNamesModels) {
-  std::set<std::string> keys;
-  for (const auto& c : CorpusCases()) {
-    if (c.display.rfind("corpus/", 0) == 0) keys.insert(c.display.substr(7));
-  }
-  for (const auto& c : HandMadeCases()) keys.insert(c.display);
+  const std::set<std::string> keys = ListingKeys(CorpusCases(), HandMadeCases());
   if (keys.size() <= 1) GTEST_SKIP() << "shared corpus not found";
   for (const auto& n : kNotComparable) EXPECT_TRUE(keys.count(n.path)) << n.path;
 }

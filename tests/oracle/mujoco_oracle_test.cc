@@ -135,18 +135,6 @@ using Eigen::Quaterniond;
 using Eigen::Vector3d;
 using json = nlohmann::json;
 
-#ifndef MDLC_SHARED_DIR
-#define MDLC_SHARED_DIR ""
-#endif
-#ifndef MDLC_TEST_MODELS
-#define MDLC_TEST_MODELS ""
-#endif
-#ifndef MDLC_NODE
-#define MDLC_NODE ""
-#endif
-#ifndef MDLC_MUJOCO_JS_DIR
-#define MDLC_MUJOCO_JS_DIR ""
-#endif
 #ifndef MDLC_MUJOCO222_DUMP
 #define MDLC_MUJOCO222_DUMP ""
 #endif
@@ -157,30 +145,7 @@ constexpr double kMassTol = 1e-6;  // mass properties, M(q), geometry sizes, mes
 // the inertia at qpos0 (springdamper, dampratio)
 constexpr double kGainTol = 1e-9;
 
-// CMake leaves "<VAR>-NOTFOUND" when it finds no program.
-std::string Found(const std::string& s) {
-  return s.size() >= 9 && s.compare(s.size() - 9, 9, "-NOTFOUND") == 0 ? "" : s;
-}
-
-std::string NodeBinary() {
-  if (const char* env = std::getenv("MDLC_NODE"); env && *env) return env;
-  return Found(MDLC_NODE);
-}
-
-fs::path DumpScript() { return fs::path(MDLC_MUJOCO_JS_DIR) / "mujoco_dump.mjs"; }
-
-// Empty when MuJoCo 3.3.8 can run; else why not (the tests skip).
-std::string MujocoJsUnavailable() {
-  if (NodeBinary().empty()) return "Node.js not found at configure time (install nodejs)";
-  if (std::string(MDLC_MUJOCO_JS_DIR).empty()) return "MDLC_MUJOCO_JS_DIR not set";
-  const fs::path pkg = fs::path(MDLC_MUJOCO_JS_DIR) / "node_modules" / "mujoco-js" / "package.json";
-  std::error_code ec;
-  if (!fs::exists(pkg, ec)) {
-    return "mujoco-js is not installed: run `npm ci` in tests/oracle/mujoco_js "
-           "(tools/setup.sh test does)";
-  }
-  return "";
-}
+fs::path DumpScript() { return MujocoJsScript("mujoco_dump.mjs"); }
 
 // ---------------------------------------------------------------------------
 // Known disagreements
@@ -290,53 +255,32 @@ struct ModelCase {
 void PrintTo(const ModelCase& c, std::ostream* os) { *os << c.display; }
 
 std::vector<ModelCase> CorpusCases() {
-  std::vector<ModelCase> cases;
-  const fs::path corpus = fs::path(MDLC_SHARED_DIR) / "corpus";
-  const fs::path manifest = corpus / "manifest.tsv";
-  const auto rows = ReadManifest(manifest);
-  if (std::string(MDLC_SHARED_DIR).empty() || !rows) {
-    ModelCase c;
-    c.id = "shared_corpus_unavailable";
-    c.skip_reason = "shared corpus not found (" + manifest.string() +
-                    "); the corpus differential test needs ../shared";
-    cases.push_back(c);
-    return cases;
-  }
-  for (const std::vector<std::string>& cols : *rows) {
-    if (cols.size() < 2 || cols[0] != "mjcf") continue;
-    ModelCase c;
-    std::string stem = cols[1];
-    if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".xml") stem.resize(stem.size() - 4);
-    c.id = Sanitize(stem);
-    c.path = (corpus / cols[1]).string();
-    c.display = "corpus/" + cols[1];
-    if (const char* r = KnownReason(cols[1])) c.known = r;
-    c.inertia_floor = InertiaFloorFor(cols[1]);
-    cases.push_back(c);
-  }
-  Uniquify(&cases);
-  return cases;
+  return ManifestCases<ModelCase>(
+      "shared corpus not found (" + CorpusManifest().string() +
+          "); the corpus differential test needs ../shared",
+      [](const std::vector<std::string>& cols) -> std::optional<ModelCase> {
+        if (cols.size() < 2 || cols[0] != "mjcf") return std::nullopt;
+        ModelCase c;
+        c.id = Sanitize(WithoutSuffix(cols[1], ".xml"));
+        c.path = (CorpusDir() / cols[1]).string();
+        c.display = "corpus/" + cols[1];
+        if (const char* r = KnownReason(cols[1])) c.known = r;
+        c.inertia_floor = InertiaFloorFor(cols[1]);
+        return c;
+      });
 }
 
 std::vector<ModelCase> HandMadeCases() {
-  std::vector<ModelCase> cases;
-  const fs::path dir = fs::path(MDLC_TEST_MODELS) / "mjcf" / "oracle";
-  for (const auto& f : FilesWithExtension(dir, ".xml")) {
-    ModelCase c;
-    c.id = Sanitize(f.stem().string());
-    c.path = f.string();
-    c.display = "tests/models/mjcf/oracle/" + f.filename().string();
-    if (const char* r = KnownReason(c.display)) c.known = r;
-    cases.push_back(c);
-  }
-  if (cases.empty()) {
-    ModelCase c;
-    c.id = "no_models";
-    c.skip_reason = "no MJCF models in " + dir.string();
-    cases.push_back(c);
-  }
-  Uniquify(&cases);
-  return cases;
+  const fs::path dir = TestModels("mjcf/oracle");
+  return FolderCases<ModelCase>(
+      dir, ".xml", "no MJCF models in " + dir.string(), [](const fs::path& f) {
+        ModelCase c;
+        c.id = Sanitize(f.stem().string());
+        c.path = f.string();
+        c.display = "tests/models/mjcf/oracle/" + f.filename().string();
+        if (const char* r = KnownReason(c.display)) c.known = r;
+        return c;
+      });
 }
 
 // Ad-hoc models for investigating a discrepancy: MDLC_ORACLE_EXTRA_MODELS is
@@ -649,15 +593,6 @@ Reference BuildReference(const json& d) {
 
 // A dump tool's line for one file, parsed; an error in *problem when it is
 // not JSON.
-json ParseDumpLine(const std::string& line, std::string* problem) {
-  try {
-    return json::parse(line);
-  } catch (const std::exception& e) {
-    *problem = std::string("unreadable dump (") + e.what() + "): " + line.substr(0, 300);
-    return json();
-  }
-}
-
 // Runs a dump tool on one file; the parsed line, or an error in *problem.
 json RunDump(const std::vector<std::string>& argv, std::string* problem) {
   const RunResult r = RunProcess(argv, 600.0);
@@ -678,14 +613,9 @@ int NumConfigs() { return std::max(0, EnvInt("MDLC_ORACLE_CONFIGS", 3)); }
 // MuJoCo 3.3.8's dump of one file, from one Node.js process that serves
 // every file this test process dumps (starting it is most of a file's cost).
 json DumpMujoco3(const std::string& file, std::string* problem) {
-  static LineServer server({NodeBinary(), DumpScript().string(), "--configs",
-                            std::to_string(NumConfigs()), "--seed", "1", "--serve"});
-  const std::optional<std::string> line = server.Ask(file, 600.0, problem);
-  if (!line) {
-    *problem = "MuJoCo 3.3.8 dump helper: " + *problem;
-    return json();
-  }
-  return ParseDumpLine(*line, problem);
+  static LineServer server(MujocoJsServeCommand(
+      "mujoco_dump.mjs", {"--configs", std::to_string(NumConfigs()), "--seed", "1"}));
+  return AskForDump(server, "MuJoCo 3.3.8 dump helper", file, 600.0, problem);
 }
 
 json DumpMujoco2(const std::string& file, std::string* problem) {
@@ -1331,16 +1261,12 @@ GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(MujocoOracle);
 // ---------------------------------------------------------------------------
 
 std::string HandModel(const std::string& file) {
-  return (fs::path(MDLC_TEST_MODELS) / "mjcf" / "oracle" / file).string();
+  return (TestModels("mjcf/oracle") / file).string();
 }
 
 // Every kKnownDisagreements entry names a model the test runs.
 TEST(MujocoOracleSelfCheck, KnownDisagreementsNameModels) {
-  std::set<std::string> keys;
-  for (const auto& c : CorpusCases()) {
-    if (c.display.rfind("corpus/", 0) == 0) keys.insert(c.display.substr(7));
-  }
-  for (const auto& c : HandMadeCases()) keys.insert(c.display);
+  const std::set<std::string> keys = ListingKeys(CorpusCases(), HandMadeCases());
   if (keys.size() <= 1) GTEST_SKIP() << "shared corpus not found";
   for (const auto& k : kKnownDisagreements) EXPECT_TRUE(keys.count(k.path)) << k.path;
 }

@@ -1,7 +1,9 @@
 // oracle_util.h - what the differential tests share: numbers formatted and
-// compared the same way, environment knobs, running the mdlc CLI as a
-// subprocess with a timeout (the tests link no mdlc library code), reading
-// its plant-json dump, and collecting discrepancies into one report per model.
+// compared the same way, environment knobs, their cases from the shared
+// corpus and tests/models, running the mdlc CLI as a subprocess with a
+// timeout (the parser oracles link no mdlc library code), running MuJoCo
+// 3.3.8's mujoco-js scripts, reading mdlc's plant-json dump, and collecting
+// discrepancies into one report per model.
 #pragma once
 
 #include <fcntl.h>
@@ -24,6 +26,7 @@
 #include <map>
 #include <optional>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -34,8 +37,21 @@
 
 extern char** environ;
 
+// Where the tests find things; CMake sets them (tests/oracle/CMakeLists.txt).
 #ifndef MDLC_BINARY
 #define MDLC_BINARY ""
+#endif
+#ifndef MDLC_SHARED_DIR
+#define MDLC_SHARED_DIR ""
+#endif
+#ifndef MDLC_TEST_MODELS
+#define MDLC_TEST_MODELS ""
+#endif
+#ifndef MDLC_NODE
+#define MDLC_NODE ""
+#endif
+#ifndef MDLC_MUJOCO_JS_DIR
+#define MDLC_MUJOCO_JS_DIR ""
 #endif
 
 namespace mdlc::oracle {
@@ -60,6 +76,18 @@ inline bool Near(double a, double b, double tol = kRelTol) {
   if (std::isinf(a) || std::isinf(b)) return a == b;
   if (std::isnan(a) || std::isnan(b)) return false;
   return std::abs(a - b) <= tol * std::max({1.0, std::abs(a), std::abs(b)});
+}
+
+/// The largest absolute entry of `x`; 0 when it has none.
+inline double MaxAbs(const Eigen::MatrixXd& x) { return x.size() ? x.cwiseAbs().maxCoeff() : 0.0; }
+
+/// The largest error seen per quantity, for a test's summary line; the
+/// quantity is the first word of what was compared.
+using WorstErrors = std::map<std::string, double>;
+
+inline void RecordWorst(WorstErrors* worst, const std::string& what, double error) {
+  double& w = (*worst)[what.substr(0, what.find(' '))];
+  w = std::max(w, error);
 }
 
 // ---------------------------------------------------------------------------
@@ -118,6 +146,81 @@ inline std::optional<std::vector<std::vector<std::string>>> ReadManifest(
     rows.push_back(std::move(cols));
   }
   return rows;
+}
+
+/// `s` without `suffix` at its end; `s` itself when it does not end so, or
+/// is no longer than `suffix`.
+inline std::string WithoutSuffix(std::string s, const std::string& suffix) {
+  if (s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0) {
+    s.resize(s.size() - suffix.size());
+  }
+  return s;
+}
+
+/// tests/models/<sub>, e.g. TestModels("urdf").
+inline std::filesystem::path TestModels(const std::string& sub) {
+  return std::filesystem::path(MDLC_TEST_MODELS) / sub;
+}
+
+/// The shared corpus; its manifest's paths are relative to it.
+inline std::filesystem::path CorpusDir() {
+  return std::filesystem::path(MDLC_SHARED_DIR) / "corpus";
+}
+
+inline std::filesystem::path CorpusManifest() { return CorpusDir() / "manifest.tsv"; }
+
+/// A test's cases of the shared corpus: make(row) for each row of its
+/// manifest (the row's columns; nullopt leaves it out), ids made unique.
+/// Without the corpus (MDLC_SHARED_DIR empty, or no readable manifest) the
+/// one case "shared_corpus_unavailable", skipped with `unavailable`.
+template <typename Case, typename Make>
+std::vector<Case> ManifestCases(const std::string& unavailable, Make make) {
+  std::vector<Case> cases;
+  const auto rows = ReadManifest(CorpusManifest());
+  if (std::string(MDLC_SHARED_DIR).empty() || !rows) {
+    Case c;
+    c.id = "shared_corpus_unavailable";
+    c.skip_reason = unavailable;
+    cases.push_back(c);
+    return cases;
+  }
+  for (const std::vector<std::string>& cols : *rows) {
+    if (std::optional<Case> c = make(cols)) cases.push_back(std::move(*c));
+  }
+  Uniquify(&cases);
+  return cases;
+}
+
+/// A test's cases of the files in `dir` whose extension is `ext`: make(file)
+/// for each, ids made unique. With no such file the one case "no_models",
+/// skipped with `none`.
+template <typename Case, typename Make>
+std::vector<Case> FolderCases(const std::filesystem::path& dir, const std::string& ext,
+                              const std::string& none, Make make) {
+  std::vector<Case> cases;
+  for (const auto& f : FilesWithExtension(dir, ext)) cases.push_back(make(f));
+  if (cases.empty()) {
+    Case c;
+    c.id = "no_models";
+    c.skip_reason = none;
+    cases.push_back(c);
+  }
+  Uniquify(&cases);
+  return cases;
+}
+
+/// The names a table of listed models (known disagreements, models that
+/// cannot be compared) gives the cases by: a corpus case's path below
+/// corpus/, any other case's display name.
+template <typename Case>
+std::set<std::string> ListingKeys(const std::vector<Case>& corpus,
+                                  const std::vector<Case>& hand_made) {
+  std::set<std::string> keys;
+  for (const auto& c : corpus) {
+    if (c.display.rfind("corpus/", 0) == 0) keys.insert(c.display.substr(7));
+  }
+  for (const auto& c : hand_made) keys.insert(c.display);
+  return keys;
 }
 
 // ---------------------------------------------------------------------------
@@ -329,6 +432,74 @@ class LineServer {
   int in_ = -1, out_ = -1, err_ = -1;
   std::string out_buf_, err_tail_;
 };
+
+// ---------------------------------------------------------------------------
+// MuJoCo 3.3.8: the mujoco-js scripts of tests/oracle/mujoco_js under Node.js
+// ---------------------------------------------------------------------------
+
+/// `s`, or "" when it is the "<VAR>-NOTFOUND" CMake leaves when it finds no
+/// program.
+inline std::string Found(const std::string& s) {
+  return s.size() >= 9 && s.compare(s.size() - 9, 9, "-NOTFOUND") == 0 ? "" : s;
+}
+
+/// Node.js: env MDLC_NODE, else the one CMake found ("" when none).
+inline std::string NodeBinary() {
+  if (const char* env = std::getenv("MDLC_NODE"); env && *env) return env;
+  return Found(MDLC_NODE);
+}
+
+/// One of the scripts, e.g. "mujoco_dump.mjs".
+inline std::filesystem::path MujocoJsScript(const std::string& name) {
+  return std::filesystem::path(MDLC_MUJOCO_JS_DIR) / name;
+}
+
+/// Empty when MuJoCo 3.3.8 can run; else why not (the tests skip).
+inline std::string MujocoJsUnavailable() {
+  if (NodeBinary().empty()) return "Node.js not found at configure time (install nodejs)";
+  if (std::string(MDLC_MUJOCO_JS_DIR).empty()) return "MDLC_MUJOCO_JS_DIR not set";
+  const std::filesystem::path pkg =
+      std::filesystem::path(MDLC_MUJOCO_JS_DIR) / "node_modules" / "mujoco-js" / "package.json";
+  std::error_code ec;
+  if (!std::filesystem::exists(pkg, ec)) {
+    return "mujoco-js is not installed: run `npm ci` in tests/oracle/mujoco_js "
+           "(tools/setup.sh test does)";
+  }
+  return "";
+}
+
+/// `node SCRIPT ARGS... --serve`: a script answering the files written to
+/// its stdin, one JSON line each (for a LineServer).
+inline std::vector<std::string> MujocoJsServeCommand(const std::string& script,
+                                                     const std::vector<std::string>& args) {
+  std::vector<std::string> argv = {NodeBinary(), MujocoJsScript(script).string()};
+  argv.insert(argv.end(), args.begin(), args.end());
+  argv.push_back("--serve");
+  return argv;
+}
+
+/// A dump helper's line as JSON; null with *problem set when it is not JSON.
+inline nlohmann::json ParseDumpLine(const std::string& line, std::string* problem) {
+  try {
+    return nlohmann::json::parse(line);
+  } catch (const std::exception& e) {
+    *problem = std::string("unreadable dump (") + e.what() + "): " + line.substr(0, 300);
+    return nlohmann::json();
+  }
+}
+
+/// `server`'s answer for `file` as JSON; null with *problem set (starting
+/// with `helper`, which names the server, when it gave no answer) when there
+/// is none.
+inline nlohmann::json AskForDump(LineServer& server, const std::string& helper,
+                                 const std::string& file, double timeout_s, std::string* problem) {
+  const std::optional<std::string> line = server.Ask(file, timeout_s, problem);
+  if (!line) {
+    *problem = helper + ": " + *problem;
+    return nlohmann::json();
+  }
+  return ParseDumpLine(*line, problem);
+}
 
 // ---------------------------------------------------------------------------
 // The mdlc CLI and its plant-json dump

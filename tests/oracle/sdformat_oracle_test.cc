@@ -106,13 +106,6 @@ using json = nlohmann::json;
 
 const char* const kWorldInstance = "WorldModelInstance";
 
-#ifndef MDLC_SHARED_DIR
-#define MDLC_SHARED_DIR ""
-#endif
-#ifndef MDLC_TEST_MODELS
-#define MDLC_TEST_MODELS ""
-#endif
-
 // ---------------------------------------------------------------------------
 // URI resolution for libsdformat (package:// and model://)
 // ---------------------------------------------------------------------------
@@ -893,62 +886,38 @@ constexpr KnownDisagreement kKnownDisagreements[] = {
 void PrintTo(const ModelCase& c, std::ostream* os) { *os << c.display; }
 
 std::vector<ModelCase> CorpusCases() {
-  std::vector<ModelCase> cases;
-  const fs::path corpus = fs::path(MDLC_SHARED_DIR) / "corpus";
-  const fs::path manifest = corpus / "manifest.tsv";
-  const auto rows = ReadManifest(manifest);
-  if (std::string(MDLC_SHARED_DIR).empty() || !rows) {
-    ModelCase c;
-    c.id = "shared_corpus_unavailable";
-    c.skip_reason = "shared corpus not found (" + manifest.string() +
-                    "); the corpus differential test needs ../shared";
-    cases.push_back(c);
-    return cases;
-  }
-  for (const std::vector<std::string>& cols : *rows) {
-    if (cols.size() < 7 || cols[0] != "sdf" || cols[6].rfind("yes", 0) != 0) continue;
-    ModelCase c;
-    std::string stem = cols[1];
-    for (const char* ext : {".sdf", ".world"}) {
-      const std::string e = ext;
-      if (stem.size() > e.size() && stem.substr(stem.size() - e.size()) == e) {
-        stem.resize(stem.size() - e.size());
-      }
-    }
-    c.id = Sanitize(stem);
-    c.path = (corpus / cols[1]).string();
-    c.display = "corpus/" + cols[1];
-    c.package_path = corpus.string();
-    for (const auto& k : kKnownDisagreements) {
-      if (cols[1] != k.path) continue;
-      c.known_disagreement = k.reason;
-      if (k.values_differ) c.skip_reason = std::string("known disagreement: ") + k.reason;
-    }
-    cases.push_back(c);
-  }
-  Uniquify(&cases);
-  return cases;
+  return ManifestCases<ModelCase>(
+      "shared corpus not found (" + CorpusManifest().string() +
+          "); the corpus differential test needs ../shared",
+      [](const std::vector<std::string>& cols) -> std::optional<ModelCase> {
+        if (cols.size() < 7 || cols[0] != "sdf" || cols[6].rfind("yes", 0) != 0) {
+          return std::nullopt;
+        }
+        ModelCase c;
+        c.id = Sanitize(WithoutSuffix(WithoutSuffix(cols[1], ".sdf"), ".world"));
+        c.path = (CorpusDir() / cols[1]).string();
+        c.display = "corpus/" + cols[1];
+        c.package_path = CorpusDir().string();
+        for (const auto& k : kKnownDisagreements) {
+          if (cols[1] != k.path) continue;
+          c.known_disagreement = k.reason;
+          if (k.values_differ) c.skip_reason = std::string("known disagreement: ") + k.reason;
+        }
+        return c;
+      });
 }
 
 std::vector<ModelCase> HandMadeCases() {
-  std::vector<ModelCase> cases;
-  const fs::path dir = fs::path(MDLC_TEST_MODELS) / "sdf";
-  for (const auto& f : FilesWithExtension(dir, ".sdf")) {
-    ModelCase c;
-    c.id = Sanitize(f.stem().string());
-    c.path = f.string();
-    c.display = "tests/models/sdf/" + f.filename().string();
-    c.package_path = dir.string();
-    cases.push_back(c);
-  }
-  if (cases.empty()) {
-    ModelCase c;
-    c.id = "no_models";
-    c.skip_reason = "no SDF models in " + dir.string();
-    cases.push_back(c);
-  }
-  Uniquify(&cases);
-  return cases;
+  const fs::path dir = TestModels("sdf");
+  return FolderCases<ModelCase>(
+      dir, ".sdf", "no SDF models in " + dir.string(), [&dir](const fs::path& f) {
+        ModelCase c;
+        c.id = Sanitize(f.stem().string());
+        c.path = f.string();
+        c.display = "tests/models/sdf/" + f.filename().string();
+        c.package_path = dir.string();
+        return c;
+      });
 }
 
 // ---------------------------------------------------------------------------
@@ -1401,7 +1370,7 @@ GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(SdformatOracle);
 // ---------------------------------------------------------------------------
 
 std::string HandModel(const std::string& file) {
-  return (fs::path(MDLC_TEST_MODELS) / "sdf" / file).string();
+  return (TestModels("sdf") / file).string();
 }
 
 const OBody& BodyOf(const Oracle& o, const std::string& scoped) { return o.bodies.at(scoped); }

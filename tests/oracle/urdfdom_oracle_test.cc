@@ -87,13 +87,6 @@ using json = nlohmann::json;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-#ifndef MDLC_SHARED_DIR
-#define MDLC_SHARED_DIR ""
-#endif
-#ifndef MDLC_TEST_MODELS
-#define MDLC_TEST_MODELS ""
-#endif
-
 // ---------------------------------------------------------------------------
 // The oracle model, built from urdfdom
 // ---------------------------------------------------------------------------
@@ -509,57 +502,38 @@ constexpr ExpectedRejection kExpectedRejections[] = {
 void PrintTo(const ModelCase& c, std::ostream* os) { *os << c.display; }
 
 std::vector<ModelCase> CorpusCases() {
-  std::vector<ModelCase> cases;
-  const fs::path corpus = fs::path(MDLC_SHARED_DIR) / "corpus";
-  const fs::path manifest = corpus / "manifest.tsv";
-  const auto rows = ReadManifest(manifest);
-  if (std::string(MDLC_SHARED_DIR).empty() || !rows) {
-    ModelCase c;
-    c.id = "shared_corpus_unavailable";
-    c.skip_reason = "shared corpus not found (" + manifest.string() +
-                    "); the corpus differential test needs ../shared";
-    cases.push_back(c);
-    return cases;
-  }
-  for (const std::vector<std::string>& cols : *rows) {
-    if (cols.size() < 7 || cols[0] != "urdf" || cols[6].rfind("yes", 0) != 0) continue;
-    ModelCase c;
-    std::string stem = cols[1];
-    if (stem.size() > 5 && stem.substr(stem.size() - 5) == ".urdf") stem.resize(stem.size() - 5);
-    c.id = Sanitize(stem);
-    c.path = (corpus / cols[1]).string();
-    c.display = "corpus/" + cols[1];
-    c.package_path = corpus.string();
-    for (const auto& r : kExpectedRejections) {
-      if (cols[1] == r.path) {
-        c.reject_keyword = r.keyword;
-        c.reject_why = r.why;
-      }
-    }
-    cases.push_back(c);
-  }
-  Uniquify(&cases);
-  return cases;
+  return ManifestCases<ModelCase>(
+      "shared corpus not found (" + CorpusManifest().string() +
+          "); the corpus differential test needs ../shared",
+      [](const std::vector<std::string>& cols) -> std::optional<ModelCase> {
+        if (cols.size() < 7 || cols[0] != "urdf" || cols[6].rfind("yes", 0) != 0) {
+          return std::nullopt;
+        }
+        ModelCase c;
+        c.id = Sanitize(WithoutSuffix(cols[1], ".urdf"));
+        c.path = (CorpusDir() / cols[1]).string();
+        c.display = "corpus/" + cols[1];
+        c.package_path = CorpusDir().string();
+        for (const auto& r : kExpectedRejections) {
+          if (cols[1] == r.path) {
+            c.reject_keyword = r.keyword;
+            c.reject_why = r.why;
+          }
+        }
+        return c;
+      });
 }
 
 std::vector<ModelCase> HandMadeCases() {
-  std::vector<ModelCase> cases;
-  const fs::path dir = fs::path(MDLC_TEST_MODELS) / "urdf";
-  for (const auto& f : FilesWithExtension(dir, ".urdf")) {
-    ModelCase c;
-    c.id = Sanitize(f.stem().string());
-    c.path = f.string();
-    c.display = "tests/models/urdf/" + f.filename().string();
-    cases.push_back(c);
-  }
-  if (cases.empty()) {
-    ModelCase c;
-    c.id = "no_models";
-    c.skip_reason = "no URDF models in " + dir.string();
-    cases.push_back(c);
-  }
-  Uniquify(&cases);
-  return cases;
+  const fs::path dir = TestModels("urdf");
+  return FolderCases<ModelCase>(
+      dir, ".urdf", "no URDF models in " + dir.string(), [](const fs::path& f) {
+        ModelCase c;
+        c.id = Sanitize(f.stem().string());
+        c.path = f.string();
+        c.display = "tests/models/urdf/" + f.filename().string();
+        return c;
+      });
 }
 
 // ---------------------------------------------------------------------------
@@ -1021,7 +995,7 @@ GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(UrdfdomOracle);
 // ---------------------------------------------------------------------------
 
 std::string HandModel(const std::string& file) {
-  return (fs::path(MDLC_TEST_MODELS) / "urdf" / file).string();
+  return (TestModels("urdf") / file).string();
 }
 
 TEST(OracleSelfCheck, DoublePendulumMassMatrixMatchesClosedForm) {
