@@ -42,12 +42,6 @@ Vector6d JointSubspaceRate(const PlantJoint& joint, const Eigen::Ref<const Vecto
   }
 }
 
-/// X_AB * X_BC, skipping the product when X_BC is the identity (a joint
-/// frame on its body's origin, as most are).
-Transform ComposeWith(const Transform& X_AB, const Transform& X_BC) {
-  return X_BC.IsIdentity() ? X_AB : X_AB * X_BC;
-}
-
 /// Moves [w; v] about point Fo in F to world Plücker about O.
 Vector6d FrameToWorld(const Transform& X_WF, const Vector6d& x_F) {
   const Vector3d w = X_WF.R * Angular(x_F);
@@ -77,9 +71,9 @@ TreeState SweepDown(const Plant& plant, const VectorXd& q, const VectorXd* v) {
     const int p = joint.parent.index(), c = joint.child.index();
     const auto q_j = q.segment(joint.q_start, joint.nq);
     const Transform X_FM = JointPose(joint, q_j);
-    const Transform X_WF = ComposeWith(s.X_WB[p], joint.X_PF);
+    const Transform X_WF = s.X_WB[p] * joint.X_PF;
     const Transform X_WM = X_WF * X_FM;
-    s.X_WB[c] = joint.X_CM.IsIdentity() ? X_WM : X_WM * joint.X_CM.inverse();
+    s.X_WB[c] = X_WM * joint.X_CM.inverse();
     const PlantBody& body = plant.bodies[c];
     const Eigen::Matrix3d& R_WB = s.X_WB[c].R;
     if (body.mass != 0 || !body.I_BBcm_B.isZero(0)) {
