@@ -29,15 +29,7 @@ std::vector<Vector6d> BodySpatialAccelerations(const Plant& plant, const VectorX
                                                const VectorXd& v, const VectorXd& vdot) {
   RequireState(plant, q, &v, &vdot, "vdot");
   const TreeState s = SweepDown(plant, q, &v);
-  // the Plücker accelerations, by the forward half of the RNEA
-  std::vector<Vector6d> A(plant.bodies.size(), Vector6d::Zero());
-  for (JointId id : plant.joint_order) {
-    const PlantJoint& joint = plant.joint(id);
-    const JointState& js = s.joint[id.index()];
-    const int p = joint.parent.index(), c = joint.child.index();
-    A[c] = A[p] + js.S * vdot.segment(joint.v_start, joint.nv) +
-           CrossMotion(s.V[p], js.S * v.segment(joint.v_start, joint.nv)) + js.subspace_rate_term;
-  }
+  const std::vector<Vector6d> A = Accelerations(plant, s, &vdot, Vector6d::Zero());
   // a_Bo = d/dt (v_O + w x p_WBo) = adot_O + alpha x p + w x v_Bo
   std::vector<Vector6d> A_WB(plant.bodies.size());
   for (size_t b = 0; b < plant.bodies.size(); ++b) {
@@ -65,7 +57,7 @@ VectorXd InverseDynamics(const Plant& plant, const VectorXd& q, const VectorXd& 
   VectorXd tau_joint = VectorXd::Zero(plant.num_velocities);
   std::vector<Vector6d> f_ext;
   CollectAppliedForces(plant, s, q, v, options, tau_joint, f_ext);
-  VectorXd tau = Rnea(plant, s, &v, &vdot, GravityBaseAcceleration(plant, options.gravity), f_ext);
+  VectorXd tau = Rnea(plant, s, &vdot, GravityBaseAcceleration(plant, options.gravity), f_ext);
   tau -= tau_joint;
   if (options.reflected_inertia) tau += ReflectedInertia(plant).cwiseProduct(vdot);
   return tau;
@@ -74,13 +66,13 @@ VectorXd InverseDynamics(const Plant& plant, const VectorXd& q, const VectorXd& 
 VectorXd BiasTerm(const Plant& plant, const VectorXd& q, const VectorXd& v) {
   RequireState(plant, q, &v);
   const TreeState s = SweepDown(plant, q, &v);
-  return Rnea(plant, s, &v, nullptr, Vector6d::Zero(), {});
+  return Rnea(plant, s, nullptr, Vector6d::Zero(), {});
 }
 
 VectorXd GravityForces(const Plant& plant, const VectorXd& q) {
   RequireState(plant, q, nullptr);
   const TreeState s = SweepDown(plant, q, nullptr);
-  return -Rnea(plant, s, nullptr, nullptr, GravityBaseAcceleration(plant, true), {});
+  return -Rnea(plant, s, nullptr, GravityBaseAcceleration(plant, true), {});
 }
 
 VectorXd AppliedForces(const Plant& plant, const VectorXd& q, const VectorXd& v,

@@ -6,7 +6,7 @@
 //                  I^A_p += I^A_c - U D^-1 U^T,
 //                  p^A_p += p^A_c + (I^A_c - U D^-1 U^T) c_j + U D^-1 u
 //   down the tree: a' = A_p + c_j, vdot_j = D^-1 (u - U^T a'), A_c = a' + S vdot_j
-// where c_j is the velocity-product acceleration of the RNEA and
+// where c_j is the velocity product of the RNEA (JointState) and
 // p^A_c starts as V_c x* I_c V_c minus the applied body forces.
 #include <Eigen/Cholesky>
 #include <stdexcept>
@@ -30,7 +30,6 @@ struct ArticulatedJoint {
   MotionSubspace U;    // I^A S
   JointMatrix D_inv;   // (S^T I^A S + reflected)^-1
   JointVector u;       // tau - S^T p^A
-  Vector6d c;          // velocity-product acceleration
 };
 
 [[noreturn]] void ThrowMassless(const Plant& plant, const PlantJoint& joint) {
@@ -78,7 +77,6 @@ VectorXd ForwardDynamics(const Plant& plant, const VectorXd& q, const VectorXd& 
     const MotionSubspace& S = s.joint[it->index()].S;
     ArticulatedJoint& aj = art[it->index()];
     const int p = joint.parent.index(), c = joint.child.index();
-    aj.c = CrossMotion(s.V[p], s.V[c] - s.V[p]) + s.joint[it->index()].subspace_rate_term;
     Matrix6d Ia = IA[c];
     Vector6d pa = pA[c];
     if (joint.nv == 1) {
@@ -103,7 +101,7 @@ VectorXd ForwardDynamics(const Plant& plant, const VectorXd& q, const VectorXd& 
       Ia -= aj.U * aj.D_inv * aj.U.transpose();
       pa += aj.U * (aj.D_inv * aj.u);
     }
-    pa += Ia * aj.c;
+    pa += Ia * s.joint[it->index()].velocity_product;
     IA[p] += Ia;
     pA[p] += pa;
   }
@@ -114,7 +112,7 @@ VectorXd ForwardDynamics(const Plant& plant, const VectorXd& q, const VectorXd& 
   for (JointId id : plant.joint_order) {
     const PlantJoint& joint = plant.joint(id);
     const ArticulatedJoint& aj = art[id.index()];
-    const Vector6d a = A[joint.parent.index()] + aj.c;
+    const Vector6d a = A[joint.parent.index()] + s.joint[id.index()].velocity_product;
     A[joint.child.index()] = a;
     if (joint.nv == 0) continue;
     if (joint.nv == 1) {

@@ -82,7 +82,6 @@ TreeState SweepDown(const Plant& plant, const VectorXd& q, const VectorXd* v) {
     }
     const MotionSubspace H = JointMotionSubspace(joint, q_j);
     js.S = ToWorldPlucker(H, X_WF.R, X_WM.p);
-    js.subspace_rate_term.setZero();
     if (!v || joint.nv == 0) {
       s.V[c] = s.V[p];
       continue;
@@ -96,7 +95,7 @@ TreeState SweepDown(const Plant& plant, const VectorXd& q, const VectorXd* v) {
     const Vector6d S_rate_F =
         Spatial(Angular(H_rate), Linear(H_rate) + Linear(V_FM).cross(Angular(V_FM)) +
                                      X_FM.p.cross(Angular(H_rate)));
-    js.subspace_rate_term = FrameToWorld(X_WF, S_rate_F);
+    js.velocity_product = CrossMotion(s.V[p], s.V[c] - s.V[p]) + FrameToWorld(X_WF, S_rate_F);
   }
   return s;
 }
@@ -120,25 +119,31 @@ VectorXd GeneralizedFromBodyForces(const Plant& plant, const TreeState& s,
   return tau;
 }
 
-VectorXd Rnea(const Plant& plant, const TreeState& s, const VectorXd* v, const VectorXd* vdot,
-              const Vector6d& A_world, const std::vector<Vector6d>& f_ext) {
-  std::vector<Vector6d> A(plant.bodies.size(), Vector6d::Zero());
-  std::vector<Vector6d> f(plant.bodies.size(), Vector6d::Zero());
+std::vector<Vector6d> Accelerations(const Plant& plant, const TreeState& s,
+                                    const VectorXd* vdot, const Vector6d& A_world) {
+  std::vector<Vector6d> A(plant.bodies.size());
   A[0] = A_world;
   for (JointId id : plant.joint_order) {
     const PlantJoint& joint = plant.joint(id);
     const JointState& js = s.joint[id.index()];
-    const int p = joint.parent.index(), c = joint.child.index();
-    A[c] = A[p];
+    const int c = joint.child.index();
+    A[c] = A[joint.parent.index()] + js.velocity_product;
     if (vdot && joint.nv == 1) {
       A[c] += js.S.col(0) * (*vdot)[joint.v_start];
     } else if (vdot && joint.nv > 1) {
       A[c] += js.S * vdot->segment(joint.v_start, joint.nv);
     }
-    // S v_j is V_c - V_p, which the sweep down already summed
-    if (v) A[c] += CrossMotion(s.V[p], s.V[c] - s.V[p]) + js.subspace_rate_term;
-    if (!s.I[c].is_zero) f[c] = s.I[c] * A[c] + CrossForce(s.V[c], s.I[c] * s.V[c]);
-    if (!f_ext.empty()) f[c] -= f_ext[c];
+  }
+  return A;
+}
+
+VectorXd Rnea(const Plant& plant, const TreeState& s, const VectorXd* vdot,
+              const Vector6d& A_world, const std::vector<Vector6d>& f_ext) {
+  const std::vector<Vector6d> A = Accelerations(plant, s, vdot, A_world);
+  std::vector<Vector6d> f(plant.bodies.size(), Vector6d::Zero());
+  for (size_t b = 1; b < plant.bodies.size(); ++b) {
+    if (!s.I[b].is_zero) f[b] = s.I[b] * A[b] + CrossForce(s.V[b], s.I[b] * s.V[b]);
+    if (!f_ext.empty()) f[b] -= f_ext[b];
   }
   return GeneralizedFromBodyForces(plant, s, std::move(f));
 }

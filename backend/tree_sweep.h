@@ -34,8 +34,10 @@ void RequireState(const Plant& plant, const Eigen::VectorXd& q, const Eigen::Vec
 
 /// What one sweep down the tree knows about a joint at (q, v).
 struct JointState {
-  MotionSubspace S;             // world Plücker columns
-  Vector6d subspace_rate_term;  // X_WF (dS'_F/dt) v_j, world Plücker
+  MotionSubspace S;  // world Plücker columns
+  /// c_j = V_p x (S v_j) + X_WF (dS'_F/dt v_j): the child's acceleration
+  /// over its parent's when vdot_j = 0 (zero without v).
+  Vector6d velocity_product = Vector6d::Zero();
 };
 
 /// Poses, velocities and joint subspaces of the whole tree at (q, v).
@@ -46,16 +48,21 @@ struct TreeState {
   std::vector<CompactInertia> I;  // by body, about the world origin in W
 };
 
-/// Poses, subspaces and body inertias at q; velocities and the subspace rate
-/// terms too when v is given (else zero).
+/// Poses, subspaces and body inertias at q; velocities and the velocity
+/// products too when v is given (else zero).
 TreeState SweepDown(const Plant& plant, const Eigen::VectorXd& q, const Eigen::VectorXd* v);
+
+/// Every body's Plücker acceleration for vdot (null: zero) from the base
+/// acceleration A_world: A_c = A_p + S vdot_j + c_j (c_j counts only when
+/// the state has velocities).
+std::vector<Vector6d> Accelerations(const Plant& plant, const TreeState& s,
+                                    const Eigen::VectorXd* vdot, const Vector6d& A_world);
 
 /// The RNEA with body forces f_ext (world Plücker, by body; may be empty)
 /// acting on the bodies: tau for vdot (null: zero) and base acceleration
-/// A_world; v null means at rest.
-Eigen::VectorXd Rnea(const Plant& plant, const TreeState& s, const Eigen::VectorXd* v,
-                     const Eigen::VectorXd* vdot, const Vector6d& A_world,
-                     const std::vector<Vector6d>& f_ext);
+/// A_world, at the state's velocities (zero when it has none).
+Eigen::VectorXd Rnea(const Plant& plant, const TreeState& s, const Eigen::VectorXd* vdot,
+                     const Vector6d& A_world, const std::vector<Vector6d>& f_ext);
 
 /// Generalized forces of body forces f (world Plücker, by body; empty:
 /// none): tau_j = S_j^T (the sum of f over j's subtree).
