@@ -130,6 +130,17 @@ inline Eigen::Matrix3d RandomInertia(std::mt19937& rng, double mass) {
   return R * (mass / 12 * moments).asDiagonal() * R.transpose();
 }
 
+/// A body of random mass (0.5 to 2.5), COM offset and rotated inertia.
+inline BodyId AddRandomBody(ModelBuilder& b, std::mt19937& rng, const std::string& name) {
+  const double m = 0.5 + std::abs(RandomVector(rng, 2.0).x());
+  return b.AddBody(name, m, RandomVector(rng, 0.2), RandomInertia(rng, m), RandomRotation(rng));
+}
+
+/// A random rotation with an offset of up to 0.4 per axis.
+inline Transform RandomPose(std::mt19937& rng) {
+  return Transform{RandomRotation(rng), RandomVector(rng, 0.4)};
+}
+
 inline Eigen::Vector3d Vee(const Eigen::Matrix3d& S) {
   return {0.5 * (S(2, 1) - S(1, 2)), 0.5 * (S(0, 2) - S(2, 0)), 0.5 * (S(1, 0) - S(0, 1))};
 }

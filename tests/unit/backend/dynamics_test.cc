@@ -131,14 +131,8 @@ VectorXd InverseDynamicsByKane(const Plant& plant, const VectorXd& q, const Vect
 /// M regular.
 ir::Module EveryJointTree(std::mt19937& rng) {
   ModelBuilder b;
-  const auto body = [&](const std::string& name) {
-    const double m = 0.5 + std::abs(test_util::RandomVector(rng, 2.0).x());
-    return b.AddBody(name, m, test_util::RandomVector(rng, 0.2), test_util::RandomInertia(rng, m),
-                     test_util::RandomRotation(rng));
-  };
-  const auto pose = [&] {
-    return Transform{test_util::RandomRotation(rng), test_util::RandomVector(rng, 0.4)};
-  };
+  const auto body = [&](const std::string& name) { return test_util::AddRandomBody(b, rng, name); };
+  const auto pose = [&] { return test_util::RandomPose(rng); };
   const auto axis = [&] { return test_util::RandomVector(rng, 1.0).normalized(); };
   const BodyId base = body("base");
   b.AddJoint("base", JointType::QuaternionFloating, ir::kWorldBody, base, {}, Vector3d::UnitZ(), pose());

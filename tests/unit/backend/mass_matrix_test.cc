@@ -130,14 +130,8 @@ TEST(MassMatrix, CrbaMatchesFiniteDifferenceJacobiansOnRandomChain) {
 TEST(MassMatrix, CrbaMatchesFiniteDifferenceJacobiansOnFloatingTree) {
   std::mt19937 rng(42);
   ModelBuilder b;
-  const auto body = [&](const std::string& name) {
-    const double m = 0.5 + std::abs(test_util::RandomVector(rng, 2.0).x());
-    return b.AddBody(name, m, test_util::RandomVector(rng, 0.2), test_util::RandomInertia(rng, m),
-                     test_util::RandomRotation(rng));
-  };
-  const auto pose = [&] {
-    return Transform{test_util::RandomRotation(rng), test_util::RandomVector(rng, 0.4)};
-  };
+  const auto body = [&](const std::string& name) { return test_util::AddRandomBody(b, rng, name); };
+  const auto pose = [&] { return test_util::RandomPose(rng); };
   const BodyId base = body("base");
   const BodyId shoulder = body("shoulder");
   const BodyId hand = body("hand");
