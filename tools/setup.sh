@@ -34,11 +34,16 @@ python_packages=(python3-dev python3-numpy pybind11-dev)
 # check that `mdlc graph -o x.svg` renders, and Chromium to open the pages
 # `mdlc view` writes, and clang with its sanitizer and libFuzzer runtimes for
 # the sanitizer suite and the fuzzers, and dpkg-dev, whose dpkg-shlibdeps
-# computes the Debian package's Depends (test-only)
+# computes the Debian package's Depends, python3-venv and python3-wheel, with
+# which the wheel is built and installed in a virtual environment, and colcon
+# with its CMake, ROS and bash extensions, which build a ROS 2 workspace
+# holding mdlc (the install tests, tests/install; test-only)
 test_packages=(libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
                liburdfdom-dev libsdformat-dev libmujoco-dev graphviz chromium
                libdart-dev libdart-utils-dev libdart-utils-urdf-dev
-               clang libclang-rt-14-dev dpkg-dev)
+               clang libclang-rt-14-dev dpkg-dev python3-venv python3-wheel
+               colcon python3-colcon-cmake python3-colcon-ros python3-colcon-bash
+               python3-colcon-recursive-crawl)
 
 packages=("${runtime_packages[@]}")
 if [ "$mode" = test ]; then

@@ -22,8 +22,10 @@ install(TARGETS ${MDLC_LIBRARIES} EXPORT mdlcTargets
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} ${CMAKE_INSTALL_INCLUDEDIR}/mdlc)
 # the mesh reader program, where the installed library looks for it
 # (passes/mesh/reader_location.h)
-install(TARGETS mdlc_mesh_reader RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/mdlc)
-install(TARGETS mdlc_mesh_import_module LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/mdlc)
+install(TARGETS mdlc_mesh_reader RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/mdlc
+        COMPONENT runtime)
+install(TARGETS mdlc_mesh_import_module LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/mdlc
+        COMPONENT runtime)
 # The public headers (include/mdlc/*.h and the generated version.h) go to
 # include/mdlc/; of the layers' headers only those they include, directly or
 # through one another, are installed (install_layer_headers.cmake). The
