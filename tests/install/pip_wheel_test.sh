@@ -41,6 +41,7 @@ test_start=$(seconds)
 # none of the build tree's settings may help what the environment does, and
 # pip reads no configuration of this machine (no index, no extra links)
 run() { env -u MDLC_MESH_READER -u MDLC_MESH_MODULE -u PYTHONPATH -u PYTHONHOME \
+            -u PIP_FIND_LINKS -u PIP_INDEX_URL -u PIP_EXTRA_INDEX_URL \
             PIP_CONFIG_FILE=/dev/null PIP_NO_INDEX=1 PIP_DISABLE_PIP_VERSION_CHECK=1 \
             MDLC_CACHE_DIR="$scratch/cache" "$@"; }
 
