@@ -231,6 +231,29 @@ void MjcfReader::WarnOnce(Loc loc, DiagKind kind, std::string_view element, std:
   }
 }
 
+void MjcfReader::CheckDefaultAttributes(const xml::XmlElement& top) {
+  // issue 62: a misspelt attribute in a class is as silent in the model as
+  // one on the element itself, so it gets the same warning (and, like it,
+  // is ignored). Elements whose kind the schema does not list are left to
+  // the sections that read them.
+  std::vector<xml::XmlElement> work{top};
+  while (!work.empty()) {
+    const xml::XmlElement d = work.back();
+    work.pop_back();
+    CheckAttributes(d, "default");
+    // the class's own elements in document order, then its nested classes
+    std::vector<xml::XmlElement> nested;
+    for (const xml::XmlElement& c : Children(d)) {
+      if (c.Name() == "default") {
+        nested.push_back(c);
+      } else {
+        CheckAttributes(c, c.Name());
+      }
+    }
+    work.insert(work.end(), nested.rbegin(), nested.rend());
+  }
+}
+
 void MjcfReader::WarnUnsupported(const xml::XmlElement& e, std::string_view what) {
   const xml::XmlAttribute a = e.Attribute(what);
   if (a.present()) {

@@ -66,7 +66,10 @@ std::optional<ModelId> Read(FileId file, FrontendContext& ctx) {
     if (e.Name() == "option") r.ReadOption(e);
   }
   for (const auto& e : top) {
-    if (e.Name() == "default") r.defaults.Read(e, ctx.diags, &r.document);
+    if (e.Name() == "default") {
+      r.defaults.Read(e, ctx.diags, &r.document);
+      r.CheckDefaultAttributes(e);
+    }
   }
   for (const auto& e : top) {
     if (e.Name() == "asset") r.ReadAsset(e);

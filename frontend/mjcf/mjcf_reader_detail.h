@@ -198,6 +198,9 @@ struct MjcfReader {
   /// Warns about attributes of `e` outside MuJoCo's schema for it (a
   /// misspelling, most likely; MuJoCo itself rejects them).
   void CheckAttributes(const xml::XmlElement& e, std::string_view schema_kind);
+  /// CheckAttributes for a top-level <default>, its nested classes and the
+  /// element defaults in them (<default><joint dampnig="5"/>).
+  void CheckDefaultAttributes(const xml::XmlElement& top);
   // CheckAttributes' verdicts by (schema set, attribute name pointer):
   // libxml2 interns names, so each distinct name is hashed as a string once
   // per kind, not once per element (the reader holds its documents, so no
