@@ -108,7 +108,9 @@ void MjcfReader::ReadAsset(const xml::XmlElement& asset) {
       ReadMesh(*this, e);
     } else if (tag == "material") {
       ReadMaterial(*this, e);
-    } else if (tag == "texture" || tag == "hfield" || tag == "skin" || tag == "model") {
+    } else if (tag == "skin") {
+      LeaveOut(e.GetLoc(), "<skin>", kSkinLeftOut);
+    } else if (tag == "texture" || tag == "hfield" || tag == "model") {
       WarnOnce(e.GetLoc(), DiagKind::UnsupportedElement, "asset", tag);
     } else {
       WarnOnce(e.GetLoc(), DiagKind::UnknownElement, "asset", tag,

@@ -105,7 +105,11 @@ BodyItems Collect(MjcfReader& r, const xml::XmlElement& body, const std::string&
       items.bodies.push_back(std::move(item));
     } else if (tag == "composite" || tag == "attach" || tag == "replicate") {
       WarnModelGenerator(r, e, tag);
-    } else if (tag == "light" || tag == "flexcomp" || tag == "plugin") {
+    } else if (tag == "flexcomp") {
+      r.LeaveOut(e.GetLoc(), "<flexcomp>", kFlexLeftOut);
+    } else if (tag == "plugin") {
+      r.LeaveOut(e.GetLoc(), "<plugin> in a body", kPluginLeftOut);
+    } else if (tag == "light") {
       r.WarnOnce(e.GetLoc(), DiagKind::UnsupportedElement, is_world ? "worldbody" : "body", tag);
     } else {
       r.WarnOnce(e.GetLoc(), DiagKind::UnknownElement, is_world ? "worldbody" : "body", tag,

@@ -254,6 +254,15 @@ void MjcfReader::CheckDefaultAttributes(const xml::XmlElement& top) {
   }
 }
 
+void MjcfReader::LeaveOut(Loc loc, std::string_view construct, std::string_view why) {
+  warn_key.assign("left out\n").append(construct);
+  if (!warned.insert(warn_key).second) return;
+  diags().Report(DiagKind::UnsupportedElement, loc,
+                 fmt::format("{} is left out of the plant, here and everywhere else in this "
+                             "file: {}",
+                             construct, why));
+}
+
 void MjcfReader::WarnUnsupported(const xml::XmlElement& e, std::string_view what) {
   const xml::XmlAttribute a = e.Attribute(what);
   if (a.present()) {

@@ -390,11 +390,13 @@ void LowerActuators(ElementsLowering& L, const xml::XmlElement& section) {
     } else if (kind == "velocity" || kind == "general") {
       others.push_back(child);
     } else if (kind == "intvelocity" || kind == "damper" || kind == "cylinder" ||
-               kind == "muscle" || kind == "adhesion" || kind == "plugin") {
+               kind == "muscle" || kind == "adhesion") {
       L.WarnOnce(fmt::format("actuator/{}", kind), DiagKind::UnsupportedElement,
                  child.GetLoc(),
                  fmt::format("<{}> actuators are not supported by the plant and are ignored",
                              kind));
+    } else if (kind == "plugin") {
+      L.r.LeaveOut(child.GetLoc(), "<plugin> actuator", kPluginLeftOut);
     } else {
       L.WarnOnce(fmt::format("actuator-unknown/{}", kind), DiagKind::UnknownElement,
                  child.GetLoc(), fmt::format("unknown element <{}> in <actuator> is ignored",

@@ -158,8 +158,9 @@ void LowerTendons(ElementsLowering& L, const xml::XmlElement& section) {
     if (tag == "fixed") {
       LowerFixed(L, L.r.Resolve(child, "tendon", ""));
     } else if (tag == "spatial") {
-      L.WarnOnce("tendon/spatial", DiagKind::UnsupportedElement, child.GetLoc(),
-                 "spatial tendons are not supported by the plant and are ignored");
+      L.r.LeaveOut(child.GetLoc(), "spatial tendon <spatial>",
+                   "the plant holds fixed tendons only, and a spatial tendon's length follows "
+                   "a path through sites and wrapping geoms");
     } else {
       L.WarnOnce(fmt::format("tendon-unknown/{}", tag), DiagKind::UnknownElement,
                  child.GetLoc(), fmt::format("unknown element <{}> in <tendon> is ignored", tag));

@@ -108,7 +108,13 @@ bool LowerGeom(MjcfReader& r, const BodyItem& item, BodyId body, bool is_world,
   const Attribute type_attr = g.Get("type");
   const std::string_view type = type_attr.present() ? type_attr.value : "sphere";
 
-  if (type == "hfield" || type == "sdf") {
+  if (type == "sdf") {
+    r.LeaveOut(type_attr.loc, "<geom type=\"sdf\">",
+               "the plant holds no signed-distance-field shapes (MuJoCo takes them from a "
+               "plugin)");
+    return false;
+  }
+  if (type == "hfield") {
     r.WarnOnce(type_attr.loc, DiagKind::UnsupportedValue, "geom", fmt::format("type={}", type),
                "is not supported; the geom is ignored");
     return false;

@@ -99,6 +99,15 @@ struct MjcfDocument {
 bool LoadIncludes(const xml::XmlElement& root, const std::string& main_dir, FrontendContext& ctx,
                   MjcfDocument& document);
 
+/// Why the plant leaves out flex objects, plugins and skins (MjcfReader::LeaveOut).
+inline constexpr std::string_view kFlexLeftOut =
+    "the plant holds rigid bodies, and a flex is a deformable object of vertices that MuJoCo "
+    "simulates itself";
+inline constexpr std::string_view kPluginLeftOut =
+    "a plugin is compiled code that MuJoCo loads and runs, which the plant cannot hold";
+inline constexpr std::string_view kSkinLeftOut =
+    "a skin is a surface MuJoCo draws over bodies for rendering, which the plant does not hold";
+
 struct MjcfReader {
   MjcfReader(FrontendContext& context, std::string main_directory)
       : ctx(context), attrs(context.diags), main_dir(std::move(main_directory)) {}
@@ -195,6 +204,10 @@ struct MjcfReader {
   void WarnOnce(Loc loc, DiagKind kind, std::string_view element, std::string_view name,
                 std::string_view why = "is not supported and is ignored",
                 std::initializer_list<std::string_view> known = {});
+  /// One warning per construct and file for what the plant cannot hold
+  /// (flex, skins, spatial tendons, plugins, sdf geoms; issue 62): "<flex>
+  /// is left out of the plant, here and everywhere else in this file: `why`".
+  void LeaveOut(Loc loc, std::string_view construct, std::string_view why);
   /// Warns about attributes of `e` outside MuJoCo's schema for it (a
   /// misspelling, most likely; MuJoCo itself rejects them).
   void CheckAttributes(const xml::XmlElement& e, std::string_view schema_kind);

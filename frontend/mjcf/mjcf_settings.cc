@@ -133,8 +133,23 @@ void MjcfReader::ReadOtherTopLevel(const xml::XmlElement& e) {
     CheckAttributes(e, "size");  // MuJoCo's memory sizes: nothing for the plant (S)
   } else if (tag == "custom") {
     // user data for MuJoCo programs (S)
-  } else if (tag == "statistic" || tag == "visual" || tag == "extension" ||
-             tag == "deformable" || tag == "sensor") {
+  } else if (tag == "extension") {
+    // plugin declarations and their instances
+    for (const xml::XmlElement& c : Children(e)) {
+      if (c.Name() == "plugin") LeaveOut(c.GetLoc(), "<plugin> in <extension>", kPluginLeftOut);
+    }
+  } else if (tag == "deformable") {
+    for (const xml::XmlElement& c : Children(e)) {
+      if (c.Name() == "flex") {
+        LeaveOut(c.GetLoc(), "<flex>", kFlexLeftOut);
+      } else if (c.Name() == "skin") {
+        LeaveOut(c.GetLoc(), "<skin>", kSkinLeftOut);
+      } else {
+        WarnOnce(c.GetLoc(), DiagKind::UnknownElement, "deformable", c.Name(),
+                 "is not a MuJoCo element here and is ignored");
+      }
+    }
+  } else if (tag == "statistic" || tag == "visual" || tag == "sensor") {
     if (tag == "statistic") CheckAttributes(e, "statistic");
     WarnOnce(e.GetLoc(), DiagKind::UnsupportedElement, "mujoco", tag);
   } else {
