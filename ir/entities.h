@@ -33,6 +33,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -228,12 +229,20 @@ struct Cylinder { double radius = 0, length = 0; };
 struct Capsule { double radius = 0, length = 0; };
 struct Ellipsoid { double a = 0, b = 0, c = 0; };
 struct HalfSpace {};
+/// A mesh the model file holds itself (MJCF <mesh vertex="..." face="...">),
+/// in the mesh frame (MuJoCo's refpos/refquat applied), unscaled. No faces:
+/// a point cloud, whose convex hull is the mesh (as MuJoCo takes it).
+struct InlineMesh {
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<Eigen::Vector3i> faces;
+};
 struct Mesh {
   std::string uri;       // as written
   Loc uri_loc;           // where it is written
-  std::string resolved;  // filesystem path once resolved
+  std::string resolved;  // filesystem path once resolved (inline meshes: their key, no file)
   Eigen::Vector3d scale = Eigen::Vector3d::Ones();
   bool convex = false;   // drake:declare_convex / convex hull requested
+  std::shared_ptr<const InlineMesh> inline_data;  // set: no file, the mesh is this
 };
 using Shape = std::variant<Box, Sphere, Cylinder, Capsule, Ellipsoid, HalfSpace, Mesh>;
 

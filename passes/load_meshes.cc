@@ -12,6 +12,10 @@
 // a placeholder or unreadable visual mesh is no error (resolve-assets has
 // checked that the file is there).
 //
+// An MJCF inline mesh (ir::Mesh::inline_data) is no file: its triangles,
+// or the convex hull of its points when it has no faces (point_cloud.h),
+// go into the cache under its key, and no reader runs for it.
+//
 // Reads: ir::Mesh::resolved (set by resolve-assets). Writes:
 // PassContext::meshes. A file that cannot be read, or holds no triangles,
 // is an error at the attribute naming it. A COLLADA file that declares an up
@@ -21,6 +25,7 @@
 
 #include <set>
 
+#include "passes/mesh/point_cloud.h"
 #include "passes/pass_registry.h"
 
 namespace mdlc::passes {
@@ -40,8 +45,17 @@ class LoadMeshesPass : public Pass {
       Loc loc;
     };
     std::vector<Use> uses;
+    size_t files = 0;  // uses of mesh files (not inline meshes)
     for (const ir::Geometry& g : ctx.module.geometries) {
       auto add = [&](const ir::Mesh& mesh) {
+        if (mesh.inline_data) {
+          // an MJCF inline mesh: kept in the cache under its key, no file
+          ctx.meshes->Provide(mesh.resolved,
+                              mesh::TrianglesOfInlineMesh(*mesh.inline_data,
+                                                          fmt::format("mesh '{}'", mesh.uri)));
+        } else if (!mesh.resolved.empty()) {
+          ++files;
+        }
         // an unresolved mesh was reported by resolve-assets
         if (!mesh.resolved.empty()) {
           uses.push_back({mesh.resolved, mesh.uri_loc.valid() ? mesh.uri_loc : g.loc});
@@ -58,7 +72,7 @@ class LoadMeshesPass : public Pass {
     if (uses.empty()) return true;
     std::vector<std::string> paths;
     for (const Use& u : uses) paths.push_back(u.path);
-    if (!ctx.meshes->reader_missing().empty()) {
+    if (files > 0 && !ctx.meshes->reader_missing().empty()) {
       // once per compile: the files are still read, but a crash of the mesh
       // importer on one of them would now take the compile down with it
       ctx.diags.Report(DiagKind::MeshReaderMissing, uses.front().loc,

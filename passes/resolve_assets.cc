@@ -162,6 +162,7 @@ bool ResolveAssetsPass::Run(PassContext& ctx) {
   std::vector<Reference> refs;
   std::unordered_map<std::string, size_t> by_key;  // "dir\n" + uri, or "\n" + path
   auto add = [&](const ir::Geometry& g, ir::Mesh* mesh, std::optional<std::string> why) {
+    if (mesh->inline_data) return;  // an MJCF inline mesh: no file to find
     const Loc loc = mesh->uri_loc.valid() ? mesh->uri_loc : g.loc;
     const std::string base_dir =
         loc.valid() ? fs::path(ctx.sources.Path(loc.file)).parent_path().string()

@@ -149,6 +149,20 @@ bool LowerGeom(MjcfReader& r, const BodyItem& item, BodyId body, bool is_world,
                                    mesh_attr.value));
       return false;
     }
+    if (!it->second.left_out.empty()) {
+      // said once per mesh: MuJoCo would build the geom, the plant cannot
+      MeshAsset& left = it->second;
+      if (!left.left_out_said) {
+        left.left_out_said = true;
+        r.diags()
+            .Report(DiagKind::UnsupportedElement, mesh_attr.loc,
+                    fmt::format("geom '{}' uses mesh '{}', which is left out: {}; the geom is left "
+                                "out too, as is every geom using that mesh",
+                                name, mesh_attr.value, left.left_out))
+            .Note(left.loc, "the mesh is defined here");
+      }
+      return false;
+    }
     it->second.used = true;
     asset = &it->second;
   }

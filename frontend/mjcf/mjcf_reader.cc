@@ -88,6 +88,7 @@ std::optional<ModelId> Read(FileId file, FrontendContext& ctx) {
   std::vector<const MeshAsset*> unused;
   for (const auto& [name, asset] : r.meshes) {
     std::error_code ec;
+    if (asset.mesh.inline_data || !asset.left_out.empty()) continue;  // no file
     if (!asset.used && !std::filesystem::exists(asset.mesh.resolved, ec)) unused.push_back(&asset);
   }
   std::sort(unused.begin(), unused.end(), [](const MeshAsset* a, const MeshAsset* b) {

@@ -78,6 +78,10 @@ struct MeshAsset {
   ir::Mesh mesh;  // uri as written, resolved path (meshdir rules, MJCF-006), scale
   ir::MeshInertia inertia = ir::MeshInertia::Legacy;  // mesh@inertia (MuJoCo 3.3: legacy)
   bool used = false;  // a geom names it (resolve-assets checks its file then)
+  /// Set: the mesh is left out (made by a plugin, a builtin shape), and why;
+  /// the first geom naming it says so (left_out_said), every one is left out.
+  std::string left_out;
+  bool left_out_said = false;
 };
 
 /// The main file and every file its <include>s name (MJCF-001). Documents

@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "passes/mesh/in_process_reader.h"
+#include "passes/mesh/point_cloud.h"
 #include "passes/mesh/io/mesh_wire.h"
 #include "passes/mesh/reader_location.h"
 #include "passes/mesh/reader_pool.h"
@@ -83,10 +84,18 @@ MeshOrError MeshCache::Get(const std::string& path) {
   std::shared_ptr<Entry> entry = EntryFor(path);
   // other threads asking for the same file wait here for the one reader
   std::call_once(entry->read_once, [&] {
-    entry->mesh = loader_(path);
+    entry->mesh = HullOfPointCloud(loader_(path), fmt::format("mesh file '{}'", path));
     ++files_read_;
   });
   return entry->mesh;
+}
+
+void MeshCache::Provide(const std::string& key, MeshOrError mesh) {
+  std::shared_ptr<Entry> entry = EntryFor(key);
+  std::call_once(entry->read_once, [&] { entry->mesh = std::move(mesh); });
+  // no file: nothing to hash, nothing the derived cache can key
+  std::call_once(entry->digest_once, [] {});
+  std::call_once(entry->lookup_once, [] {});
 }
 
 std::optional<ContentDigest> MeshCache::Digest(const std::string& path) {

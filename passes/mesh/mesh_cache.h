@@ -75,8 +75,14 @@ class MeshCache {
   MeshCache(const MeshCache&) = delete;
   MeshCache& operator=(const MeshCache&) = delete;
 
-  /// The mesh at `path`, reading it on first use.
+  /// The mesh at `path`, reading it on first use. A file of points without
+  /// triangles gives their convex hull (point_cloud.h).
   MeshOrError Get(const std::string& path);
+  /// Keeps `mesh` under `key`, a name no file has (an MJCF inline mesh):
+  /// Get() and Status() answer from it and nothing is read, hashed or
+  /// stored in the derived cache for it. A key already asked for keeps what
+  /// it had.
+  void Provide(const std::string& key, MeshOrError mesh);
   /// Whether `path` is a mesh and its facts; from the derived cache when it
   /// has them, else by reading the file (Get).
   MeshStatus Status(const std::string& path);

@@ -241,9 +241,11 @@ MeshOrError ImportMesh(const std::string& path, const Limits& limits, const Mesh
   mesh->vertices.reserve(vertices);
   bool any_color = false;
   Collect(*scene, *scene->mRootNode, aiMatrix4x4(), index, *mesh, any_color);
-  if (mesh->triangles.empty()) {
+  if (mesh->triangles.empty() && mesh->vertices.empty()) {
     return {nullptr, fmt::format("mesh file '{}' holds no triangles", path)};
   }
+  // points without triangles (an OBJ of `v` lines only) are a point cloud:
+  // the reader's caller takes their convex hull, as MuJoCo does (point_cloud.h)
   // a run after the last triangle (a mesh of points or lines at the end)
   if (!mesh->colors.empty() && mesh->colors.back().first_triangle == mesh->triangles.size()) {
     mesh->colors.pop_back();

@@ -189,7 +189,8 @@ std::optional<MeshOrError> DecodeMeshReply(std::string_view bytes, std::string* 
     return Fail(problem, fmt::format("its size does not match {} vertices and {} triangles",
                                      vertices, triangles));
   }
-  if (triangles == 0) return Fail(problem, "its mesh has no triangles");
+  // a point cloud (no triangles) is a mesh too: its reader takes the hull
+  if (triangles == 0 && vertices == 0) return Fail(problem, "its mesh has no vertices");
   auto mesh = std::make_shared<TriangleMesh>();
   mesh->declared_up = static_cast<UpAxis>(declared_up);
   mesh->turned_to_z_up = turned == 1;

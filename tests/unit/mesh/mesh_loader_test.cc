@@ -110,10 +110,14 @@ TEST(MeshLoaderTest, FaceNamingAMissingVertexIsAnError) {  // BEYOND-001
   EXPECT_NE(m.error.find("but there are only 4 vertices"), std::string::npos) << m.error;
 }
 
-TEST(MeshLoaderTest, NoTrianglesIsAnError) {  // BEYOND-001
+TEST(MeshLoaderTest, PointsWithoutTrianglesGiveTheirConvexHull) {  // BEYOND-001
+  // empty.obj: a box's 8 corners and no faces; MuJoCo 3.3.8 takes the hull
+  // of such a point cloud (issue 62)
   const mesh::MeshOrError m = mesh::LoadMesh(MeshPath("empty.obj"));
-  EXPECT_FALSE(m.ok());
-  EXPECT_FALSE(m.error.empty());
+  ASSERT_TRUE(m.ok()) << m.error;
+  EXPECT_EQ(m.mesh->vertices.size(), 8u);
+  EXPECT_EQ(m.mesh->triangles.size(), 12u);
+  EXPECT_NEAR(mesh::SolidMassProperties(*m.mesh).measure, 2.0 * 1.0 * 0.5, 1e-12);
 }
 
 TEST(MeshLoaderTest, MirroringScaleKeepsTheSurfaceOutward) {  // BEYOND-001

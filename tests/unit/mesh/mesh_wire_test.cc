@@ -156,12 +156,22 @@ TEST(MeshWireTest, ATriangleNamingAMissingVertexIsRejected) {  // issue 16
   }
 }
 
-TEST(MeshWireTest, AMeshWithoutTrianglesOrAnEmptyErrorIsRejected) {  // issue 16
+TEST(MeshWireTest, AMeshWithoutVerticesOrAnEmptyErrorIsRejected) {  // issue 16
   auto empty = std::make_shared<TriangleMesh>();
-  empty->vertices = {{0, 0, 0}};
   std::string problem;
   EXPECT_FALSE(Decode(EncodeMeshReply({empty, {}}), &problem));
   EXPECT_FALSE(Decode(EncodeMeshReply({nullptr, "", false}), &problem));
+}
+
+TEST(MeshWireTest, PointsWithoutTrianglesTravel) {  // issue 62: the caller takes their hull
+  auto points = std::make_shared<TriangleMesh>();
+  points->vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  std::string problem;
+  const auto got = Decode(EncodeMeshReply({points, {}}), &problem);
+  ASSERT_TRUE(got) << problem;
+  ASSERT_TRUE(got->ok()) << got->error;
+  EXPECT_EQ(got->mesh->vertices, points->vertices);
+  EXPECT_TRUE(got->mesh->triangles.empty());
 }
 
 std::vector<std::string_view> Views(const std::vector<std::string>& args) {
