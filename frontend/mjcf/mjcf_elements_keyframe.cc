@@ -30,12 +30,23 @@
 // are lowered before keyframes, and the qpos0 body poses are computed before
 // the key changes any default position, so they still see qpos0.
 //
-// Every key is checked as MuJoCo's compiler checks it, with the error at the
-// attribute: qpos has nq values in MuJoCo's layout (free 7, ball 4, hinge and
-// slide 1), qvel nv (free 6, ball 3, hinge and slide 1), ctrl one per
-// actuator element. A chosen key with a wrong-size qpos is an error and is
-// not applied.
+// Every key is checked as MuJoCo 3.3.8's compiler checks it, with the error
+// at the attribute: qpos has at most nq values in MuJoCo's layout (free 7,
+// ball 4, hinge and slide 1), qvel at most nv (free 6, ball 3, hinge and
+// slide 1), ctrl at most one per actuator element. A shorter key is padded
+// as MuJoCo 3.3.8 pads it before compiling (mjCModel::ExpandKeyframe, issue
+// 62), from the joints as the file writes them, not from the compiled qpos0:
+// a hinge or slide gets its ref as written (a hinge's in the file's angle
+// unit, unconverted: ref="-30" under angle="degree" pads -30), a ball 1 0 0
+// 0 and a free joint 0 0 0, 1 0 0 0 (not its body's pose), as the MuJoCo
+// 3.3.8 oracle shows (tests/models/mjcf/oracle/keyframe_short*.xml); qvel,
+// act and ctrl are padded with 0 and mocap poses with the bodies' own, none
+// of which the plant holds. A longer key is an error, and a chosen key with
+// too long a qpos is not applied.
 #include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
 
 #include <Eigen/Geometry>
 
@@ -92,9 +103,11 @@ class Keyframes {
     return qpos;
   }
 
-  /// The key's qpos (nq values) becomes every joint's default positions.
-  void Apply(const std::vector<double>& qpos) {
+  /// The key's qpos (at most nq values, padded as MuJoCo pads it) becomes
+  /// every joint's default positions.
+  void Apply(const std::vector<double>& key) {
     ir::Module& m = L_.module();
+    const std::vector<double> qpos = Padded(key);
     size_t at = 0;
     for (JointId id : L_.r.joint_order) {
       ir::Joint& j = m[id];
@@ -121,11 +134,33 @@ class Keyframes {
   }
 
  private:
+  /// `key` followed by MuJoCo 3.3.8's padding in its layout: free 0 0 0,
+  /// 1 0 0 0, ball 1 0 0 0, hinge and slide the ref as written (the frontend
+  /// holds a hinge's in radians: back to degrees under angle="degree").
+  std::vector<double> Padded(const std::vector<double>& key) const {
+    std::vector<double> pad;
+    pad.reserve(nq_);
+    const double to_file_unit = L_.r.compiler.angle_in_degrees ? 180 / M_PI : 1.0;
+    for (JointId id : L_.r.joint_order) {
+      const ir::Joint& j = L_.module()[id];
+      const double ref = j.default_positions.empty() ? 0.0 : j.default_positions[0];
+      switch (j.type) {
+        case ir::JointType::QuaternionFloating: pad.insert(pad.end(), {0, 0, 0, 1, 0, 0, 0}); break;
+        case ir::JointType::Ball: pad.insert(pad.end(), {1, 0, 0, 0}); break;
+        case ir::JointType::Weld: break;
+        case ir::JointType::Revolute: pad.push_back(ref * to_file_unit); break;
+        default: pad.push_back(ref); break;  // slide
+      }
+    }
+    std::copy(key.begin(), key.end(), pad.begin());
+    return pad;
+  }
+
   std::optional<std::vector<double>> CheckSize(const xml::XmlElement& key, const char* attr,
                                                size_t expected) {
     const Attribute a = key.Attribute(attr);
     std::optional<std::vector<double>> v = L_.AnyDoubles(a);
-    if (!v || v->size() == expected) return v;
+    if (!v || v->size() <= expected) return v;  // a shorter one is padded
     const Attribute name = key.Attribute("name");
     L_.diags().Report(DiagKind::BadValue, a.loc,
                       fmt::format("keyframe '{}': invalid {} size, expected {}, got {}",

@@ -655,24 +655,40 @@ TEST(MjcfKeyframe, FreeBallHingeSlideLayout) {
   ExpectVector((*JointJson(plant, "p"))["default_positions"], {0.4});
 }
 
-TEST(MjcfKeyframe, WrongSizesAreLocatedErrors) {
+TEST(MjcfKeyframe, TooLongIsALocatedError) {
+  // issue 62: only a key longer than nq, nv or nu is an error (a shorter one
+  // is padded, below)
   Mjcf m(Doc(R"(<keyframe>
-  <key name="k" qpos="0 0"/>
-  <key qvel="1" ctrl="1"/>
+  <key name="k" qpos="0 0 0 0 0 0 0 0 0 0"/>
+  <key qvel="1 1 1 1 1 1 1 1 1" ctrl="1"/>
+  <key qpos="0 0" qvel="1 1" ctrl=""/>
  </keyframe>)"));
   EXPECT_FALSE(m.ok());
-  EXPECT_EQ(m.Count(DiagKind::BadValue, "keyframe 'k': invalid qpos size, expected 9, got 2"),
+  EXPECT_EQ(m.Count(DiagKind::BadValue, "keyframe 'k': invalid qpos size, expected 9, got 10"),
             1u)
       << m.Messages();
-  EXPECT_EQ(m.Count(DiagKind::BadValue, "invalid qvel size, expected 8, got 1"), 1u)
+  EXPECT_EQ(m.Count(DiagKind::BadValue, "invalid qvel size, expected 8, got 9"), 1u)
       << m.Messages();
   EXPECT_EQ(m.Count(DiagKind::BadValue, "invalid ctrl size, expected 0, got 1"), 1u)
       << m.Messages();
+  EXPECT_EQ(m.Count(DiagKind::BadValue), 3u) << m.Messages();
   EXPECT_EQ(m.Line(DiagKind::BadValue), 14u);
-  // the chosen key (the first: no "home") has a wrong-size qpos: not applied
+  // the chosen key (the first: no "home") has too long a qpos: not applied
   for (const auto& j : m.module().joints) {
     if (m.module().Text(j.name) == "ja") ExpectVector(j.default_positions, {M_PI / 6});
   }
+}
+
+TEST(MjcfKeyframe, ShortKeyIsPaddedAsMujoco338) {
+  // issue 62: MuJoCo 3.3.8 pads a short key from the joints as written: the
+  // slide's ref, and the free joint's zero pose (not its body's), as the
+  // oracle shows (tests/models/mjcf/oracle/keyframe_short*.xml)
+  Mjcf m(Doc(R"(<keyframe><key qpos="0.5" qvel="1"/></keyframe>)"));
+  ASSERT_TRUE(m.ok()) << m.Messages();
+  const nlohmann::json plant = m.Json();
+  ExpectVector((*JointJson(plant, "ja"))["default_positions"], {0.5});
+  ExpectVector((*JointJson(plant, "jb"))["default_positions"], {0.25});
+  ExpectVector((*JointJson(plant, "c"))["default_positions"], {1, 0, 0, 0, 0, 0, 0});
 }
 
 }  // namespace
