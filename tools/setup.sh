@@ -43,7 +43,8 @@ test_packages=(libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
                libdart-dev libdart-utils-dev libdart-utils-urdf-dev
                clang libclang-rt-14-dev dpkg-dev python3-venv python3-wheel
                colcon python3-colcon-cmake python3-colcon-ros python3-colcon-bash
-               python3-colcon-recursive-crawl)
+               python3-colcon-recursive-crawl python3-colcon-package-selection
+               python3-colcon-output)
 
 packages=("${runtime_packages[@]}")
 if [ "$mode" = test ]; then
