@@ -161,6 +161,15 @@ struct Body {
   /// sum of the geometries' MassContribution on this body (none: massless);
   /// `inertial` is ignored and overwritten by the mass-properties pass.
   bool mass_from_geometry = false;
+  /// MJCF free-joint alignment (<freejoint align>, compiler@alignfree): once
+  /// the mass properties are known, the mass-from-geometry pass moves the
+  /// body frame to the body's principal inertial frame and re-expresses its
+  /// geometries, frames, cameras, inertia and free joint, so that world
+  /// poses are unchanged. `aligned_default_pose`: default_pose and the free
+  /// joint's default positions already place the aligned frame (a
+  /// keyframe's qpos), so the pass keeps them.
+  bool align_free = false;
+  bool aligned_default_pose = false;
   bool unnamed = false;  // named by the compiler (MJCF-020, MJCF-023)
 };
 

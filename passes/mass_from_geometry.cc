@@ -52,6 +52,7 @@ class MassFromGeometryPass : public Pass {
   bool Run(PassContext& ctx) override {
     FromGeometry(ctx);
     Adjust(ctx);
+    AlignFree(ctx);
     return true;
   }
 
@@ -67,7 +68,121 @@ class MassFromGeometryPass : public Pass {
   void Adjust(PassContext& ctx);
   /// boundmass, boundinertia and balanceinertia on one body.
   static void Bound(ir::Body& b, const ir::MassAdjustments& adj);
+  /// Body::align_free: each such body's frame moved to its principal
+  /// inertial frame, everything on it re-expressed.
+  void AlignFree(PassContext& ctx);
+  /// Per body whose mass is one primitive geometry's: that geometry's frame,
+  /// MuJoCo's inertial frame for it (a single geom's frame is copied).
+  std::vector<std::optional<Transform>> single_primitive_;
 };
+
+// The principal axes of an inertia about its COM (columns of R_IP, moments
+// decreasing) as MuJoCo 3.3.8's compiler picks them, so that an aligned
+// body's frame is MuJoCo's, not just one of the 24 frames that diagonalize
+// the inertia: Jacobi rotations from the identity, each about the axis
+// normal to the largest off-diagonal entry's plane (ties resolved towards
+// (0,1), then (0,2)), until that entry is below 1e-12; then the moments are
+// put in decreasing order by quarter turns about z (swapping x and y) and x
+// (swapping y and z), compared pairwise 0-1, 1-2, 0-1.
+Eigen::Matrix3d MujocoPrincipalAxes(const Eigen::Matrix3d& I) {
+  constexpr double kTiny = 1e-12;
+  Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d moments = I.diagonal();
+  for (int iter = 0; iter < 500; ++iter) {
+    const Eigen::Matrix3d R = q.toRotationMatrix();
+    const Eigen::Matrix3d D = R.transpose() * I * R;
+    moments = D.diagonal();
+    int row = 1, col = 2, axis = 0;
+    if (std::abs(D(0, 1)) > std::abs(D(0, 2)) && std::abs(D(0, 1)) > std::abs(D(1, 2))) {
+      row = 0, col = 1, axis = 2;
+    } else if (std::abs(D(0, 2)) > std::abs(D(1, 2))) {
+      row = 0, col = 2, axis = 1;
+    }
+    if (std::abs(D(row, col)) < kTiny) break;
+    const double tau = (D(col, col) - D(row, row)) / (2 * D(row, col));
+    const double t = tau >= 0 ? 1 / (tau + std::sqrt(1 + tau * tau))
+                              : -1 / (-tau + std::sqrt(1 + tau * tau));
+    const double c = 1 / std::sqrt(1 + t * t);
+    if (c > 1 - kTiny) break;
+    // the turn that zeroes D(row, col): -atan(t) about x or z, +atan(t)
+    // about y (whose plane, z to x, runs the other way)
+    double half = std::sqrt(0.5 - 0.5 * c) * (tau >= 0 ? -1 : 1) * (axis == 1 ? -1 : 1);
+    Eigen::Quaterniond turn(std::sqrt(1 - half * half), 0, 0, 0);
+    turn.coeffs()[axis] = half;  // coeffs() is x y z w
+    q = (q * turn.normalized()).normalized();
+  }
+  for (int k = 0; k < 3; ++k) {
+    const int lead = k % 2;
+    if (moments[lead] + kTiny < moments[lead + 1]) {
+      std::swap(moments[lead], moments[lead + 1]);
+      Eigen::Quaterniond quarter(std::sqrt(0.5), 0, 0, 0);
+      quarter.coeffs()[(lead + 2) % 3] = std::sqrt(0.5);
+      q = (q * quarter).normalized();
+    }
+  }
+  return q.toRotationMatrix();
+}
+
+void MassFromGeometryPass::AlignFree(PassContext& ctx) {
+  ir::Module& m = ctx.module;
+  std::vector<std::optional<Transform>> X_BP(m.bodies.size());
+  bool any = false;
+  for (size_t i = 0; i < m.bodies.size(); ++i) {
+    const ir::Body& b = m.bodies[i];
+    if (!b.align_free || !b.inertial || b.inertial->mass <= 0) continue;
+    const ir::Inertial& in = *b.inertial;
+    const Eigen::Matrix3d I = InertiaMatrix(in);
+    Transform P = in.X_BI;
+    if (i < single_primitive_.size() && single_primitive_[i]) {
+      P = *single_primitive_[i];  // MuJoCo copies the one geom's frame
+    } else if (b.mass_from_geometry || !I.isDiagonal(0)) {
+      // the geoms' sum, or a fullinertia: MuJoCo's principal axes
+      P.R = in.X_BI.R * MujocoPrincipalAxes(I);
+    }  // else an <inertial> quat with diaginertia: its frame
+    X_BP[i] = P;
+    any = true;
+  }
+  if (!any) return;
+  for (size_t i = 0; i < m.bodies.size(); ++i) {
+    if (!X_BP[i]) continue;
+    ir::Body& b = m.bodies[i];
+    ir::Inertial& in = *b.inertial;
+    const Transform X_PB = X_BP[i]->inverse();
+    const Eigen::Matrix3d R_PI = X_PB.R * in.X_BI.R;
+    const Eigen::Matrix3d I_P = R_PI * InertiaMatrix(in) * R_PI.transpose();
+    in.X_BI = Transform::FromTranslation(X_PB * in.X_BI.p);
+    SetInertiaMatrix(in, I_P);
+    if (b.default_pose && !b.aligned_default_pose) b.default_pose = *b.default_pose * *X_BP[i];
+  }
+  auto moved = [&](const ir::Ref<BodyId>& body) -> const std::optional<Transform>* {
+    if (!body.resolved() || body.id.index() >= X_BP.size() || !X_BP[body.id.index()]) {
+      return nullptr;
+    }
+    return &X_BP[body.id.index()];
+  };
+  for (ir::Geometry& g : m.geometries) {
+    if (auto* P = moved(g.body)) g.X_BG = (*P)->inverse() * g.X_BG;
+  }
+  for (ir::Frame& f : m.frames) {
+    if (auto* P = moved(f.body)) f.X_BF = (*P)->inverse() * f.X_BF;
+  }
+  for (ir::Camera& c : m.cameras) {
+    if (auto* P = moved(c.body)) c.X_BC = (*P)->inverse() * c.X_BC;
+  }
+  for (ir::Joint& j : m.joints) {
+    const auto* P = moved(j.child);
+    if (!P || j.type != ir::JointType::QuaternionFloating) continue;
+    const ir::Body& b = m[j.child.id];
+    if (b.aligned_default_pose || j.default_positions.size() != 7) continue;
+    const auto& q = j.default_positions;
+    Transform X_FM{Eigen::Quaterniond(q[0], q[1], q[2], q[3]).toRotationMatrix(),
+                   Eigen::Vector3d(q[4], q[5], q[6])};
+    X_FM = X_FM * j.X_CM.inverse() * **P * j.X_CM;
+    Eigen::Quaterniond r(X_FM.R);
+    if (r.w() < 0) r.coeffs() = -r.coeffs();
+    j.default_positions = {r.w(), r.x(), r.y(), r.z(), X_FM.p.x(), X_FM.p.y(), X_FM.p.z()};
+  }
+}
 
 std::optional<MassFromGeometryPass::Part> MassFromGeometryPass::PartOf(PassContext& ctx,
                                                                         const ir::Geometry& g) {
@@ -127,13 +242,21 @@ void MassFromGeometryPass::FromGeometry(PassContext& ctx) {
   for (const ir::Body& b : m.bodies) any |= b.mass_from_geometry && !b.is_world;
   if (!any) return;
   std::vector<MassSum> sums(m.bodies.size());
+  single_primitive_.assign(m.bodies.size(), std::nullopt);
   for (const ir::Geometry& g : m.geometries) {
     if (!g.mass_contribution || !g.body.resolved()) continue;
     const ir::Body& b = m[g.body.id];
     if (!b.mass_from_geometry || b.is_world) continue;
     auto part = PartOf(ctx, g);
     if (!part || part->mass <= kEps) continue;
-    sums[g.body.id.index()].Add(part->mass, g.X_BG, part->com, part->inertia);
+    MassSum& sum = sums[g.body.id.index()];
+    sum.Add(part->mass, g.X_BG, part->com, part->inertia);
+    // a primitive's inertia is diagonal in its frame, which MuJoCo takes as
+    // the body's inertial frame when it is the only one
+    const bool primitive = !std::holds_alternative<ir::Mesh>(g.shape);
+    single_primitive_[g.body.id.index()] =
+        sum.parts() == 1 && primitive && b.align_free ? std::optional<Transform>(g.X_BG)
+                                                      : std::nullopt;
   }
   for (size_t i = 0; i < m.bodies.size(); ++i) {
     ir::Body& b = m.bodies[i];

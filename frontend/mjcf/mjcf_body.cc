@@ -319,6 +319,23 @@ void MjcfReader::LowerWorldBody(const xml::XmlElement& worldbody) {
     for (std::string_view a : {"gravcomp", "user"}) WarnUnsupported(e, a);
 
     LowerJoints(*this, b, items.joints, mocap);
+    // issue 62: MuJoCo 3.3.8 aligns a body whose one joint is free and which
+    // has no child bodies, when the free joint's align is "true", or "auto"
+    // (its default) under compiler@alignfree="true"
+    if (items.joints.size() == 1 && items.bodies.empty() && !free_joints.empty() &&
+        m[free_joints.back()].child.id == b.body) {
+      bool align = compiler.alignfree;
+      if (const xml::XmlAttribute a = items.joints.front().e.Attribute("align");
+          a.present() && items.joints.front().e.Name() == "freejoint") {
+        if (a.value == "true" || a.value == "false") {
+          align = a.value == "true";
+        } else if (a.value != "auto") {
+          diags().Report(DiagKind::BadValue, a.loc,
+                         fmt::format("align must be true, false or auto, not '{}'", a.value));
+        }
+      }
+      m[b.body].align_free = align;
+    }
     LowerAttachments(*this, items, b.body, false, b.mass_from_geometry);
 
     if (check_massless) {

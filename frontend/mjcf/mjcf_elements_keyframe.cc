@@ -119,6 +119,8 @@ class Keyframes {
           j.default_positions = {quat.w(), quat.x(), quat.y(), quat.z(), q[0], q[1], q[2]};
           if (std::optional<BodyId> body = L_.BodyOf(j.child)) {
             m[*body].default_pose = Transform{quat.toRotationMatrix(), Eigen::Vector3d(q[0], q[1], q[2])};
+            // an aligned body's qpos places its aligned frame
+            m[*body].aligned_default_pose = m[*body].align_free;
           }
           break;
         }

@@ -62,6 +62,7 @@ struct CompilerSettings {
   bool fitaabb = false;
   bool discard_visual = false;
   bool fusestatic = false;
+  bool alignfree = false;  // compiler@alignfree: <freejoint align="auto"> aligns
   ir::MassAdjustments mass_adjustments;  // boundmass, boundinertia, balanceinertia, settotalmass
 
   /// Radians from a value in the compiler's angle unit.

@@ -84,7 +84,8 @@ void MjcfReader::ReadCompiler(const xml::XmlElement& e) {
     WarnOnce(e.Attribute("fusestatic").loc, DiagKind::UnsupportedAttribute, "compiler",
              "fusestatic", "is not applied: static bodies are kept as welded bodies");
   }
-  for (std::string_view name : {"strippath", "alignfree", "saveinertial"}) {
+  if (auto v = Boolean(c, "alignfree", false)) compiler.alignfree = *v;
+  for (std::string_view name : {"strippath", "saveinertial"}) {
     if (e.Attribute(name).present()) WarnUnsupported(e, name);
   }
   // usethread: a MuJoCo runtime setting, silently ignored
