@@ -61,7 +61,7 @@ std::optional<MujocoMeshProperties> CachedMujocoMeshMassProperties(
     ir::MeshInertia mode, std::string* error) {
   DerivedMeshCache* cache = meshes.derived();
   const auto key =
-      KeyFor(meshes, path, fmt::format("mujoco-mass|mode={}", static_cast<int>(mode)), scale);
+      KeyFor(meshes, path, fmt::format("mujoco-mass|mode={}|axes=jacobi", static_cast<int>(mode)), scale);
   if (key) {
     if (auto values = cache->Load(*key); values && values->size() == kMujocoValues) {
       MujocoMeshProperties p;

@@ -9,6 +9,7 @@
 #include <map>
 
 #include "passes/mesh/convex_hull.h"
+#include "passes/mesh/mujoco_eigen.h"
 
 namespace mdlc::mesh {
 namespace {
@@ -220,7 +221,9 @@ std::optional<MujocoMeshProperties> MujocoMeshMassProperties(const TriangleMesh&
   out.mass.inertia = InertiaFromSecondMoments(second);
 
   Eigen::Vector3d e;
-  PrincipalAxes(out.mass.inertia, &e, &out.R_MP);
+  // MuJoCo's own solver: its signs of the axes are the frame fitted
+  // primitives take (mujoco_eigen.h)
+  MujocoEigen(out.mass.inertia, &e, &out.R_MP);
   out.principal_moments = e;
   if (e[2] <= 0) return fail("the mesh's inertia has a non-positive principal moment");
   constexpr double rtol = 1e-6, atol = 1e-9;
