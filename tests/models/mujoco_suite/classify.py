@@ -24,8 +24,8 @@ and from that writes one row of manifest.tsv with the expected outcome:
                          spatial tendon, plugin, sdf geom, skin, composite):
                          mdlc must not crash and must warn about it
   pending:<construct>    a construct mdlc does not read yet but is meant to
-                         (replicate, attach, freejoint align, keyframes
-                         shorter than qpos, builtin meshes): the test
+                         (replicate, attach, keyframes shorter than qpos,
+                         builtin meshes): the test
                          compares and reports these without failing
 
 Several constructs are joined with '+'. Usage:
@@ -61,12 +61,13 @@ COLUMNS = ["path", "outcome", "mujoco", "mdlc", "note"]
 # out. (Order: the first found names the outcome first.)
 NOT_HELD = ["flex", "spatial-tendon", "plugin", "sdf-geom", "skin", "composite"]
 # Constructs mdlc is being taught to read (issue 62). Meshes written in the
-# file ("inline-mesh") and meshes without faces ("point-cloud-mesh") were
-# here until mdlc read them as MuJoCo does: their files are `agree` now.
+# file ("inline-mesh"), meshes without faces ("point-cloud-mesh") and
+# <freejoint align> ("freejoint-align") were here until mdlc read them as
+# MuJoCo does: their files are `agree` now.
 # Meshes MuJoCo builds from a builtin shape (<mesh builtin="sphere">) are
 # here too: mdlc leaves them out with a warning, though nothing keeps the
 # plant from holding them, and no one is teaching mdlc them yet.
-PENDING = ["replicate", "attach", "freejoint-align", "short-keyframe", "builtin-mesh"]
+PENDING = ["replicate", "attach", "short-keyframe", "builtin-mesh"]
 
 # Why mdlc may accept a file MuJoCo 3.3.8 refuses, by MuJoCo's error text:
 # the refusal is not about anything the plant holds. (A mujoco-rejects file mdlc
