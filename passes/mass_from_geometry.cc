@@ -71,8 +71,8 @@ class MassFromGeometryPass : public Pass {
   /// Body::align_free: each such body's frame moved to its principal
   /// inertial frame, everything on it re-expressed.
   void AlignFree(PassContext& ctx);
-  /// Per body whose mass is one primitive geometry's: that geometry's frame,
-  /// MuJoCo's inertial frame for it (a single geom's frame is copied).
+  /// Per aligned body whose mass is one geometry's: MuJoCo's inertial frame
+  /// for it (the geom's frame, a mesh's at its principal axes).
   std::vector<std::optional<Transform>> single_primitive_;
 };
 
@@ -251,12 +251,16 @@ void MassFromGeometryPass::FromGeometry(PassContext& ctx) {
     if (!part || part->mass <= kEps) continue;
     MassSum& sum = sums[g.body.id.index()];
     sum.Add(part->mass, g.X_BG, part->com, part->inertia);
-    // a primitive's inertia is diagonal in its frame, which MuJoCo takes as
-    // the body's inertial frame when it is the only one
-    const bool primitive = !std::holds_alternative<ir::Mesh>(g.shape);
-    single_primitive_[g.body.id.index()] =
-        sum.parts() == 1 && primitive && b.align_free ? std::optional<Transform>(g.X_BG)
-                                                      : std::nullopt;
+    // MuJoCo takes the one geom's frame as the body's inertial frame: a
+    // primitive's own, a mesh's moved to the mesh's principal frame
+    std::optional<Transform> frame;
+    if (sum.parts() == 1 && b.align_free) {
+      frame = g.X_BG;
+      if (std::holds_alternative<ir::Mesh>(g.shape)) {
+        frame = g.X_BG * Transform{MujocoPrincipalAxes(part->inertia), part->com};
+      }
+    }
+    single_primitive_[g.body.id.index()] = frame;
   }
   for (size_t i = 0; i < m.bodies.size(); ++i) {
     ir::Body& b = m.bodies[i];
