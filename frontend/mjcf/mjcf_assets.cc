@@ -203,7 +203,15 @@ void ReadMesh(MjcfReader& r, const xml::XmlElement& e) {
   if (inline_mesh) {
     asset.name = written_name;
     auto data = ReadInlineMesh(r, e, m, asset.name);
-    if (!data) return;
+    if (!data) {
+      // reported at the mesh; its geoms say why they are left out, once,
+      // not that they name an unknown mesh
+      if (!asset.name.empty() && !r.meshes.count(asset.name)) {
+        asset.left_out = "its definition has an error (reported where it is defined)";
+        r.meshes.emplace(asset.name, std::move(asset));
+      }
+      return;
+    }
     asset.mesh.uri = asset.name;
     asset.mesh.uri_loc = vertex.loc;
     // no file: the key the mesh passes keep it under (no path starts with '<')
