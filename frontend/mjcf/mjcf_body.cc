@@ -23,9 +23,10 @@ struct BodyItems {
   absl::InlinedVector<BodyItem, 2> inertials, joints, geoms, sites, cameras, bodies;
 };
 
-/// <composite>, <attach> and <replicate> generate bodies, joints and geoms
-/// that mdlc does not create: every one gets its own warning saying what is
-/// missing from the plant (MJCF-091), not one warning per kind.
+/// <composite> generates bodies, joints and geoms that mdlc does not create:
+/// every one gets its own warning saying what is missing from the plant
+/// (MJCF-091), not one warning per kind. (<attach> and <replicate> are
+/// expanded before the tree is read: mjcf_replicate.h.)
 void WarnModelGenerator(MjcfReader& r, const xml::XmlElement& e, std::string_view tag) {
   auto attr = [&](std::string_view name) {
     const xml::XmlAttribute a = e.Attribute(name);
@@ -42,16 +43,6 @@ void WarnModelGenerator(MjcfReader& r, const xml::XmlElement& e, std::string_vie
         "<flexcomp> and <replicate>); mdlc does not expand it, so the up to {} bodies it would "
         "generate, with their joints, geoms, tendons and equalities, are missing from the plant",
         attr("type"), bodies);
-  } else if (tag == "attach") {
-    what = fmt::format(
-        "<attach model=\"{}\" body=\"{}\"> is not expanded: body '{}' of model '{}' and "
-        "everything below it are missing from the plant",
-        attr("model"), attr("body"), attr("body"), attr("model"));
-  } else {
-    what = fmt::format(
-        "<replicate count=\"{}\"> is not expanded: the {} copies of its contents are missing from "
-        "the plant",
-        attr("count"), attr("count"));
   }
   r.diags().Report(DiagKind::UnsupportedElement, e.GetLoc(), what);
 }
@@ -103,7 +94,7 @@ BodyItems Collect(MjcfReader& r, const xml::XmlElement& body, const std::string&
       items.cameras.push_back(std::move(item));
     } else if (tag == "body") {
       items.bodies.push_back(std::move(item));
-    } else if (tag == "composite" || tag == "attach" || tag == "replicate") {
+    } else if (tag == "composite") {
       WarnModelGenerator(r, e, tag);
     } else if (tag == "flexcomp") {
       r.LeaveOut(e.GetLoc(), "<flexcomp>", kFlexLeftOut);

@@ -10,6 +10,7 @@
 
 #include "frontend/mjcf/mjcf_capacity.h"
 #include "frontend/mjcf/mjcf_reader_detail.h"
+#include "frontend/mjcf/mjcf_replicate.h"
 #include "frontend/model_naming.h"
 
 namespace mdlc::frontend::mjcf {
@@ -57,10 +58,17 @@ std::optional<ModelId> Read(FileId file, FrontendContext& ctx) {
   // the instance is new: its joints are the ones added from here on
   const size_t first_joint = ctx.module.joints.size();
 
-  const std::vector<xml::XmlElement> top = r.Children(root);
+  std::vector<xml::XmlElement> top = r.Children(root);
   // phase 2: settings, defaults and assets, wherever they stand
   for (const auto& e : top) {
     if (e.Name() == "compiler") r.ReadCompiler(e);
+  }
+  // <replicate> and <attach>: the rest reads the document they expand to
+  if (Expansion x = ExpandReplicateAndAttach(r, root, {path}); x.failed) {
+    return std::nullopt;
+  } else if (x.document) {
+    r.document.documents.push_back(x.document);
+    top = r.Children(x.document->Root());
   }
   for (const auto& e : top) {
     if (e.Name() == "option") r.ReadOption(e);
