@@ -198,9 +198,6 @@ const std::vector<KnownDisagreement> kKnownDisagreements = {
      "MJCF-091: a MuJoCo 2 <composite> (MuJoCo 3 rejects its attributes; the oracle is MuJoCo "
      "2.2.2): Drake and mdlc warn that composite is unsupported and drop the bodies, joints and "
      "geoms it generates, which MuJoCo 2.2.2 builds"},
-    {"mujoco_menagerie/iit_softfoot/scene.xml",
-     "MJCF-091: <attach> (MuJoCo 3 model composition: softfoot.xml's bodies attached with prefix "
-     "sf_) is warned about and ignored, as in Drake; MuJoCo builds the attached bodies"},
 };
 
 // Files where MuJoCo's own mass properties are less accurate than the
