@@ -17,9 +17,10 @@ namespace mdlc::frontend::mjcf {
 /// one joint per joint it has, or a weld when it has none, so both tables
 /// get a slot per <body> and per joint, which is never too few. A geom adds
 /// up to two geometries (illustration and proximity), a site a frame. Joints
-/// and geoms of <default> classes are counted too, which only adds room; a
-/// <replicate>'s body is counted once however many copies it makes, and
-/// past the room the tables grow by doubling.
+/// and geoms of <default> classes are counted too, which only adds room. A
+/// model with <replicate> or <attach> has the document they expand to among
+/// its documents (mjcf_replicate.h), so every copy is counted; past the
+/// room the tables grow by doubling.
 EntityRoom MjcfEntityRoom(const std::vector<std::shared_ptr<const xml::XmlDocument>>& documents);
 
 }  // namespace mdlc::frontend::mjcf

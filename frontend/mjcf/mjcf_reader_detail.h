@@ -19,6 +19,8 @@
 // (compiler, option, other top-level sections), mjcf_orientation.{h,cc}
 // (rotation conversions, pure), mjcf_pose.cc (pose attributes of elements),
 // mjcf_schema.cc (known attributes per element), mjcf_assets.cc,
+// mjcf_replicate.{h,cc} and mjcf_attach.cc (<replicate> and <attach>,
+// expanded into a document of their result after <compiler> is read),
 // mjcf_body.cc (the worldbody walk, bodies, inertial), mjcf_joint.cc
 // (joints and their placement), mjcf_geom.cc (geoms, sites, cameras),
 // mjcf_elements*.cc (equality, tendon, actuator, contact, keyframe).

@@ -101,11 +101,7 @@ struct NotComparable {
 };
 
 // Files whose dynamics cannot be compared, and why.
-const std::vector<NotComparable> kNotComparable = {
-    {"mujoco_menagerie/iit_softfoot/scene.xml",
-     "MJCF-091: <attach> is warned about and ignored, as in Drake; MuJoCo builds the attached "
-     "bodies, so the plant does not hold MuJoCo's tree"},
-};
+const std::vector<NotComparable> kNotComparable = {};
 
 const char* NotComparableReason(const std::string& key) {
   for (const auto& n : kNotComparable) {
