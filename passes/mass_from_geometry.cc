@@ -33,6 +33,7 @@
 
 #include "passes/mesh/cached_properties.h"
 #include "passes/mesh/mass_properties.h"
+#include "passes/mesh/mujoco_eigen.h"
 #include "passes/pass_registry.h"
 #include "passes/shape_mass.h"
 
@@ -77,50 +78,14 @@ class MassFromGeometryPass : public Pass {
 };
 
 // The principal axes of an inertia about its COM (columns of R_IP, moments
-// decreasing) as MuJoCo 3.3.8's compiler picks them, so that an aligned
-// body's frame is MuJoCo's, not just one of the 24 frames that diagonalize
-// the inertia: Jacobi rotations from the identity, each about the axis
-// normal to the largest off-diagonal entry's plane (ties resolved towards
-// (0,1), then (0,2)), until that entry is below 1e-12; then the moments are
-// put in decreasing order by quarter turns about z (swapping x and y) and x
-// (swapping y and z), compared pairwise 0-1, 1-2, 0-1.
+// decreasing) as MuJoCo 3.3.8's compiler picks them (mesh::MujocoEigen), so
+// that an aligned body's frame is MuJoCo's, not just one of the 24 frames
+// that diagonalize the inertia.
 Eigen::Matrix3d MujocoPrincipalAxes(const Eigen::Matrix3d& I) {
-  constexpr double kTiny = 1e-12;
-  Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
-  Eigen::Vector3d moments = I.diagonal();
-  for (int iter = 0; iter < 500; ++iter) {
-    const Eigen::Matrix3d R = q.toRotationMatrix();
-    const Eigen::Matrix3d D = R.transpose() * I * R;
-    moments = D.diagonal();
-    int row = 1, col = 2, axis = 0;
-    if (std::abs(D(0, 1)) > std::abs(D(0, 2)) && std::abs(D(0, 1)) > std::abs(D(1, 2))) {
-      row = 0, col = 1, axis = 2;
-    } else if (std::abs(D(0, 2)) > std::abs(D(1, 2))) {
-      row = 0, col = 2, axis = 1;
-    }
-    if (std::abs(D(row, col)) < kTiny) break;
-    const double tau = (D(col, col) - D(row, row)) / (2 * D(row, col));
-    const double t = tau >= 0 ? 1 / (tau + std::sqrt(1 + tau * tau))
-                              : -1 / (-tau + std::sqrt(1 + tau * tau));
-    const double c = 1 / std::sqrt(1 + t * t);
-    if (c > 1 - kTiny) break;
-    // the turn that zeroes D(row, col): -atan(t) about x or z, +atan(t)
-    // about y (whose plane, z to x, runs the other way)
-    double half = std::sqrt(0.5 - 0.5 * c) * (tau >= 0 ? -1 : 1) * (axis == 1 ? -1 : 1);
-    Eigen::Quaterniond turn(std::sqrt(1 - half * half), 0, 0, 0);
-    turn.coeffs()[axis] = half;  // coeffs() is x y z w
-    q = (q * turn.normalized()).normalized();
-  }
-  for (int k = 0; k < 3; ++k) {
-    const int lead = k % 2;
-    if (moments[lead] + kTiny < moments[lead + 1]) {
-      std::swap(moments[lead], moments[lead + 1]);
-      Eigen::Quaterniond quarter(std::sqrt(0.5), 0, 0, 0);
-      quarter.coeffs()[(lead + 2) % 3] = std::sqrt(0.5);
-      q = (q * quarter).normalized();
-    }
-  }
-  return q.toRotationMatrix();
+  Eigen::Vector3d moments;
+  Eigen::Matrix3d axes;
+  mesh::MujocoEigen(I, &moments, &axes);
+  return axes;
 }
 
 void MassFromGeometryPass::AlignFree(PassContext& ctx) {
