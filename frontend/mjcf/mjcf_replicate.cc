@@ -189,7 +189,16 @@ class Expander {
 };
 
 bool Expander::ReadReplicate(const xml::XmlElement& e, Node& n) {
-  r_.CheckAttributes(e, "replicate");
+  // outside MuJoCo's schema: MuJoCo reads these and ignores any other
+  e.ForEachAttributeName([&](std::string_view name) {
+    for (std::string_view known : {"count", "offset", "euler", "sep", "childclass"}) {
+      if (name == known) return;
+    }
+    diags().Report(DiagKind::UnknownAttribute, e.Attribute(name).loc,
+                   fmt::format("'{}' is not an attribute of <replicate> and is ignored (MuJoCo "
+                               "ignores it too)",
+                               name));
+  });
   const xml::XmlAttribute count = e.Attribute("count");
   if (!count.present()) {
     diags().Report(DiagKind::MissingAttribute, e.GetLoc(),

@@ -45,6 +45,8 @@ std::unordered_map<std::string_view, List> SchemaLists() {
        {"name", "childclass", "pos", "quat", "mocap", "axisangle", "xyaxes", "zaxis", "euler",
         "gravcomp", "user"}},
       {"frame", {"name", "childclass", "pos", "quat", "axisangle", "xyaxes", "zaxis", "euler"}},
+      {"attach", {"model", "body", "prefix"}},
+      {"model", {"name", "file", "content_type"}},
       {"inertial",
        {"pos", "quat", "mass", "diaginertia", "axisangle", "xyaxes", "zaxis", "euler",
         "fullinertia"}},
