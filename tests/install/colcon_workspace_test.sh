@@ -46,10 +46,7 @@ cleanup() {
   exit $status
 }
 trap cleanup EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
-seconds() { date +%s.%N; }
-elapsed() { awk -v a="$1" -v b="$(seconds)" 'BEGIN { printf "%.1f", b - a }'; }
-test_start=$(seconds)
+source "$(dirname "${BASH_SOURCE[0]}")/install_test_lib.sh"
 
 # -- the workspace --------------------------------------------------------
 mkdir -p "$ws/src"

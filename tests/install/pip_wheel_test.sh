@@ -33,10 +33,7 @@ done
 
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
-seconds() { date +%s.%N; }
-elapsed() { awk -v a="$1" -v b="$(seconds)" 'BEGIN { printf "%.1f", b - a }'; }
-test_start=$(seconds)
+source "$(dirname "${BASH_SOURCE[0]}")/install_test_lib.sh"
 
 # none of the build tree's settings may help what the environment does, and
 # pip reads no configuration of this machine (no index, no extra links)
