@@ -31,6 +31,24 @@ uint64_t ContentHash(const std::string& bytes) {
 }
 }  // namespace
 
+void AssetPaths::ReportInlineMeshLeftOut(const std::string& geometry, const ir::Mesh& mesh,
+                                         std::string_view target, const std::string& why,
+                                         Loc loc) {
+  if (!inline_left_out_.emplace(loc.file.value, loc.line, loc.column, geometry).second) return;
+  if (why.empty()) {
+    diags_.Report(DiagKind::Lossy, loc,
+                  fmt::format("geometry '{}' is left out: its mesh '{}' is written in the "
+                              "model file (vertex and face lists), and {} names mesh files "
+                              "only; --copy-assets writes an OBJ of it",
+                              geometry, mesh.uri, target));
+    return;
+  }
+  diags_.Report(DiagKind::Lossy, loc,
+                fmt::format("geometry '{}' is left out: its mesh '{}' is written in the model "
+                            "file (vertex and face lists), and mdlc cannot write it as OBJ ({})",
+                            geometry, mesh.uri, why));
+}
+
 AssetPaths::AssetPaths(const WriteOptions& options, DiagnosticEngine& diags)
     : options_(options), diags_(diags) {
   std::error_code ec;
@@ -95,6 +113,28 @@ std::optional<std::string> AssetPaths::UnconvertibleMesh(const std::string& reso
   auto it = unconvertible_.find(fs::weakly_canonical(fs::absolute(resolved, ec), ec));
   if (it == unconvertible_.end()) return std::nullopt;
   return it->second;
+}
+
+std::optional<std::string> AssetPaths::NameInlineMesh(const ir::Mesh& mesh, Loc loc,
+                                                      std::string* why) {
+  why->clear();
+  if (!options_.copy_assets_dir || !options_.meshes || !mesh.inline_data) return std::nullopt;
+  auto [it, first] = inline_copies_.try_emplace(mesh.resolved);
+  InlineCopy& copy = it->second;
+  if (first) {
+    const ObjOrError obj =
+        options_.meshes->ObjForInline(*mesh.inline_data, fmt::format("mesh '{}'", mesh.uri));
+    if (!obj.ok()) {
+      copy.why = obj.error;
+    } else if (auto file = WriteCopy(obj.obj, fs::path(mesh.uri.empty() ? "mesh" : mesh.uri),
+                                     ".obj", loc)) {
+      copy.name = Relative(*file);
+    } else {
+      copy.why = "the copy cannot be written (reported)";
+    }
+  }
+  *why = copy.why;
+  return copy.name;
 }
 
 std::optional<fs::path> AssetPaths::ObjCopy(const fs::path& file, Loc loc) {

@@ -10,6 +10,11 @@
 // shape the plant has; without --copy-assets it is named as it is, with a -Wlossy warning
 // per file saying the target cannot read it. A mesh mdlc cannot read either
 // (an empty file) is left to the writer, which drops its geometry.
+//
+// An MJCF mesh written in the model file (vertex and face lists) has no file
+// to name: the MJCF writer writes it back in the file; for the other targets
+// --copy-assets writes an OBJ of it (NameInlineMesh), and without it the
+// writer leaves its geometry out with a -Wlossy warning.
 #pragma once
 
 #include <filesystem>
@@ -17,6 +22,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <tuple>
 
 #include "backend/writers/writer.h"
 #include "ir/diagnostics.h"
@@ -48,6 +54,18 @@ class AssetPaths {
   /// was not asked to. The writer drops the geometry: the target would
   /// refuse the whole model.
   std::optional<std::string> UnconvertibleMesh(const std::string& resolved) const;
+  /// An MJCF inline mesh (`mesh.inline_data`: no file, `resolved` is only
+  /// the compile's key for it): with --copy-assets, the OBJ copy of its
+  /// triangles (a point cloud's convex hull), named as the other copies
+  /// are. nullopt without --copy-assets (`*why` empty), or when the OBJ
+  /// cannot be built or written (`*why` says why). Each mesh once.
+  std::optional<std::string> NameInlineMesh(const ir::Mesh& mesh, Loc loc, std::string* why);
+  /// The -Wlossy warning for geometry `geometry` at `loc`, left out because
+  /// its inline mesh has no file `target` ("URDF") can name: NameInlineMesh's
+  /// `why`, or, without one, that --copy-assets writes an OBJ of it. Once
+  /// per geometry (a visual and a collision of one source geom are one).
+  void ReportInlineMeshLeftOut(const std::string& geometry, const ir::Mesh& mesh,
+                               std::string_view target, const std::string& why, Loc loc);
 
  private:
   std::optional<std::filesystem::path> Copy(const std::filesystem::path& file, Loc loc);
@@ -69,6 +87,12 @@ class AssetPaths {
   std::map<std::filesystem::path, std::string> unconvertible_;        // original -> why
   std::map<std::filesystem::path, std::string> target_verdicts_;      // original -> why_not
   std::set<std::filesystem::path> unreadable_reported_;
+  struct InlineCopy {
+    std::optional<std::string> name;
+    std::string why;
+  };
+  std::map<std::string, InlineCopy> inline_copies_;  // Mesh::resolved -> its OBJ copy
+  std::set<std::tuple<uint32_t, uint32_t, uint32_t, std::string>> inline_left_out_;  // loc, name
 };
 
 }  // namespace mdlc::writers

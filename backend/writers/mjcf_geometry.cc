@@ -46,11 +46,16 @@ constexpr MeshTarget kMujoco{"MuJoCo", WhyMujocoCannotRead};
 void MjcfWriter::WriteMeshAssets() {
   bool open = false;
   std::map<std::pair<std::string, std::string>, std::string> assets;  // (file, scale) -> name
+  std::map<std::pair<std::string, std::string>, std::string> inline_assets;  // (key, scale) -> name
   for (size_t i = 0; i < scene_.geometries.size(); ++i) {
     const backend::SceneGeometry& g = scene_.geometries[i];
     const Loc loc = GeometryLoc(i);
     const auto* mesh = std::get_if<ir::Mesh>(&g.shape);
     if (!mesh) continue;
+    if (mesh->inline_data) {
+      WriteInlineMesh(i, *mesh, inline_assets, &open);
+      continue;
+    }
     const std::optional<std::string> file = assets_.NameMesh(
         mesh->uri, mesh->resolved, mesh->uri_loc.valid() ? mesh->uri_loc : loc, kMujoco);
     if (auto why = assets_.UnconvertibleMesh(mesh->resolved)) {
@@ -71,6 +76,35 @@ void MjcfWriter::WriteMeshAssets() {
     out_.Close();
   }
   if (open) out_.Close();
+}
+
+// A mesh the source holds in its file (MJCF vertex and face lists) is written
+// back the same way: its vertices in the mesh frame (the source's refpos and
+// refquat already applied), its faces, or none for a point cloud, whose
+// convex hull MuJoCo takes as mdlc does.
+void MjcfWriter::WriteInlineMesh(size_t index, const ir::Mesh& mesh,
+                                 std::map<std::pair<std::string, std::string>, std::string>& assets,
+                                 bool* open) {
+  const std::string scale =
+      mesh.scale != Eigen::Vector3d::Ones() ? VectorText(mesh.scale) : std::string();
+  auto [it, added] = assets.emplace(std::pair(mesh.resolved, scale), fmt::format("mesh{}", index));
+  mesh_names_[index] = it->second;
+  if (!added) return;
+  if (!*open) out_.Open("asset");
+  *open = true;
+  std::string vertex, face;
+  for (const Eigen::Vector3d& v : mesh.inline_data->vertices) {
+    if (!vertex.empty()) vertex += "  ";
+    vertex += VectorText(v);
+  }
+  for (const Eigen::Vector3i& f : mesh.inline_data->faces) {
+    if (!face.empty()) face += "  ";
+    face += fmt::format("{} {} {}", f[0], f[1], f[2]);
+  }
+  out_.Open("mesh").Attr("name", it->second).Attr("vertex", vertex);
+  if (!face.empty()) out_.Attr("face", face);
+  if (!scale.empty()) out_.Attr("scale", scale);
+  out_.Close();
 }
 
 void MjcfWriter::WriteGeometries(BodyId body) {

@@ -140,6 +140,11 @@ class MjcfWriter : FlatWriterBase {
   // one <mesh> asset per file and scale, shared by the geoms that use them
   // (a link's visual and collision often name the same file)
   void WriteMeshAssets();
+  /// Geometry `index`'s MJCF inline mesh as a <mesh> with vertex (and
+  /// face) lists, once per (mesh, scale) in `assets`.
+  void WriteInlineMesh(size_t index, const ir::Mesh& mesh,
+                       std::map<std::pair<std::string, std::string>, std::string>& assets,
+                       bool* open);
 
   // the geometry of written body `body` and of the bodies fused into it
   void WriteGeometries(BodyId body);

@@ -57,6 +57,13 @@ std::string SdfWriter::Unique(UniqueNames& names, const std::string& name) {
 
 void SdfWriter::WriteGeometry(const backend::SceneGeometry& g, Loc loc, UniqueNames& visuals,
                               UniqueNames& collisions) {
+  if (const auto* mesh = std::get_if<ir::Mesh>(&g.shape); mesh && mesh->inline_data) {
+    std::string why;
+    if (!assets_.NameInlineMesh(*mesh, loc, &why)) {
+      assets_.ReportInlineMeshLeftOut(g.name, *mesh, "SDFormat", why, loc);
+      return;
+    }
+  }
   const bool illustration = g.roles & ir::kIllustrationRole;
   const bool perception = g.roles & ir::kPerceptionRole;
   if (illustration || perception) {
@@ -124,8 +131,10 @@ void SdfWriter::Shape(const backend::SceneGeometry& g, Loc loc, bool collision) 
                  },
                  [&](const ir::Mesh& s) {
                    out_.Open("mesh");
-                   if (auto name =
-                           assets_.Name(s.uri, s.resolved, s.uri_loc.valid() ? s.uri_loc : loc)) {
+                   const Loc at = s.uri_loc.valid() ? s.uri_loc : loc;
+                   std::string why;  // an inline mesh without an OBJ is left out above
+                   if (auto name = s.inline_data ? assets_.NameInlineMesh(s, at, &why)
+                                                 : assets_.Name(s.uri, s.resolved, at)) {
                      Value("uri", *name);
                    }
                    if (s.scale != Eigen::Vector3d::Ones()) Value("scale", s.scale);

@@ -134,6 +134,13 @@ void UrdfWriter::WriteGeometry(const backend::SceneGeometry& g, Loc loc) {
                               g.name));
     return;
   }
+  if (const auto* mesh = std::get_if<ir::Mesh>(&g.shape); mesh && mesh->inline_data) {
+    std::string why;
+    if (!assets_.NameInlineMesh(*mesh, loc, &why)) {
+      assets_.ReportInlineMeshLeftOut(g.name, *mesh, "URDF", why, loc);
+      return;
+    }
+  }
   const Transform X_LG = InLink(g.body, g.X_BG);
   if (g.roles & (ir::kIllustrationRole | ir::kPerceptionRole)) {
     if (!(g.roles & ir::kPerceptionRole) || !(g.roles & ir::kIllustrationRole)) {
@@ -188,7 +195,9 @@ void UrdfWriter::Shape(const backend::SceneGeometry& g, Loc loc, bool collision)
                  [&](const ir::Mesh& s) {
                    out_.Open("mesh");
                    const Loc at = s.uri_loc.valid() ? s.uri_loc : loc;
-                   if (auto name = assets_.Name(s.uri, s.resolved, at)) {
+                   std::string why;  // an inline mesh without an OBJ is left out above
+                   if (auto name = s.inline_data ? assets_.NameInlineMesh(s, at, &why)
+                                                 : assets_.Name(s.uri, s.resolved, at)) {
                      out_.Attr("filename", *name);
                    }
                    if (s.scale != Eigen::Vector3d::Ones()) out_.Attr("scale", s.scale);

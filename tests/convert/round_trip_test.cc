@@ -185,7 +185,8 @@ bool DropsNothing(const backend::SceneGeometry&) { return false; }
 /// mesh is written as one it reads.
 bool MjcfDrops(const backend::SceneGeometry& g) {
   const auto* mesh = std::get_if<ir::Mesh>(&g.shape);
-  if (!mesh || mesh->resolved.empty()) return false;
+  // an inline mesh is written back inline (no file to read)
+  if (!mesh || mesh->resolved.empty() || mesh->inline_data) return false;
   std::string ext = fs::path(mesh->resolved).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (ext == ".obj" || ext == ".stl" || ext == ".msh" || ext == ".vtk") return false;
@@ -371,6 +372,17 @@ class Comparison {
       EXPECT_EQ(count(sb, ir::kIllustrationRole, DropsNothing),
                 count(sa, ir::kIllustrationRole | ir::kPerceptionRole, to_.drops));
     }
+    // a body whose every collision geometry the writer dropped (reported
+    // above) has nothing left to filter
+    std::set<size_t> colliding, kept;
+    for (const auto& g : sa.geometries) {
+      if (!(g.roles & ir::kProximityRole)) continue;
+      colliding.insert(g.body.index());
+      if (!to_.drops(g)) kept.insert(g.body.index());
+    }
+    auto all_dropped = [&](BodyId b) {
+      return colliding.count(b.index()) && !kept.count(b.index());
+    };
     // filters against the world cannot be written in URDF or SDFormat (reported)
     std::set<std::pair<size_t, size_t>> fa, fb;
     for (const auto& [x, y] : sa.collision_filters.Pairs(pa_)) {
@@ -378,6 +390,7 @@ class Comparison {
         EXPECT_GT(CountLossy(converted_, "and the world is dropped"), 0u);
         continue;
       }
+      if (all_dropped(x) || all_dropped(y)) continue;
       const size_t mx = body_map_[x.index()].index(), my = body_map_[y.index()].index();
       fa.insert({std::min(mx, my), std::max(mx, my)});
     }
@@ -486,6 +499,84 @@ TEST_P(OwnRoundTrip, UrdfModels) {
 TEST_P(OwnRoundTrip, SdfModels) { RunSuite(OwnModels("sdf", ".sdf"), GetParam(), "own SDFormat"); }
 INSTANTIATE_TEST_SUITE_P(To, OwnRoundTrip, ::testing::ValuesIn(kTargets),
                          [](const auto& info) { return std::string(info.param.name); });
+
+// MJCF meshes written in the model file (vertex and face lists) and point
+// clouds (issue 62): MJCF writes them back inline; URDF and SDFormat, which
+// name mesh files only, get OBJ copies of the triangles the compile took
+// (a cloud's convex hull) with --copy-assets, and without it leave their
+// geometries out with a located -Wlossy warning. Every result compiles back
+// to the same plant (mass properties from the source's inline meshes).
+bool InlineMeshDropped(const backend::SceneGeometry& g) {
+  const auto* mesh = std::get_if<ir::Mesh>(&g.shape);
+  return mesh && mesh->inline_data;
+}
+bool UrdfDropsInline(const backend::SceneGeometry& g) {
+  return UrdfDrops(g) || InlineMeshDropped(g);
+}
+bool SdfDropsInline(const backend::SceneGeometry& g) {
+  return SdfDrops(g) || InlineMeshDropped(g);
+}
+class InlineMeshes : public ::testing::TestWithParam<Target> {};
+TEST_P(InlineMeshes, RoundTrip) {
+  const ModelCase mc{fs::path(MDLC_TEST_MODELS) / "mjcf" / "oracle" / "inline_meshes.xml", "mjcf"};
+  OutputDir dir;
+  EXPECT_EQ(RoundTrip(mc, GetParam(), dir.path()), Outcome::Compared);
+}
+constexpr Target kInlineMeshTargets[] = {
+    kTargets[2],
+    // without --copy-assets: the inline meshes' geometries are left out
+    {Format::Urdf, "urdf", "Urdf", UrdfLinkFrame, false, UrdfDropsInline,
+     "is written in the model file", false, false},
+    {Format::Sdf, "sdf", "Sdf", SdfLinkFrame, true, SdfDropsInline,
+     "is written in the model file", false, false},
+    // with --copy-assets: OBJ copies
+    {Format::Urdf, "urdf", "UrdfCopyAssets", UrdfLinkFrame, false, UrdfDrops, "half space", false,
+     true},
+    {Format::Sdf, "sdf", "SdfCopyAssets", SdfLinkFrame, true, SdfDrops, "on the world is dropped",
+     false, true},
+};
+INSTANTIATE_TEST_SUITE_P(To, InlineMeshes, ::testing::ValuesIn(kInlineMeshTargets),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(InlineMeshes, WrittenAsTheTargetReadsThem) {
+  const fs::path source = fs::path(MDLC_TEST_MODELS) / "mjcf" / "oracle" / "inline_meshes.xml";
+  Result a = Compile(Input::File(source.string()));
+  ASSERT_TRUE(a.ok()) << Messages(a);
+  OutputDir dir;
+  // MJCF: <mesh vertex= face=>, a cloud without faces, no file named
+  ConvertOptions to_mjcf;
+  to_mjcf.to = Format::Mjcf;
+  to_mjcf.output = (dir.path() / "inline.xml").string();
+  const ConvertOutput mjcf = mdlc::Convert(a, to_mjcf);
+  ASSERT_TRUE(mjcf.text);
+  EXPECT_EQ(mjcf.text->find("<inline mesh"), std::string::npos) << *mjcf.text;
+  EXPECT_NE(mjcf.text->find("face=\"0 2 1  0 1 3  0 3 2  1 2 3\""), std::string::npos);
+  EXPECT_NE(mjcf.text->find("scale=\"1 2 0.5\""), std::string::npos);
+  // URDF without --copy-assets: each geometry left out says so where it is
+  ConvertOptions to_urdf;
+  to_urdf.to = Format::Urdf;
+  to_urdf.output = (dir.path() / "inline.urdf").string();
+  const ConvertOutput urdf = mdlc::Convert(a, to_urdf);
+  ASSERT_TRUE(urdf.text);
+  EXPECT_EQ(urdf.text->find("<inline mesh"), std::string::npos) << *urdf.text;
+  size_t located = 0;
+  for (const Diagnostic& d : urdf.diagnostics) {
+    if (d.message.find("is written in the model file") == std::string::npos) continue;
+    EXPECT_NE(d.message.find("--copy-assets writes an OBJ of it"), std::string::npos);
+    located += d.loc.valid() ? 1 : 0;
+  }
+  EXPECT_EQ(located, 7u);  // once per mesh geom but the one of the OBJ file
+  // SDFormat with --copy-assets: OBJ copies beside the output, named relative to it
+  ConvertOptions to_sdf;
+  to_sdf.to = Format::Sdf;
+  to_sdf.output = (dir.path() / "sdf" / "inline.sdf").string();
+  to_sdf.copy_assets_dir = (dir.path() / "sdf" / "assets").string();
+  const ConvertOutput sdf = mdlc::Convert(a, to_sdf);
+  ASSERT_TRUE(sdf.text);
+  EXPECT_EQ(sdf.text->find("<inline mesh"), std::string::npos) << *sdf.text;
+  EXPECT_NE(sdf.text->find("<uri>assets/tetra-"), std::string::npos) << *sdf.text;
+  EXPECT_NE(sdf.text->find("<uri>assets/cloud-"), std::string::npos) << *sdf.text;
+}
 
 // every corpus model the reference tools load, of each source format
 class CorpusRoundTrip

@@ -14,6 +14,7 @@ class ObjTranscoder final : public writers::MeshTranscoder {
  public:
   explicit ObjTranscoder(mesh::MeshCache& meshes) : meshes_(meshes) {}
   writers::ObjOrError ObjFor(const std::filesystem::path& file) override;
+  writers::ObjOrError ObjForInline(const ir::InlineMesh& mesh, const std::string& what) override;
 
  private:
   mesh::MeshCache& meshes_;
