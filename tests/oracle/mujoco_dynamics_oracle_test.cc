@@ -70,6 +70,7 @@
 #include "mdlc/dynamics.h"
 #include "mdlc/kinematics.h"
 #include "mdlc/mdlc.h"
+#include "mujoco_reference.h"
 #include "oracle_util.h"
 
 namespace {
@@ -192,46 +193,24 @@ struct Matching {
   std::vector<std::string> problems;         // what could not be matched
 };
 
-// Drake's names for MuJoCo's bodies and joints (as mujoco_oracle_test.cc
-// derives them): an unnamed body is body<N>, N the plant's body count when it
-// is made; a body with k > 1 joints gets k-1 massless bodies <body>0, ...
-// before it (MJCF-023); an unnamed joint is <parent>-<child>; a free joint
-// takes its body's name.
+// Drake's names for MuJoCo's bodies and joints, as mujoco_oracle_test.cc
+// derives them (mujoco_reference.h): an unnamed body is body<N>, N the
+// plant's body count when it is made; a body with k > 1 joints gets k-1
+// massless bodies <body>0, ... before it (MJCF-023); an unnamed joint is
+// <parent>-<child>; a free joint takes its body's name.
 Matching MatchToPlant(const json& dump, const mdlc::backend::Plant& plant) {
   Matching mt;
   const json& bodies = dump.at("bodies");
   const json& joints = dump.at("joints");
-  std::vector<std::vector<int>> body_joints(bodies.size());
-  for (size_t j = 0; j < joints.size(); ++j) {
-    body_joints.at(joints[j].at("body").get<size_t>()).push_back(static_cast<int>(j));
-  }
-  std::vector<std::vector<std::string>> dummies(bodies.size());
-  mt.body_names.assign(bodies.size(), "world");
-  int plant_bodies = 1;
-  for (size_t b = 1; b < bodies.size(); ++b) {
-    const std::string name = bodies[b].at("name").get<std::string>();
-    mt.body_names[b] = name.empty() ? "body" + std::to_string(plant_bodies) : name;
-    ++plant_bodies;
-    for (size_t k = 0; k + 1 < body_joints[b].size(); ++k) {
-      dummies[b].push_back(mt.body_names[b] + std::to_string(k));
-      ++plant_bodies;
-    }
-  }
+  const mdlc::oracle::mujoco::DrakeNames names = mdlc::oracle::mujoco::NameAsDrake(dump);
+  mt.body_names = names.bodies;
   mt.joints.resize(joints.size());
-  for (size_t b = 1; b < bodies.size(); ++b) {
-    const std::string parent = mt.body_names.at(bodies[b].at("parent").get<size_t>());
-    for (size_t k = 0; k < body_joints[b].size(); ++k) {
-      const json& jj = joints[body_joints[b][k]];
-      MjJoint& J = mt.joints[body_joints[b][k]];
-      J.type = jj.at("type").get<std::string>();
-      J.qposadr = jj.at("qposadr").get<int>();
-      J.dofadr = jj.at("dofadr").get<int>();
-      const std::string p = k == 0 ? parent : dummies[b][k - 1];
-      const std::string c = k + 1 == body_joints[b].size() ? mt.body_names[b] : dummies[b][k];
-      J.plant_name = jj.at("name").get<std::string>();
-      if (J.type == "free") J.plant_name = mt.body_names[b];
-      else if (J.plant_name.empty()) J.plant_name = p + "-" + c;
-    }
+  for (size_t j = 0; j < joints.size(); ++j) {
+    MjJoint& J = mt.joints[j];
+    J.type = joints[j].at("type").get<std::string>();
+    J.qposadr = joints[j].at("qposadr").get<int>();
+    J.dofadr = joints[j].at("dofadr").get<int>();
+    J.plant_name = names.joints[j];
   }
   // the plant's joints and bodies by local name (names are unique within the
   // one model instance an MJCF file makes)
@@ -392,8 +371,9 @@ class MujocoDynamics : public ::testing::TestWithParam<ModelCase> {};
 
 TEST_P(MujocoDynamics, DynamicsMatch) {
   const ModelCase& mc = GetParam();
-  if (!mc.skip_reason.empty()) GTEST_SKIP() << mc.skip_reason;
-  if (const std::string why = MujocoJsUnavailable(); !why.empty()) GTEST_SKIP() << why;
+  if (const std::string why = mdlc::oracle::mujoco::MujocoSkipReason(mc.skip_reason); !why.empty()) {
+    GTEST_SKIP() << why;
+  }
 
   std::string problem;
   const json dump = DumpDynamics(mc.path, &problem);
