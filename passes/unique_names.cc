@@ -10,6 +10,13 @@
 // duplicate; mdlc keeps the file's name and gives the made one the first free
 // `NAME_<n>` (n = 1, 2, ...), with a note at the entity.
 //
+// Names made from a body's made name follow it when it is renamed, so that
+// they still name it: the bodies between its stacked joints (`body110` renamed
+// `body110_1` has `body110_10`, `body110_11`, not `body1100`, the name of
+// another unnamed body's intermediates), a joint named `<parent>-<child>`
+// and the floating joint named after it. (Welds `P_welds_to_C` keep the name
+// they were made with.)
+//
 // Scopes, as Drake's: bodies, frames, joints, actuators and cameras are
 // unique within their model instance; a geometry within its body and role.
 // Names the file gives are never changed here (duplicates among them are the
@@ -19,6 +26,8 @@
 
 #include <algorithm>
 #include <optional>
+#include <string>
+#include <type_traits>
 #include <utility>
 
 #include <absl/container/flat_hash_set.h>
@@ -63,6 +72,7 @@ class UniqueNamesPass : public Pass {
     const std::vector<Symbol> body_names_before = BodyNames(m);
     Uniquify(ctx, m.bodies, "body");
     FollowRenamedBodies(m, body_names_before);
+    FollowRenamedJointEnds(m, body_names_before);
     Uniquify(ctx, m.frames, "frame");
     Uniquify(ctx, m.joints, "joint");
     Uniquify(ctx, m.actuators, "actuator");
@@ -90,6 +100,43 @@ class UniqueNamesPass : public Pass {
     }
   }
 
+  // A joint the compiler named `<parent>-<child>` (MJCF-022) is named after
+  // its bodies' new names when either was renamed
+  static void FollowRenamedJointEnds(ir::Module& m, const std::vector<Symbol>& before) {
+    for (ir::Joint& j : m.joints) {
+      if (!j.unnamed || !j.parent.resolved() || !j.child.resolved()) continue;
+      const size_t parent = j.parent.id.index(), child = j.child.id.index();
+      if (m.bodies[parent].name == before[parent] && m.bodies[child].name == before[child]) {
+        continue;
+      }
+      if (m.Text(j.name) == fmt::format("{}-{}", m.Text(before[parent]), m.Text(before[child]))) {
+        j.name = m.Intern(fmt::format("{}-{}", m.Text(m.bodies[parent].name),
+                                      m.Text(m.bodies[child].name)));
+      }
+    }
+  }
+
+  // The bodies between a body's stacked joints, `<body><k>` (MJCF-023), come
+  // right after it in the table: while `owner` is a body renamed from `made`
+  // to `renamed`, the next ones of those names are named after `renamed`
+  struct RenamedOwner {
+    size_t next;  // the table index the next intermediate body would have
+    int k;
+    std::string made, renamed;
+  };
+  static bool FollowOwner(ir::Module& m, std::optional<RenamedOwner>& owner, size_t index,
+                          ir::Body& body) {
+    if (owner && owner->next == index &&
+        m.Text(body.name) == fmt::format("{}{}", owner->made, owner->k)) {
+      body.name = m.Intern(fmt::format("{}{}", owner->renamed, owner->k));
+      ++owner->next;
+      ++owner->k;
+      return true;
+    }
+    owner.reset();
+    return false;
+  }
+
   template <typename Entity>
   void Uniquify(PassContext& ctx, std::vector<Entity>& table, std::string_view what) {
     // only names mdlc made can change: a table without any needs no set
@@ -115,8 +162,12 @@ class UniqueNamesPass : public Pass {
     // one MJCF <geom> is registered twice (visual and collision), in a row:
     // its rename is noted once
     std::optional<std::pair<Loc, Symbol>> last_note;
-    for (Entity& e : table) {
+    std::optional<RenamedOwner> owner;  // bodies only
+    for (size_t i = 0; i < table.size(); ++i) {
+      Entity& e = table[i];
       if (!e.unnamed) continue;
+      bool follows = false;
+      if constexpr (std::is_same_v<Entity, ir::Body>) follows = FollowOwner(m, owner, i, e);
       if (!is_free(e, e.name)) {
         const std::string made(m.Text(e.name));
         Symbol renamed;
@@ -131,6 +182,9 @@ class UniqueNamesPass : public Pass {
                                        what, made, m.ModelName(e.model), what,
                                        m.Text(renamed)));
           last_note = std::pair{e.loc, renamed};
+        }
+        if constexpr (std::is_same_v<Entity, ir::Body>) {
+          if (!follows) owner = RenamedOwner{i + 1, 0, made, std::string(m.Text(renamed))};
         }
         e.name = renamed;
       }

@@ -6,6 +6,9 @@
 
 #include <map>
 #include <set>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "ir/verifier.h"
 #include "tests/unit/compile_test_util.h"
@@ -166,6 +169,47 @@ TEST(UniqueNames, WithoutAClashNothingIsRenamed) {
   ASSERT_NE(Entry(j["bodies"], "link0", "chain"), nullptr) << j["bodies"].dump(1);
   EXPECT_EQ(Entry(j["bodies"], "link0", "chain")->value("unnamed", false), true);  // MJCF-023
   EXPECT_TRUE(c.Find(DiagKind::SynthesizedNameTaken).empty());
+}
+
+// Four unnamed bodies of three slides each: the bodies between the joints of
+// body1 are body10 and body11, so the fourth body, made `body10`, is renamed
+// `body10_1`; the bodies between its joints and its unnamed joints are named
+// after it as renamed (`body10_10`, not `body100`, which would be the name
+// of the intermediates of a later unnamed body100 too) (MJCF-020, MJCF-023)
+TEST(UniqueNames, NamesMadeFromARenamedBodyFollowIt) {
+  std::string xml = "<mujoco model=\"grid\">\n <worldbody>\n";
+  for (int i = 0; i < 4; ++i) {
+    xml += "  <body pos=\"" + std::to_string(i) + " 0 0\"><joint type=\"slide\" axis=\"1 0 0\"/>"
+           "<joint type=\"slide\" axis=\"0 1 0\"/><joint type=\"slide\" axis=\"0 0 1\"/>"
+           "<geom size=\"0.1\"/></body>\n";
+  }
+  xml += " </worldbody>\n</mujoco>\n";
+  CompiledText c("grid.xml", xml);
+  ASSERT_TRUE(c.ok()) << c.Messages();
+  const nlohmann::json j = c.Json();
+  std::vector<std::string> bodies;
+  for (const auto& b : j["bodies"]) {
+    if (b.value("name", "") != "world") bodies.push_back(b.value("name", ""));
+  }
+  EXPECT_EQ(bodies, (std::vector<std::string>{"body1", "body10", "body11", "body4", "body40",
+                                              "body41", "body7", "body70", "body71", "body10_1",
+                                              "body10_10", "body10_11"}));
+  for (const auto& [name, parent, child] :
+       {std::tuple{"world-body10_10", "world", "grid::body10_10"},
+        std::tuple{"body10_10-body10_11", "grid::body10_10", "grid::body10_11"},
+        std::tuple{"body10_11-body10_1", "grid::body10_11", "grid::body10_1"},
+        std::tuple{"body10-body11", "grid::body10", "grid::body11"}}) {
+    const nlohmann::json* joint = Entry(j["joints"], name, "grid");
+    ASSERT_NE(joint, nullptr) << name << "\n" << j["joints"].dump(1);
+    EXPECT_EQ(joint->value("parent", ""), parent) << name;
+    EXPECT_EQ(joint->value("child", ""), child) << name;
+  }
+  // the one name that gave way is noted; those following it are not
+  const auto notes = c.Find(DiagKind::SynthesizedNameTaken);
+  ASSERT_EQ(notes.size(), 1u) << c.Messages();
+  EXPECT_EQ(notes[0]->message,
+            "the body name 'body10' that mdlc made is already used in model instance 'grid'; "
+            "this body is named 'body10_1'");
 }
 
 TEST(UniqueNames, UrdfFloatingJointKeepsDrakesUnderscoreRule) {  // URDF-017
