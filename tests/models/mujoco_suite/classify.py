@@ -24,9 +24,9 @@ and from that writes one row of manifest.tsv with the expected outcome:
                          spatial tendon, plugin, sdf geom, skin, composite):
                          mdlc must not crash and must warn about it
   pending:<construct>    a construct mdlc does not read yet but is meant to
-                         (replicate, attach, keyframes shorter than qpos,
-                         builtin meshes): the test
-                         compares and reports these without failing
+                         (the keyframes of an attached model, builtin
+                         meshes): the test compares and reports these
+                         without failing
 
 Several constructs are joined with '+'. Usage:
 
@@ -63,11 +63,16 @@ NOT_HELD = ["flex", "spatial-tendon", "plugin", "sdf-geom", "skin", "composite"]
 # Constructs mdlc is being taught to read (issue 62). Meshes written in the
 # file ("inline-mesh"), meshes without faces ("point-cloud-mesh") and
 # <freejoint align> ("freejoint-align") were here until mdlc read them as
-# MuJoCo does: their files are `agree` now.
+# MuJoCo does, and so were <replicate>, <attach> and keyframes shorter than
+# qpos (which mdlc pads as MuJoCo does) until mdlc expanded and read them:
+# their files are `agree` now.
+# What is left of <attach>: the keyframes of the attached model, which MuJoCo
+# attaches with it and mdlc does not (it warns) -- "attach-keyframe", a file
+# attaching a model whose file has a <keyframe>.
 # Meshes MuJoCo builds from a builtin shape (<mesh builtin="sphere">) are
 # here too: mdlc leaves them out with a warning, though nothing keeps the
 # plant from holding them, and no one is teaching mdlc them yet.
-PENDING = ["replicate", "attach", "short-keyframe", "builtin-mesh"]
+PENDING = ["attach-keyframe", "builtin-mesh"]
 
 # Why mdlc may accept a file MuJoCo 3.3.8 refuses, by MuJoCo's error text:
 # the refusal is not about anything the plant holds. (A mujoco-rejects file mdlc
@@ -81,8 +86,9 @@ ACCEPTED_REJECTIONS = [
      "and leaves it out"),
     (r"not found in (wrap|bodypair)",
      "the file names entities that a replicate or composite of a newer MuJoCo generates (names "
-     "MuJoCo 3.3.8's release spells differently); mdlc does not expand them yet and leaves the "
-     "tendon or contact pair naming them out with a warning"),
+     "MuJoCo 3.3.8's release spells differently): a spatial tendon, outside the plant, which mdlc "
+     "leaves out with a warning, or a contact exclusion of an attached model, which mdlc reads "
+     "with the names its expansion of the replicate and attach gives the bodies"),
     (r"unknown body '[^']*' in flex",
      "the flex names a body a newer MuJoCo's replicate generates; flex is outside the plant and "
      "mdlc leaves it out with a warning"),
@@ -148,7 +154,7 @@ def obj_has_faces(path):
     return False
 
 
-def constructs(path, nq):
+def constructs(path):
     """The NOT_HELD and PENDING constructs the file uses."""
     found = set()
     roots = read_tree(path)
@@ -172,10 +178,6 @@ def constructs(path, nq):
                 found.add("skin")
             elif tag == "composite":
                 found.add("composite")
-            elif tag == "replicate":
-                found.add("replicate")
-            elif tag == "attach":
-                found.add("attach")
             elif tag == "geom" and el.get("type") == "sdf":
                 found.add("sdf-geom")
             elif tag == "freejoint" and el.get("align") is not None:
@@ -190,10 +192,28 @@ def constructs(path, nq):
                 f = os.path.join(main_dir, meshdir, el.get("file"))
                 if not obj_has_faces(f):
                     found.add("point-cloud-mesh")
-            elif tag == "key" and nq is not None and el.get("qpos") is not None:
-                if len(el.get("qpos").split()) < nq:
-                    found.add("short-keyframe")
+    if attaches_keyframes(roots):
+        found.add("attach-keyframe")
     return found
+
+
+def attaches_keyframes(roots):
+    """Whether a file of `roots` attaches (<attach model>) a model whose file,
+    or a file that one includes, has a <keyframe>."""
+    for fpath, root in roots:
+        models = {}
+        for a in root.iter("asset"):
+            for m in a.iter("model"):
+                if m.get("file"):
+                    f = os.path.normpath(os.path.join(os.path.dirname(fpath), m.get("file")))
+                    tree = read_tree(f)
+                    # unnamed, the model is known by the name its file gives it
+                    name = m.get("name") or (tree[0][1].get("model", "") if tree else "")
+                    models[name] = any(next(r.iter("keyframe"), None) is not None
+                                       for _, r in tree)
+        if any(models.get(el.get("model", ""), False) for el in root.iter("attach")):
+            return True
+    return False
 
 
 # ------------------------------------------------------------------- running
@@ -232,13 +252,11 @@ def classify(suite, mdlc, node):
     rows = []
     for rel in files:
         d = mj[rel]
-        nq = None
         if d.get("ok"):
-            nq = d.get("nq")
             mj_col = "loads: nbody=%d njnt=%d nv=%d" % (d["nbody"], d["njnt"], d["nv"])
         else:
             mj_col = "rejects: " + one_line(d.get("error", "?").replace("\t", " "))
-        found = constructs(os.path.join(suite, rel), nq)
+        found = constructs(os.path.join(suite, rel))
         code, err, why = run_mdlc(mdlc, suite, rel)
         if code is None:
             mdlc_col = "timed out"
