@@ -1,8 +1,9 @@
 // mjcf_attach.cc - the models <attach> takes its bodies from (MuJoCo 3.2+:
 // <asset><model name file>), and what an attachment brings besides its
 // bodies: the model's default classes and assets, renamed with the prefix
-// (MuJoCo's mjs_attach copies them into the parent). The expansion itself
-// is mjcf_replicate.cc's.
+// (MuJoCo's mjs_attach copies them into the parent), and its keys, read
+// here over its joints and placed by mjcf_replicate.cc's AttachKeys and
+// mjcf_elements_keyframe.cc. The expansion itself is mjcf_replicate.cc's.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -25,6 +26,90 @@ std::string Canonical(const std::string& path) {
 
 std::vector<xml::XmlElement> Kids(const ChildModel& child, const xml::XmlElement& e) {
   return child.Children(e);
+}
+
+// MuJoCo's qpos width of a joint of the child model (its type resolved
+// through the child's defaults)
+size_t QposWidth(const ChildModel& child, const xml::XmlElement& x) {
+  if (x.Name() == "freejoint") return 7;
+  std::string_view type = x.Attribute("type").value;
+  if (!x.Attribute("type").present()) {
+    std::string cls = InheritedChildclass(child, x);
+    if (auto c = x.Attribute("class"); c.present()) cls = std::string(c.value);
+    if (child.reader->defaults.Has(cls)) {
+      type = child.reader->Resolve(x, "joint", cls).Get("type").value;
+    }
+  }
+  if (type == "free") return 7;
+  if (type == "ball") return 4;
+  return 1;
+}
+
+// The child's joints in MuJoCo's qpos order: a body's joints (those in its
+// frames included) in document order, then its child bodies depth first.
+void CollectJoints(const ChildModel& child, const xml::XmlElement& body,
+                   std::vector<xml::XmlElement>& out) {
+  std::vector<xml::XmlElement> bodies;
+  std::vector<xml::XmlElement> stack(1, body);
+  // joints of `body` through its frames, in document order
+  auto walk = [&](auto&& self, const xml::XmlElement& e) -> void {
+    for (const auto& c : Kids(child, e)) {
+      const std::string_view tag = c.Name();
+      if (tag == "joint" || tag == "freejoint") out.push_back(c);
+      if (tag == "frame") self(self, c);
+      if (tag == "body") bodies.push_back(c);
+    }
+  };
+  walk(walk, body);
+  for (const auto& b : bodies) CollectJoints(child, b, out);
+}
+
+// The child's own keys, their qpos split over its joints. A qpos of other
+// than the child's nq values is an error, as MuJoCo 3.3.8's mjs_attach
+// makes it (it pads a short key only when it compiles the model itself).
+bool ReadChildKeys(ChildModel& child, FrontendContext& ctx) {
+  std::vector<xml::XmlElement> joints;
+  std::vector<xml::XmlElement> sections;
+  for (const auto& top : Kids(child, child.root)) {
+    if (top.Name() == "worldbody") CollectJoints(child, top, joints);
+    if (top.Name() == "keyframe") sections.push_back(top);
+  }
+  if (sections.empty()) return true;
+  std::vector<size_t> width;
+  size_t nq = 0;
+  for (const auto& j : joints) nq += width.emplace_back(QposWidth(child, j));
+  bool ok = true;
+  for (const auto& section : sections) {
+    for (const auto& key : Kids(child, section)) {
+      if (key.Name() != "key") continue;  // reported where the child is read, if ever
+      MjcfReader::AttachedKey k;
+      k.name = std::string(key.Attribute("name").value);
+      k.loc = key.GetLoc();
+      const xml::XmlAttribute qpos = key.Attribute("qpos");
+      if (qpos.present()) {
+        auto values = xml::ParseDoubleList(qpos.value);
+        if (!values || values->size() != nq) {
+          ctx.diags.Report(DiagKind::BadValue, qpos.loc,
+                           fmt::format("keyframe '{}' of model '{}' has invalid qpos size, got "
+                                       "{}, should be {}: MuJoCo attaches a model's keys only "
+                                       "when they hold all of its coordinates",
+                                       k.name, child.name, values ? values->size() : 0, nq));
+          ok = false;
+          continue;
+        }
+        k.has_qpos = true;
+        size_t at = 0;
+        for (size_t i = 0; i < joints.size(); ++i) {
+          const std::vector<double> slice(values->begin() + at, values->begin() + at + width[i]);
+          at += width[i];
+          // unnamed joints are held by an empty name, which no attach finds
+          k.joints.emplace_back(std::string(joints[i].Attribute("name").value), slice);
+        }
+      }
+      child.keys.push_back(std::move(k));
+    }
+  }
+  return ok;
 }
 
 }  // namespace
@@ -99,22 +184,13 @@ std::unique_ptr<ChildModel> LoadChildModel(MjcfReader& parent, const xml::XmlEle
                                  name.value, r.compiler.eulerseq, parent.compiler.eulerseq,
                                  parent.compiler.eulerseq));
   }
-  for (const auto& e : top) {
-    if (e.Name() == "keyframe") {
-      ctx.diags.Report(DiagKind::UnsupportedElement, e.GetLoc(),
-                       fmt::format("the keyframes of model '{}' are not attached: MuJoCo adds "
-                                   "each, named with the attach prefix, with this model's "
-                                   "other coordinates at their defaults; mdlc leaves them out",
-                                   child->name));
-      break;
-    }
-  }
   std::vector<std::string> inner = chain;
   inner.push_back(canonical);
   Expansion x = ExpandReplicateAndAttach(r, root, inner);
   if (x.failed) return nullptr;
   child->expanded = x.document;
   child->root = x.document ? x.document->Root() : root;
+  if (!ReadChildKeys(*child, ctx)) return nullptr;
   return child;
 }
 

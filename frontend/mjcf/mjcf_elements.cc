@@ -52,7 +52,7 @@ void LowerModelElements(MjcfReader& reader, const std::vector<xml::XmlElement>& 
   for (const xml::XmlElement& e : top_level) {
     if (e.Name() == "keyframe") keyframes.push_back(e);
   }
-  if (!keyframes.empty()) LowerKeyframes(L, keyframes);
+  if (!keyframes.empty() || !reader.attached_keys.empty()) LowerKeyframes(L, keyframes);
   WarnUnreflectedArmature(reader);
 }
 

@@ -43,12 +43,23 @@
 // act and ctrl are padded with 0 and mocap poses with the bodies' own, none
 // of which the plant holds. A longer key is an error, and a chosen key with
 // too long a qpos is not applied.
+//
+// A model attached with <attach> brings its keys (MuJoCo's mjs_attach; the
+// attach reads them, mjcf_attach.cc): they follow this model's own keys in
+// attach order, a key K named prefix + K (an unnamed one the prefix), its
+// values on the attached joints and every other joint at the compiled
+// qpos0, not the padding above (MuJoCo's ResolveKeyframes: a hinge's ref in
+// radians, a free joint's body pose, a ball the identity), as the oracle
+// shows (tests/models/mjcf/oracle/attach_keyframe.xml). A name another key
+// has is MuJoCo's repeated-name error.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include <Eigen/Geometry>
+#include <absl/container/flat_hash_map.h>
+#include <absl/container/flat_hash_set.h>
 
 #include "frontend/mjcf/mjcf_elements.h"
 
@@ -100,6 +111,45 @@ class Keyframes {
     CheckSize(key, "ctrl", L_.actuator_elements);
     for (const char* attr : {"act", "mpos", "mquat"}) L_.AnyDoubles(key.Attribute(attr));
     L_.Double(key.Attribute("time"));
+    return qpos;
+  }
+
+  /// An attached key's qpos in MuJoCo's layout: its joints at its values,
+  /// every other joint at the compiled qpos0 (MuJoCo's ResolveKeyframes
+  /// fills them from mjModel's qpos0: a hinge's ref in radians, a free
+  /// joint's body pose), read before any key is applied.
+  std::vector<double> Attached(const MjcfReader::AttachedKey& key) {
+    const ir::Module& m = L_.module();
+    absl::flat_hash_map<uint32_t, const std::vector<double>*> values;
+    for (const auto& [name, q] : key.joints) {
+      if (std::optional<JointId> id = L_.r.joints.Find(m.symbols, name)) {
+        values[id->index()] = &q;
+      }
+    }
+    std::vector<double> qpos;
+    qpos.reserve(nq_);
+    for (JointId id : L_.r.joint_order) {
+      const ir::Joint& j = m[id];
+      const size_t w = QposWidth(j.type);
+      auto it = values.find(id.index());
+      if (it != values.end() && it->second->size() == w) {
+        qpos.insert(qpos.end(), it->second->begin(), it->second->end());
+        continue;
+      }
+      const auto& p = j.default_positions;
+      switch (j.type) {
+        case ir::JointType::QuaternionFloating:
+          if (p.size() == 7) {
+            qpos.insert(qpos.end(), {p[4], p[5], p[6], p[0], p[1], p[2], p[3]});
+          } else {
+            qpos.insert(qpos.end(), {0, 0, 0, 1, 0, 0, 0});
+          }
+          break;
+        case ir::JointType::Ball: qpos.insert(qpos.end(), {1, 0, 0, 0}); break;
+        case ir::JointType::Weld: break;
+        default: qpos.push_back(p.empty() ? 0.0 : p[0]); break;  // hinge, slide
+      }
+    }
     return qpos;
   }
 
@@ -198,6 +248,35 @@ void LowerKeyframes(ElementsLowering& L, const std::vector<xml::XmlElement>& sec
         have_home = true;
         home = std::move(qpos);
       }
+    }
+  }
+  // the keys of attached models follow this model's own (mjs_attach); a
+  // name they share with another key is MuJoCo's "repeated name" error
+  absl::flat_hash_set<std::string> names;
+  for (const xml::XmlElement& section : sections) {
+    for (const xml::XmlElement& key : L.r.Children(section)) {
+      if (key.Name() == "key" && !key.Attribute("name").value.empty()) {
+        names.insert(std::string(key.Attribute("name").value));
+      }
+    }
+  }
+  for (const MjcfReader::AttachedKey& key : L.r.attached_keys) {
+    if (!key.name.empty() && !names.insert(key.name).second) {
+      L.diags().Report(DiagKind::DuplicateName, key.loc,
+                       fmt::format("repeated name '{}' in key: an attached model's key takes "
+                                   "the attach prefix and its own name, which another key has",
+                                   key.name));
+      continue;
+    }
+    std::optional<std::vector<double>> qpos;
+    if (key.has_qpos) qpos = keys.Attached(key);
+    if (!have_first) {
+      have_first = true;
+      first = qpos;
+    }
+    if (!have_home && key.name == "home") {
+      have_home = true;
+      home = std::move(qpos);
     }
   }
   const std::optional<std::vector<double>>& chosen = have_home ? home : first;

@@ -178,6 +178,18 @@ struct MjcfReader {
   std::unordered_map<uint32_t, JointArmature> joint_armature;  // by JointId index
   /// Every MJCF joint in document order (the qpos layout of keyframes).
   std::vector<JointId> joint_order;
+  /// A key of a model attached with <attach>: MuJoCo's mjs_attach adds the
+  /// attached model's keys after this model's own, each joint of the
+  /// attached subtree at the key's values and every other joint at qpos0
+  /// (mjcf_attach.cc, mjcf_elements_keyframe.cc).
+  struct AttachedKey {
+    std::string name;
+    Loc loc;
+    bool has_qpos = false;
+    /// (joint name, its qpos slice in MuJoCo's layout)
+    std::vector<std::pair<std::string, std::vector<double>>> joints;
+  };
+  std::vector<AttachedKey> attached_keys;
   /// Joint springdamper and actuator dampratio requests, with every joint's
   /// qpos0 and armature (BEYOND-007, BEYOND-008); added to the module at
   /// the end when the file asks for any.

@@ -120,6 +120,8 @@ struct Node {
   std::string prefix;
   std::vector<xml::XmlElement> content;  // the child's body, or its worldbody's children
   std::string inherited;                 // the child class they use
+  absl::flat_hash_set<std::string> joints;  // the child's names of its joints
+  size_t unnamed_joints = 0;
 };
 
 /// An element outside the tree: as written in the model (prefix and suffix
@@ -154,6 +156,7 @@ class Expander {
   DiagnosticEngine& diags() { return r_.diags(); }
   bool ReadReplicate(const xml::XmlElement& e, Node& n);
   bool ReadAttach(const xml::XmlElement& e, Node& n);
+  void AttachKeys(const Node& n, bool in_replicate);
   const ChildModel* Model(const xml::XmlElement& attach, std::string_view name);
   bool CheckSize();
   void AddEntries(const std::vector<xml::XmlElement>& top, const ChildModel* child,
@@ -186,6 +189,7 @@ class Expander {
   absl::flat_hash_map<std::string, xml::XmlElement> model_assets_;
   absl::flat_hash_map<std::string, std::unique_ptr<ChildModel>> models_;
   std::vector<std::pair<const ChildModel*, std::string>> attached_;  // (model, prefix), once
+  absl::flat_hash_set<const ChildModel*> nested_keys_taken_;  // see AttachKeys
 };
 
 bool Expander::ReadReplicate(const xml::XmlElement& e, Node& n) {
@@ -248,6 +252,47 @@ bool Expander::ReadReplicate(const xml::XmlElement& e, Node& n) {
     }
   }
   return true;
+}
+
+// MuJoCo's mjs_attach stores the attached model's keys by joint (named
+// with the prefix: a key K becomes prefix + K, an unnamed one the prefix
+// itself) and adds them after this model's own keys, in attach order, the
+// joints outside the attached subtree at qpos0. Keys the child took from
+// its own attaches follow, under their names (MuJoCo does not prefix them
+// again) and only the first time the child is attached (MuJoCo clears
+// them then).
+void Expander::AttachKeys(const Node& n, bool in_replicate) {
+  const ChildModel& c = *n.child;
+  const bool nested = nested_keys_taken_.insert(&c).second;
+  const std::vector<MjcfReader::AttachedKey> none;
+  const std::vector<MjcfReader::AttachedKey>& inner = nested ? c.reader->attached_keys : none;
+  if (c.keys.empty() && inner.empty()) return;
+  if (in_replicate) {
+    diags().Report(DiagKind::UnsupportedElement, n.e.GetLoc(),
+                   fmt::format("the keyframes of model '{}' are not attached: MuJoCo adds each "
+                               "to this model, but mdlc does not attach keys inside a "
+                               "<replicate>; it leaves them out",
+                               c.name));
+    return;
+  }
+  bool values = false;
+  auto add = [&](const MjcfReader::AttachedKey& k, std::string name) {
+    MjcfReader::AttachedKey out{std::move(name), k.loc, k.has_qpos, {}};
+    for (const auto& [joint, q] : k.joints) {
+      if (!joint.empty() && n.joints.contains(joint)) out.joints.emplace_back(n.prefix + joint, q);
+    }
+    values |= k.has_qpos;
+    r_.attached_keys.push_back(std::move(out));
+  };
+  for (const auto& k : c.keys) add(k, n.prefix + k.name);
+  for (const auto& k : inner) add(k, k.name);
+  if (values && n.unnamed_joints > 0) {
+    diags().Report(DiagKind::UnsupportedElement, n.e.GetLoc(),
+                   fmt::format("the attached keyframes of model '{}' leave its {} unnamed "
+                               "joint{} at qpos0: mdlc finds an attached key's joints by "
+                               "name, where MuJoCo sets them to the key's values",
+                               c.name, n.unnamed_joints, n.unnamed_joints == 1 ? "" : "s"));
+  }
 }
 
 const ChildModel* Expander::Model(const xml::XmlElement& attach, std::string_view name) {
@@ -318,6 +363,13 @@ bool Expander::ReadAttach(const xml::XmlElement& e, Node& n) {
     if (!kind.empty()) {
       if (auto nm = x.Attribute("name"); nm.present() && !nm.value.empty()) {
         n.own.push_back({std::string(kind), n.prefix + std::string(nm.value)});
+      }
+    }
+    if (x.Name() == "joint" || x.Name() == "freejoint") {
+      if (auto nm = x.Attribute("name"); nm.present() && !nm.value.empty()) {
+        n.joints.insert(std::string(nm.value));
+      } else {
+        ++n.unnamed_joints;
       }
     }
     for (const auto& c : n.child->Children(x)) walk.push_back(c);
@@ -765,6 +817,7 @@ Expansion Expander::Run() {
         failed_ = true;
         continue;
       }
+      if (tag == "attach") AttachKeys(n, w.node != 0);
       const int id = static_cast<int>(nodes_.size());
       nodes_[w.node].children.push_back(id);
       node_of_[w.e.raw()] = id;

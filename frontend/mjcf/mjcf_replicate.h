@@ -43,6 +43,9 @@ struct ChildModel {
   std::unique_ptr<MjcfReader> reader;   // its documents and compiler settings
   std::shared_ptr<const xml::XmlDocument> expanded;  // its own replicates/attaches
   xml::XmlElement root;                 // the root to read (expanded, or the file's)
+  /// Its own <key>s, their qpos split over its joints by name (an unnamed
+  /// joint's under an empty name); an attach prefixes both.
+  std::vector<MjcfReader::AttachedKey> keys;
   std::vector<xml::XmlElement> Children(const xml::XmlElement& e) const {
     if (expanded) {
       std::vector<xml::XmlElement> out;

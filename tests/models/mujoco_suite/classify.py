@@ -65,14 +65,12 @@ NOT_HELD = ["flex", "spatial-tendon", "plugin", "sdf-geom", "skin", "composite"]
 # <freejoint align> ("freejoint-align") were here until mdlc read them as
 # MuJoCo does, and so were <replicate>, <attach> and keyframes shorter than
 # qpos (which mdlc pads as MuJoCo does) until mdlc expanded and read them:
-# their files are `agree` now.
-# What is left of <attach>: the keyframes of the attached model, which MuJoCo
-# attaches with it and mdlc does not (it warns) -- "attach-keyframe", a file
-# attaching a model whose file has a <keyframe>.
+# their files are `agree` now; so were the keyframes of an attached model
+# ("attach-keyframe"), which mdlc now attaches with it as MuJoCo does.
 # Meshes MuJoCo builds from a builtin shape (<mesh builtin="sphere">) are
 # here too: mdlc leaves them out with a warning, though nothing keeps the
 # plant from holding them, and no one is teaching mdlc them yet.
-PENDING = ["attach-keyframe", "builtin-mesh"]
+PENDING = ["builtin-mesh"]
 
 # Why mdlc may accept a file MuJoCo 3.3.8 refuses, by MuJoCo's error text:
 # the refusal is not about anything the plant holds. (A mujoco-rejects file mdlc
@@ -192,28 +190,7 @@ def constructs(path):
                 f = os.path.join(main_dir, meshdir, el.get("file"))
                 if not obj_has_faces(f):
                     found.add("point-cloud-mesh")
-    if attaches_keyframes(roots):
-        found.add("attach-keyframe")
     return found
-
-
-def attaches_keyframes(roots):
-    """Whether a file of `roots` attaches (<attach model>) a model whose file,
-    or a file that one includes, has a <keyframe>."""
-    for fpath, root in roots:
-        models = {}
-        for a in root.iter("asset"):
-            for m in a.iter("model"):
-                if m.get("file"):
-                    f = os.path.normpath(os.path.join(os.path.dirname(fpath), m.get("file")))
-                    tree = read_tree(f)
-                    # unnamed, the model is known by the name its file gives it
-                    name = m.get("name") or (tree[0][1].get("model", "") if tree else "")
-                    models[name] = any(next(r.iter("keyframe"), None) is not None
-                                       for _, r in tree)
-        if any(models.get(el.get("model", ""), False) for el in root.iter("attach")):
-            return True
-    return False
 
 
 # ------------------------------------------------------------------- running

@@ -209,5 +209,78 @@ TEST(MjcfAttach, CycleIsALocatedError) {
   EXPECT_NE(r.sources.Path(d->loc.file).find("a.xml"), std::string::npos);
 }
 
+// MuJoCo 3.3.8's mjs_attach adds the attached model's keys after the
+// parent's own, a key K named prefix + K (an unnamed key the prefix), its
+// values on the attached joints and the parent's other joints at qpos0
+// (MJCF-008: the key named "home", else the first, sets the default
+// positions; tests/models/mjcf/oracle/attach_keyframe.xml checks the same
+// against MuJoCo).
+constexpr const char* kArmWithKeys = R"(<mujoco model="arm">
+  <worldbody>
+    <body name="upper" pos="0 0 1"><joint name="shoulder"/><geom size="0.1"/>
+      <body name="lower" pos="0 0 1"><joint name="elbow"/><geom size="0.1"/></body>
+    </body>
+  </worldbody>
+  <keyframe><key name="bent" qpos="0.5 -0.25"/><key qpos="0.125 0.0625"/></keyframe>
+</mujoco>)";
+
+double DefaultPosition(const LoweredMjcf& r, std::string_view joint) {
+  const ir::Joint* j = r.Joint(joint);
+  return j == nullptr || j->default_positions.empty() ? NAN : j->default_positions[0];
+}
+
+TEST(MjcfAttach, AttachedKeyPlacesItsValuesOnTheAttachedJoints) {
+  LoweredMjcf r(RModel(R"(<asset><model name="arm" file="parts/arm.xml"/></asset>
+      <worldbody><body name="cart"><joint name="rail" type="slide" ref="0.3"/><geom size="0.1"/>
+        <attach model="arm" body="lower" prefix="a_"/></body></worldbody>)"),
+                {{"parts/arm.xml", kArmWithKeys}});
+  ASSERT_TRUE(r.ok()) << r.Messages();
+  // a_bent, the first key: elbow's value, the rail at its ref
+  EXPECT_NEAR(DefaultPosition(r, "a_elbow"), -0.25, kTol);
+  EXPECT_NEAR(DefaultPosition(r, "rail"), 0.3, kTol);
+  EXPECT_EQ(r.Find(DiagKind::UnsupportedElement, "keyframes"), nullptr) << r.Messages();
+}
+
+TEST(MjcfAttach, UnnamedAttachedKeyIsNamedByThePrefix) {
+  // the unnamed key becomes "home" and is chosen over a_bent
+  LoweredMjcf r(RModel(R"(<asset><model name="arm" file="parts/arm.xml"/></asset>
+      <worldbody><attach model="arm" body="upper" prefix="home"/></worldbody>)"),
+                {{"parts/arm.xml", kArmWithKeys}});
+  ASSERT_TRUE(r.ok()) << r.Messages();
+  EXPECT_NEAR(DefaultPosition(r, "homeshoulder"), 0.125, kTol);
+  EXPECT_NEAR(DefaultPosition(r, "homeelbow"), 0.0625, kTol);
+}
+
+TEST(MjcfAttach, ParentKeysComeFirstAndARepeatedKeyNameIsAnError) {
+  LoweredMjcf first(RModel(R"(<asset><model name="arm" file="parts/arm.xml"/></asset>
+      <worldbody><body name="cart"><joint name="rail" type="slide"/><geom size="0.1"/>
+        <attach model="arm" body="upper" prefix="a_"/></body></worldbody>
+      <keyframe><key name="mine" qpos="0.75"/></keyframe>)"),
+                    {{"parts/arm.xml", kArmWithKeys}});
+  ASSERT_TRUE(first.ok()) << first.Messages();
+  EXPECT_NEAR(DefaultPosition(first, "rail"), 0.75, kTol);
+  EXPECT_NEAR(DefaultPosition(first, "a_shoulder"), 0.0, kTol);
+
+  LoweredMjcf repeated(RModel(R"(<asset><model name="arm" file="parts/arm.xml"/></asset>
+      <worldbody><attach model="arm" body="upper" prefix="a_"/></worldbody>
+      <keyframe><key name="a_bent"/></keyframe>)"),
+                       {{"parts/arm.xml", kArmWithKeys}});
+  EXPECT_FALSE(repeated.ok());
+  EXPECT_NE(repeated.Find(DiagKind::DuplicateName, "repeated name 'a_bent' in key"), nullptr)
+      << repeated.Messages();
+}
+
+TEST(MjcfAttach, AttachedKeyOfAnotherSizeThanTheModelIsAnError) {
+  // MuJoCo 3.3.8 pads a short key of a model it compiles, not of one it attaches
+  LoweredMjcf r(RModel(R"(<asset><model name="arm" file="parts/arm.xml"/></asset>
+      <worldbody><attach model="arm" body="upper" prefix="a_"/></worldbody>)"),
+                {{"parts/arm.xml", R"(<mujoco model="arm"><worldbody>
+      <body name="upper"><joint name="shoulder"/><joint name="twist"/><geom size="0.1"/></body>
+      </worldbody><keyframe><key name="k" qpos="1"/></keyframe></mujoco>)"}});
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.Find(DiagKind::BadValue, "invalid qpos size, got 1, should be 2"), nullptr)
+      << r.Messages();
+}
+
 }  // namespace
 }  // namespace mdlc
