@@ -195,12 +195,18 @@ std::optional<MeshOrError> DecodeMeshReply(std::string_view bytes, std::string* 
   mesh->declared_up = static_cast<UpAxis>(declared_up);
   mesh->turned_to_z_up = turned == 1;
   // the arrays as EncodeMeshReply wrote them: packed coefficients
+  // (a point cloud's triangle array is empty: its data() may be null, which
+  // memcpy may not be given even for zero bytes)
   mesh->vertices.resize(vertices);
-  std::memcpy(static_cast<void*>(mesh->vertices.data()), in.Take(vertex_bytes).data(),
-              vertex_bytes);
+  if (vertex_bytes > 0) {
+    std::memcpy(static_cast<void*>(mesh->vertices.data()), in.Take(vertex_bytes).data(),
+                vertex_bytes);
+  }
   mesh->triangles.resize(triangles);
-  std::memcpy(static_cast<void*>(mesh->triangles.data()), in.Take(triangle_bytes).data(),
-              triangle_bytes);
+  if (triangle_bytes > 0) {
+    std::memcpy(static_cast<void*>(mesh->triangles.data()), in.Take(triangle_bytes).data(),
+                triangle_bytes);
+  }
   if (auto bad = DecodeColors(in, triangles, mesh->colors)) return Fail(problem, *bad);
   for (size_t t = 0; t < triangles; ++t) {
     for (int k = 0; k < 3; ++k) {
