@@ -18,12 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string Canonical(const std::string& path) {
-  std::error_code ec;
-  fs::path p = fs::weakly_canonical(path, ec);
-  return ec ? path : p.string();
-}
-
 std::vector<xml::XmlElement> Kids(const ChildModel& child, const xml::XmlElement& e) {
   return child.Children(e);
 }
@@ -126,9 +120,9 @@ std::unique_ptr<ChildModel> LoadChildModel(MjcfReader& parent, const xml::XmlEle
   }
   std::string path(file.value);
   if (!fs::path(path).is_absolute()) path = (fs::path(parent.main_dir) / path).string();
-  const std::string canonical = Canonical(path);
+  const std::string canonical = CanonicalPath(path);
   for (const std::string& link : chain) {
-    if (Canonical(link) == canonical) {
+    if (CanonicalPath(link) == canonical) {
       ctx.diags.Report(DiagKind::IncludeCycle, file.loc,
                        fmt::format("attach cycle: model '{}' ('{}') attaches from a model that "
                                    "attaches from it",

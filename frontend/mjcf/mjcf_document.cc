@@ -18,15 +18,16 @@
 #include "ir/load_report.h"
 
 namespace mdlc::frontend::mjcf {
+
+std::string CanonicalPath(const std::string& path) {
+  std::error_code ec;
+  std::filesystem::path p = std::filesystem::weakly_canonical(path, ec);
+  return ec ? path : p.string();
+}
+
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string Canonical(const std::string& path) {
-  std::error_code ec;
-  fs::path p = fs::weakly_canonical(path, ec);
-  return ec ? path : p.string();
-}
 
 /// One file on the include chain: its canonical path and the <include>
 /// that brought it in (invalid for the main file).
@@ -75,7 +76,7 @@ bool LoadIncludes(const xml::XmlElement& root, const std::string& main_dir, Fron
     std::vector<ChainLink> chain;
   };
   std::vector<FileContext> files;
-  files.push_back({main_dir, {{Canonical(ctx.sources.Path(root.GetLoc().file)), {}}}});
+  files.push_back({main_dir, {{CanonicalPath(ctx.sources.Path(root.GetLoc().file)), {}}}});
   std::unordered_set<std::string> included;
   // a pre-order walk in document order: an element's next sibling is
   // stacked before its children, so it comes after them
@@ -118,7 +119,7 @@ bool LoadIncludes(const xml::XmlElement& root, const std::string& main_dir, Fron
         if (fs::exists(nested, ec)) path = nested;
       }
     }
-    const std::string canonical = Canonical(path);
+    const std::string canonical = CanonicalPath(path);
 
     // a cycle: the file is already on the chain that leads here
     const std::vector<ChainLink>& work_chain = files[work.file].chain;

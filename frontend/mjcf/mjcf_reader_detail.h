@@ -100,6 +100,10 @@ struct MjcfDocument {
   std::vector<xml::XmlElement> Children(const xml::XmlElement& e) const;
 };
 
+/// `path` with symbolic links, "." and ".." resolved (as it is when it
+/// does not exist): how include and attach chains recognise a file again.
+std::string CanonicalPath(const std::string& path);
+
 /// Loads every include reachable from `root` (explicit stack). Reports
 /// missing files, unparsable files, cycles and repeated includes at the
 /// <include>; returns false after an error.
