@@ -18,10 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<xml::XmlElement> Kids(const ChildModel& child, const xml::XmlElement& e) {
-  return child.Children(e);
-}
-
 // MuJoCo's qpos width of a joint of the child model (its type resolved
 // through the child's defaults)
 size_t QposWidth(const ChildModel& child, const xml::XmlElement& x) {
@@ -47,7 +43,7 @@ void CollectJoints(const ChildModel& child, const xml::XmlElement& body,
   std::vector<xml::XmlElement> stack(1, body);
   // joints of `body` through its frames, in document order
   auto walk = [&](auto&& self, const xml::XmlElement& e) -> void {
-    for (const auto& c : Kids(child, e)) {
+    for (const auto& c : child.Children(e)) {
       const std::string_view tag = c.Name();
       if (tag == "joint" || tag == "freejoint") out.push_back(c);
       if (tag == "frame") self(self, c);
@@ -64,7 +60,7 @@ void CollectJoints(const ChildModel& child, const xml::XmlElement& body,
 bool ReadChildKeys(ChildModel& child, FrontendContext& ctx) {
   std::vector<xml::XmlElement> joints;
   std::vector<xml::XmlElement> sections;
-  for (const auto& top : Kids(child, child.root)) {
+  for (const auto& top : child.Children(child.root)) {
     if (top.Name() == "worldbody") CollectJoints(child, top, joints);
     if (top.Name() == "keyframe") sections.push_back(top);
   }
@@ -74,7 +70,7 @@ bool ReadChildKeys(ChildModel& child, FrontendContext& ctx) {
   for (const auto& j : joints) nq += width.emplace_back(QposWidth(child, j));
   bool ok = true;
   for (const auto& section : sections) {
-    for (const auto& key : Kids(child, section)) {
+    for (const auto& key : child.Children(section)) {
       if (key.Name() != "key") continue;  // reported where the child is read, if ever
       MjcfReader::AttachedKey k;
       k.name = std::string(key.Attribute("name").value);
@@ -237,7 +233,7 @@ std::optional<std::string> ConvertAngles(const ChildModel& child, const Compiler
 void EmitAttachedDefaultsAndAssets(xml::XmlDocumentBuilder& b, const ChildModel& child,
                                    const std::string& prefix, const CompilerSettings& parent) {
   const MjcfReader& r = *child.reader;
-  auto children = [&](const xml::XmlElement& e) { return Kids(child, e); };
+  auto children = [&](const xml::XmlElement& e) { return child.Children(e); };
   auto rename = [&](const xml::XmlElement& x,
                     const xml::XmlAttribute& a) -> std::optional<std::string> {
     const std::string_view n = a.name;
@@ -250,7 +246,7 @@ void EmitAttachedDefaultsAndAssets(xml::XmlDocumentBuilder& b, const ChildModel&
     return std::nullopt;
   };
   // one class for the model's top-level defaults: its "main", renamed
-  const std::vector<xml::XmlElement> top = Kids(child, child.root);
+  const std::vector<xml::XmlElement> top = child.Children(child.root);
   const std::string main_class = prefix + "main";
   std::vector<xml::XmlElement> defaults;
   for (const auto& e : top) {
